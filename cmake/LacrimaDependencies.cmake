@@ -1,0 +1,40 @@
+# Every dependency comes from Debian 12. A missing one stops configuration with the name of
+# the package that provides it, so "apt-get install <that>" is the whole fix.
+include_guard(GLOBAL)
+
+function(lacrima_missing what debian_package)
+  message(FATAL_ERROR
+    "Lacrima needs ${what}, which was not found.\n"
+    "Install it with:  apt-get install ${debian_package}\n"
+    "(or run 'bash packaging/lacrima.sh test', which installs everything in packaging/debian-packages.txt)")
+endfunction()
+
+find_package(Qt6 6.4 QUIET COMPONENTS Core Gui Widgets Test)
+if(NOT Qt6_FOUND OR NOT TARGET Qt6::Widgets OR NOT TARGET Qt6::Test)
+  lacrima_missing("Qt 6 (Core, Gui, Widgets, Test)" "qt6-base-dev")
+endif()
+set(CMAKE_AUTOMOC ON)
+
+find_package(Eigen3 3.4 QUIET NO_MODULE)
+if(NOT TARGET Eigen3::Eigen)
+  lacrima_missing("Eigen 3.4" "libeigen3-dev")
+endif()
+
+find_package(OGRE 1.12 QUIET COMPONENTS Bites RTShaderSystem)
+if(NOT OGRE_FOUND OR NOT TARGET OgreMain OR NOT TARGET OgreRTShaderSystem)
+  lacrima_missing("OGRE 1.12 (with RTShaderSystem and Bites)" "libogre-1.12-dev")
+endif()
+
+find_package(assimp QUIET)
+if(NOT TARGET assimp::assimp)
+  lacrima_missing("assimp 5" "libassimp-dev")
+endif()
+
+find_package(PkgConfig QUIET)
+if(NOT PKG_CONFIG_FOUND)
+  lacrima_missing("pkg-config (to find ODE)" "pkg-config")
+endif()
+pkg_check_modules(ODE QUIET IMPORTED_TARGET ode>=0.16)
+if(NOT ODE_FOUND)
+  lacrima_missing("ODE 0.16" "libode-dev")
+endif()

@@ -1,0 +1,2 @@
+#include <lacrima/FapReader.h>
+int main() { return 0; }

@@ -1,0 +1,1 @@
+#include <lacrima/FapReader.h>

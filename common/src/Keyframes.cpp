@@ -1,0 +1,1 @@
+#include <lacrima/Keyframes.h>

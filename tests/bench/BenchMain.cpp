@@ -1,0 +1,41 @@
+// lacrima-bench SUBCOMMAND [options]: the project's benchmarks. Each prints its figures with
+// the target beside them; `--json` gives one JSON object for scripts.
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+namespace lacrima::bench {
+int runFapIo(int argc, char** argv);
+}
+
+namespace {
+
+struct Subcommand {
+  const char* name;
+  const char* summary;
+  int (*run)(int argc, char** argv);
+};
+
+const Subcommand kSubcommands[] = {
+    {"fapio", "read and write a 10-minute, 70-channel FAP animation (13,200 frames at 22 fps)",
+     lacrima::bench::runFapIo},
+};
+
+void printUsage(FILE* out) {
+  std::fprintf(out, "usage: lacrima-bench SUBCOMMAND [options]   (SUBCOMMAND --help for options)\n\n");
+  for (const auto& s : kSubcommands) std::fprintf(out, "  %-10s %s\n", s.name, s.summary);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
+    printUsage(argc < 2 ? stderr : stdout);
+    return argc < 2 ? 2 : 0;
+  }
+  for (const auto& s : kSubcommands)
+    if (std::string(argv[1]) == s.name) return s.run(argc - 1, argv + 1);
+  std::fprintf(stderr, "lacrima-bench: unknown subcommand '%s'\n\n", argv[1]);
+  printUsage(stderr);
+  return 2;
+}

@@ -1,0 +1,2 @@
+#include "BenchSupport.h"
+namespace lacrima::bench { int runFapIo(int, char**) { return 1; } }
