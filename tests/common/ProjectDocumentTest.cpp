@@ -1,4 +1,487 @@
+// Project documents: exact JSON round trips, precise errors, atomic saves; and the tear
+// parameter table the documents validate against.
+#include <lacrima/FapTable.h>
+#include <lacrima/ProjectDocument.h>
+#include <lacrima/TearParameters.h>
+
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
 #include <QtTest>
-class T : public QObject { Q_OBJECT };
-QTEST_GUILESS_MAIN(T)
+
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <stdexcept>
+
+using namespace lacrima;
+
+namespace {
+
+constexpr const char* kDisplayName = "doc.json";
+
+// Random keys with random channel subsets and modes; tear values are whole counts and the
+// other values span magnitudes from 1e-3 to 1e7 so the float text round trip is exercised.
+KeyframeSequence randomKeys(std::mt19937& random) {
+  std::uniform_int_distribution<int> keyCount(0, 25);
+  std::uniform_real_distribution<double> time(0.0, 120.0);
+  std::bernoulli_distribution coin(0.5);
+  std::bernoulli_distribution sparse(0.15);
+  std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-3, 7);
+  std::uniform_int_distribution<int> tears(0, kMaxTearParticles);
+  KeyframeSequence keys;
+  const int count = keyCount(random);
+  for (int k = 0; k < count; ++k) {
+    Keyframe key;
+    key.time = time(random);
+    key.interpolation = coin(random) ? Interpolation::Smooth : Interpolation::Linear;
+    for (int fap = 1; fap <= kChannelCount; ++fap) {
+      if (!sparse(random)) continue;
+      const float value = isTearChannel(fap)
+                              ? static_cast<float>(tears(random))
+                              : static_cast<float>(mantissa(random) * std::pow(10.0, exponent(random)));
+      key.set(fap, value);
+    }
+    keys.insert(key);
+  }
+  return keys;
+}
+
+TearParameterValues randomSimulation(std::mt19937& random) {
+  std::bernoulli_distribution coin(0.4);
+  TearParameterValues values;
+  for (const TearParameterInfo& info : tearParameterTable()) {
+    if (!coin(random)) continue;
+    std::uniform_real_distribution<double> value(info.minValue, info.maxValue);
+    values[std::string(info.name)] = value(random);
+  }
+  return values;
+}
+
+ProjectDocument randomDocument(unsigned seed) {
+  std::mt19937 random(seed);
+  std::bernoulli_distribution coin(0.5);
+  std::uniform_real_distribution<double> fps(0.5, 1000.0);
+  std::uniform_real_distribution<double> coordinate(-0.2, 0.2);
+  const char* names[] = {"sad crying", "pleurer \xc3\xa0 chaudes larmes", "quote \" back\\slash",
+                         "tab\tnew\nline", ""};
+  ProjectDocument document;
+  document.name = names[seed % std::size(names)];
+  document.fps = coin(random) ? 22.0 : fps(random);
+  document.defaultInterpolation = coin(random) ? Interpolation::Smooth : Interpolation::Linear;
+  document.keys = randomKeys(random);
+  if (coin(random)) {
+    document.tearSources.left =
+        Eigen::Vector3d(coordinate(random), coordinate(random), coordinate(random));
+  }
+  if (coin(random)) {
+    document.tearSources.right =
+        Eigen::Vector3d(coordinate(random), coordinate(random), coordinate(random));
+  }
+  SceneSettings& scene = document.scene;
+  scene.particles = coin(random);
+  scene.surface = coin(random);
+  scene.trails = coin(random);
+  scene.textureBlending = coin(random);
+  scene.blush = coin(random);
+  scene.redness = coin(random) ? SceneSettings::Redness::Tears : SceneSettings::Redness::Animation;
+  scene.simulation = randomSimulation(random);
+  return document;
+}
+
+// A valid document with `fields` spliced into the top level.
+std::string withTopLevel(const std::string& fields) {
+  return R"({"format": "lacrima-project", "version": 1, "keys": [])" +
+         (fields.empty() ? std::string() : ", " + fields) + "}";
+}
+
+// A valid document whose only key holds `values`.
+std::string withValues(const std::string& values) {
+  return R"({"format": "lacrima-project", "version": 1,
+            "keys": [{"time": 0, "values": )" + values + "}]}";
+}
+
+FileError parseError(const std::string& json) {
+  try {
+    ProjectDocument::fromJson(json, kDisplayName);
+  } catch (const FileError& error) {
+    return error;
+  }
+  throw std::logic_error("document was accepted: " + json);
+}
+
+std::size_t countOccurrences(const QString& text, const QString& what) {
+  return static_cast<std::size_t>(text.count(what));
+}
+
+}  // namespace
+
+class ProjectDocumentTest : public QObject {
+  Q_OBJECT
+
+private slots:
+  void roundTripIsExact() {
+    for (unsigned seed = 1; seed <= 300; ++seed) {
+      const ProjectDocument document = randomDocument(seed);
+      const std::string json = document.toJson();
+      const ProjectDocument back = ProjectDocument::fromJson(json, kDisplayName);
+      QVERIFY2(back == document, qPrintable(QString("seed %1").arg(seed)));
+      // Writing is deterministic, so a second save diffs as empty.
+      QCOMPARE(back.toJson(), json);
+    }
+  }
+
+  void floatValuesSurviveTheirDecimalText() {
+    // Every float in a wide band, sampled: float -> double -> text -> double -> float.
+    std::mt19937 random(42);
+    std::uniform_int_distribution<std::uint32_t> bits(0, 0x4b189680);  // 0 .. 1e7
+    ProjectDocument document;
+    for (int i = 0; i < 4000; ++i) {
+      std::uint32_t pattern = bits(random);
+      float value = 0.0f;
+      std::memcpy(&value, &pattern, sizeof value);
+      Keyframe key;
+      key.time = i * 0.01;
+      key.set(3, (i % 2) ? value : -value);
+      key.set(4, static_cast<float>(i) * 0.1f);  // values whose text is short: "0.1"
+      document.keys.insert(key);
+    }
+    const std::string json = document.toJson();
+    QVERIFY(ProjectDocument::fromJson(json, kDisplayName) == document);
+    QVERIFY(json.find("\"lower_t_midlip\": 0.1\n") != std::string::npos);
+  }
+
+  void writtenJsonUsesTheDocumentedLayout() {
+    ProjectDocument document;
+    document.name = "sad crying";
+    Keyframe late;
+    late.time = 1.5;
+    late.set(kTearLeftFap, 12.0f);
+    late.set(3, 120.0f);
+    Keyframe early;
+    early.time = 0.5;
+    early.interpolation = Interpolation::Smooth;
+    early.set(5, -7.25f);
+    document.keys.insert(late);
+    document.keys.insert(early);
+    document.tearSources.left = Eigen::Vector3d(0.5, -1.25, 2.0);
+    document.scene.simulation["adhesion"] = 40.0;
+    const QString json = QString::fromStdString(document.toJson());
+
+    for (const char* field :
+         {"\"format\": \"lacrima-project\"", "\"version\": 1", "\"name\": \"sad crying\"",
+          "\"fps\": 22", "\"interpolation\": \"linear\"", "\"keys\": [", "\"time\": 0.5",
+          "\"interpolation\": \"smooth\"", "\"values\": {", "\"open_jaw\": 120",
+          "\"tears_l_eye\": 12", "\"raise_b_midlip\": -7.25", "\"tearSources\": {",
+          "\"left\": [0.5, -1.25, 2]", "\"right\": null", "\"scene\": {", "\"particles\": false",
+          "\"surface\": true", "\"trails\": true", "\"textureBlending\": true",
+          "\"redness\": \"animation\"", "\"blush\": false", "\"simulation\": {",
+          "\"adhesion\": 40"}) {
+      QVERIFY2(json.contains(QLatin1String(field)), field);
+    }
+    // Documented field order, keys sorted by time, values in channel order, indented.
+    QVERIFY(json.indexOf("\"format\"") < json.indexOf("\"version\""));
+    QVERIFY(json.indexOf("\"keys\"") < json.indexOf("\"tearSources\""));
+    QVERIFY(json.indexOf("\"tearSources\"") < json.indexOf("\"scene\""));
+    QVERIFY(json.indexOf("\"time\": 0.5") < json.indexOf("\"time\": 1.5"));
+    QVERIFY(json.indexOf("\"open_jaw\"") < json.indexOf("\"tears_l_eye\""));
+    QVERIFY(json.startsWith("{\n  \"format\""));
+    QVERIFY(json.contains("\n      \"time\": 0.5,\n"));
+    QVERIFY(json.endsWith("}\n"));
+    QCOMPARE(countOccurrences(json, "\"time\""), std::size_t{2});
+  }
+
+  void minimalDocumentGetsDefaults() {
+    const ProjectDocument document = ProjectDocument::fromJson(withTopLevel(""), kDisplayName);
+    QVERIFY(document == ProjectDocument{});
+    QCOMPARE(document.name, std::string("untitled"));
+    QCOMPARE(document.fps, 22.0);
+    QVERIFY(document.keys.empty());
+    QVERIFY(!document.tearSources.left && !document.tearSources.right);
+    QVERIFY(document.scene.surface && !document.scene.particles);
+  }
+
+  void keysMayBeListedInAnyOrder() {
+    const ProjectDocument document = ProjectDocument::fromJson(
+        R"({"format": "lacrima-project", "version": 1, "interpolation": "smooth",
+            "keys": [{"time": 2, "values": {"open_jaw": 20}},
+                     {"time": 1, "interpolation": "linear", "values": {"viseme": 4}}]})",
+        kDisplayName);
+    QCOMPARE(document.keys.keys().size(), std::size_t{2});
+    QCOMPARE(document.keys.keys()[0].time, 1.0);
+    QCOMPARE(document.keys.keys()[0].value(1), 4.0f);
+    // A key without its own mode takes the document's default.
+    QVERIFY(document.keys.keys()[0].interpolation == Interpolation::Linear);
+    QVERIFY(document.keys.keys()[1].interpolation == Interpolation::Smooth);
+  }
+
+  void rejectsInvalidDocuments_data() {
+    QTest::addColumn<QString>("json");
+    QTest::addColumn<QString>("location");  // SourceLocation::toString()
+    QTest::addColumn<QString>("message");   // expected at the start of FileError::message()
+
+    QTest::newRow("bad syntax") << QString(
+        "{\n  \"format\": \"lacrima-project\",\n  \"version\": 1,\n  \"keys\": [],\n}")
+                                << "doc.json:5:1" << "invalid JSON: ";
+    QTest::newRow("bad syntax after UTF-8")
+        << QString::fromUtf8("{\"name\": \"\xc3\xa9t\xc3\xa9\", \"fps\": 22,}")
+        << "doc.json:1:27" << "invalid JSON: ";
+    QTest::newRow("not an object") << "[1, 2]" << "doc.json" << "expected a JSON object";
+    QTest::newRow("missing format") << R"({"version": 1, "keys": []})" << "doc.json"
+                                    << "format: missing; this is not a Lacrima project";
+    QTest::newRow("wrong format") << R"({"format": "lacrima-projekt", "version": 1, "keys": []})"
+                                  << "doc.json"
+                                  << "format: expected \"lacrima-project\", got the string";
+    QTest::newRow("newer version")
+        << R"({"format": "lacrima-project", "version": 2, "keys": [], "newField": 1})"
+        << "doc.json" << "version: written by a newer Lacrima (schema 2); this build reads up to 1";
+    QTest::newRow("fractional version")
+        << R"({"format": "lacrima-project", "version": 1.5, "keys": []})" << "doc.json"
+        << "version: expected a whole number >= 1";
+    QTest::newRow("missing keys") << R"({"format": "lacrima-project", "version": 1})"
+                                  << "doc.json" << "keys: missing";
+    QTest::newRow("unknown top-level field")
+        << QString::fromStdString(withTopLevel(R"("colour": "red")")) << "doc.json"
+        << "colour: unknown field; expected one of format, version, name, fps";
+    QTest::newRow("unknown FAP name") << QString::fromStdString(withValues(R"({"opn_jaw": 1})"))
+                                      << "doc.json"
+                                      << "keys[0].values.opn_jaw: unknown FAP name; did you mean open_jaw?";
+    QTest::newRow("fractional tear count")
+        << QString::fromStdString(withValues(R"({"tears_l_eye": 2.5})")) << "doc.json"
+        << "keys[0].values.tears_l_eye: expected a whole number of particles in [0, 100000], got 2.5";
+    QTest::newRow("too many tears")
+        << QString::fromStdString(withValues(R"({"tears_r_eye": 100001})")) << "doc.json"
+        << "keys[0].values.tears_r_eye: expected a whole number of particles";
+    QTest::newRow("value too large")
+        << QString::fromStdString(withValues(R"({"open_jaw": 2e7})")) << "doc.json"
+        << "keys[0].values.open_jaw: expected a number in [-1e7, 1e7], got 20000000";
+    QTest::newRow("value not a number")
+        << QString::fromStdString(withValues(R"({"open_jaw": "12"})")) << "doc.json"
+        << "keys[0].values.open_jaw: expected a number";
+    QTest::newRow("negative fps") << QString::fromStdString(withTopLevel(R"("fps": -22)"))
+                                  << "doc.json" << "fps: expected a number in (0, 1000], got -22";
+    QTest::newRow("fps as text") << QString::fromStdString(withTopLevel(R"("fps": "22")"))
+                                 << "doc.json" << "fps: expected a number in (0, 1000]";
+    QTest::newRow("bad default interpolation")
+        << QString::fromStdString(withTopLevel(R"("interpolation": "cubic")")) << "doc.json"
+        << "interpolation: expected \"linear\" or \"smooth\"";
+    QTest::newRow("tearSources with 2 numbers")
+        << QString::fromStdString(withTopLevel(R"("tearSources": {"left": [1, 2], "right": null})"))
+        << "doc.json" << "tearSources.left: expected null or an array of 3 finite numbers";
+    QTest::newRow("tearSources with text")
+        << QString::fromStdString(withTopLevel(R"("tearSources": {"right": [1, "2", 3]})"))
+        << "doc.json" << "tearSources.right[1]: expected a finite number";
+    QTest::newRow("unknown tear source")
+        << QString::fromStdString(withTopLevel(R"("tearSources": {"centre": null})"))
+        << "doc.json" << "tearSources.centre: unknown field; expected one of left, right";
+    QTest::newRow("unknown scene field")
+        << QString::fromStdString(withTopLevel(R"("scene": {"colour": 1})")) << "doc.json"
+        << "scene.colour: unknown field; expected one of particles, surface, trails";
+    QTest::newRow("scene flag not a bool")
+        << QString::fromStdString(withTopLevel(R"("scene": {"trails": 1})")) << "doc.json"
+        << "scene.trails: expected true or false";
+    QTest::newRow("bad redness")
+        << QString::fromStdString(withTopLevel(R"("scene": {"redness": "always"})"))
+        << "doc.json" << "scene.redness: expected \"animation\" or \"tears\"";
+    QTest::newRow("unknown simulation parameter")
+        << QString::fromStdString(withTopLevel(R"("scene": {"simulation": {"stickiness": 1}})"))
+        << "doc.json" << "scene.simulation.stickiness: unknown parameter 'stickiness'; expected one of: pressure";
+    QTest::newRow("adhesion out of range")
+        << QString::fromStdString(withTopLevel(R"("scene": {"simulation": {"adhesion": 20000}})"))
+        << "doc.json" << "scene.simulation.adhesion: 20000 is outside [0, 10000]";
+    QTest::newRow("duplicate key time")
+        << R"({"format": "lacrima-project", "version": 1, "keys": [
+               {"time": 0.5, "values": {}}, {"time": 1, "values": {}},
+               {"time": 0.5, "values": {"open_jaw": 1}}]})"
+        << "doc.json" << "keys[2].time: 0.5 repeats the time of keys[0]";
+    QTest::newRow("negative key time")
+        << R"({"format": "lacrima-project", "version": 1, "keys": [{"time": -1, "values": {}}]})"
+        << "doc.json" << "keys[0].time: expected a time >= 0 s, got -1";
+    QTest::newRow("unknown key field")
+        << R"({"format": "lacrima-project", "version": 1, "keys": [{"time": 0, "values": {}, "ease": 1}]})"
+        << "doc.json" << "keys[0].ease: unknown field; expected one of time, interpolation, values";
+    QTest::newRow("key without values")
+        << R"({"format": "lacrima-project", "version": 1, "keys": [{"time": 0}]})" << "doc.json"
+        << "keys[0].values: missing";
+  }
+
+  void rejectsInvalidDocuments() {
+    QFETCH(QString, json);
+    QFETCH(QString, location);
+    QFETCH(QString, message);
+    const FileError error = parseError(json.toStdString());
+    QCOMPARE(QString::fromStdString(error.where().toString()), location);
+    QVERIFY2(QString::fromStdString(error.message()).startsWith(message),
+             qPrintable(QString::fromStdString(error.message())));
+    QVERIFY(QString::fromStdString(error.what()).startsWith(location + ": "));
+  }
+
+  void loadNamesAMissingFile() {
+    QTemporaryDir folder;
+    QVERIFY(folder.isValid());
+    const std::string path = folder.filePath("absent.lacrima").toStdString();
+    try {
+      ProjectDocument::load(path);
+      QFAIL("loading a missing file succeeded");
+    } catch (const FileError& error) {
+      QCOMPARE(error.where().file, path);
+      QVERIFY(std::string(error.what()).starts_with(path + ": cannot open"));
+    }
+    try {
+      ProjectDocument::load(folder.path().toStdString());
+      QFAIL("loading a folder succeeded");
+    } catch (const FileError& error) {
+      QCOMPARE(error.message(), std::string("is a folder, not a project file"));
+    }
+  }
+
+  void loadRefusesHugeFiles() {
+    QTemporaryDir folder;
+    QVERIFY(folder.isValid());
+    const QString path = folder.filePath("huge.lacrima");
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    QVERIFY(file.resize((qint64{64} << 20) + 1));  // sparse: costs no disk
+    file.close();
+    try {
+      ProjectDocument::load(path.toStdString());
+      QFAIL("a 64 MiB + 1 byte file was read");
+    } catch (const FileError& error) {
+      QVERIFY2(error.message().find("limited to 64 MiB") != std::string::npos, error.what());
+    }
+  }
+
+  void saveThenLoadGivesTheSameDocument() {
+    QTemporaryDir folder;
+    QVERIFY(folder.isValid());
+    const std::string path = folder.filePath("crying.lacrima").toStdString();
+    const ProjectDocument document = randomDocument(99);
+    document.save(path);
+    QVERIFY(ProjectDocument::load(path) == document);
+  }
+
+  void loadReportsErrorsWithThePath() {
+    QTemporaryDir folder;
+    QVERIFY(folder.isValid());
+    const QString path = folder.filePath("broken.lacrima");
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("{\n  \"format\": \"lacrima-project\",\n  \"version\": 1\n  \"keys\": []\n}\n");
+    file.close();
+    try {
+      ProjectDocument::load(path.toStdString());
+      QFAIL("a broken file loaded");
+    } catch (const FileError& error) {
+      QCOMPARE(error.where().file, path.toStdString());
+      QCOMPARE(error.where().line, 4);
+    }
+  }
+
+  void saveIsAtomic() {
+    QTemporaryDir folder;
+    QVERIFY(folder.isValid());
+    const std::string path = folder.filePath("project.lacrima").toStdString();
+    ProjectDocument first;
+    first.name = "first";
+    first.save(path);
+    ProjectDocument second = randomDocument(7);
+    second.name = "second";
+    second.save(path);
+    QVERIFY(ProjectDocument::load(path) == second);
+    // Only the target remains: the temporary file was renamed over it.
+    QCOMPARE(QDir(folder.path()).entryList(QDir::Files | QDir::Hidden | QDir::System),
+             QStringList{"project.lacrima"});
+
+    // A folder that does not exist: the save fails with a message and touches nothing.
+    const std::string nowhere = folder.filePath("missing/project.lacrima").toStdString();
+    try {
+      second.save(nowhere);
+      QFAIL("saving into a missing folder succeeded");
+    } catch (const FileError& error) {
+      QCOMPARE(error.where().file, nowhere);
+      QVERIFY(!error.message().empty());
+    }
+    QVERIFY(!QFile::exists(QString::fromStdString(nowhere)));
+    QVERIFY(ProjectDocument::load(path) == second);
+  }
+
+  void fromAnimationKeysEveryFrame() {
+    FapAnimation animation;
+    animation.name = "take3";
+    animation.fps = 25.0;
+    animation.frames.resize(50);
+    animation.animated.set(channelIndex(3));
+    animation.animated.set(channelIndex(kTearRightFap));
+    for (int f = 0; f < animation.frameCount(); ++f) {
+      animation.frames[f][channelIndex(3)] = static_cast<float>(f * 7 % 13) - 6.0f;
+      animation.frames[f][channelIndex(kTearRightFap)] = static_cast<float>(f / 5);
+    }
+    const ProjectDocument document = ProjectDocument::fromAnimation(animation);
+    QCOMPARE(document.name, std::string("take3"));
+    QCOMPARE(document.fps, 25.0);
+    QCOMPARE(document.keys.keys().size(), std::size_t{50});
+    QVERIFY(document.keys.keys()[10].interpolation == Interpolation::Linear);
+    const FapAnimation baked = document.bake();
+    QVERIFY(baked.frames == animation.frames);
+    QVERIFY(ProjectDocument::fromJson(document.toJson(), kDisplayName) == document);
+  }
+
+  void tearParameterDefaultsAreThe2009Values() {
+    const std::pair<const char*, double> expected[] = {
+        {"pressure", 0.004}, {"viscosity", 0.9}, {"tension", 0.2},  {"adhesion", 20.0},
+        {"friction", 3.8},   {"gravity", 9.81},  {"kernel", 0.5},   {"node_size", 0.5},
+        {"cube_size", 0.25}, {"iso", 0.5}};
+    QCOMPARE(tearParameterTable().size(), std::size(expected));
+    for (std::size_t i = 0; i < std::size(expected); ++i) {
+      const TearParameterInfo& info = tearParameterTable()[i];
+      QCOMPARE(info.name, std::string_view(expected[i].first));
+      QCOMPARE(info.defaultValue, expected[i].second);
+      QCOMPARE(findTearParameter(info.name), &info);
+      QVERIFY(!info.description.empty());
+    }
+    QVERIFY(findTearParameter("stickiness") == nullptr);
+  }
+
+  void tearParameterDefaultsLieInTheirRanges() {
+    for (const TearParameterInfo& info : tearParameterTable()) {
+      QVERIFY(std::isfinite(info.minValue) && std::isfinite(info.maxValue));
+      QVERIFY2(info.minValue <= info.defaultValue && info.defaultValue <= info.maxValue,
+               info.name.data());
+      validateTearParameter(info.name, info.defaultValue);  // must not throw
+      validateTearParameter(info.name, info.minValue);
+      validateTearParameter(info.name, info.maxValue);
+    }
+    // The stress cases a later simulation must survive are expressible.
+    for (const auto& [name, value] :
+         std::initializer_list<std::pair<const char*, double>>{
+             {"adhesion", 10000.0}, {"pressure", 0.4}, {"viscosity", 0.0}, {"viscosity", 9.0},
+             {"tension", 0.0}, {"tension", 2.0}, {"kernel", 0.05}, {"kernel", 5.0}}) {
+      validateTearParameter(name, value);
+    }
+  }
+
+  void validateRejectsBadValuesAndNames() {
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, validateTearParameter("adhesion", NAN));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, validateTearParameter("adhesion", INFINITY));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, validateTearParameter("gravity", -INFINITY));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, validateTearParameter("iso", 0.0));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, validateTearParameter("kernel", 0.001));
+    try {
+      validateTearParameter("adhesion", 10001.0);
+      QFAIL("out-of-range adhesion accepted");
+    } catch (const std::invalid_argument& error) {
+      QCOMPARE(std::string(error.what()), std::string("adhesion: 10001 is outside [0, 10000]"));
+    }
+    try {
+      validateTearParameter("Adhesion", 1.0);
+      QFAIL("unknown name accepted");
+    } catch (const std::invalid_argument& error) {
+      QVERIFY(std::string(error.what()).starts_with(
+          "unknown parameter 'Adhesion'; expected one of: pressure, viscosity, tension"));
+    }
+  }
+};
+
+QTEST_GUILESS_MAIN(ProjectDocumentTest)
 #include "ProjectDocumentTest.moc"

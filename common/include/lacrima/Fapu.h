@@ -42,7 +42,8 @@ struct FapuSet {
 };
 
 // Throws std::invalid_argument naming the offending points when an X0 is not positive
-// (wrong orientation, swapped left/right, or points that coincide).
+// (wrong orientation, swapped left/right, or points that coincide). Each eye's height enters
+// IRISD0 and must be positive on its own, so one shut eye cannot hide behind the mean.
 FapuSet computeFapu(const FapuReferencePoints& points);
 
 }  // namespace lacrima

@@ -12,6 +12,7 @@
 //           one-sided at the ends; monotone on every interval, so it never overshoots the
 //           values of the two keys around it.
 // Tear channels (69, 70) are interpolated, then rounded to whole particle counts (>= 0).
+// High-level channels (1, 2) hold each key's code until the next key (codes do not blend).
 #include <lacrima/FapAnimation.h>
 
 #include <string_view>

@@ -1,0 +1,21 @@
+#pragma once
+// File handling shared by lacrima-fap's commands: one place decides whether a path is a
+// project or a .fap file, and every warning reaches stderr in the same form.
+#include <lacrima/FapReader.h>
+#include <lacrima/ProjectDocument.h>
+
+#include <string>
+
+namespace lacrima {
+
+// Projects are recognised by the .json extension; everything else is read as a .fap file.
+bool isProjectPath(const std::string& path);
+
+FapReadResult readFap(const std::string& path);      // warnings printed to stderr
+ProjectDocument loadProject(const std::string& path);
+FapAnimation loadAnimation(const std::string& path);  // a .fap file, or a project baked at its fps
+
+void saveAnimation(const FapAnimation& animation, const std::string& path, bool strict);
+void saveProject(const ProjectDocument& project, const std::string& path);
+
+}  // namespace lacrima

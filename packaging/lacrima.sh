@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# lacrima.sh demo | test | build
+#   Installs the Debian packages that are missing (packaging/debian-packages.txt), builds
+#   Lacrima in ./build (Release), then runs the demo (demo) or every test through CTest (test).
+#   Idempotent; prints only what it does. Run as root on Debian 12, or as a user with sudo.
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=${LACRIMA_BUILD_DIR:-$root/build}
+mode=${1:-}
+case "$mode" in demo|test|build) ;; *) echo "usage: $0 demo|test|build" >&2; exit 2 ;; esac
+
+as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
+
+# Shows a log's tail and stops: used when a quiet step fails.
+fail_with_log() {
+  echo "lacrima: $1 failed; last lines of $2:" >&2
+  tail -n 40 "$2" >&2
+  exit 1
+}
+
+install_missing_packages() {
+  local package command missing=()
+  while read -r package command; do
+    [ -n "$package" ] || continue
+    [ -n "$command" ] && command -v "$command" >/dev/null 2>&1 && continue
+    dpkg-query -W -f='${Status}\n' "$package" 2>/dev/null | grep -q '^install ok installed$' ||
+      missing+=("$package")
+  done < <(sed -e 's/#.*//' "$root/packaging/debian-packages.txt")
+  [ ${#missing[@]} -eq 0 ] && return 0
+  echo "lacrima: installing ${#missing[@]} Debian packages: ${missing[*]}"
+  mkdir -p "$build"
+  local log="$build/apt.log"
+  { as_root apt-get update -q && DEBIAN_FRONTEND=noninteractive as_root apt-get install -y -q \
+      --no-install-recommends "${missing[@]}"; } >"$log" 2>&1 || fail_with_log "apt-get install" "$log"
+}
+
+build_lacrima() {
+  mkdir -p "$build"
+  if [ ! -f "$build/CMakeCache.txt" ]; then
+    cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >"$build/configure.log" 2>&1 ||
+      fail_with_log "configuring (cmake)" "$build/configure.log"
+  fi
+  local start=$SECONDS
+  cmake --build "$build" -j "$(nproc)" >"$build/build.log" 2>&1 || fail_with_log "building" "$build/build.log"
+  if ! grep -q 'no work to do' "$build/build.log"; then
+    echo "lacrima: built in $((SECONDS - start)) s ($build)"
+  fi
+}
+
+run_demo() {
+  local fap="$build/bin/lacrima-fap" out="$build/demo"
+  mkdir -p "$out"
+  "$fap" convert "$root/media/demo/crying.json" -o "$out/crying.fap"
+  "$fap" check "$out/crying.fap"
+  "$fap" interpolate "$out/crying.fap" -o "$out/crying-smooth-60fps.fap" --fps 60 --smooth
+  "$fap" dump "$out/crying.fap" >"$out/crying.csv"
+  echo "lacrima: demo crying animation written to $out (crying.fap, crying-smooth-60fps.fap, crying.csv)"
+}
+
+run_tests() {
+  cd "$build"
+  ctest --output-on-failure -j "$(nproc)" --timeout 900
+}
+
+install_missing_packages
+build_lacrima
+case "$mode" in
+  demo) run_demo ;;
+  test) run_tests ;;
+  build) ;;
+esac
