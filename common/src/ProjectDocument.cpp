@@ -1,5 +1,6 @@
 #include <lacrima/AtomicSave.h>
 #include <lacrima/FapTable.h>
+#include <lacrima/JsonWriter.h>
 #include <lacrima/ProjectDocument.h>
 
 #include <QFile>
@@ -27,128 +28,6 @@ constexpr double kMaxChannelMagnitude = 1e7;  // far beyond any face; catches un
 constexpr qint64 kMaxFileBytes = qint64{64} << 20;
 constexpr double kSameKeyTime = 1e-9;  // as KeyframeSequence: closer keys would merge
 
-// Shortest text that reads back as exactly `value`; plain digits rather than exponents for
-// magnitudes people type (20000000, not 2e+07), exponents only for the extremes.
-std::string formatNumber(double value) {
-  std::array<char, 400> buffer{};
-  char* const first = buffer.data();
-  char* const last = first + buffer.size();
-  const double magnitude = std::abs(value);
-  const bool plain = magnitude == 0.0 || (magnitude >= 1e-5 && magnitude < 1e16);
-  const auto result = plain ? std::to_chars(first, last, value, std::chars_format::fixed)
-                            : std::to_chars(first, last, value);
-  return std::string(first, result.ptr);
-}
-
-// ---------------------------------------------------------------------------------------
-// Writing. QJsonObject sorts its keys alphabetically, so the document is written by hand:
-// fields in the documented order and channel values in channel order, which keeps diffs of
-// two saves small and readable. Numbers use the shortest text that reads back exactly.
-
-class JsonWriter {
-public:
-  void beginObject() { open('{'); }
-  void endObject() { close('}'); }
-  void beginArray() { open('['); }
-  void endArray() { close(']'); }
-
-  void key(std::string_view name) {
-    separate();
-    appendString(name);
-    text_ += ": ";
-    afterKey_ = true;
-  }
-  void string(std::string_view value) {
-    separate();
-    appendString(value);
-  }
-  void number(double value) {
-    separate();
-    appendNumber(value);
-  }
-  void boolean(bool value) {
-    separate();
-    text_ += value ? "true" : "false";
-  }
-  void null() {
-    separate();
-    text_ += "null";
-  }
-  // A short array of numbers on one line, e.g. a position.
-  void numberRow(std::span<const double> values) {
-    separate();
-    text_ += '[';
-    for (std::size_t i = 0; i < values.size(); ++i) {
-      if (i > 0) text_ += ", ";
-      appendNumber(values[i]);
-    }
-    text_ += ']';
-  }
-
-  std::string finish() && { return std::move(text_) + '\n'; }
-
-private:
-  // Puts the comma and line break before a value, unless it follows its key.
-  void separate() {
-    if (afterKey_) {
-      afterKey_ = false;
-      return;
-    }
-    if (emptyStack_.empty()) return;
-    if (!emptyStack_.back()) text_ += ',';
-    emptyStack_.back() = false;
-    newline();
-  }
-  void open(char bracket) {
-    separate();
-    text_ += bracket;
-    emptyStack_.push_back(true);
-  }
-  void close(char bracket) {
-    const bool empty = emptyStack_.back();
-    emptyStack_.pop_back();
-    if (!empty) newline();
-    text_ += bracket;
-  }
-  void newline() {
-    text_ += '\n';
-    text_.append(2 * emptyStack_.size(), ' ');
-  }
-  void appendNumber(double value) {
-    // JSON has no NaN or infinity; null makes the reader name the field instead of guessing.
-    text_ += std::isfinite(value) ? formatNumber(value) : "null";
-  }
-  void appendString(std::string_view value) {
-    // Round-trip through QString so invalid UTF-8 becomes U+FFFD instead of a broken file.
-    const QByteArray utf8 = QString::fromUtf8(value.data(), static_cast<qsizetype>(value.size()))
-                                .toUtf8();
-    text_ += '"';
-    for (const char c : utf8) appendEscaped(c);
-    text_ += '"';
-  }
-  void appendEscaped(char c) {
-    switch (c) {
-      case '"': text_ += "\\\""; return;
-      case '\\': text_ += "\\\\"; return;
-      case '\n': text_ += "\\n"; return;
-      case '\r': text_ += "\\r"; return;
-      case '\t': text_ += "\\t"; return;
-      default: break;
-    }
-    if (static_cast<unsigned char>(c) < 0x20) {
-      constexpr char kHex[] = "0123456789abcdef";
-      text_ += "\\u00";
-      text_ += kHex[(c >> 4) & 0xf];
-      text_ += kHex[c & 0xf];
-      return;
-    }
-    text_ += c;
-  }
-
-  std::string text_;
-  std::vector<bool> emptyStack_;  // per open container: nothing written in it yet
-  bool afterKey_ = false;
-};
 
 // The double to write for a float value: the shortest decimal that reads back as the float
 // ("0.1", not "0.10000000149011612"), provided text -> double -> float returns exactly the
@@ -249,7 +128,7 @@ std::string describe(const QJsonValue& value) {
   switch (value.type()) {
     case QJsonValue::Null: return "null";
     case QJsonValue::Bool: return value.toBool() ? "true" : "false";
-    case QJsonValue::Double: return formatNumber(value.toDouble());
+    case QJsonValue::Double: return formatJsonNumber(value.toDouble());
     case QJsonValue::String: return "the string \"" + value.toString().toStdString() + "\"";
     case QJsonValue::Array:
       return "an array of " + std::to_string(value.toArray().size()) + " values";
@@ -340,7 +219,7 @@ private:
       fail("version", "expected a whole number >= 1, got " + describe(version));
     }
     if (number > ProjectDocument::kSchemaVersion) {
-      fail("version", "written by a newer Lacrima (schema " + formatNumber(number) +
+      fail("version", "written by a newer Lacrima (schema " + formatJsonNumber(number) +
                           "); this build reads up to " +
                           std::to_string(ProjectDocument::kSchemaVersion));
     }
@@ -387,7 +266,7 @@ private:
   double fps(const QJsonValue& value) const {
     const double fps = value.isDouble() ? value.toDouble() : std::nan("");
     if (!(fps > 0.0 && fps <= kMaxFps)) {
-      fail("fps", "expected a number in (0, " + formatNumber(kMaxFps) + "], got " +
+      fail("fps", "expected a number in (0, " + formatJsonNumber(kMaxFps) + "], got " +
                       describe(value));
     }
     return fps;
@@ -418,7 +297,7 @@ private:
     if (!object.contains("time")) fail(child(path, "time"), "missing");
     key.time = finiteNumber(object["time"], child(path, "time"));
     if (key.time < 0.0) {
-      fail(child(path, "time"), "expected a time >= 0 s, got " + formatNumber(key.time));
+      fail(child(path, "time"), "expected a time >= 0 s, got " + formatJsonNumber(key.time));
     }
     key.interpolation = object.contains("interpolation")
                             ? interpolation(object["interpolation"], child(path, "interpolation"))
@@ -459,7 +338,7 @@ private:
       if (keys[second].time - keys[first].time < kSameKeyTime &&
           keys[first].time - keys[second].time < kSameKeyTime) {
         fail(element("keys", static_cast<qsizetype>(second)) + ".time",
-             formatNumber(keys[second].time) + " repeats the time of " +
+             formatJsonNumber(keys[second].time) + " repeats the time of " +
                  element("keys", static_cast<qsizetype>(first)));
       }
     }

@@ -3,8 +3,6 @@
 // process's peak resident memory, so each benchmark can put cost beside what it measures.
 #include <chrono>
 #include <functional>
-#include <string>
-#include <vector>
 
 namespace lacrima::bench {
 
@@ -22,21 +20,5 @@ Timing timeRuns(int runs, const std::function<void()>& body);
 long long residentBytes();
 long long peakResidentBytes();
 bool resetPeakMemory();
-
-// Tiny JSON object builder: enough for flat and nested figures, keys kept in insertion order.
-class JsonObject {
-public:
-  JsonObject& add(const std::string& key, double value);
-  JsonObject& add(const std::string& key, long long value);
-  JsonObject& add(const std::string& key, int value) { return add(key, static_cast<long long>(value)); }
-  JsonObject& add(const std::string& key, bool value);
-  JsonObject& add(const std::string& key, const std::string& value);
-  JsonObject& add(const std::string& key, const char* value) { return add(key, std::string(value)); }
-  JsonObject& add(const std::string& key, const JsonObject& value);
-  std::string toString() const;
-
-private:
-  std::vector<std::pair<std::string, std::string>> fields_;  // key, encoded value
-};
 
 }  // namespace lacrima::bench

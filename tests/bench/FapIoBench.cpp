@@ -2,6 +2,8 @@
 // targets beside the figures (< 50 ms to write, < 50 ms to read, read peak < 3x the file).
 #include "BenchSupport.h"
 
+#include <lacrima/JsonWriter.h>
+
 #include <lacrima/FapReader.h>
 #include <lacrima/FapWriter.h>
 
@@ -126,13 +128,15 @@ long long fileSize(const std::string& path) {
 
 const char* mark(bool pass) { return pass ? "PASS" : "MISS"; }
 
-JsonObject timingJson(const Timing& t, double targetMs) {
-  return JsonObject()
-      .add("median", t.medianMs)
-      .add("min", t.minMs)
-      .add("max", t.maxMs)
-      .add("target_below", targetMs)
-      .add("pass", t.medianMs < targetMs);
+void writeTiming(JsonWriter& json, std::string_view name, const Timing& t, double targetMs) {
+  json.key(name);
+  json.beginObject();
+  json.field("median", t.medianMs);
+  json.field("min", t.minMs);
+  json.field("max", t.maxMs);
+  json.field("target_below", targetMs);
+  json.field("pass", t.medianMs < targetMs);
+  json.endObject();
 }
 
 }  // namespace
@@ -179,22 +183,24 @@ int runFapIo(int argc, char** argv) {
     const bool peakPass = peakRatio < kPeakTargetRatio;
 
     if (options.json) {
-      JsonObject json;
-      json.add("benchmark", "fapio")
-          .add("frames", options.frames)
-          .add("channels", kChannelCount)
-          .add("fps", kFps)
-          .add("runs", options.runs)
-          .add("file_bytes", bytes)
-          .add("write_ms", timingJson(write, kWriteTargetMs))
-          .add("read_ms", timingJson(read, kReadTargetMs))
-          .add("read_peak_bytes", peakBytes)
-          .add("read_peak_ratio", peakRatio)
-          .add("read_peak_target_below", kPeakTargetRatio)
-          .add("read_peak_pass", peakPass)
-          .add("peak_reset_supported", peakReset)
-          .add("pass", writePass && readPass && peakPass);
-      std::printf("%s\n", json.toString().c_str());
+      JsonWriter json(JsonWriter::Layout::Compact);
+      json.beginObject();
+      json.field("benchmark", "fapio");
+      json.field("frames", options.frames);
+      json.field("channels", kChannelCount);
+      json.field("fps", kFps);
+      json.field("runs", options.runs);
+      json.field("file_bytes", bytes);
+      writeTiming(json, "write_ms", write, kWriteTargetMs);
+      writeTiming(json, "read_ms", read, kReadTargetMs);
+      json.field("read_peak_bytes", peakBytes);
+      json.field("read_peak_ratio", peakRatio);
+      json.field("read_peak_target_below", kPeakTargetRatio);
+      json.field("read_peak_pass", peakPass);
+      json.field("peak_reset_supported", peakReset);
+      json.field("pass", writePass && readPass && peakPass);
+      json.endObject();
+      std::fputs(std::move(json).finish().c_str(), stdout);
       return 0;
     }
 
