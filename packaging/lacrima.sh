@@ -64,6 +64,7 @@ run_tests() {
 }
 
 install_missing_packages
+bash "$root/packaging/fetch-default-head.sh"
 build_lacrima
 case "$mode" in
   demo) run_demo ;;

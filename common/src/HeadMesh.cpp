@@ -33,6 +33,12 @@ std::vector<int> weldCoincidentVertices(const Eigen::Matrix3Xf& positions) {
   std::map<std::tuple<float, float, float>, int> first;
   std::vector<int> weld(static_cast<size_t>(positions.cols()));
   for (Eigen::Index v = 0; v < positions.cols(); ++v) {
+    // NaN compares false both ways and would break the map's ordering: such a vertex is its
+    // own root and welds with nothing.
+    if (!positions.col(v).allFinite()) {
+      weld[static_cast<size_t>(v)] = static_cast<int>(v);
+      continue;
+    }
     const auto key = std::make_tuple(positions(0, v), positions(1, v), positions(2, v));
     weld[static_cast<size_t>(v)] = first.try_emplace(key, static_cast<int>(v)).first->second;
   }

@@ -6,6 +6,9 @@
 
 namespace lacrima::bench {
 int runFapIo(int argc, char** argv);
+int runTears(int argc, char** argv);
+int runGeodesics(int argc, char** argv);
+int runPoses(int argc, char** argv);
 }
 
 namespace {
@@ -19,6 +22,11 @@ struct Subcommand {
 const Subcommand kSubcommands[] = {
     {"fapio", "read and write a 10-minute, 70-channel FAP animation (13,200 frames at 22 fps)",
      lacrima::bench::runFapIo},
+    {"tears", "tear simulation (SPH + skin collision) on a generated cheek sheet", lacrima::bench::runTears},
+    {"geodesics", "geodesic distance: accuracy against time (sphere, plane), ms per feature point",
+     lacrima::bench::runGeodesics},
+    {"poses", "bake every FAP pose and blend them all per frame on ~4.5k and ~26.7k-vertex heads",
+     lacrima::bench::runPoses},
 };
 
 void printUsage(FILE* out) {

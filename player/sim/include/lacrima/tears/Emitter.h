@@ -1,0 +1,46 @@
+#pragma once
+// Tear emission driven by the absolute particle counts of FAP 69 / 70 (thesis 5.2).
+// A higher count spawns particles at the eye's source; a lower count removes that eye's oldest
+// particles first (tears drying up, not the newest drop vanishing).
+//
+// New particles are placed on a cubic lattice at the rest spacing, nearest lattice points first,
+// in the half-space in front of the skin at the source, skipping points already occupied: a
+// burst of thousands starts as a block of fluid at rest density instead of thousands of
+// coincident points (which would store enormous pressure energy). A tiny jitter derived from the
+// particle id (never from time or a global random generator) breaks the lattice's symmetry
+// identically on every run.
+#include <lacrima/tears/ParticleSet.h>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace lacrima::tears {
+
+// Where an eye's particles appear this frame.
+struct EmissionSite {
+  Eigen::Vector3d base;      // the first particle's position
+  Eigen::Vector3d normal;    // skin normal at the source (unit), or zero when no skin is near
+};
+
+class Emitter {
+public:
+  Emitter(double spacing, double mass) : spacing_(spacing), mass_(mass) {}
+
+  // Removes the `count` oldest particles of `eye` (smallest ids). Returns how many were removed.
+  int removeOldest(ParticleSet& particles, Eye eye, int count) const;
+  // Appends `count` particles for `eye` at `site`.
+  void spawn(ParticleSet& particles, Eye eye, int count, const EmissionSite& site);
+
+  std::uint64_t nextId() const { return nextId_; }
+
+private:
+  const std::vector<Eigen::Vector3d>& latticeWithin(double radius);
+
+  double spacing_, mass_;
+  std::uint64_t nextId_ = 1;
+  std::vector<Eigen::Vector3d> lattice_;  // offsets in units of spacing, nearest first
+  double latticeRadius_ = 0;
+};
+
+}  // namespace lacrima::tears

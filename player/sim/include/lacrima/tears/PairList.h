@@ -1,0 +1,59 @@
+#pragma once
+// Half neighbour lists for the solver: every pair once (i < j), forces applied to both ends.
+//
+// VerletPairs holds the candidate pairs closer than R = h + skin when it was built, and stays
+// usable while no particle has moved more than skin / 2 since: for any pair now closer than h,
+//   |x_i0 - x_j0| <= |x_i - x_j| + |x_i - x_i0| + |x_j - x_j0| < h + skin / 2 + skin / 2 = R,
+// so it was listed (Verlet 1967). Each sub-step filters the candidates to the pairs within h
+// (ActivePairs, with their distance), so every pass sees exactly the pairs a fresh search would.
+//
+// Built from a CellIndex over particles already in cell order (sorted position == particle
+// index): the candidates of particle s are s+1 .. the end of its own z-row, plus the four
+// "forward" rows (dx, dy) = (0, 1), (1, -1), (1, 0), (1, 1); their mirror images are the other
+// particle's forward rows, so each pair is met exactly once.
+#include <lacrima/tears/CellIndex.h>
+#include <lacrima/tears/NeighbourSearch.h>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace lacrima::tears {
+
+class VerletPairs {
+public:
+  // `index` was built over these positions, which are in its sorted order.
+  void build(const CellIndex& index, double h, double skin);
+  // From full lists (any structure): pairs i < j, no skin (valid for the current positions only).
+  void fromFull(const NeighbourList& full, std::span<const Eigen::Vector3d> positions);
+
+  // Whether every particle is still within skin / 2 of where it was at the build.
+  bool stillValid(std::span<const Eigen::Vector3d> positions) const;
+  void invalidate() { valid_ = false; }
+  bool valid() const { return valid_; }
+
+  int particleCount() const { return static_cast<int>(start_.empty() ? 0 : start_.size() - 1); }
+  std::size_t pairCount() const { return partner_.size(); }
+  std::uint32_t begin(int i) const { return start_[static_cast<std::size_t>(i)]; }
+  std::uint32_t end(int i) const { return start_[static_cast<std::size_t>(i) + 1]; }
+  const std::uint32_t* partners() const { return partner_.data(); }
+
+private:
+  std::vector<std::uint32_t> start_;    // size n + 1
+  std::vector<std::uint32_t> partner_;  // j > i
+  std::vector<Eigen::Vector3d> anchor_; // positions at the build
+  double skin_ = 0;
+  bool valid_ = false;
+};
+
+// The pairs within h this sub-step, i < j, with their distance r = |x_i - x_j|.
+struct ActivePairs {
+  std::vector<std::uint32_t> start;  // size n + 1
+  std::vector<std::uint32_t> partner;
+  std::vector<double> distance;
+
+  int particleCount() const { return static_cast<int>(start.empty() ? 0 : start.size() - 1); }
+  std::size_t pairCount() const { return partner.size(); }
+};
+
+}  // namespace lacrima::tears

@@ -1,0 +1,69 @@
+#pragma once
+// External forces and the skin contact response (thesis ch. 4.2, Eq. 4.9, made stable).
+//
+// Gravity acts on every particle. A particle touching the skin (tracked on triangle t with unit
+// outward normal n) also gets the adhesion force f = -alpha n_s / rho of the thesis, written
+// as an acceleration relative to a fresh particle at rest density:
+//   a_adh = -A (rho0 / rho_i) (m0 / m_i) n,     A = adhesion in head units / s^2,
+// so thin (low-density) and trail-depleted (light) particles cling harder, as in 2009.
+//
+// The contact is a velocity constraint, not a penalty spring: after the velocity update the
+// normal component may not exceed the gap closing speed, v.n >= -gap / dt, so a particle never
+// ends a step inside its triangle and adhesion of any strength injects no energy (it only
+// presses the particle against the skin). This is why adhesion needs no time-step limit: the
+// derivation for an explicit spring-like treatment would give dt < sqrt(band / A), 0.6 ms at
+// adhesion 1000; the constraint removes it.
+//
+// Friction is viscous drag on the tangential velocity, proportional to the normal load per
+// unit mass (adhesion plus the pressing part of gravity and fluid forces), integrated
+// implicitly so it can stop a particle but never reverse it, for any friction and dt:
+//   v_t <- v_t / (1 + dt mu N / m)   with mu = friction / (0.3 m/s).
+#include <lacrima/tears/ParticleSet.h>
+
+#include <span>
+
+namespace lacrima::tears {
+
+// Read-only view of the skin's current geometry.
+struct SkinView {
+  const Eigen::Matrix3Xd* vertices = nullptr;
+  std::span<const Eigen::Vector3i> triangles;
+  std::span<const Eigen::Vector3d> normals;  // unit, outward; zero for degenerate triangles
+};
+
+class SkinContactForces {
+public:
+  SkinContactForces(double adhesion, double friction, double restDensity, double referenceMass,
+                    double particleRadius)
+      : adhesion_(adhesion), friction_(friction), rho0_(restDensity), m0_(referenceMass), radius_(particleRadius) {}
+
+  // Adhesion acceleration magnitude for particle i (0 when not touching).
+  double adhesionOf(const ParticleSet& particles, int i) const;
+
+  // v += dt (a + g) for every particle (a: the fluid forces of this sub-step).
+  void applyExternal(ParticleSet& particles, const Eigen::Vector3d& gravity, double dt) const;
+
+  // For particles touching the skin: adhesion (it needs the contact normal), then the normal
+  // velocity constraint, then friction.
+  void constrain(ParticleSet& particles, const SkinView& skin, const Eigen::Vector3d& gravity, double dt) const;
+
+private:
+  double adhesion_, friction_, rho0_, m0_, radius_;
+};
+
+// Drops lose water to the trail they leave (thesis 4.3.2): a particle's mass decays with the
+// distance it slid over the skin, m = m0 max(floor, exp(-s / length)); the floor keeps every
+// particle's mass (and so density and every force that divides by it) positive.
+class TrailMassLoss {
+public:
+  TrailMassLoss(double referenceMass, double decayLength, double floorFraction)
+      : m0_(referenceMass), length_(decayLength), floor_(floorFraction) {}
+  // Updates masses; returns the volume (mass / rho0) left in the trail per eye this call.
+  void apply(ParticleSet& particles, double restDensity, double lostVolume[2]) const;
+  double floorMass() const { return m0_ * floor_; }
+
+private:
+  double m0_, length_, floor_;
+};
+
+}  // namespace lacrima::tears

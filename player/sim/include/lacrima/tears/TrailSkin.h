@@ -1,0 +1,51 @@
+#pragma once
+// Points stored on the skin so they follow it: a triangle, barycentric weights and a height
+// along the triangle's normal,
+//   x = w0 v0 + w1 v1 + w2 v2 + height n,   n = (v1 - v0) x (v2 - v0) / |...|,
+// re-evaluated from the current vertex positions every frame (the trail rides on the face as it
+// deforms). Closest-point queries walk the skin from seed triangles (those the drop's particles
+// touch) to vertex-sharing neighbours while the distance falls, so a query costs a few dozen
+// triangles however large the head is.
+#include <Eigen/Core>
+
+#include <span>
+#include <vector>
+
+namespace lacrima::tears {
+
+struct SkinAnchor {
+  int triangle = -1;
+  Eigen::Vector3d barycentric{1, 0, 0};
+  double height = 0;
+};
+
+class TrailSkin {
+public:
+  // Triangles by head vertex index, counter-clockwise outside (the simulation's skin order, so
+  // a particle's contact triangle is an index into them).
+  explicit TrailSkin(std::vector<Eigen::Vector3i> triangles);
+
+  // The head positions of this frame; must stay alive while the skin is queried.
+  void bind(const Eigen::Matrix3Xf& positions) { positions_ = &positions; }
+  void unbind() { positions_ = nullptr; }
+  bool bound() const { return positions_ != nullptr; }
+  int triangleCount() const { return static_cast<int>(triangles_.size()); }
+  // The largest vertex index the triangles use (positions must have more columns).
+  int maxVertex() const { return maxVertex_; }
+
+  Eigen::Vector3d vertex(int v) const { return positions_->col(v).cast<double>(); }
+  // Unit outward normal, or zero for a degenerate triangle.
+  Eigen::Vector3d normal(int triangle) const;
+  Eigen::Vector3d point(const SkinAnchor& anchor) const;
+
+  // The closest skin point to x found from the seeds (height 0); triangle -1 if no seed is valid.
+  SkinAnchor closest(const Eigen::Vector3d& x, std::span<const int> seeds) const;
+
+private:
+  std::vector<Eigen::Vector3i> triangles_;
+  std::vector<int> vertexStart_, vertexTriangles_;  // CSR: triangles around each vertex
+  int maxVertex_ = -1;
+  const Eigen::Matrix3Xf* positions_ = nullptr;
+};
+
+}  // namespace lacrima::tears

@@ -1,0 +1,87 @@
+#include <lacrima/tears/ParticleSet.h>
+
+#include <cassert>
+
+namespace lacrima::tears {
+namespace {
+
+template <typename T>
+void compactVector(std::vector<T>& v, std::span<const std::uint8_t> keep) {
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (keep[i]) {
+      if (out != i) v[out] = std::move(v[i]);
+      ++out;
+    }
+  }
+  v.resize(out);
+}
+
+// v[s] = old v[order[s]]. The gathered copy is swapped in, so `scratch` keeps the old buffer
+// for the next attribute of the same type: reordering allocates nothing once sizes settle.
+template <typename T>
+void gather(std::vector<T>& v, std::span<const int> order, std::vector<T>& scratch) {
+  scratch.resize(v.size());
+  for (std::size_t s = 0; s < v.size(); ++s) scratch[s] = v[static_cast<std::size_t>(order[s])];
+  v.swap(scratch);
+}
+
+}  // namespace
+
+void ParticleSet::permute(std::span<const int> order) {
+  assert(order.size() == position.size());
+  gather(position, order, scratch_.vectors);
+  gather(velocity, order, scratch_.vectors);
+  gather(acceleration, order, scratch_.vectors);
+  gather(mass, order, scratch_.scalars);
+  gather(density, order, scratch_.scalars);
+  gather(pressure, order, scratch_.scalars);
+  gather(viscosityRate, order, scratch_.scalars);
+  gather(id, order, scratch_.ids);
+  gather(age, order, scratch_.scalars);
+  gather(travelled, order, scratch_.scalars);
+  gather(eye, order, scratch_.eyes);
+  gather(contact, order, scratch_.contacts);
+  gather(clearance, order, scratch_.scalars);
+}
+
+int ParticleSet::add(const Eigen::Vector3d& x, double m, std::uint64_t newId, Eye e) {
+  position.push_back(x);
+  velocity.emplace_back(Eigen::Vector3d::Zero());
+  acceleration.emplace_back(Eigen::Vector3d::Zero());
+  mass.push_back(m);
+  density.push_back(0.0);
+  pressure.push_back(0.0);
+  viscosityRate.push_back(0.0);
+  id.push_back(newId);
+  age.push_back(0.0);
+  travelled.push_back(0.0);
+  eye.push_back(e);
+  contact.emplace_back();
+  clearance.push_back(0.0);  // unknown: the first collision pass queries the skin
+  return size() - 1;
+}
+
+void ParticleSet::compact(std::span<const std::uint8_t> keep) {
+  assert(keep.size() == position.size());
+  compactVector(position, keep);
+  compactVector(velocity, keep);
+  compactVector(acceleration, keep);
+  compactVector(mass, keep);
+  compactVector(density, keep);
+  compactVector(pressure, keep);
+  compactVector(viscosityRate, keep);
+  compactVector(id, keep);
+  compactVector(age, keep);
+  compactVector(travelled, keep);
+  compactVector(eye, keep);
+  compactVector(contact, keep);
+  compactVector(clearance, keep);
+}
+
+void ParticleSet::clear() {
+  std::vector<std::uint8_t> none(position.size(), 0);
+  compact(none);
+}
+
+}  // namespace lacrima::tears

@@ -1,0 +1,61 @@
+#include <lacrima/tears/SkinContact.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lacrima::tears {
+
+double SkinContactForces::adhesionOf(const ParticleSet& p, int i) const {
+  const auto s = static_cast<std::size_t>(i);
+  if (p.contact[s].triangle < 0 || adhesion_ <= 0) return 0.0;
+  // A lone particle has a fraction of the rest density; capping the ratio at 10 keeps the
+  // factor finite for any isolated particle without changing the thesis's trend.
+  const double densityRatio = std::min(10.0, rho0_ / std::max(p.density[s], 1e-12 * rho0_));
+  return adhesion_ * densityRatio * (m0_ / p.mass[s]);
+}
+
+void SkinContactForces::applyExternal(ParticleSet& p, const Eigen::Vector3d& g, double dt) const {
+  for (int i = 0; i < p.size(); ++i) {
+    const auto s = static_cast<std::size_t>(i);
+    p.velocity[s] += dt * (p.acceleration[s] + g);
+  }
+}
+
+void SkinContactForces::constrain(ParticleSet& p, const SkinView& skin, const Eigen::Vector3d& g, double dt) const {
+  if (dt <= 0) return;
+  for (int i = 0; i < p.size(); ++i) {
+    const auto s = static_cast<std::size_t>(i);
+    const int t = p.contact[s].triangle;
+    if (t < 0) continue;
+    const Eigen::Vector3d n = skin.normals[static_cast<std::size_t>(t)];
+    if (n.squaredNorm() == 0) continue;  // degenerate triangle: the collider drops the contact
+    const double adhesion = adhesionOf(p, i);
+    Eigen::Vector3d v = p.velocity[s] - dt * adhesion * n;
+    // Gap between the particle's surface and the triangle's plane.
+    const Eigen::Vector3d a0 = skin.vertices->col(skin.triangles[static_cast<std::size_t>(t)][0]);
+    const double gap = std::max(0.0, (p.position[s] - a0).dot(n) - radius_);
+    const double vn = v.dot(n);
+    const double minimum = -gap / dt;
+    if (vn < minimum) v += (minimum - vn) * n;
+    // Normal load per unit mass: adhesion plus whatever of gravity and the fluid forces pushes
+    // the particle into the skin.
+    const double load = adhesion + std::max(0.0, -(p.acceleration[s] + g).dot(n));
+    const double vnAfter = v.dot(n);
+    const Eigen::Vector3d tangential = v - vnAfter * n;
+    v = vnAfter * n + tangential / (1.0 + dt * friction_ * load);
+    p.velocity[s] = v;
+  }
+}
+
+void TrailMassLoss::apply(ParticleSet& p, double rho0, double lostVolume[2]) const {
+  for (int i = 0; i < p.size(); ++i) {
+    const auto s = static_cast<std::size_t>(i);
+    const double target = m0_ * std::max(floor_, std::exp(-p.travelled[s] / length_));
+    if (target < p.mass[s]) {
+      lostVolume[static_cast<int>(p.eye[s])] += (p.mass[s] - target) / rho0;
+      p.mass[s] = target;
+    }
+  }
+}
+
+}  // namespace lacrima::tears

@@ -1,0 +1,244 @@
+#include <lacrima/tears/TearSimulation.h>
+#include <lacrima/tears/TrailBuilder.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace lacrima::tears {
+namespace {
+using Clock = std::chrono::steady_clock;
+constexpr std::size_t kMaxSeeds = 32;  // contact triangles of a drop used to start skin walks
+}  // namespace
+
+TrailBuilder::TrailBuilder(std::vector<Eigen::Vector3i> skinTriangles, const TrailSettings& settings)
+    : skin_(std::move(skinTriangles)), settings_(settings) {
+  if (!(settings_.drySeconds > 0) || !(settings_.minimumStepKernels > 0) || settings_.maxSections < 2 ||
+      !(settings_.middleHeightFraction >= 0))
+    throw std::invalid_argument("trail settings: dry time and step must be positive, at least two sections");
+}
+
+const TrailMesh& TrailBuilder::update(const TearSimulation& simulation, const Eigen::Matrix3Xf& headPositions, double dt) {
+  const ParticleSet& particles = simulation.particles();
+  // The simulation builds its grid on first use: only ask for it when there is something in it.
+  const UniformGrid& grid = particles.empty() ? emptyGrid_ : simulation.grid();
+  return update(particles, grid, simulation.kernelRadius(), simulation.particleRadius(), headPositions, dt);
+}
+
+const TrailMesh& TrailBuilder::update(const ParticleSet& particles, const UniformGrid& grid, double h,
+                                      double particleRadius, const Eigen::Matrix3Xf& headPositions, double dt) {
+  if (particles.empty() && sections_.empty() && tracks_.empty()) {  // nothing wet: no work
+    milliseconds_ = 0;
+    return mesh_;
+  }
+  const auto start = Clock::now();
+  if (headPositions.cols() <= skin_.maxVertex()) throw std::invalid_argument("trails: fewer head positions than the skin uses");
+  if (!(h > 0) || !std::isfinite(h)) throw std::invalid_argument("trails: kernel radius must be positive");
+  if (!(dt >= 0) || !std::isfinite(dt)) dt = 0;  // a bad frame time neither dries nor un-dries
+  skin_.bind(headPositions);
+  for (TrailSection& s : sections_) s.age += dt;
+  if (particles.empty()) {
+    tracks_.clear();
+    owner_.clear();
+  } else {
+    advance(particles, grid, h, particleRadius);
+  }
+  dryAndCap();
+  rebuildMesh();
+  skin_.unbind();  // the positions belong to the caller
+  milliseconds_ = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  return mesh_;
+}
+
+// Matches this update's drops to last update's tracks by particle id and continues them.
+void TrailBuilder::advance(const ParticleSet& particles, const UniformGrid& grid, double h, double particleRadius) {
+  finder_.find(particles, grid);
+  nextTracks_.clear();
+  nextOwner_.clear();
+  predecessorUse_.assign(tracks_.size(), 0);
+  predecessor_.clear();
+  sources_.clear();
+  for (const FoundDrop& drop : finder_.drops()) {
+    votes_.clear();  // (track, particles) — a drop rarely has more than two predecessors
+    for (int i : finder_.particlesOf(drop)) {
+      const std::uint64_t id = particles.id[static_cast<std::size_t>(i)];
+      const auto it = std::lower_bound(owner_.begin(), owner_.end(), std::pair<std::uint64_t, int>{id, -1});
+      if (it == owner_.end() || it->first != id) continue;
+      auto vote = std::find_if(votes_.begin(), votes_.end(), [&](const auto& v) { return v.first == it->second; });
+      if (vote == votes_.end())
+        votes_.emplace_back(it->second, 1);
+      else
+        ++vote->second;
+    }
+    int predecessor = -1, best = 0;
+    for (const auto& [track, count] : votes_)
+      if (count > best || (count == best && track < predecessor)) {
+        predecessor = track;
+        best = count;
+      }
+    predecessor_.push_back(predecessor);
+    sources_.push_back(static_cast<int>(votes_.size()));
+    if (predecessor >= 0) ++predecessorUse_[static_cast<std::size_t>(predecessor)];
+  }
+  heirsSeen_.assign(tracks_.size(), 0);
+  for (std::size_t d = 0; d < finder_.drops().size(); ++d) {
+    const FoundDrop& drop = finder_.drops()[d];
+    const int predecessor = predecessor_[d];
+    Track track;
+    bool reshaped = false;
+    if (predecessor >= 0) {
+      const auto p = static_cast<std::size_t>(predecessor);
+      track = tracks_[p];
+      if (heirsSeen_[p]++ > 0) ++branches_;  // every heir after the first is a branch
+      reshaped = predecessorUse_[p] > 1 || sources_[d] > 1;  // split, or merged
+    }
+    continueTrack(track, particles, drop, h, particleRadius, reshaped);
+    const int index = static_cast<int>(nextTracks_.size());
+    nextTracks_.push_back(track);
+    for (int i : finder_.particlesOf(drop)) nextOwner_.emplace_back(particles.id[static_cast<std::size_t>(i)], index);
+  }
+  std::sort(nextOwner_.begin(), nextOwner_.end());
+  tracks_.swap(nextTracks_);
+  owner_.swap(nextOwner_);
+}
+
+void TrailBuilder::continueTrack(Track& track, const ParticleSet& particles, const FoundDrop& drop, double h,
+                                 double particleRadius, bool reshaped) {
+  seeds_.clear();
+  for (int i : finder_.particlesOf(drop)) {
+    const int t = particles.contact[static_cast<std::size_t>(i)].triangle;
+    if (t >= 0 && seeds_.size() < kMaxSeeds && std::find(seeds_.begin(), seeds_.end(), t) == seeds_.end()) seeds_.push_back(t);
+  }
+  if (seeds_.empty()) return;  // in the air: it wets nothing; the track keeps its last section
+  if (track.centre.triangle >= 0) seeds_.push_back(track.centre.triangle);
+  const SkinAnchor centre = skin_.closest(drop.centre, seeds_);
+  if (centre.triangle < 0) return;
+  const Eigen::Vector3d c = skin_.point(centre);
+  const Eigen::Vector3d n = skin_.normal(centre.triangle);
+  if (reshaped) {  // the centre jumped with the split or merge: no motion to read, no section
+    track.centre = centre;
+    return;
+  }
+  if (track.centre.triangle >= 0) {
+    // Both centres on the current skin: a face that moves carries the old centre along.
+    Eigen::Vector3d motion = c - skin_.point(track.centre);
+    motion -= motion.dot(n) * n;
+    if (motion.norm() > 1e-3 * h) track.direction = motion.normalized();
+  }
+  track.centre = centre;
+  Eigen::Vector3d t = track.direction - track.direction.dot(n) * n;  // the skin may have turned
+  if (t.norm() < 1e-6) return;  // no direction yet: left and right are undefined
+  t.normalize();
+  if (track.lastSection >= 0) {
+    SkinAnchor last = sections_[static_cast<std::size_t>(track.lastSection)].point[1];
+    last.height = 0;
+    if ((c - skin_.point(last)).norm() <= settings_.minimumStepKernels * h) return;
+  }
+
+  // Left of the motion seen from outside: a = n x t.
+  const Eigen::Vector3d a = n.cross(t);
+  double left = -std::numeric_limits<double>::infinity(), right = std::numeric_limits<double>::infinity(), top = 0;
+  for (int i : finder_.particlesOf(drop)) {
+    const Eigen::Vector3d d = particles.position[static_cast<std::size_t>(i)] - c;
+    const double across = d.dot(a);
+    left = std::max(left, across);
+    right = std::min(right, across);
+    top = std::max(top, d.dot(n));
+  }
+  seeds_.push_back(centre.triangle);
+  TrailSection section;
+  section.eye = drop.eye;
+  section.point[0] = skin_.closest(c + (left + particleRadius) * a, seeds_);
+  section.point[2] = skin_.closest(c + (right - particleRadius) * a, seeds_);
+  section.point[1] = centre;
+  section.point[1].height = std::min(h, settings_.middleHeightFraction * (top + particleRadius));
+  if (section.point[0].triangle < 0) section.point[0] = centre;
+  if (section.point[2].triangle < 0) section.point[2] = centre;
+  const int index = static_cast<int>(sections_.size());
+  sections_.push_back(section);
+  if (track.lastSection >= 0) segments_.push_back({track.lastSection, index});
+  track.lastSection = index;
+}
+
+// Drops dry segments (the oldest first: segments are appended in time order, so their newer
+// sections' ages fall along the list) and, past the cap, the oldest wet ones; then compacts
+// the sections still referred to.
+void TrailBuilder::dryAndCap() {
+  const double dry = settings_.drySeconds;
+  std::size_t removed = 0;
+  while (removed < segments_.size() && sections_[static_cast<std::size_t>(segments_[removed].to)].age >= dry) ++removed;
+  for (Track& track : tracks_)  // a drop resting longer than the drying time starts afresh
+    if (track.lastSection >= 0 && sections_[static_cast<std::size_t>(track.lastSection)].age >= dry) track.lastSection = -1;
+
+  const auto maxSections = static_cast<std::size_t>(settings_.maxSections);
+  std::size_t live = 0;
+  while (true) {
+    referenced_.assign(sections_.size(), 0);
+    for (std::size_t s = removed; s < segments_.size(); ++s) {
+      referenced_[static_cast<std::size_t>(segments_[s].from)] = 1;
+      referenced_[static_cast<std::size_t>(segments_[s].to)] = 1;
+    }
+    for (const Track& track : tracks_)
+      if (track.lastSection >= 0) referenced_[static_cast<std::size_t>(track.lastSection)] = 1;
+    live = static_cast<std::size_t>(std::count(referenced_.begin(), referenced_.end(), 1));
+    if (live <= maxSections) break;
+    if (removed < segments_.size()) {
+      // Dropping the oldest segment of a chain frees its older section: about one per segment.
+      removed = std::min(segments_.size(), removed + (live - maxSections));
+    } else {
+      for (Track& track : tracks_) track.lastSection = -1;  // more drops than the cap: restart them
+    }
+  }
+  segments_.erase(segments_.begin(), segments_.begin() + static_cast<std::ptrdiff_t>(removed));
+
+  remap_.assign(sections_.size(), -1);
+  std::size_t kept = 0;
+  for (std::size_t s = 0; s < sections_.size(); ++s) {
+    if (!referenced_[s]) continue;
+    remap_[s] = static_cast<int>(kept);
+    sections_[kept++] = sections_[s];
+  }
+  sections_.resize(kept);
+  for (TrailSegment& segment : segments_) {
+    segment.from = remap_[static_cast<std::size_t>(segment.from)];
+    segment.to = remap_[static_cast<std::size_t>(segment.to)];
+  }
+  for (Track& track : tracks_)
+    if (track.lastSection >= 0) track.lastSection = remap_[static_cast<std::size_t>(track.lastSection)];
+}
+
+void TrailBuilder::rebuildMesh() {
+  mesh_.position_.clear();
+  mesh_.normal_.clear();
+  mesh_.alpha_.clear();
+  mesh_.triangle_.clear();
+  wetArea_ = {0, 0};
+  for (const TrailSection& section : sections_) {
+    const double alpha = std::clamp(1.0 - section.age / settings_.drySeconds, 0.0, 1.0);
+    for (const SkinAnchor& anchor : section.point) {
+      mesh_.position_.push_back(skin_.point(anchor));
+      mesh_.normal_.push_back(skin_.normal(anchor.triangle));
+      mesh_.alpha_.push_back(alpha);
+    }
+  }
+  for (const TrailSegment& segment : segments_) {
+    const int l0 = 3 * segment.from, m0 = l0 + 1, r0 = l0 + 2;
+    const int l1 = 3 * segment.to, m1 = l1 + 1, r1 = l1 + 2;
+    const Eigen::Vector3i triangles[4] = {{l0, m0, m1}, {l0, m1, l1}, {m0, r0, r1}, {m0, r1, m1}};
+    const auto eye = static_cast<std::size_t>(sections_[static_cast<std::size_t>(segment.to)].eye);
+    for (const Eigen::Vector3i& t : triangles) {
+      mesh_.triangle_.push_back(t);
+      const Eigen::Vector3d& a = mesh_.position_[static_cast<std::size_t>(t[0])];
+      const double area = 0.5 * (mesh_.position_[static_cast<std::size_t>(t[1])] - a)
+                                    .cross(mesh_.position_[static_cast<std::size_t>(t[2])] - a)
+                                    .norm();
+      double alpha = 0;
+      for (int k = 0; k < 3; ++k) alpha += mesh_.alpha_[static_cast<std::size_t>(t[k])] / 3.0;
+      wetArea_[eye] += area * alpha;
+    }
+  }
+}
+
+}  // namespace lacrima::tears

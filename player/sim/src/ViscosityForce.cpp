@@ -1,0 +1,18 @@
+#include <lacrima/tears/FluidForces.h>
+
+#include <cmath>
+
+namespace lacrima::tears {
+
+void ViscosityForce::apply(ParticleSet& p, std::span<const Eigen::Vector3d> weighted, std::span<const double> weightSum,
+                           double dt) const {
+  if (nu_ <= 0 || dt <= 0) return;
+  for (std::size_t i = 0; i < p.velocity.size(); ++i) {
+    const double k = p.viscosityRate[i];
+    if (k <= 0 || weightSum[i] <= 0) continue;
+    const Eigen::Vector3d mean = weighted[i] / weightSum[i];
+    p.velocity[i] += (1.0 - std::exp(-k * dt)) * (mean - p.velocity[i]);
+  }
+}
+
+}  // namespace lacrima::tears

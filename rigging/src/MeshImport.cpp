@@ -1,0 +1,171 @@
+#include <lacrima/rig/MeshImport.h>
+
+#include <lacrima/Diagnostics.h>
+
+#include <assimp/Importer.hpp>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <vector>
+
+namespace lacrima {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+[[noreturn]] void fail(const std::string& path, const std::string& message) {
+  throw FileError(SourceLocation{path}, message);
+}
+
+struct MeshInstance {
+  unsigned mesh = 0;
+  aiMatrix4x4 transform;
+};
+
+// Every (node, mesh) pair of the node graph, depth first, with the node's global transform.
+void collectInstances(const aiNode* node, const aiMatrix4x4& parent,
+                      std::vector<MeshInstance>& out) {
+  const aiMatrix4x4 global = parent * node->mTransformation;
+  for (unsigned i = 0; i < node->mNumMeshes; ++i) out.push_back({node->mMeshes[i], global});
+  for (unsigned i = 0; i < node->mNumChildren; ++i)
+    collectInstances(node->mChildren[i], global, out);
+}
+
+// The texture's absolute path, or "" when it is embedded or missing.
+std::string resolveTexture(const aiScene& scene, const std::string& modelPath,
+                           const aiString& name) {
+  std::string texture = name.C_Str();
+  if (texture.empty() || texture.front() == '*' || scene.GetEmbeddedTexture(name.C_Str()))
+    return {};
+  std::replace(texture.begin(), texture.end(), '\\', '/');  // written on Windows
+  fs::path file(texture);
+  if (file.is_relative()) file = fs::path(modelPath).parent_path() / file;
+  std::error_code error;
+  file = fs::absolute(file, error).lexically_normal();
+  return !error && fs::is_regular_file(file, error) ? file.string() : std::string();
+}
+
+HeadMaterial convertMaterial(const aiScene& scene, const aiMaterial& source,
+                             const std::string& path) {
+  HeadMaterial m;
+  aiString name;
+  if (source.Get(AI_MATKEY_NAME, name) == AI_SUCCESS) m.name = name.C_Str();
+  aiColor3D colour;
+  if (source.Get(AI_MATKEY_COLOR_DIFFUSE, colour) == AI_SUCCESS)
+    m.diffuse.head<3>() << colour.r, colour.g, colour.b;
+  float opacity = 1.0f;
+  if (source.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS)
+    m.diffuse[3] = std::clamp(opacity, 0.0f, 1.0f);
+  if (source.Get(AI_MATKEY_COLOR_SPECULAR, colour) == AI_SUCCESS)
+    m.specular << colour.r, colour.g, colour.b;
+  float shininess = 0.0f;
+  if (source.Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS && shininess > 0.0f)
+    m.shininess = shininess;
+  aiString texture;
+  if (source.GetTextureCount(aiTextureType_DIFFUSE) > 0 &&
+      source.GetTexture(aiTextureType_DIFFUSE, 0, &texture) == AI_SUCCESS)
+    m.diffuseTexture = resolveTexture(scene, path, texture);
+  m.transparent = m.diffuse[3] < 1.0f || source.GetTextureCount(aiTextureType_OPACITY) > 0;
+  return m;
+}
+
+// The material's name unless it is assimp's stand-in for "none", else the mesh's name.
+std::string baseName(const aiMesh& mesh, const HeadMaterial* material) {
+  if (material && !material->name.empty() && material->name != AI_DEFAULT_MATERIAL_NAME)
+    return material->name;
+  if (mesh.mName.length > 0) return mesh.mName.C_Str();
+  return "mesh";
+}
+
+std::string uniqueName(const std::string& base, std::set<std::string>& used) {
+  std::string name = base;
+  for (int n = 2; used.count(name); ++n) name = base + "_" + std::to_string(n);
+  used.insert(name);
+  return name;
+}
+
+}  // namespace
+
+HeadMesh importHeadMesh(const std::string& path) {
+  std::error_code error;
+  if (!fs::exists(path, error)) fail(path, "no such file");
+  if (!fs::is_regular_file(path, error)) fail(path, "not a regular file");
+
+  Assimp::Importer importer;
+  // JoinIdenticalVertices merges the OBJ reader's per-corner copies (same position, uv and
+  // normal), so a vertex index names a point of the head and poses stay small. Its numbering
+  // is first-use order, deterministic for a file (see the header).
+  const aiScene* scene = importer.ReadFile(
+      path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure);
+  if (!scene) fail(path, std::string("assimp cannot read it: ") + importer.GetErrorString());
+  if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode)
+    fail(path, "assimp read an incomplete scene (no mesh data)");
+
+  std::vector<MeshInstance> instances;
+  collectInstances(scene->mRootNode, aiMatrix4x4(), instances);
+
+  HeadMesh head;
+  int vertexTotal = 0;
+  bool anyUvs = false;
+  for (const MeshInstance& instance : instances) {
+    const aiMesh& mesh = *scene->mMeshes[instance.mesh];
+    vertexTotal += static_cast<int>(mesh.mNumVertices);
+    anyUvs = anyUvs || mesh.HasTextureCoords(0);
+  }
+  head.positions.resize(3, vertexTotal);
+  head.uvs = anyUvs ? Eigen::Matrix2Xf::Zero(2, vertexTotal) : Eigen::Matrix2Xf(2, 0);
+
+  std::map<unsigned, int> materialOf;  // assimp material index -> head material index
+  std::set<std::string> names;
+  int next = 0;
+  for (const MeshInstance& instance : instances) {
+    const aiMesh& mesh = *scene->mMeshes[instance.mesh];
+    HeadSubmesh sub;
+    if (mesh.mMaterialIndex < scene->mNumMaterials) {
+      auto [it, added] =
+          materialOf.try_emplace(mesh.mMaterialIndex, static_cast<int>(head.materials.size()));
+      if (added)
+        head.materials.push_back(
+            convertMaterial(*scene, *scene->mMaterials[mesh.mMaterialIndex], path));
+      sub.material = it->second;
+    }
+    sub.name = uniqueName(
+        baseName(mesh,
+                 sub.material >= 0 ? &head.materials[static_cast<size_t>(sub.material)] : nullptr),
+        names);
+    sub.firstVertex = next;
+    sub.vertexCount = static_cast<int>(mesh.mNumVertices);
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+      const aiVector3D p = instance.transform * mesh.mVertices[v];
+      head.positions.col(next + static_cast<int>(v)) << p.x, p.y, p.z;
+      if (mesh.HasTextureCoords(0))
+        head.uvs.col(next + static_cast<int>(v)) << mesh.mTextureCoords[0][v].x,
+            1.0f - mesh.mTextureCoords[0][v].y;
+    }
+    // A mirroring transform turns counter-clockwise triangles clockwise: swap two corners back.
+    const bool mirrored = instance.transform.Determinant() < 0;
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+      const aiFace& face = mesh.mFaces[f];
+      if (face.mNumIndices != 3) continue;  // points and lines have no surface
+      Eigen::Vector3i t(next + static_cast<int>(face.mIndices[0]),
+                        next + static_cast<int>(face.mIndices[1]),
+                        next + static_cast<int>(face.mIndices[2]));
+      if (mirrored) std::swap(t[1], t[2]);
+      sub.triangles.push_back(t);
+    }
+    next += sub.vertexCount;
+    head.submeshes.push_back(std::move(sub));
+  }
+  if (head.triangleCount() == 0)
+    fail(path, "no triangles in it (no meshes, or only points and lines)");
+  head.computeNormals();
+  return head;
+}
+
+}  // namespace lacrima

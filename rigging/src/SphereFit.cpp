@@ -1,0 +1,27 @@
+#include <lacrima/rig/SphereFit.h>
+
+#include <Eigen/QR>
+
+#include <cmath>
+
+namespace lacrima {
+
+std::optional<Sphere> fitSphere(const Eigen::Matrix3Xd& points) {
+  const Eigen::Index n = points.cols();
+  if (n < 4) return std::nullopt;
+  const Eigen::Vector3d mean = points.rowwise().mean();
+  const Eigen::Matrix3Xd q = points.colwise() - mean;
+  // Rows [2x 2y 2z 1] (c', k) = |q|^2, with c' the centre relative to the mean.
+  Eigen::MatrixXd a(n, 4);
+  a.leftCols<3>() = 2.0 * q.transpose();
+  a.col(3).setOnes();
+  const Eigen::VectorXd b = q.colwise().squaredNorm().transpose();
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(a);
+  if (qr.rank() < 4) return std::nullopt;
+  const Eigen::Vector4d x = qr.solve(b);
+  const double r2 = x[3] + x.head<3>().squaredNorm();
+  if (!(r2 > 0.0) || !std::isfinite(r2)) return std::nullopt;
+  return Sphere{mean + x.head<3>(), std::sqrt(r2)};
+}
+
+}  // namespace lacrima

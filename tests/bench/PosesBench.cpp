@@ -1,0 +1,262 @@
+// lacrima-bench poses: bake every FAP pose of a head and blend them all per frame, with the
+// project's targets beside the figures (bake < 1 s on the default head, < 5 s on the 26.7k-vertex
+// ICT head; blend < 0.5 ms per frame on the default head, one core).
+//
+// The heads here are synthetic stand-ins of the real vertex counts (tests/common/SyntheticHead.h)
+// with the rigging library's default influence radii; measureHead() takes any HeadMesh and
+// RigInput, so a loaded head and its geodesic weights plug in unchanged.
+#include "BenchSupport.h"
+
+#include "../common/SyntheticHead.h"
+
+#include <lacrima/JsonWriter.h>
+#include <lacrima/PoseBaking.h>
+#include <lacrima/PoseSet.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lacrima::bench {
+
+namespace {
+
+constexpr double kDefaultBlendTargetMs = 0.5;
+
+struct Options {
+  int frames = 2000;  // timed blends per head
+  int runs = 5;       // timed bakes per head
+  bool json = false;
+};
+
+struct HeadCase {
+  std::string name;
+  double bakeTargetMs;
+  std::optional<double> blendTargetMs;  // the blend target is set for the default head only
+};
+
+struct Figures {
+  int vertices = 0, triangles = 0;
+  int poses = 0;               // non-empty linear poses
+  long long poseEntries = 0;   // sum of pose sizes: the per-frame scatter work
+  double meanPoseSize = 0;
+  Timing bake, blend;
+};
+
+void printHelp(FILE* out) {
+  std::fprintf(out,
+               "usage: lacrima-bench poses [--frames N] [--runs N] [--json]\n\n"
+               "Bakes all FAP poses of synthetic heads with the default head's and the ICT head's\n"
+               "vertex counts, then blends every pose at once per frame.\n\n"
+               "  --frames N   timed blends per head, after one warm-up (default 2000)\n"
+               "  --runs N     timed bakes per head, after one warm-up (default 5)\n"
+               "  --json       print one JSON object instead of the table\n"
+               "  --help       this text\n");
+}
+
+bool parseCount(const char* text, int low, int high, int& out) {
+  char* end = nullptr;
+  const long value = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0' || value < low || value > high) return false;
+  out = static_cast<int>(value);
+  return true;
+}
+
+// 0 = options fine, 1 = --help was printed, 2 = usage error (printed).
+int parseOptions(int argc, char** argv, Options& options) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h") {
+      printHelp(stdout);
+      return 1;
+    }
+    if (arg == "--json") {
+      options.json = true;
+    } else if ((arg == "--frames" || arg == "--runs") && i + 1 < argc) {
+      const bool frames = arg == "--frames";
+      const int high = frames ? 1'000'000 : 1000;
+      if (!parseCount(argv[++i], 1, high, frames ? options.frames : options.runs)) {
+        std::fprintf(stderr, "lacrima-bench poses: %s takes a whole number from 1 to %d, not '%s'\n",
+                     arg.c_str(), high, argv[i]);
+        return 2;
+      }
+    } else {
+      std::fprintf(stderr, "lacrima-bench poses: unknown or incomplete option '%s'\n\n", arg.c_str());
+      printHelp(stderr);
+      return 2;
+    }
+  }
+  return 0;
+}
+
+// Frames that keep every driven channel non-zero (so every pose costs its full price) and
+// change from frame to frame like an animation: a slow sine per channel at half its slider span.
+std::vector<FapValues> animationFrames(const ChannelMask& driven, int count) {
+  std::vector<FapValues> frames(static_cast<size_t>(count), FapValues{});
+  for (int f = 0; f < count; ++f)
+    for (int fap = 3; fap <= kFapCount; ++fap) {
+      if (!driven.test(static_cast<size_t>(channelIndex(fap)))) continue;
+      const FapInfo& info = fapInfo(fap);
+      const double amplitude = 0.25 * (info.sliderMax - info.sliderMin);
+      const double phase = 0.05 * f + 0.7 * fap;
+      // Offset from zero so a sine crossing never makes a channel free.
+      frames[static_cast<size_t>(f)][static_cast<size_t>(channelIndex(fap))] =
+          static_cast<float>(std::round(amplitude * (0.6 + 0.4 * std::sin(phase))));
+    }
+  return frames;
+}
+
+// Bake and blend cost of one head with its rig (rig.mesh is set to `head`).
+Figures measureHead(const HeadMesh& head, RigInput rig, const Options& options) {
+  rig.mesh = &head;
+  Figures figures;
+  figures.vertices = head.vertexCount();
+  figures.triangles = head.triangleCount();
+
+  PoseSet poses;
+  figures.bake = timeRuns(options.runs, [&] { poses = bakePoses(rig); });
+  for (const VertexPose& pose : poses.poses)
+    if (!pose.empty()) {
+      ++figures.poses;
+      figures.poseEntries += static_cast<long long>(pose.vertices.size());
+    }
+  figures.meanPoseSize = figures.poses ? double(figures.poseEntries) / figures.poses : 0.0;
+
+  const PoseBlender blender(head, poses);
+  const std::vector<FapValues> frames = animationFrames(poses.drivenChannels(), 64);
+  Eigen::Matrix3Xf positions, normals;
+  size_t next = 0;
+  figures.blend = timeRuns(options.frames, [&] {
+    blender.blend(frames[next], positions, normals);
+    next = (next + 1) % frames.size();
+  });
+  return figures;
+}
+
+// Heads whose vertex counts match the default MakeHuman head (~4.5k) and ICT-FaceKit (26,719).
+synthetic::HeadSpec defaultSizedSpec() {
+  synthetic::HeadSpec spec;
+  spec.cellsPerUnit = 29;
+  spec.eyeRings = 16;
+  spec.eyeSegments = 24;
+  spec.corneaRings = 4;
+  spec.tongueHalfColumns = 4;
+  spec.tongueRows = 8;
+  return spec;
+}
+
+synthetic::HeadSpec ictSizedSpec() {
+  synthetic::HeadSpec spec;
+  spec.cellsPerUnit = 75;
+  spec.eyeRings = 32;
+  spec.eyeSegments = 48;
+  spec.corneaRings = 8;
+  spec.tongueHalfColumns = 8;
+  spec.tongueRows = 16;
+  return spec;
+}
+
+const char* mark(bool pass) { return pass ? "PASS" : "MISS"; }
+
+void writeTiming(JsonWriter& json, std::string_view name, const Timing& t, std::optional<double> target) {
+  json.key(name);
+  json.beginObject();
+  json.field("median", t.medianMs);
+  json.field("min", t.minMs);
+  json.field("max", t.maxMs);
+  json.field("runs", t.runs);
+  if (target) {
+    json.field("target_below", *target);
+    json.field("pass", t.medianMs < *target);
+  }
+  json.endObject();
+}
+
+struct Measured {
+  HeadCase head;
+  Figures figures;
+};
+
+bool passes(const Measured& m) {
+  return m.figures.bake.medianMs < m.head.bakeTargetMs &&
+         (!m.head.blendTargetMs || m.figures.blend.medianMs < *m.head.blendTargetMs);
+}
+
+void printJson(const std::vector<Measured>& measured) {
+  JsonWriter json(JsonWriter::Layout::Compact);
+  json.beginObject();
+  json.field("benchmark", "poses");
+  json.key("heads");
+  json.beginArray();
+  bool pass = true;
+  for (const Measured& m : measured) {
+    const Figures& f = m.figures;
+    json.beginObject();
+    json.field("head", m.head.name);
+    json.field("vertices", f.vertices);
+    json.field("triangles", f.triangles);
+    json.field("linear_poses", f.poses);
+    json.field("pose_entries", f.poseEntries);
+    json.field("mean_pose_vertices", f.meanPoseSize);
+    writeTiming(json, "bake_ms", f.bake, m.head.bakeTargetMs);
+    writeTiming(json, "blend_ms_per_frame", f.blend, m.head.blendTargetMs);
+    json.endObject();
+    pass = pass && passes(m);
+  }
+  json.endArray();
+  json.field("pass", pass);
+  json.endObject();
+  std::fputs(std::move(json).finish().c_str(), stdout);
+}
+
+void printTable(const std::vector<Measured>& measured) {
+  std::printf("poses: bake all FAP poses, then blend all of them per frame (one core)\n");
+  for (const Measured& m : measured) {
+    const HeadCase& c = m.head;
+    const Figures& f = m.figures;
+    std::printf("  %s: %d vertices, %d triangles, %d linear poses of %.0f vertices on average "
+                "(%lld entries)\n",
+                c.name.c_str(), f.vertices, f.triangles, f.poses, f.meanPoseSize, f.poseEntries);
+    std::printf("    bake   median %9.3f ms  (min %.3f, max %.3f, %d runs)       target < %g ms  %s\n",
+                f.bake.medianMs, f.bake.minMs, f.bake.maxMs, f.bake.runs, c.bakeTargetMs,
+                mark(f.bake.medianMs < c.bakeTargetMs));
+    std::printf("    blend  median %9.4f ms  (min %.4f, max %.4f, %d frames)  ", f.blend.medianMs,
+                f.blend.minMs, f.blend.maxMs, f.blend.runs);
+    if (c.blendTargetMs) {
+      std::printf("target < %g ms   %s\n", *c.blendTargetMs, mark(f.blend.medianMs < *c.blendTargetMs));
+    } else {
+      std::printf("(no target)\n");
+    }
+  }
+}
+
+}  // namespace
+
+int runPoses(int argc, char** argv) {
+  Options options;
+  if (const int status = parseOptions(argc, argv, options)) return status == 1 ? 0 : status;
+
+  // Each head is measured by measureHead(mesh, rig, ...); a loaded head with its own weights
+  // is one more push_back here, with the target of the head it stands for.
+  std::vector<Measured> measured;
+  const std::pair<HeadCase, synthetic::HeadSpec> synthetics[] = {
+      {{"synthetic, default-head size", 1000.0, kDefaultBlendTargetMs}, defaultSizedSpec()},
+      {{"synthetic, ICT-head size", 5000.0, std::nullopt}, ictSizedSpec()},
+  };
+  for (const auto& [headCase, spec] : synthetics) {
+    const synthetic::Head head = synthetic::buildHead(spec);
+    measured.push_back({headCase, measureHead(head.mesh, head.rig(), options)});
+  }
+
+  if (options.json) {
+    printJson(measured);
+  } else {
+    printTable(measured);
+  }
+  return 0;
+}
+
+}  // namespace lacrima::bench

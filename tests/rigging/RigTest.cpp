@@ -1,0 +1,393 @@
+// Rig assembly end to end: feature-point files, RigBuilder on the default head and the ICT head,
+// the exported files and the lacrima-rig command.
+#include <lacrima/FapTable.h>
+#include <lacrima/PoseSet.h>
+#include <lacrima/rig/DefaultHead.h>
+#include <lacrima/rig/DijkstraGeodesics.h>
+#include <lacrima/rig/FeaturePointFile.h>
+#include <lacrima/rig/GlbExport.h>
+#include <lacrima/rig/MeshImport.h>
+#include <lacrima/rig/RigBuilder.h>
+#include <lacrima/rig/RigDescription.h>
+#include <lacrima/rig/RigExport.h>
+#include <lacrima/rig/SurfaceGraph.h>
+
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+#include <memory>
+#include <set>
+
+using namespace lacrima;
+
+namespace {
+
+const QString kDefaultFdp = QStringLiteral(LACRIMA_SOURCE_DIR "/media/default-head.fdp.json");
+const QString kIctMesh = QStringLiteral(LACRIMA_SHARED_DIR "/heads/ict-facekit/generic_neutral_mesh.obj");
+const QString kIctFdp = QStringLiteral(LACRIMA_SOURCE_DIR "/tests/rigging/ict-facekit.fdp.json");
+const QString kRigTool = QStringLiteral(LACRIMA_BIN_DIR "/lacrima-rig");
+
+void writeFile(const QString& path, const QByteArray& bytes) {
+  QFile f(path);
+  QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+  f.write(bytes);
+}
+
+// The message of the FileError `f` throws, or "" when it throws none.
+template <class F>
+std::string fileErrorOf(F&& f) {
+  try {
+    f();
+  } catch (const FileError& e) {
+    return e.what();
+  }
+  return {};
+}
+
+const VertexPose& poseOf(const BuiltRig& rig, int fap) {
+  return rig.poses.poses[static_cast<std::size_t>(channelIndex(fap))];
+}
+
+// Offsets of a pose as a dense map vertex -> offset (repeated entries add up).
+std::map<int, Eigen::Vector3f> dense(const VertexPose& pose) {
+  std::map<int, Eigen::Vector3f> out;
+  for (std::size_t k = 0; k < pose.vertices.size(); ++k) {
+    auto [it, fresh] = out.try_emplace(pose.vertices[k], Eigen::Vector3f::Zero());
+    it->second += pose.offsets.col(static_cast<Eigen::Index>(k));
+  }
+  return out;
+}
+
+}  // namespace
+
+class RigTest : public QObject {
+  Q_OBJECT
+
+  std::unique_ptr<HeadMesh> head_;
+  std::unique_ptr<FeaturePointFile> fdp_;
+  std::unique_ptr<BuiltRig> rig_;
+  QTemporaryDir tmp_;
+
+  const HeadMesh& head() { return *head_; }
+  const BuiltRig& rig() { return *rig_; }
+  Eigen::Vector3d point(const char* id) { return rig().featurePoints.at(id); }
+
+  void requireDefaultHead() {
+    if (!head_) QSKIP("default head not in the cache (run packaging/fetch-default-head.sh)");
+  }
+
+private slots:
+  void initTestCase() {
+    QVERIFY(tmp_.isValid());
+    if (!defaultHeadAvailable()) return;
+    head_ = std::make_unique<HeadMesh>(loadDefaultHead());
+    Warnings warnings;
+    fdp_ = std::make_unique<FeaturePointFile>(readFeaturePointFile(kDefaultFdp.toStdString(), &warnings));
+    validateFeaturePoints(*fdp_, *head_, &warnings);
+    for (const Diagnostic& w : warnings) qWarning("%s", w.toString().c_str());
+    QVERIFY2(warnings.empty(), "the default head's feature-point file is complete");
+    QElapsedTimer timer;
+    timer.start();
+    rig_ = std::make_unique<BuiltRig>(buildRig(*head_, *fdp_));
+    qInfo("default head rigged in %lld ms (%d vertices)", static_cast<long long>(timer.elapsed()),
+          head_->vertexCount());
+    for (const std::string& w : rig_->warnings) qWarning("rig: %s", w.c_str());
+  }
+
+  // Every translational FAP 3-68 at 1024 moves its feature point by X0 along its direction.
+  void translationsMoveTheirPointByX0() {
+    requireDefaultHead();
+    int checked = 0;
+    for (int fap = 3; fap <= 68; ++fap) {
+      const FapInfo& info = fapInfo(fap);
+      if (info.motion != FapMotion::Translation) continue;
+      const std::string id(info.featurePoint);
+      QVERIFY2(!poseOf(rig(), fap).empty(), qPrintable(QString("FAP %1 has a pose").arg(fap)));
+      const double x0 = rig().fapu.unitValue(info.unit) * 1024.0;
+      const Eigen::Vector3d moved = featurePointDisplacement(rig(), id, fap, 1024.0);
+      const Eigen::Vector3d expected = x0 * info.positiveMotion.cast<double>();
+      QVERIFY2((moved - expected).norm() < 1e-4 * x0,
+               qPrintable(QString("FAP %1 (%2): moved %3, expected %4").arg(fap).arg(id.c_str())
+                              .arg(moved.norm()).arg(x0)));
+      ++checked;
+    }
+    QVERIFY(checked >= 55);
+  }
+
+  // Weights lie in (0, 1], are 1 at the point's vertices and vanish beyond the radius.
+  void weightsAreBoundedAndLocal() {
+    requireDefaultHead();
+    const SurfaceGraph skin = buildSurfaceGraph(head(), fdp_->skin);
+    for (const auto& [id, radius] : rig().radii) {
+      const FeaturePointInfluence& inf = rig().input.influences.at(id);
+      std::map<int, float> weight;
+      for (std::size_t k = 0; k < inf.vertices.size(); ++k) {
+        QVERIFY2(inf.weights[k] > 0.0f && inf.weights[k] <= 1.0f, id.c_str());
+        weight[inf.vertices[k]] = inf.weights[k];
+      }
+      for (const auto& [v, w] : rig().bindings.at(id)) {
+        Q_UNUSED(w);
+        QVERIFY2(weight.count(v) && weight[v] == 1.0f, qPrintable(QString("weight 1 at %1").arg(id.c_str())));
+      }
+      if (fdp_->points.at(id).at.submesh != "skin") continue;  // tongue points: own surface
+      std::vector<int> sources;
+      for (const auto& [v, w] : rig().bindings.at(id)) sources.push_back(v);
+      const Eigen::VectorXd d = dijkstraDistances(
+          skin, Eigen::Map<const Eigen::VectorXi>(sources.data(), static_cast<Eigen::Index>(sources.size())));
+      for (const auto& [v, w] : weight) {
+        if (head().submeshOfVertex(v) != 0) continue;  // attachments and the jaw copy weights
+        QVERIFY2(d[v] < radius, qPrintable(QString("%1: vertex %2 at %3 >= radius %4")
+                                               .arg(id.c_str()).arg(v).arg(d[v]).arg(radius)));
+      }
+    }
+  }
+
+  // Upper lip: skin vertices with |x| < 0.75 x(8.3) (clear of the corners, where the lips
+  // meet), from the slit y(2.2) up to the nose base y(9.15), in front of the corner's depth
+  // z(8.3). FAP 5 (lower lip up, at its full slider range) must not move any of them.
+  void lowerLipLeavesTheUpperLip() {
+    requireDefaultHead();
+    const auto moved = dense(poseOf(rig(), 5));
+    const HeadSubmesh& skin = *head().findSubmesh("skin");
+    int upperLip = 0;
+    for (int v = skin.firstVertex; v < skin.firstVertex + skin.vertexCount; ++v) {
+      const Eigen::Vector3d p = head().positions.col(v).cast<double>();
+      if (std::abs(p.x()) >= 0.75 * point("8.3").x() || p.y() < point("2.2").y() || p.y() > point("9.15").y() ||
+          p.z() < point("8.3").z())
+        continue;
+      ++upperLip;
+      const auto hit = moved.find(v);
+      QVERIFY2(hit == moved.end() || hit->second.norm() == 0.0f, qPrintable(QString("upper-lip vertex %1").arg(v)));
+    }
+    QVERIFY(upperLip > 30);
+  }
+
+  // Lower lid of the left eye: skin vertices within 40% of the eye's width of x(3.3), from
+  // y(3.3) down by one IRISD0, in front of z(3.3) - IRISD0. FAP 19 must not move them.
+  void upperLidLeavesTheLowerLid() {
+    requireDefaultHead();
+    const auto moved = dense(poseOf(rig(), 19));
+    const HeadSubmesh& skin = *head().findSubmesh("skin");
+    const double width = point("3.7").x() - point("3.11").x();
+    const double irisd0 = rig().fapu.irisd0;
+    int lowerLid = 0;
+    for (int v = skin.firstVertex; v < skin.firstVertex + skin.vertexCount; ++v) {
+      const Eigen::Vector3d p = head().positions.col(v).cast<double>();
+      if (std::abs(p.x() - point("3.3").x()) > 0.4 * width || p.y() > point("3.3").y() + 1e-6 ||
+          p.y() < point("3.3").y() - irisd0 || p.z() < point("3.3").z() - irisd0)
+        continue;
+      ++lowerLid;
+      const auto hit = moved.find(v);
+      QVERIFY2(hit == moved.end() || hit->second.norm() == 0.0f, qPrintable(QString("lower-lid vertex %1").arg(v)));
+    }
+    QVERIFY(lowerLid > 10);
+  }
+
+  // The head is mirror-symmetric: a left FAP's pose equals its right partner's pose mirrored
+  // in x, compared through nearest mirrored vertices. The tolerance covers the quads'
+  // diagonals, which run the same way on both sides and so are not mirror images: graph
+  // distances differ by part of an edge there.
+  void leftAndRightPosesMirror() {
+    requireDefaultHead();
+    const Eigen::Matrix3Xf& p = head().positions;
+    for (int fap = 3; fap <= 68; ++fap) {
+      const int partner = mirroredFap(fap);
+      if (partner == fap || fapInfo(fap).motion != FapMotion::Translation) continue;
+      const auto left = dense(poseOf(rig(), fap));
+      const auto right = dense(poseOf(rig(), partner));
+      float largest = 0, worst = 0;
+      for (const auto& [v, offset] : left) {
+        largest = std::max(largest, offset.norm());
+        const Eigen::Vector3f mirrored(-p(0, v), p(1, v), p(2, v));
+        int best = -1;
+        float bestD = 1e30f;
+        for (const auto& [w, o] : right) {
+          Q_UNUSED(o);
+          const float d = (p.col(w) - mirrored).squaredNorm();
+          if (d < bestD) bestD = d, best = w;
+        }
+        Eigen::Vector3f expected = Eigen::Vector3f::Zero();
+        if (best >= 0 && std::sqrt(bestD) < 1e-3f) expected = right.at(best);
+        expected.x() = -expected.x();
+        worst = std::max(worst, (offset - expected).norm());
+      }
+      QVERIFY2(!left.empty(), qPrintable(QString("FAP %1 has a pose").arg(fap)));
+      QVERIFY2(worst <= 0.25f * largest,
+               qPrintable(QString("FAP %1 vs %2: worst difference %3 of %4").arg(fap).arg(partner).arg(worst).arg(largest)));
+    }
+  }
+
+  void fapuArePlausible() {
+    requireDefaultHead();
+    const FapuSet& f = rig().fapu;
+    qInfo("FAPU (dm): IRISD0 %g ES0 %g ENS0 %g MNS0 %g MW0 %g", f.irisd0, f.es0, f.ens0, f.mns0, f.mw0);
+    QVERIFY(f.irisd0 > 0.05 && f.irisd0 < 0.15);  // an eye opening of 5-15 mm
+    QVERIFY(f.es0 > 0.5 && f.es0 < 0.75);         // pupils 5-7.5 cm apart
+    QVERIFY(f.ens0 > 0.3 && f.ens0 < 0.7);
+    QVERIFY(f.mns0 > 0.1 && f.mns0 < 0.3);
+    QVERIFY(f.mw0 > 0.4 && f.mw0 < 0.65);
+  }
+
+  // A 60-degree head yaw turns every vertex rigidly about the neck pivot.
+  void headYawIsRigid() {
+    requireDefaultHead();
+    const PoseBlender blender(head(), rig().poses);
+    FapValues values{};
+    values[static_cast<std::size_t>(channelIndex(49))] = static_cast<float>(60.0 * M_PI / 180.0 / 1e-5);
+    Eigen::Matrix3Xf positions, normals;
+    blender.blend(values, positions, normals);
+    const Eigen::Vector3f pivot = rig().neckPivot.cast<float>();
+    float worst = 0, turned = 0;
+    for (int v = 0; v < head().vertexCount(); ++v) {
+      worst = std::max(worst, std::abs((positions.col(v) - pivot).norm() - (head().positions.col(v) - pivot).norm()));
+      turned = std::max(turned, (positions.col(v) - head().positions.col(v)).norm());
+    }
+    QVERIFY2(worst < 1e-4f, qPrintable(QString("distance to the pivot changed by %1").arg(worst)));
+    QVERIFY(turned > 0.5f);  // it did turn
+  }
+
+  void glbLoadsBackWithItsMorphTargets() {
+    requireDefaultHead();
+    const std::string path = QDir(tmp_.path()).filePath("head.glb").toStdString();
+    exportGlb(head(), rig().poses, path);
+    const std::size_t poses = prepareRigExport(head(), rig().poses, path).size();
+    Assimp::Importer importer;
+    const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+    QVERIFY2(scene, importer.GetErrorString());
+    QVERIFY(scene->mNumMeshes > 0);
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m)
+      QCOMPARE(static_cast<std::size_t>(scene->mMeshes[m]->mNumAnimMeshes), poses);
+    int linear = 0;
+    for (const VertexPose& pose : rig().poses.poses) linear += !pose.empty();
+    QCOMPARE(poses, static_cast<std::size_t>(linear));
+    QVERIFY(poses >= 55);  // every translation, the pupils and the tongue roll
+  }
+
+  void rigJsonDescribesTheRig() {
+    requireDefaultHead();
+    const QJsonObject doc = QJsonDocument::fromJson(QByteArray::fromStdString(rigDescriptionJson(head(), rig()))).object();
+    QCOMPARE(doc.value("format").toString(), QString("lacrima-rig"));
+    QVERIFY(doc.value("fapu").toObject().value("ES0").toDouble() > 0);
+    QVERIFY(doc.value("feature_points").toObject().contains("3.3"));
+    QCOMPARE(doc.value("neck_pivot").toArray().size(), 3);
+    // Tear sources: skin vertices just under the lower lids.
+    for (const auto& [side, tear, lid] : {std::tuple{"left", &rig().tearLeft, "3.3"}, std::tuple{"right", &rig().tearRight, "3.4"}}) {
+      QVERIFY(doc.value("tear_sources").toObject().contains(side));
+      QCOMPARE(head().submeshOfVertex(tear->vertex), 0);
+      QVERIFY(tear->position.y() < point(lid).y());
+      QVERIFY((tear->position - point(lid)).norm() < rig().fapu.irisd0);
+    }
+  }
+
+  void ictHeadRigsEndToEnd() {
+    if (!QFileInfo::exists(kIctMesh)) QSKIP("ICT-FaceKit head not present in the shared folder");
+    QElapsedTimer timer;
+    timer.start();
+    const HeadMesh mesh = importHeadMesh(kIctMesh.toStdString());
+    Warnings warnings;
+    BuiltRig rig;
+    const std::string error = fileErrorOf([&] {
+      const FeaturePointFile fdp = readFeaturePointFile(kIctFdp.toStdString(), &warnings);
+      validateFeaturePoints(fdp, mesh, &warnings);
+      rig = buildRig(mesh, fdp);
+    });
+    QVERIFY2(error.empty(), error.c_str());
+    qInfo("ICT head imported and rigged in %lld ms (%d vertices)", static_cast<long long>(timer.elapsed()),
+          mesh.vertexCount());
+    for (const Diagnostic& w : warnings) qInfo("fdp: %s", w.toString().c_str());
+    QVERIFY(rig.fapu.es0 > 0 && rig.fapu.mw0 > 0 && rig.fapu.irisd0 > 0);
+    for (int fap : {3, 4, 5, 19, 20, 31, 53}) {
+      const FapInfo& info = fapInfo(fap);
+      const double x0 = rig.fapu.unitValue(info.unit) * 1024.0;
+      const Eigen::Vector3d moved = featurePointDisplacement(rig, std::string(info.featurePoint), fap, 1024.0);
+      QVERIFY2((moved - x0 * info.positiveMotion.cast<double>()).norm() < 1e-4 * x0, qPrintable(QString("FAP %1").arg(fap)));
+    }
+    QVERIFY(!rig.input.eyeLeft.vertices.empty() && !rig.input.eyeRight.vertices.empty());
+  }
+
+  void loaderErrorsNameThePoint() {
+    const QString path = QDir(tmp_.path()).filePath("bad.fdp.json");
+    const QByteArray head = R"({"format": "lacrima-fdp", "version": 1, "submeshes": {"skin": ["skin"]}, "points": {)";
+    const QByteArray required =
+        R"("2.2": {"submesh": "skin", "vertex": 0}, "3.1": {"submesh": "skin", "vertex": 1},
+           "3.2": {"submesh": "skin", "vertex": 2}, "3.3": {"submesh": "skin", "vertex": 3},
+           "3.4": {"submesh": "skin", "vertex": 0}, "3.5": {"submesh": "skin", "vertex": 1},
+           "3.6": {"submesh": "skin", "vertex": 2}, "8.3": {"submesh": "skin", "vertex": 3},
+           "8.4": {"submesh": "skin", "vertex": 0})";
+    HeadMesh mesh;
+    mesh.positions = Eigen::Matrix3Xf::Random(3, 4);
+    mesh.submeshes.push_back({"skin", -1, 0, 4, {{0, 1, 2}, {0, 2, 3}}});
+    auto errorFor = [&](const QByteArray& points) {
+      writeFile(path, head + points + "}}");
+      return fileErrorOf([&] {
+        const FeaturePointFile f = readFeaturePointFile(path.toStdString());
+        validateFeaturePoints(f, mesh, nullptr);
+      });
+    };
+    const std::string missing = errorFor(required);
+    QVERIFY2(missing.find("9.15") != std::string::npos && missing.find("missing") != std::string::npos, missing.c_str());
+    const std::string unknown = errorFor(required + R"(, "9.15": {"submesh": "nose", "vertex": 0})");
+    QVERIFY2(unknown.find("\"9.15\"") != std::string::npos && unknown.find("unknown sub-mesh \"nose\"") != std::string::npos,
+             unknown.c_str());
+    const std::string range = errorFor(required + R"(, "9.15": {"submesh": "skin", "vertex": 4})");
+    QVERIFY2(range.find("\"9.15\".vertex") != std::string::npos && range.find("0..3") != std::string::npos, range.c_str());
+    const std::string bary = errorFor(required + R"(, "9.15": {"submesh": "skin", "triangle": 0, "barycentric": [0.5, 0.5, 0.5]})");
+    QVERIFY2(bary.find("\"9.15\".barycentric") != std::string::npos, bary.c_str());
+    QVERIFY(errorFor(required + R"(, "9.15": {"submesh": "skin", "vertex": 2})").empty());
+    writeFile(path, "{\"format\": \"lacrima-fdp\",\n  \"version\": 1,,}");
+    const std::string syntax = fileErrorOf([&] { readFeaturePointFile(path.toStdString()); });
+    QVERIFY2(syntax.find(path.toStdString() + ":2:") != std::string::npos, syntax.c_str());
+  }
+
+  void commandLineTool() {
+    QProcess help;
+    help.start(kRigTool, {"--help"});
+    QVERIFY(help.waitForFinished(30000));
+    QCOMPARE(help.exitCode(), 0);
+    QVERIFY(help.readAllStandardOutput().contains("--fdp"));
+
+    QProcess usage;
+    usage.start(kRigTool, {"--report"});
+    QVERIFY(usage.waitForFinished(30000));
+    QCOMPARE(usage.exitCode(), 2);
+
+    const QString bad = QDir(tmp_.path()).filePath("broken.fdp.json");
+    writeFile(bad, "{\"format\": \"lacrima-fdp\", \"version\": 1}");
+    QProcess broken;
+    broken.start(kRigTool, {"--mesh", QDir(tmp_.path()).filePath("none.obj"), "--fdp", bad, "--report"});
+    QVERIFY(broken.waitForFinished(30000));
+    QCOMPARE(broken.exitCode(), 1);
+    QVERIFY(broken.readAllStandardError().contains("error"));
+
+    requireDefaultHead();
+    QProcess badFdp;
+    badFdp.start(kRigTool, {"--default", "--fdp", bad, "--report"});
+    QVERIFY(badFdp.waitForFinished(60000));
+    QCOMPARE(badFdp.exitCode(), 1);
+    const QByteArray message = badFdp.readAllStandardError();
+    QVERIFY2(message.contains(bad.toUtf8()) && message.contains("submeshes"), message.constData());
+
+    const QString out = QDir(tmp_.path()).filePath("rig-out");
+    QProcess rig;
+    rig.start(kRigTool, {"--default", "-o", out});
+    QVERIFY(rig.waitForFinished(120000));
+    QVERIFY2(rig.exitCode() == 0, rig.readAllStandardError().constData());
+    for (const char* file : {"head.mesh", "head.material", "head.glb", "rig.json"})
+      QVERIFY2(QFileInfo(QDir(out).filePath(file)).size() > 0, file);
+  }
+};
+
+QTEST_GUILESS_MAIN(RigTest)
+#include "RigTest.moc"

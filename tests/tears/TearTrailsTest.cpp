@@ -1,0 +1,252 @@
+// Wet trails: a drop sliding down the cheek sheet leaves a trail on the sheet that rides along
+// when the sheet moves; a drop that splits branches its trail; merging drops continue one trail;
+// trails dry and disappear; the section cap bounds memory; a real simulation's tears leave
+// trails; nothing is done when nothing is wet.
+#include "TearTestSupport.h"
+
+#include <lacrima/tears/TrailBuilder.h>
+
+#include <QtTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace lacrima::tears;
+using namespace lacrima::tears::testing;
+
+namespace {
+
+constexpr double kH = 0.016, kRadius = kH / 4;  // the default kernel and particle radius, dm
+
+// The sheet's analytic surface (SyntheticSkin.cpp's construction, default options): a vertical
+// cylinder of radius 1 leaning back 20 degrees about x. Used as an independent reference.
+const Eigen::AngleAxisd kLean(-20 * std::numbers::pi / 180, Eigen::Vector3d::UnitX());
+Eigen::Vector3d sheetPoint(double u, double v) {
+  return kLean * Eigen::Vector3d(std::sin(u), v, std::cos(u) - 1);
+}
+Eigen::Vector3d sheetNormal(double u) { return kLean * Eigen::Vector3d(std::sin(u), 0, std::cos(u)); }
+// Distance from x to the (unmoved) cylinder.
+double distanceToSheet(const Eigen::Vector3d& x) {
+  const Eigen::Vector3d p = kLean.inverse() * x;
+  return std::abs(std::hypot(p.x(), p.z() + 1) - 1);
+}
+
+// A rigid motion of the sheet about its centre, as movedSheet applies it.
+struct Motion {
+  Eigen::Vector3d centre, translation;
+  Eigen::Matrix3d rotation;
+  Eigen::Vector3d apply(const Eigen::Vector3d& x) const { return centre + rotation * (x - centre) + translation; }
+  Eigen::Vector3d undo(const Eigen::Vector3d& x) const { return centre + rotation.transpose() * (x - translation - centre); }
+};
+
+// A drop of resting particles on the sheet at (u, v): a half-ball lattice of spacing h/2 over
+// the skin, ids from firstId, each touching particle given its contact triangle.
+struct DropSpec {
+  double u, v;
+  int count;
+  std::uint64_t firstId;
+  Eye eye = Eye::Left;
+};
+
+void addDrop(ParticleSet& particles, const TrailSkin& skin, const DropSpec& d, const Motion* motion = nullptr) {
+  const Eigen::Vector3d c = sheetPoint(d.u, d.v), n = sheetNormal(d.u);
+  const Eigen::Vector3d e1 = Eigen::Vector3d::UnitY().cross(n).normalized(), e2 = n.cross(e1);
+  const double spacing = kH / 2;
+  std::vector<Eigen::Vector3d> offsets;
+  for (int i = -4; i <= 4; ++i)
+    for (int j = -4; j <= 4; ++j)
+      for (int k = 0; k <= 4; ++k) offsets.emplace_back(i * spacing, j * spacing, k * spacing);
+  std::stable_sort(offsets.begin(), offsets.end(), [](const auto& a, const auto& b) { return a.squaredNorm() < b.squaredNorm(); });
+  std::vector<int> all(static_cast<std::size_t>(skin.triangleCount()));
+  std::iota(all.begin(), all.end(), 0);
+  for (int p = 0; p < d.count; ++p) {
+    const Eigen::Vector3d& o = offsets[static_cast<std::size_t>(p)];
+    Eigen::Vector3d x = c + o.x() * e1 + o.y() * e2 + (o.z() + kRadius) * n;
+    const SkinAnchor nearest = skin.closest(x, all);  // set-up only: brute force over the sheet
+    if (motion) x = motion->apply(x);
+    const int i = particles.add(x, 1.0, d.firstId + static_cast<std::uint64_t>(p), d.eye);
+    if (o.z() == 0) particles.contact[static_cast<std::size_t>(i)].triangle = nearest.triangle;
+  }
+}
+
+struct Scene {
+  SyntheticSkin sheet = makeCheekSheet();
+  TrailSkin probe{sheet.triangles};  // for setting up contacts
+  ParticleSet particles;
+  UniformGrid grid;
+  Scene() { probe.bind(sheet.positions); }
+
+  const TrailMesh& step(TrailBuilder& trails, const std::vector<DropSpec>& drops, double dt = kFrameDt,
+                        const Eigen::Matrix3Xf* moved = nullptr, const Motion* motion = nullptr) {
+    particles.clear();
+    for (const DropSpec& d : drops) addDrop(particles, probe, d, motion);
+    grid.build(particles.position, kH);
+    return trails.update(particles, grid, kH, kRadius, moved ? *moved : sheet.positions, dt);
+  }
+};
+
+void checkOnSheet(const TrailMesh& mesh, const Motion* motion = nullptr) {
+  QVERIFY(mesh.positions().allFinite() && mesh.normals().allFinite() && mesh.alpha().allFinite());
+  const auto p = mesh.positions();
+  for (int v = 0; v < p.cols(); ++v) {
+    const Eigen::Vector3d x = motion ? motion->undo(p.col(v)) : Eigen::Vector3d(p.col(v));
+    QVERIFY2(distanceToSheet(x) <= kH, QByteArray::number(distanceToSheet(x) / kH));
+    QVERIFY(std::abs(mesh.normals().col(v).norm() - 1) < 1e-9);
+    QVERIFY(mesh.alpha()[v] >= 0 && mesh.alpha()[v] <= 1);
+  }
+  // Wound counter-clockwise seen from outside the skin.
+  const auto t = mesh.triangles();
+  for (int i = 0; i < t.cols(); ++i) {
+    const Eigen::Vector3d a = p.col(t(0, i));
+    const Eigen::Vector3d n = (p.col(t(1, i)) - a).cross(p.col(t(2, i)) - a);
+    QVERIFY(n.dot(mesh.normals().col(t(0, i))) >= -1e-12);
+  }
+}
+
+}  // namespace
+
+class TearTrailsTest : public QObject {
+  Q_OBJECT
+
+private slots:
+  void nothingWetNoWork() {
+    Scene scene;
+    TrailBuilder trails(scene.sheet.triangles);
+    QVERIFY(scene.step(trails, {}).empty());
+    QCOMPARE(trails.lastMilliseconds(), 0.0);
+    QCOMPARE(trails.trackedDrops(), 0);
+  }
+
+  void slidingDropLeavesATrailThatFollowsTheSheet() {
+    Scene scene;
+    TrailBuilder trails(scene.sheet.triangles);
+    const int frames = 40;
+    for (int f = 0; f < frames; ++f) scene.step(trails, {{0.3, 0.8 - 0.005 * f, 30, 1}});
+    const TrailMesh& mesh = trails.mesh();
+    // 0.2 dm slid, a section every d_min = h / 2 = 0.008 dm (the drop moves 0.005 per frame).
+    QVERIFY2(trails.sections().size() >= 15, QByteArray::number(int(trails.sections().size())));
+    QCOMPARE(mesh.triangleCount(), 4 * static_cast<int>(trails.segments().size()));
+    QCOMPARE(mesh.vertexCount(), 3 * static_cast<int>(trails.sections().size()));
+    checkOnSheet(mesh);
+    // The trail is as wide as the drop and runs down the sheet.
+    const auto p = mesh.positions();
+    const double width = (p.col(0) - p.col(2)).norm();
+    QVERIFY(width > 2 * kRadius && width < 10 * kH);
+    QVERIFY(p.col(0).y() > p.col(p.cols() - 1).y() + 0.1);
+    QVERIFY(trails.wetArea(Eye::Left) > 0);
+    QCOMPARE(trails.wetArea(Eye::Right), 0.0);
+    QVERIFY(trails.lastMilliseconds() > 0);
+
+    // The face moves (and the drop with it): the trail rides along, no new section appears.
+    Motion motion{scene.sheet.centre, Eigen::Vector3d(0.1, -0.05, 0.02),
+                  Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitY()).toRotationMatrix()};
+    const Eigen::Matrix3Xd before = p;
+    const std::size_t sectionsBefore = trails.sections().size();
+    const Eigen::Matrix3Xf moved = movedSheet(scene.sheet, motion.translation, Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitY()));
+    const TrailMesh& after = scene.step(trails, {{0.3, 0.8 - 0.005 * (frames - 1), 30, 1}}, 0.0, &moved, &motion);
+    QCOMPARE(trails.sections().size(), sectionsBefore);
+    for (int v = 0; v < before.cols(); ++v)
+      QVERIFY((after.positions().col(v) - motion.apply(before.col(v))).norm() < 1e-5);
+    checkOnSheet(after, &motion);
+  }
+
+  void splittingDropBranches() {
+    Scene scene;
+    TrailBuilder trails(scene.sheet.triangles);
+    for (int f = 0; f < 8; ++f) scene.step(trails, {{0.0, 0.8 - 0.006 * f, 40, 1}});
+    QCOMPARE(trails.trackedDrops(), 1);
+    const double v0 = 0.8 - 0.006 * 7;
+    // The drop parts: two halves, keeping their particle ids, drifting apart as they slide on
+    // (about 25 degrees either side of straight down).
+    for (int f = 1; f <= 24; ++f)
+      scene.step(trails, {{-0.003 * f, v0 - 0.006 * f, 20, 1}, {0.003 * f, v0 - 0.006 * f, 20, 21}});
+    QCOMPARE(trails.trackedDrops(), 2);
+    QVERIFY(trails.branches() >= 1);
+    // Some section starts two segments: the branch point shared by both parts.
+    std::map<int, int> outgoing;
+    for (const TrailSegment& s : trails.segments()) ++outgoing[s.from];
+    int forks = 0;
+    for (const auto& [section, count] : outgoing) forks += count >= 2;
+    QCOMPARE(forks, 1);
+    checkOnSheet(trails.mesh());
+  }
+
+  void mergingDropsContinueOneTrail() {
+    Scene scene;
+    TrailBuilder trails(scene.sheet.triangles);
+    // Two drops converge while sliding (about 25 degrees either side of straight down) ...
+    for (int f = 0; f < 10; ++f)
+      scene.step(trails, {{-0.07 + 0.004 * f, 0.8 - 0.008 * f, 20, 1}, {0.07 - 0.004 * f, 0.8 - 0.008 * f, 20, 101}});
+    QCOMPARE(trails.trackedDrops(), 2);
+    const std::size_t segmentsBefore = trails.segments().size();
+    // ... and run on as one drop made of both sets of particles.
+    for (int f = 0; f < 10; ++f) {
+      ParticleSet& p = scene.particles;
+      p.clear();
+      addDrop(p, scene.probe, {-0.008, 0.72 - 0.008 * f, 20, 1});
+      addDrop(p, scene.probe, {0.008, 0.72 - 0.008 * f, 20, 101});
+      scene.grid.build(p.position, kH);
+      trails.update(p, scene.grid, kH, kRadius, scene.sheet.positions, kFrameDt);
+    }
+    QCOMPARE(trails.trackedDrops(), 1);
+    QVERIFY(trails.segments().size() > segmentsBefore);
+    // One trail goes on: no section starts two segments, and the merged drop's newest segments
+    // form one chain.
+    std::map<int, int> outgoing;
+    for (const TrailSegment& s : trails.segments()) ++outgoing[s.from];
+    for (const auto& [section, count] : outgoing) QCOMPARE(count, 1);
+    checkOnSheet(trails.mesh());
+  }
+
+  void trailsDryAndAreRemoved() {
+    Scene scene;
+    TrailSettings settings;
+    settings.drySeconds = 4;
+    TrailBuilder trails(scene.sheet.triangles, settings);
+    for (int f = 0; f < 20; ++f) scene.step(trails, {{0.3, 0.8 - 0.006 * f, 30, 1}});
+    QVERIFY(!trails.mesh().empty());
+    const double wet = trails.wetArea(Eye::Left);
+    scene.step(trails, {}, 2.0);  // the drop is gone; the trail dries on
+    QVERIFY(!trails.mesh().empty());
+    QVERIFY(trails.mesh().alpha().maxCoeff() <= 0.5 + 1e-9);
+    QVERIFY(trails.wetArea(Eye::Left) < 0.6 * wet);
+    scene.step(trails, {}, 2.5);
+    QVERIFY(trails.mesh().empty());
+    QCOMPARE(trails.sections().size(), std::size_t{0});
+    QCOMPARE(trails.wetArea(Eye::Left), 0.0);
+    scene.step(trails, {}, 1.0);
+    QCOMPARE(trails.lastMilliseconds(), 0.0);  // dry skin, no drops: no work
+  }
+
+  void sectionCapBoundsMemory() {
+    Scene scene;
+    TrailSettings settings;
+    settings.maxSections = 20;
+    TrailBuilder trails(scene.sheet.triangles, settings);
+    for (int f = 0; f < 120; ++f) {
+      scene.step(trails, {{0.3, 1.0 - 0.012 * f, 25, 1}, {-0.3, 1.0 - 0.012 * f, 25, 101, Eye::Right}});
+      QVERIFY(trails.sections().size() <= 20);
+      QVERIFY(trails.segments().size() <= 20);
+    }
+    QVERIFY(trails.segments().size() >= 10);
+    QVERIFY(trails.wetArea(Eye::Right) > 0);
+    checkOnSheet(trails.mesh());
+  }
+
+  // The simulation's own tears: trails appear on the sheet behind them.
+  void simulatedTearsLeaveTrails() {
+    const SyntheticSkin sheet = makeCheekSheet();
+    auto sim = makeSheetSimulation(sheet);
+    TrailBuilder trails(sheet.triangles);
+    for (int f = 0; f < 66; ++f) {
+      sim->step(sheet.positions, 60, 0, kFrameDt);
+      trails.update(*sim, sheet.positions, kFrameDt);
+    }
+    QVERIFY2(trails.segments().size() >= 3, QByteArray::number(int(trails.segments().size())));
+    checkOnSheet(trails.mesh());
+    QVERIFY(trails.wetArea(Eye::Left) > 0);
+  }
+};
+
+QTEST_GUILESS_MAIN(TearTrailsTest)
+#include "TearTrailsTest.moc"
