@@ -49,13 +49,20 @@ build_lacrima() {
 }
 
 run_demo() {
-  local fap="$build/bin/lacrima-fap" out="$build/demo"
+  local bin="$build/bin" out="$build/demo"
   mkdir -p "$out"
-  "$fap" convert "$root/media/demo/crying.json" -o "$out/crying.fap"
-  "$fap" check "$out/crying.fap"
-  "$fap" interpolate "$out/crying.fap" -o "$out/crying-smooth-60fps.fap" --fps 60 --smooth
-  "$fap" dump "$out/crying.fap" >"$out/crying.csv"
-  echo "lacrima: demo crying animation written to $out (crying.fap, crying-smooth-60fps.fap, crying.csv)"
+  "$bin/lacrima-fap" convert "$root/media/demo/crying.json" -o "$out/crying.fap"
+  "$bin/lacrima-fap" check "$out/crying.fap"
+  "$bin/lacrima-fap" interpolate "$out/crying.fap" -o "$out/crying-smooth-60fps.fap" --fps 60 --smooth
+  "$bin/lacrima-fap" dump "$out/crying.fap" >"$out/crying.csv"
+  "$bin/lacrima-rig" --default -o "$out/rig" --fdp-image "$out/feature-points.png" 2>/dev/null
+  # The face at the height of the sob (frame 165 = 7.5 s): its FAP values from the CSV dump.
+  local faps
+  faps=$(awk -F, 'NR == 167 { for (i = 4; i <= 69; ++i) if ($i != 0) printf " --fap %d=%s", i - 1, $i }' "$out/crying.csv")
+  # shellcheck disable=SC2086  # one word per option
+  "$bin/lacrima-rig" --default --pose-image "$out/sob.png" $faps 2>/dev/null
+  echo "lacrima: demo written to $out: crying.fap (+ 60 fps, CSV), the rigged default head in rig/"
+  echo "         (head.mesh, head.glb, rig.json), feature-points.png and sob.png (the face at 7.5 s)"
 }
 
 run_tests() {

@@ -9,6 +9,7 @@ int runFapIo(int argc, char** argv);
 int runTears(int argc, char** argv);
 int runGeodesics(int argc, char** argv);
 int runPoses(int argc, char** argv);
+int runTearsSweep(int argc, char** argv);
 }
 
 namespace {
@@ -22,16 +23,19 @@ struct Subcommand {
 const Subcommand kSubcommands[] = {
     {"fapio", "read and write a 10-minute, 70-channel FAP animation (13,200 frames at 22 fps)",
      lacrima::bench::runFapIo},
-    {"tears", "tear simulation (SPH + skin collision) on a generated cheek sheet", lacrima::bench::runTears},
+    {"tears", "tear pipeline (SPH, skin collision, surface, trails) on a cheek sheet or the default head",
+     lacrima::bench::runTears},
+    {"tears-sweep", "tears: error against a fine reference beside ms per frame (sub-step, kernel, cube, "
+     "neighbours)", lacrima::bench::runTearsSweep},
     {"geodesics", "geodesic distance: accuracy against time (sphere, plane), ms per feature point",
      lacrima::bench::runGeodesics},
-    {"poses", "bake every FAP pose and blend them all per frame on ~4.5k and ~26.7k-vertex heads",
+    {"poses", "rig, bake and blend every FAP pose on synthetic and real (default, ICT) heads",
      lacrima::bench::runPoses},
 };
 
 void printUsage(FILE* out) {
   std::fprintf(out, "usage: lacrima-bench SUBCOMMAND [options]   (SUBCOMMAND --help for options)\n\n");
-  for (const auto& s : kSubcommands) std::fprintf(out, "  %-10s %s\n", s.name, s.summary);
+  for (const auto& s : kSubcommands) std::fprintf(out, "  %-12s %s\n", s.name, s.summary);
 }
 
 }  // namespace

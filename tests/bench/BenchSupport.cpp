@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -52,6 +53,14 @@ bool resetPeakMemory() {
   refs << "5";
   refs.flush();
   return static_cast<bool>(refs);
+}
+
+bool parseWholeNumber(const char* text, int low, int high, int& out) {
+  char* end = nullptr;
+  const long value = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0' || value < low || value > high) return false;
+  out = static_cast<int>(value);
+  return true;
 }
 
 }  // namespace lacrima::bench

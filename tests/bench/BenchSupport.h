@@ -21,4 +21,7 @@ long long residentBytes();
 long long peakResidentBytes();
 bool resetPeakMemory();
 
+// A command-line whole number in [low, high]; false (out untouched) for anything else.
+bool parseWholeNumber(const char* text, int low, int high, int& out);
+
 }  // namespace lacrima::bench

@@ -47,13 +47,6 @@ void printHelp(FILE* out) {
       kFps);
 }
 
-bool parseCount(const char* text, int low, int high, int& out) {
-  char* end = nullptr;
-  const long value = std::strtol(text, &end, 10);
-  if (end == text || *end != '\0' || value < low || value > high) return false;
-  out = static_cast<int>(value);
-  return true;
-}
 
 // 0 = options fine, 1 = --help was printed, 2 = usage error (printed).
 int parseOptions(int argc, char** argv, Options& options) {
@@ -67,7 +60,7 @@ int parseOptions(int argc, char** argv, Options& options) {
       options.json = true;
     } else if ((arg == "--frames" || arg == "--runs") && i + 1 < argc) {
       const bool frames = arg == "--frames";
-      if (!parseCount(argv[++i], 1, frames ? 1'000'000 : 1000,
+      if (!parseWholeNumber(argv[++i], 1, frames ? 1'000'000 : 1000,
                       frames ? options.frames : options.runs)) {
         std::fprintf(stderr,
                      "lacrima-bench fapio: %s takes a whole number from 1 to %d, not '%s'\n",

@@ -89,13 +89,6 @@ void printHelp(FILE* out) {
       kHeadPoints);
 }
 
-bool parseCount(const char* text, int low, int high, int& out) {
-  char* end = nullptr;
-  const long value = std::strtol(text, &end, 10);
-  if (end == text || *end != '\0' || value < low || value > high) return false;
-  out = static_cast<int>(value);
-  return true;
-}
 
 // 0 = options fine, 1 = --help was printed, 2 = usage error (printed).
 int parseOptions(int argc, char** argv, Options& options) {
@@ -113,7 +106,7 @@ int parseOptions(int argc, char** argv, Options& options) {
       (arg == "--csv" ? options.csv : options.ictPath) = argv[++i];
     } else if ((arg == "--runs" || arg == "--sources") && i + 1 < argc) {
       const bool runs = arg == "--runs";
-      if (!parseCount(argv[++i], 1, runs ? 1000 : 64, runs ? options.runs : options.sources)) {
+      if (!parseWholeNumber(argv[++i], 1, runs ? 1000 : 64, runs ? options.runs : options.sources)) {
         std::fprintf(stderr, "lacrima-bench geodesics: %s takes a whole number from 1 to %d, not '%s'\n",
                      arg.c_str(), runs ? 1000 : 64, argv[i]);
         return 2;

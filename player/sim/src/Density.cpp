@@ -1,53 +1,81 @@
+#include "Float4.h"
+
 #include <lacrima/tears/FluidForces.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace lacrima::tears {
 
 void DensitySolver::compute(ParticleSet& p, const VerletPairs& candidates, ActivePairs& active) const {
   const int n = p.size();
   const auto un = static_cast<std::size_t>(n);
-  const double h2 = h_ * h_;
-  const double w0 = w_.valueAtZero();
-  const double wScale = w_.value(0.0) / (h2 * h2 * h2);  // W = wScale (h^2 - r^2)^3
+  const double h2d = h_ * h_;
+  const float h2 = static_cast<float>(h2d);
+  const float w0 = static_cast<float>(w_.valueAtZero());
+  const float wScale = static_cast<float>(w_.value(0.0) / (h2d * h2d * h2d));  // W = wScale (h^2 - r^2)^3
   active.start.resize(un + 1);
   active.start[0] = 0;
   // Capacity grows to the candidate count once and is kept (no per-step allocation).
   if (active.partner.size() < candidates.pairCount()) {
-    active.partner.resize(candidates.pairCount());
-    active.distance.resize(candidates.pairCount());
+    const std::size_t c = candidates.pairCount();
+    active.partner.resize(c);
+    active.distance.resize(c);
+    active.offset.resize(4 * c);
+    active.r2.resize(c);
   }
-  for (std::size_t i = 0; i < un; ++i) p.density[i] = p.mass[i] * w0;
+  position_.resize(4 * un);
+  m_.resize(un);
+  rho_.resize(un);
+  if (n == 0) return;
+  // Relative to one particle: the float copies then resolve differences within a drop far
+  // better than absolute head coordinates would.
+  const Eigen::Vector3d origin = p.position[0];
+  for (std::size_t i = 0; i < un; ++i) {
+    const Eigen::Vector3d r = p.position[i] - origin;
+    store4(&position_[4 * i], Float4{static_cast<float>(r.x()), static_cast<float>(r.y()), static_cast<float>(r.z()), 0.0f});
+    m_[i] = static_cast<float>(p.mass[i]);
+    rho_[i] = m_[i] * w0;
+  }
 
-  const Eigen::Vector3d* x = p.position.data();
-  const double* m = p.mass.data();
-  double* rho = p.density.data();
+  const float* x = position_.data();
+  const float* m = m_.data();
+  float* rho = rho_.data();
   const std::uint32_t* partner = candidates.partners();
   std::uint32_t* outPartner = active.partner.data();
-  double* outDistance = active.distance.data();
+  float* outOffset = active.offset.data();
+  float* outR2 = active.r2.data();
   std::uint32_t written = 0;
   for (int i = 0; i < n; ++i) {
     const auto si = static_cast<std::size_t>(i);
-    const Eigen::Vector3d xi = x[si];
-    const double mi = m[si];
-    double rhoi = rho[si];
+    const Float4 xi = load4(x + 4 * si);
+    const float mi = m[si];
+    float rhoi = rho[si];
     // Branch-free: about half the candidates lie beyond h, unpredictably, so a branch would
     // mispredict often. Beyond h the weight is exactly 0 (adding 0 changes no sum) and the
     // pair is written but not kept (`written` does not advance).
-    for (std::uint32_t k = candidates.begin(i); k < candidates.end(i); ++k) {
+    // The bound is read once: the uint32 output stores could alias it as far as GCC knows.
+    const std::uint32_t end = candidates.end(i);
+    for (std::uint32_t k = candidates.begin(i); k < end; ++k) {
       const std::uint32_t j = partner[k];
-      const double r2 = (xi - x[j]).squaredNorm();
-      const double d = std::max(h2 - r2, 0.0);
-      const double w = wScale * d * d * d;
+      const Float4 d = xi - load4(x + 4 * static_cast<std::size_t>(j));
+      const float r2 = dot3(d, d);
+      // max(h^2 - r^2, 0) without a branch (GCC compiles std::max here to a mispredicted
+      // jump): (q + |q|) / 2 is exactly q for q > 0 and exactly 0 otherwise.
+      const float q0 = h2 - r2;
+      const float q = (q0 + std::fabs(q0)) * 0.5f;
+      const float w = wScale * q * q * q;
       rhoi += m[j] * w;
       rho[j] += mi * w;
       outPartner[written] = j;
-      outDistance[written] = r2;
+      store4(outOffset + 4 * static_cast<std::size_t>(written), d);
+      outR2[written] = r2;
       written += static_cast<std::uint32_t>(r2 < h2);
     }
     rho[si] = rhoi;
     active.start[si + 1] = written;
   }
+  for (std::size_t i = 0; i < un; ++i) p.density[i] = rho_[i];
 }
 
 }  // namespace lacrima::tears

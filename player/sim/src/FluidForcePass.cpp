@@ -1,115 +1,177 @@
+#include "Float4.h"
 #include "PairDirection.h"
 
 #include <lacrima/tears/FluidForces.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace lacrima::tears {
+
+namespace {
+
+// Per-pair kernel factors from r alone: one flat loop over contiguous arrays, no gathers and no
+// branches, which GCC vectorises with SSE2 (restrict: the arrays never overlap).
+void pairFactors(const float* __restrict r2s, std::size_t count, float h, float h2, float spiky, float visc,
+                 float poly6, float* __restrict radial, float* __restrict lapVisc, float* __restrict gradColour,
+                 float* __restrict lapColour, double* __restrict distance) {
+  for (std::size_t k = 0; k < count; ++k) {
+    const float r2 = r2s[k];
+    const float r = std::sqrt(r2);
+    const float hr = h - r;
+    const float q = h2 - r2;
+    // Coincident pairs divide by infinity, giving exactly 0 (their force comes from the pair
+    // direction instead). Selecting the divisor, not the quotient, keeps the loop branch-free
+    // for GCC (it does not if-convert a division).
+    const float divisor = r2 > 1e-18f ? r : std::numeric_limits<float>::infinity();
+    radial[k] = spiky * hr * hr / divisor;
+    lapVisc[k] = visc * hr;
+    gradColour[k] = poly6 * q * q;
+    lapColour[k] = poly6 * q * (3.0f * h2 - 7.0f * r2);
+    distance[k] = r;  // for AkinciSurfaceTension
+  }
+}
+
+}  // namespace
+
+// The pair loop proper: sums over the half list in fixed order (particle, then partner), each
+// pair added to both ends. The kernel factors come precomputed per pair (pairFactors), so per
+// pair only the state of j is gathered; 3-vectors are Float4 lanes 0..2, so each vector update
+// is one SSE2 operation. `Colour` removes the Müller sums from the loop at compile time instead
+// of testing a flag per pair.
+template <bool Colour>
+float FluidForcePass::accumulate(const ActivePairs& pairs, int n, std::uint64_t const* ids) {
+  const std::uint32_t* partner = pairs.partner.data();
+  const float* offset = pairs.offset.data();
+  const float* r2s = pairs.r2.data();
+  const float* radial = radial_.data();
+  const float* lapVisc = lapVisc_.data();
+  const float* gradColour = gradColour_.data();
+  const float* lapColour = lapColour_.data();
+  const float* velocity = velocity_.data();
+  const float *m = m_.data(), *pr = p_.data(), *invRho = invRho_.data(), *vol = vol_.data();
+  float* acc = acc_.data();          // acceleration, then the viscosity weight sum in lane 3
+  float* weighted = weighted4_.data();  // weighted velocity, then the colour Laplacian in lane 3
+  float* gradient = gradient4_.data();
+  float maxRelativeSpeed2 = 0;
+
+  for (int i = 0; i < n; ++i) {
+    const auto si = static_cast<std::size_t>(i);
+    const Float4 vi = load4(velocity + 4 * si);
+    const float mi = m[si], pi = pr[si], voli = vol[si];
+    const float halfOverRhoi = 0.5f * invRho[si];
+    Float4 ai{0, 0, 0, 0}, gi{0, 0, 0, 0}, wvi{0, 0, 0, 0};
+    float wi = 0, li = 0;
+    for (std::uint32_t k = pairs.start[si]; k < pairs.start[si + 1]; ++k) {
+      const std::uint32_t j = partner[k];
+      const std::size_t j4 = 4 * static_cast<std::size_t>(j);
+      const Float4 d = load4(offset + 4 * static_cast<std::size_t>(k));
+      const Float4 vj = load4(velocity + j4);
+      const Float4 u = vi - vj;
+      maxRelativeSpeed2 = std::max(maxRelativeSpeed2, dot3(u, u));
+      // Pressure: a_i -= m_j P d, a_j += m_i P d with P = (p_i + p_j) / (2 rho_i rho_j) g(r).
+      // No test for p_i + p_j == 0 (frequent at the surface, where pressure is clamped, and
+      // unpredictable): the force is then exactly zero.
+      const float shared = (pi + pr[j]) * halfOverRhoi * invRho[j];
+      Float4 f = (shared * radial[k]) * d;
+      if (r2s[k] <= 1e-18f && shared != 0.0f) [[unlikely]] {
+        // Coincident (radial is 0 there): a fixed, antisymmetric direction from the ids.
+        const Eigen::Vector3d e = pairDirection(ids[si], ids[j]);
+        const float a = -shared * atZero_;
+        f = Float4{a * static_cast<float>(e.x()), a * static_cast<float>(e.y()), a * static_cast<float>(e.z()), 0.0f};
+      }
+      // Viscosity: sum_j V_j lap W and sum_j V_j lap W v_j (symmetric kernel); the weight sum
+      // rides in lane 3 of the acceleration (d and so f have 0 there).
+      const float lw = lapVisc[k];
+      const float wj = vol[j] * lw, wiPart = voli * lw;
+      ai -= m[j] * f;
+      wi += wj;
+      store4(acc + j4, load4(acc + j4) + mi * f + Float4{0, 0, 0, wiPart});
+      wvi += wj * vj;
+      Float4 wvj = wiPart * vi;
+      if constexpr (Colour) {
+        const float g = gradColour[k];
+        gi += (vol[j] * g) * d;
+        store4(gradient + j4, load4(gradient + j4) - (voli * g) * d);
+        const float l = lapColour[k];
+        li += vol[j] * l;
+        wvj[3] = voli * l;
+      }
+      store4(weighted + j4, load4(weighted + j4) + wvj);
+    }
+    const std::size_t i4 = 4 * si;
+    ai[3] = wi;
+    store4(acc + i4, load4(acc + i4) + ai);
+    wvi[3] = li;
+    store4(weighted + i4, load4(weighted + i4) + wvi);
+    if constexpr (Colour) store4(gradient + i4, load4(gradient + i4) + gi);
+  }
+  return maxRelativeSpeed2;
+}
 
 double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs, const PressureForce& pressure,
                            const ViscosityForce& viscosity, const MuellerSurfaceTension* tension) {
   const int n = p.size();
   const auto un = static_cast<std::size_t>(n);
   const bool colour = tension && tension->active();
-  weightSum_.assign(un, 0.0);
-  weighted_.assign(un, Eigen::Vector3d::Zero());
-  volume_.resize(un);
-  inverseDensity_.resize(un);
-  for (std::size_t i = 0; i < un; ++i) {
-    inverseDensity_[i] = 1.0 / p.density[i];
-    volume_[i] = p.mass[i] * inverseDensity_[i];
-  }
-  gradient_.assign(colour ? un : 0, Eigen::Vector3d::Zero());
-  laplacian_.resize(colour ? un : 0);
-  if (colour) {
-    const double selfLaplacian = tension->kernel().laplacian(0.0);
-    for (std::size_t i = 0; i < un; ++i) laplacian_[i] = volume_[i] * selfLaplacian;
-  }
-
-  // Kernel coefficients, so the loop only multiplies (Kernels.h):
+  velocity_.resize(4 * un);
+  for (auto* v : {&m_, &p_, &invRho_, &vol_}) v->resize(un);
+  for (auto* v : {&acc_, &weighted4_, &gradient4_}) v->assign(4 * un, 0.0f);
+  // Kernel coefficients, so the loops only multiply (Kernels.h):
   //   grad W_spiky = spiky (h - r)^2 / r r_vec,  lap W_visc = visc (h - r),
   //   grad W_poly6 = poly6 (h^2 - r^2)^2 r_vec,  lap W_poly6 = poly6 (h^2 - r^2)(3 h^2 - 7 r^2).
-  const double h = pressure.kernel().radius(), h2 = h * h;
-  const double spiky = pressure.kernel().gradientCoefficient();
-  const double atZero = pressure.kernel().gradientMagnitudeAtZero();
-  const double visc = viscosity.kernel().laplacianCoefficient();
-  const double poly6 = colour ? tension->kernel().gradientCoefficient() : 0.0;
-  const double coincident2 = 1e-18;
-
-  const Eigen::Vector3d* x = p.position.data();
-  const Eigen::Vector3d* v = p.velocity.data();
-  Eigen::Vector3d* a = p.acceleration.data();
-  const double* m = p.mass.data();
-  const double* invRho = inverseDensity_.data();
-  double* distance = pairs.distance.data();
-  const double* pr = p.pressure.data();
-  const double* vol = volume_.data();
-  double* wsum = weightSum_.data();
-  Eigen::Vector3d* wv = weighted_.data();
-  Eigen::Vector3d* grad = gradient_.data();
-  double* lap = laplacian_.data();
-  double maxRelativeSpeed2 = 0;
-
-  for (int i = 0; i < n; ++i) {
-    const auto si = static_cast<std::size_t>(i);
-    const Eigen::Vector3d xi = x[si], vi = v[si];
-    const double mi = m[si], pi = pr[si], voli = vol[si];
-    const double halfOverRhoi = 0.5 * invRho[si];
-    Eigen::Vector3d ai = Eigen::Vector3d::Zero(), gi = Eigen::Vector3d::Zero(), wvi = Eigen::Vector3d::Zero();
-    double wi = 0, li = 0;
-    for (std::uint32_t k = pairs.start[si]; k < pairs.start[si + 1]; ++k) {
-      const std::uint32_t j = pairs.partner[k];
-      const double r2 = distance[k];
-      const double r = std::sqrt(r2);
-      distance[k] = r;  // for ViscosityForce::apply
-      const Eigen::Vector3d d = xi - x[j];
-      maxRelativeSpeed2 = std::max(maxRelativeSpeed2, (vi - v[j]).squaredNorm());
-      const double hr = h - r;
-      // Pressure: a_i -= m_j P d, a_j += m_i P d with P = (p_i + p_j) / (2 rho_i rho_j) g(r).
-      // No test for p_i + p_j == 0 (frequent at the surface, where pressure is clamped, and
-      // unpredictable): the force is then exactly zero.
-      const double shared = (pi + pr[j]) * halfOverRhoi * invRho[j];
-      if (r2 > coincident2) [[likely]] {
-        const Eigen::Vector3d f = (shared * spiky * hr * hr / r) * d;
-        ai -= m[j] * f;
-        a[j] += mi * f;
-      } else if (shared != 0.0) {
-        // Coincident: a fixed, antisymmetric direction from the ids (PairDirection.h).
-        const Eigen::Vector3d f = (shared * atZero) * pairDirection(p.id[si], p.id[j]);
-        ai += m[j] * f;
-        a[j] -= mi * f;
-      }
-      // Viscosity: sum_j V_j lap W and sum_j V_j lap W v_j (symmetric kernel).
-      const double lw = visc * hr;
-      const double wj = vol[j] * lw, wi_ = voli * lw;
-      wi += wj;
-      wsum[j] += wi_;
-      wvi += wj * v[j];
-      wv[j] += wi_ * vi;
-      if (colour) {
-        const double q = h2 - r2;
-        const double g = poly6 * q * q;
-        gi += (vol[j] * g) * d;
-        grad[j] -= (voli * g) * d;
-        const double l = poly6 * q * (3.0 * h2 - 7.0 * r2);
-        li += vol[j] * l;
-        lap[j] += voli * l;
-      }
-    }
-    a[si] += ai;
-    wsum[si] += wi;
-    wv[si] += wvi;
-    if (colour) {
-      grad[si] += gi;
-      lap[si] += li;
-    }
+  const double hd = pressure.kernel().radius();
+  h_ = static_cast<float>(hd);
+  h2_ = static_cast<float>(hd * hd);
+  spiky_ = static_cast<float>(pressure.kernel().gradientCoefficient());
+  atZero_ = static_cast<float>(pressure.kernel().gradientMagnitudeAtZero());
+  visc_ = static_cast<float>(viscosity.kernel().laplacianCoefficient());
+  poly6_ = colour ? static_cast<float>(tension->kernel().gradientCoefficient()) : 0.0f;
+  const float selfLaplacian = colour ? static_cast<float>(tension->kernel().laplacian(0.0)) : 0.0f;
+  for (std::size_t i = 0; i < un; ++i) {
+    const Eigen::Vector3d& v = p.velocity[i];
+    store4(&velocity_[4 * i], Float4{static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z()), 0.0f});
+    m_[i] = static_cast<float>(p.mass[i]);
+    p_[i] = static_cast<float>(p.pressure[i]);
+    invRho_[i] = 1.0f / static_cast<float>(p.density[i]);
+    vol_[i] = m_[i] * invRho_[i];
+    weighted4_[4 * i + 3] = vol_[i] * selfLaplacian;
   }
 
+  // Per-pair factors from r alone: one flat loop over contiguous arrays with no gathers and no
+  // branches (the coincident case is a select), which GCC vectorises with SSE2.
+  const std::size_t pairCount = n > 0 ? pairs.start[un] : 0;
+  for (auto* v : {&radial_, &lapVisc_, &gradColour_, &lapColour_})
+    if (v->size() < pairCount) v->resize(pairs.partner.size());
+  pairFactors(pairs.r2.data(), pairCount, h_, h2_, spiky_, visc_, poly6_, radial_.data(), lapVisc_.data(),
+              gradColour_.data(), lapColour_.data(), pairs.distance.data());
+
+  const float maxRelativeSpeed2 =
+      colour ? accumulate<true>(pairs, n, p.id.data()) : accumulate<false>(pairs, n, p.id.data());
+
+  weightSum_.resize(un);
+  weighted_.resize(un);
+  gradient_.resize(colour ? un : 0);
+  laplacian_.resize(colour ? un : 0);
   const double nu = viscosity.nu();
-  for (std::size_t i = 0; i < un; ++i) p.viscosityRate[i] = nu * wsum[i] * invRho[i];
-  if (colour) tension->addAccelerations(p, gradient_, laplacian_);
-  return std::sqrt(maxRelativeSpeed2);
+  for (std::size_t i = 0; i < un; ++i) {
+    const float* a = &acc_[4 * i];
+    const float* w = &weighted4_[4 * i];
+    p.acceleration[i] += Eigen::Vector3d(a[0], a[1], a[2]);
+    weightSum_[i] = a[3];
+    weighted_[i] = Eigen::Vector3d(w[0], w[1], w[2]);
+    p.viscosityRate[i] = nu * weightSum_[i] * invRho_[i];
+  }
+  if (colour) {
+    for (std::size_t i = 0; i < un; ++i) {
+      const float* g = &gradient4_[4 * i];
+      gradient_[i] = Eigen::Vector3d(g[0], g[1], g[2]);
+      laplacian_[i] = weighted4_[4 * i + 3];
+    }
+    tension->addAccelerations(p, gradient_, laplacian_);
+  }
+  return std::sqrt(static_cast<double>(maxRelativeSpeed2));
 }
 
 }  // namespace lacrima::tears

@@ -11,6 +11,13 @@
 //                           colour field, from one load of the pair's state;
 //   C  (none)               the viscosity relaxation then needs per-particle work only.
 // The iteration order is fixed (particle order, then partner order), so sums are reproducible.
+//
+// Passes A and B run in single precision on copies of the particle state: scalars one array
+// each, 3-vectors as 4 floats (x, y, z, 0), so each scattered vector update is one SSE2 load,
+// add and store (positions relative to the first particle, so float keeps ~1e-5 h of
+// resolution anywhere on the head). Only baseline x86-64 instructions are used (no -march, no
+// FMA contraction), so results are bitwise identical on every x86-64 machine. Per-particle
+// results are converted back to the double ParticleSet.
 #include <lacrima/tears/Kernels.h>
 #include <lacrima/tears/PairList.h>
 #include <lacrima/tears/ParticleSet.h>
@@ -31,6 +38,8 @@ public:
 private:
   double h_;
   Poly6Kernel w_;
+  // Single-precision copies of the particle state, refilled every call (capacity is kept).
+  mutable std::vector<float> position_, m_, rho_;  // position: 4 floats per particle (x, y, z, 0)
 };
 
 // Equation of state p = k (rho - rho0) and the symmetric pressure force
@@ -136,8 +145,20 @@ public:
   std::span<const Eigen::Vector3d> weightedVelocity() const { return weighted_; }
 
 private:
-  std::vector<double> weightSum_, laplacian_, volume_, inverseDensity_;
+  template <bool Colour>
+  float accumulate(const ActivePairs& pairs, int n, std::uint64_t const* ids);
+
+  std::vector<double> weightSum_, laplacian_;
   std::vector<Eigen::Vector3d> gradient_, weighted_;
+  // Float state per particle: velocity (x, y, z, 0 as 4 floats), mass, pressure, 1 / rho,
+  // volume; sums per particle: acceleration (x, y, z, viscosity weight sum), weighted velocity
+  // (x, y, z, colour Laplacian) and colour gradient (x, y, z, 0). Groups of 4 floats are one
+  // SSE register, so a scattered vector update is one load, one add and one store.
+  std::vector<float> velocity_, m_, p_, invRho_, vol_;
+  std::vector<float> acc_, weighted4_, gradient4_;
+  // Per-pair kernel factors, from r alone (one flat, vectorised loop over the pairs).
+  std::vector<float> radial_, lapVisc_, gradColour_, lapColour_;
+  float h_ = 0, h2_ = 0, spiky_ = 0, atZero_ = 0, visc_ = 0, poly6_ = 0;
 };
 
 }  // namespace lacrima::tears

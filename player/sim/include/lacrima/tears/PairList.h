@@ -47,10 +47,14 @@ private:
 };
 
 // The pairs within h this sub-step, i < j, with their distance r = |x_i - x_j|.
+// The float arrays are the pair geometry DensitySolver already computed (relative to one origin,
+// single precision), kept so the force pass streams them instead of gathering positions again.
 struct ActivePairs {
   std::vector<std::uint32_t> start;  // size n + 1
   std::vector<std::uint32_t> partner;
-  std::vector<double> distance;
+  std::vector<double> distance;      // r, written by FluidForcePass (Akinci reads it)
+  std::vector<float> offset;         // 4 per pair: x_i - x_j, then 0 (one SSE register)
+  std::vector<float> r2;             // |x_i - x_j|^2
 
   int particleCount() const { return static_cast<int>(start.empty() ? 0 : start.size() - 1); }
   std::size_t pairCount() const { return partner.size(); }
