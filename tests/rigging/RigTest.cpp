@@ -196,9 +196,9 @@ private slots:
   }
 
   // The head is mirror-symmetric: a left FAP's pose equals its right partner's pose mirrored
-  // in x, compared through nearest mirrored vertices. The tolerance covers the quads'
-  // diagonals, which run the same way on both sides and so are not mirror images: graph
-  // distances differ by part of an edge there.
+  // in x, compared through nearest mirrored vertices. Measured: identical to float precision
+  // for all 40 pairs (the MakeHuman mesh and the feature points are mirror images), so 1% is
+  // room for rounding only.
   void leftAndRightPosesMirror() {
     requireDefaultHead();
     const Eigen::Matrix3Xf& p = head().positions;
@@ -224,7 +224,7 @@ private slots:
         worst = std::max(worst, (offset - expected).norm());
       }
       QVERIFY2(!left.empty(), qPrintable(QString("FAP %1 has a pose").arg(fap)));
-      QVERIFY2(worst <= 0.25f * largest,
+      QVERIFY2(worst <= 0.01f * largest,
                qPrintable(QString("FAP %1 vs %2: worst difference %3 of %4").arg(fap).arg(partner).arg(worst).arg(largest)));
     }
   }
