@@ -72,6 +72,12 @@ std::map<int, Eigen::Vector3f> dense(const VertexPose& pose) {
 
 }  // namespace
 
+// QSKIP ends only the function it is written in, so the check must expand inside each test.
+#define REQUIRE_DEFAULT_HEAD()                                                             \
+  do {                                                                                     \
+    if (!head_) QSKIP("default head not in the cache (run packaging/fetch-default-head.sh)"); \
+  } while (false)
+
 class RigTest : public QObject {
   Q_OBJECT
 
@@ -84,9 +90,6 @@ class RigTest : public QObject {
   const BuiltRig& rig() { return *rig_; }
   Eigen::Vector3d point(const char* id) { return rig().featurePoints.at(id); }
 
-  void requireDefaultHead() {
-    if (!head_) QSKIP("default head not in the cache (run packaging/fetch-default-head.sh)");
-  }
 
 private slots:
   void initTestCase() {
@@ -108,7 +111,7 @@ private slots:
 
   // Every translational FAP 3-68 at 1024 moves its feature point by X0 along its direction.
   void translationsMoveTheirPointByX0() {
-    requireDefaultHead();
+    REQUIRE_DEFAULT_HEAD();
     int checked = 0;
     for (int fap = 3; fap <= 68; ++fap) {
       const FapInfo& info = fapInfo(fap);
@@ -128,7 +131,7 @@ private slots:
 
   // Weights lie in (0, 1], are 1 at the point's vertices and vanish beyond the radius.
   void weightsAreBoundedAndLocal() {
-    requireDefaultHead();
+    REQUIRE_DEFAULT_HEAD();
     const SurfaceGraph skin = buildSurfaceGraph(head(), fdp_->skin);
     for (const auto& [id, radius] : rig().radii) {
       const FeaturePointInfluence& inf = rig().input.influences.at(id);
@@ -158,7 +161,7 @@ private slots:
   // meet), from the slit y(2.2) up to the nose base y(9.15), in front of the corner's depth
   // z(8.3). FAP 5 (lower lip up, at its full slider range) must not move any of them.
   void lowerLipLeavesTheUpperLip() {
-    requireDefaultHead();
+    REQUIRE_DEFAULT_HEAD();
     const auto moved = dense(poseOf(rig(), 5));
     const HeadSubmesh& skin = *head().findSubmesh("skin");
     int upperLip = 0;
@@ -177,7 +180,7 @@ private slots:
   // Lower lid of the left eye: skin vertices within 40% of the eye's width of x(3.3), from
   // y(3.3) down by one IRISD0, in front of z(3.3) - IRISD0. FAP 19 must not move them.
   void upperLidLeavesTheLowerLid() {
-    requireDefaultHead();
+    REQUIRE_DEFAULT_HEAD();
     const auto moved = dense(poseOf(rig(), 19));
     const HeadSubmesh& skin = *head().findSubmesh("skin");
     const double width = point("3.7").x() - point("3.11").x();
@@ -200,7 +203,7 @@ private slots:
   // for all 40 pairs (the MakeHuman mesh and the feature points are mirror images), so 1% is
   // room for rounding only.
   void leftAndRightPosesMirror() {
-    requireDefaultHead();
+    REQUIRE_DEFAULT_HEAD();
     const Eigen::Matrix3Xf& p = head().positions;
     for (int fap = 3; fap <= 68; ++fap) {
       const int partner = mirroredFap(fap);
@@ -230,7 +233,7 @@ private slots:
   }
 
   void fapuArePlausible() {
-    requireDefaultHead();
+    REQUIRE_DEFAULT_HEAD();
     const FapuSet& f = rig().fapu;
     qInfo("FAPU (dm): IRISD0 %g ES0 %g ENS0 %g MNS0 %g MW0 %g", f.irisd0, f.es0, f.ens0, f.mns0, f.mw0);
     QVERIFY(f.irisd0 > 0.05 && f.irisd0 < 0.15);  // an eye opening of 5-15 mm
@@ -242,7 +245,7 @@ private slots:
 
   // A 60-degree head yaw turns every vertex rigidly about the neck pivot.
   void headYawIsRigid() {
-    requireDefaultHead();
+    REQUIRE_DEFAULT_HEAD();
     const PoseBlender blender(head(), rig().poses);
     FapValues values{};
     values[static_cast<std::size_t>(channelIndex(49))] = static_cast<float>(60.0 * M_PI / 180.0 / 1e-5);
@@ -259,7 +262,7 @@ private slots:
   }
 
   void glbLoadsBackWithItsMorphTargets() {
-    requireDefaultHead();
+    REQUIRE_DEFAULT_HEAD();
     const std::string path = QDir(tmp_.path()).filePath("head.glb").toStdString();
     exportGlb(head(), rig().poses, path);
     const std::size_t poses = prepareRigExport(head(), rig().poses, path).size();
@@ -276,7 +279,7 @@ private slots:
   }
 
   void rigJsonDescribesTheRig() {
-    requireDefaultHead();
+    REQUIRE_DEFAULT_HEAD();
     const QJsonObject doc = QJsonDocument::fromJson(QByteArray::fromStdString(rigDescriptionJson(head(), rig()))).object();
     QCOMPARE(doc.value("format").toString(), QString("lacrima-rig"));
     QVERIFY(doc.value("fapu").toObject().value("ES0").toDouble() > 0);
@@ -371,7 +374,7 @@ private slots:
     QCOMPARE(broken.exitCode(), 1);
     QVERIFY(broken.readAllStandardError().contains("error"));
 
-    requireDefaultHead();
+    REQUIRE_DEFAULT_HEAD();
     QProcess badFdp;
     badFdp.start(kRigTool, {"--default", "--fdp", bad, "--report"});
     QVERIFY(badFdp.waitForFinished(60000));
