@@ -29,6 +29,12 @@ find_package(assimp QUIET)
 if(NOT TARGET assimp::assimp)
   lacrima_missing("assimp 5" "libassimp-dev")
 endif()
+# Debian's assimp targets name zlib's development library without depending on its package;
+# without it the failure would only show at link time.
+find_package(ZLIB QUIET)
+if(NOT ZLIB_FOUND)
+  lacrima_missing("zlib's development files (linked by assimp's CMake package)" "zlib1g-dev")
+endif()
 
 find_package(PkgConfig QUIET)
 if(NOT PKG_CONFIG_FOUND)
