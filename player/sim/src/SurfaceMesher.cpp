@@ -34,8 +34,7 @@ std::int64_t floorDiv(double value, double step) { return static_cast<std::int64
 SurfaceMesher::SurfaceMesher()
     : cellMap_(std::make_unique<detail::SurfaceMesherKeyMap>()),
       cubeMap_(std::make_unique<detail::SurfaceMesherKeyMap>()),
-      cornerMap_(std::make_unique<detail::SurfaceMesherKeyMap>()),
-      vertexMap_(std::make_unique<detail::SurfaceMesherKeyMap>()) {}
+      cornerMap_(std::make_unique<detail::SurfaceMesherKeyMap>()) {}
 
 SurfaceMesher::~SurfaceMesher() = default;
 
@@ -123,6 +122,20 @@ const TearSurface& SurfaceMesher::build(std::span<const Eigen::Vector3d> positio
   return surface_;
 }
 
+// Row-major (x-major, z-minor) index of a lattice point in the dense box, or -1 outside it.
+std::int64_t SurfaceMesher::denseSlot(const Lattice& p) const {
+  const Lattice r = p - denseLow_;
+  if ((r.array() < 0).any() || (r.array() >= denseDims_.array()).any()) return -1;
+  return (r.x() * denseDims_.y() + r.y()) * denseDims_.z() + r.z();
+}
+
+// The corner id of a lattice point, or -1 when it is no cube's corner.
+std::int32_t SurfaceMesher::cornerId(const Lattice& p) const {
+  if (!dense_) return cornerMap_->find(pack(p - cubeBase_));
+  const std::int64_t slot = denseSlot(p);
+  return slot < 0 ? -1 : denseCorner_[static_cast<std::size_t>(slot)];
+}
+
 // Every cube meeting an active cell: on each axis k from floor(d h / s) to floor((d + 1) h / s),
 // a superset of the cubes whose interior overlaps the cell [d h, (d + 1) h] (at most one extra
 // cube per axis, at the rim, where c = 0). Returns false once more than maxCubes are found.
@@ -132,7 +145,26 @@ bool SurfaceMesher::collectCubes(double s, std::size_t maxCubes) {
                       floorDiv(static_cast<double>(cellBase_.z()) * h, s)) -
               Lattice::Constant(1);
   const double perCell = std::pow(h / s + 1.0, 3);
-  cubeMap_->reset(static_cast<std::size_t>(std::min(static_cast<double>(maxCubes), perCell * static_cast<double>(dilated_.size()))));
+  const double expected = std::min(static_cast<double>(maxCubes), perCell * static_cast<double>(dilated_.size()));
+  // The corners' bounding box: every cube of every dilated cell plus its +1 corners. Dense when
+  // it holds at most ~8 lattice points per expected cube (filling an int costs far less than a
+  // hash probe), else the hash maps keep memory proportional to the cubes.
+  Lattice cellHigh = dilated_.front();
+  for (const Lattice& d : dilated_) cellHigh = cellHigh.cwiseMax(d);
+  Lattice boxHigh;
+  for (int a = 0; a < 3; ++a) {
+    denseLow_[a] = floorDiv(static_cast<double>(cellBase_[a]) * h, s);
+    boxHigh[a] = floorDiv(static_cast<double>(cellHigh[a] + 1) * h, s) + 1;
+  }
+  denseDims_ = boxHigh - denseLow_ + Lattice::Constant(1);
+  const double boxPoints = static_cast<double>(denseDims_.x()) * static_cast<double>(denseDims_.y()) *
+                           static_cast<double>(denseDims_.z());
+  dense_ = boxPoints <= 8.0 * expected + 4096.0 && boxPoints <= double(std::int64_t{1} << 26);
+  if (dense_) {
+    denseCube_.assign(static_cast<std::size_t>(boxPoints), -1);
+  } else {
+    cubeMap_->reset(static_cast<std::size_t>(expected));
+  }
   cube_.clear();
   for (const Lattice& d : dilated_) {
     Lattice lo, hi;
@@ -141,22 +173,51 @@ bool SurfaceMesher::collectCubes(double s, std::size_t maxCubes) {
       hi[a] = floorDiv(static_cast<double>(d[a] + 1) * h, s);
     }
     for (std::int64_t x = lo.x(); x <= hi.x(); ++x)
-      for (std::int64_t y = lo.y(); y <= hi.y(); ++y)
+      for (std::int64_t y = lo.y(); y <= hi.y(); ++y) {
+        // The z run of this (x, y) is contiguous in the dense box: one index, then +1 per cube.
+        const std::int64_t row = dense_ ? denseSlot(Lattice(x, y, lo.z())) - lo.z() : 0;
         for (std::int64_t z = lo.z(); z <= hi.z(); ++z) {
           const Lattice k(x, y, z);
-          if (!cubeMap_->insert(pack(k - cubeBase_), static_cast<std::int32_t>(cube_.size())).second) continue;
+          const auto id = static_cast<std::int32_t>(cube_.size());
+          if (dense_) {
+            std::int32_t& slot = denseCube_[static_cast<std::size_t>(row + z)];
+            if (slot >= 0) continue;
+            slot = id;
+          } else if (!cubeMap_->insert(pack(k - cubeBase_), id).second) {
+            continue;
+          }
           cube_.push_back(k);
           if (cube_.size() > maxCubes) return false;
         }
+      }
   }
   return true;
 }
 
 // The eight corners of every cube, each lattice point once.
 void SurfaceMesher::collectCorners() {
-  cornerMap_->reset(cube_.size() + cube_.size() / 2 + 64);
   corner_.clear();
   cubeCorner_.resize(cube_.size());
+  if (dense_) {
+    denseCorner_.assign(denseCube_.size(), -1);
+    // Corner k of a cube is `step[k]` slots from its corner 0 (the box is row-major).
+    const std::int64_t dz = 1, dy = denseDims_.z(), dx = denseDims_.y() * denseDims_.z();
+    std::array<std::int64_t, 8> step;
+    for (int k = 0; k < 8; ++k) step[static_cast<std::size_t>(k)] = (k & 1) * dx + ((k >> 1) & 1) * dy + ((k >> 2) & 1) * dz;
+    for (std::size_t i = 0; i < cube_.size(); ++i) {
+      const std::int64_t base = denseSlot(cube_[i]);  // in the box, and so are its +1 corners
+      for (int k = 0; k < 8; ++k) {
+        std::int32_t& slot = denseCorner_[static_cast<std::size_t>(base + step[static_cast<std::size_t>(k)])];
+        if (slot < 0) {
+          slot = static_cast<std::int32_t>(corner_.size());
+          corner_.push_back(cube_[i] + cornerOffset(k));
+        }
+        cubeCorner_[i][static_cast<std::size_t>(k)] = slot;
+      }
+    }
+    return;
+  }
+  cornerMap_->reset(cube_.size() + cube_.size() / 2 + 64);
   for (std::size_t i = 0; i < cube_.size(); ++i)
     for (int k = 0; k < 8; ++k) {
       const Lattice p = cube_[i] + cornerOffset(k);
@@ -193,7 +254,7 @@ void SurfaceMesher::splat(double s) {
           const double ez = static_cast<double>(k) * s - x.z();
           const double d = rest - ez * ez;
           if (d <= 0) continue;
-          const std::int32_t c = cornerMap_->find(pack(Lattice(i, j, k) - cubeBase_));
+          const std::int32_t c = cornerId(Lattice(i, j, k));
           if (c >= 0) cornerValue_[static_cast<std::size_t>(c)] += volume[t] * d * d * d;
         }
       }
@@ -203,14 +264,16 @@ void SurfaceMesher::splat(double s) {
   for (double& v : cornerValue_) v *= w;
 }
 
-std::int32_t SurfaceMesher::vertexOnEdge(const Lattice& lower, int axis, double s, double iso) {
-  const std::uint64_t key = (pack(lower - cubeBase_) << 2) | static_cast<std::uint64_t>(axis);
-  const auto [id, inserted] = vertexMap_->insert(key, static_cast<std::int32_t>(surface_.position_.size()));
-  if (!inserted) return id;
-  Lattice upper = lower;
-  ++upper[axis];
-  const double a = cornerValue_[static_cast<std::size_t>(cornerMap_->find(pack(lower - cubeBase_)))];
-  const double b = cornerValue_[static_cast<std::size_t>(cornerMap_->find(pack(upper - cubeBase_)))];
+// The vertex on the cube edge from corner `lowerCorner` (at lattice point `lower`) along `axis`
+// to `upperCorner`: created once per edge, keyed by the lower corner's id and the axis, so the
+// cubes sharing the edge share the vertex (watertight) without a hash of lattice keys.
+std::int32_t SurfaceMesher::vertexOnEdge(const Lattice& lower, std::int32_t lowerCorner, std::int32_t upperCorner,
+                                         int axis, double s, double iso) {
+  std::int32_t& id = edgeVertex_[3 * static_cast<std::size_t>(lowerCorner) + static_cast<std::size_t>(axis)];
+  if (id >= 0) return id;
+  id = static_cast<std::int32_t>(surface_.position_.size());
+  const double a = cornerValue_[static_cast<std::size_t>(lowerCorner)];
+  const double b = cornerValue_[static_cast<std::size_t>(upperCorner)];
   // One end is inside (>= iso) and the other outside (< iso), so b - a != 0 and mu is in [0, 1].
   const double mu = (iso - a) / (b - a);
   Eigen::Vector3d p = lower.cast<double>() * s;
@@ -221,7 +284,7 @@ std::int32_t SurfaceMesher::vertexOnEdge(const Lattice& lower, int axis, double 
 
 void SurfaceMesher::march(double s, double iso) {
   const MarchingCubesTable& table = MarchingCubesTable::instance();
-  vertexMap_->reset(0);  // keeps its slots; grows only past the largest surface seen
+  edgeVertex_.assign(3 * corner_.size(), -1);  // keeps its capacity between frames
   for (std::size_t i = 0; i < cube_.size(); ++i) {
     const auto& corners = cubeCorner_[i];
     int configuration = 0;
@@ -233,8 +296,10 @@ void SurfaceMesher::march(double s, double iso) {
       Eigen::Vector3i triangle;
       for (int v = 0; v < 3; ++v) {
         const int edge = c.edges[static_cast<std::size_t>(3 * t + v)];
-        const Lattice lower = cube_[i] + cornerOffset(MarchingCubesTable::edgeLowerCorner(edge));
-        triangle[v] = vertexOnEdge(lower, MarchingCubesTable::edgeAxis(edge), s, iso);
+        const int lowerK = MarchingCubesTable::edgeLowerCorner(edge), upperK = MarchingCubesTable::edgeUpperCorner(edge);
+        const Lattice lower = cube_[i] + cornerOffset(lowerK);
+        triangle[v] = vertexOnEdge(lower, corners[static_cast<std::size_t>(lowerK)],
+                                   corners[static_cast<std::size_t>(upperK)], MarchingCubesTable::edgeAxis(edge), s, iso);
       }
       surface_.triangle_.push_back(triangle);
     }

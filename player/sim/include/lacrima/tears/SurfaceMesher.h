@@ -114,7 +114,10 @@ private:
   void splat(double s);
   void march(double s, double iso);
   void computeNormals();
-  std::int32_t vertexOnEdge(const Eigen::Matrix<std::int64_t, 3, 1>& lower, int axis, double s, double iso);
+  std::int32_t vertexOnEdge(const Eigen::Matrix<std::int64_t, 3, 1>& lower, std::int32_t lowerCorner,
+                            std::int32_t upperCorner, int axis, double s, double iso);
+  std::int64_t denseSlot(const Eigen::Matrix<std::int64_t, 3, 1>& p) const;
+  std::int32_t cornerId(const Eigen::Matrix<std::int64_t, 3, 1>& p) const;
 
   SurfaceMesherField field_;
   TearSurface surface_;
@@ -122,11 +125,17 @@ private:
   long long cappedBuilds_ = 0;
 
   using Lattice = Eigen::Matrix<std::int64_t, 3, 1>;
-  std::unique_ptr<detail::SurfaceMesherKeyMap> cellMap_, cubeMap_, cornerMap_, vertexMap_;
+  std::unique_ptr<detail::SurfaceMesherKeyMap> cellMap_, cubeMap_, cornerMap_;
   Lattice cellBase_, cubeBase_;                    // relative coordinates start here
   std::vector<Lattice> dilated_, cube_, corner_;   // absolute integer coordinates
   std::vector<std::array<std::int32_t, 8>> cubeCorner_;
   std::vector<double> cornerValue_;
+  // Dense lattice, used instead of cubeMap_ / cornerMap_ when the corners' bounding box is
+  // compact (a drop): an array lookup replaces a hash probe for every cube corner and splat.
+  bool dense_ = false;
+  Lattice denseLow_, denseDims_;
+  std::vector<std::int32_t> denseCube_, denseCorner_;  // id per box point, -1 = none
+  std::vector<std::int32_t> edgeVertex_;               // 3 per corner (axis), -1 = none yet
   std::vector<std::uint8_t> normalFallback_;
 };
 
