@@ -47,7 +47,6 @@ void printHelp(FILE* out) {
       kFps);
 }
 
-
 // 0 = options fine, 1 = --help was printed, 2 = usage error (printed).
 int parseOptions(int argc, char** argv, Options& options) {
   for (int i = 1; i < argc; ++i) {

@@ -60,7 +60,6 @@ void printHelp(FILE* out) {
                "  --json          one JSON object instead of the table\n");
 }
 
-
 // 0 = run, 1 = help printed, 2 = usage error.
 int parse(int argc, char** argv, Options& o) {
   for (int i = 1; i < argc; ++i) {
