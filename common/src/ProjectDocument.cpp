@@ -1,5 +1,6 @@
 #include <lacrima/AtomicSave.h>
 #include <lacrima/FapTable.h>
+#include <lacrima/JsonSyntaxError.h>
 #include <lacrima/JsonWriter.h>
 #include <lacrima/ProjectDocument.h>
 
@@ -415,27 +416,6 @@ private:
   std::string file_;
 };
 
-// 1-based line and column (in characters, not bytes) of the character a parse error is
-// about. QJsonDocument reports the offset just past that character, having consumed it,
-// except for trailing garbage, where it points at the garbage itself.
-SourceLocation locate(std::string_view text, const QJsonParseError& error,
-                      const std::string& file) {
-  const qsizetype offset =
-      error.error == QJsonParseError::GarbageAtEnd ? error.offset : error.offset - 1;
-  const auto end = static_cast<std::size_t>(
-      std::clamp<qsizetype>(offset, 0, static_cast<qsizetype>(text.size())));
-  int line = 1;
-  int column = 1;
-  for (std::size_t i = 0; i < end; ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) {
-      ++column;  // UTF-8 continuation bytes belong to the character before them
-    }
-  }
-  return {file, line, column};
-}
 
 }  // namespace
 
@@ -479,7 +459,7 @@ ProjectDocument ProjectDocument::fromJson(std::string_view json, const std::stri
   QJsonParseError error{};
   const QJsonDocument parsed = QJsonDocument::fromJson(bytes, &error);
   if (error.error != QJsonParseError::NoError) {
-    throw FileError(locate(json, error, displayName),
+    throw FileError(jsonSyntaxErrorLocation(json, error, displayName),
                     "invalid JSON: " + error.errorString().toStdString());
   }
   const DocumentReader reader(displayName);

@@ -1,4 +1,5 @@
 #include <lacrima/rig/FeaturePointFile.h>
+#include <lacrima/JsonSyntaxError.h>
 
 #include <lacrima/FapTable.h>
 
@@ -158,20 +159,6 @@ private:
   std::vector<std::string> errors_;
 };
 
-// 1-based line and column of a byte offset, for JSON syntax errors.
-SourceLocation locate(const std::string& path, const QByteArray& bytes, int offset) {
-  SourceLocation where{path, 1, 1};
-  for (int k = 0; k < offset && k < bytes.size(); ++k) {
-    if (bytes[k] == '\n') {
-      ++where.line;
-      where.column = 1;
-    } else {
-      ++where.column;
-    }
-  }
-  return where;
-}
-
 const HeadSubmesh* findAndCheck(const HeadMesh& mesh, const std::string& name, const std::string& where,
                                 std::vector<std::string>& errors) {
   const HeadSubmesh* s = mesh.findSubmesh(name);
@@ -252,7 +239,7 @@ FeaturePointFile readFeaturePointFile(const std::string& path, Warnings* warning
   QJsonParseError parseError;
   const QJsonDocument doc = QJsonDocument::fromJson(bytes, &parseError);
   if (parseError.error != QJsonParseError::NoError)
-    throw FileError(locate(path, bytes, parseError.offset),
+    throw FileError(jsonSyntaxErrorLocation(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())), parseError, path),
                     "not valid JSON: " + parseError.errorString().toStdString());
   if (!doc.isObject()) throw FileError({path, 0, 0}, "expected a JSON object at the top level");
 

@@ -1,6 +1,7 @@
 #include "ThreeJsonModel.h"
 
 #include <lacrima/Diagnostics.h>
+#include <lacrima/JsonSyntaxError.h>
 
 #include <QFile>
 #include <QJsonArray>
@@ -25,11 +26,14 @@ QJsonObject readJsonObject(const std::string& path) {
   QFile file(QString::fromStdString(path));
   if (!file.open(QIODevice::ReadOnly))
     fail(path, "cannot open: " + file.errorString().toStdString());
+  const QByteArray bytes = file.readAll();
   QJsonParseError error;
-  const QJsonDocument document = QJsonDocument::fromJson(file.readAll(), &error);
-  if (error.error != QJsonParseError::NoError)
-    fail(path, "not valid JSON (" + error.errorString().toStdString() + " at byte " +
-                   std::to_string(error.offset) + ")");
+  const QJsonDocument document = QJsonDocument::fromJson(bytes, &error);
+  if (error.error != QJsonParseError::NoError) {
+    const std::string_view text(bytes.constData(), static_cast<std::size_t>(bytes.size()));
+    throw FileError(jsonSyntaxErrorLocation(text, error, path),
+                    "not valid JSON (" + error.errorString().toStdString() + ")");
+  }
   if (!document.isObject()) fail(path, "expected a JSON object at the top level");
   return document.object();
 }

@@ -1,5 +1,6 @@
 #include <lacrima/tears/Kernels.h>
 #include <lacrima/tears/Parameters.h>
+#include <lacrima/JsonSyntaxError.h>
 
 #include <QByteArray>
 #include <QJsonDocument>
@@ -79,9 +80,9 @@ TearSettings TearSettings::fromJson(std::string_view json) {
   const QJsonDocument document = QJsonDocument::fromJson(
       QByteArray(json.data(), static_cast<qsizetype>(json.size())), &error);
   if (error.error != QJsonParseError::NoError) {
-    throw std::invalid_argument("tear parameters: invalid JSON at offset " +
-                                std::to_string(error.offset) + ": " +
-                                error.errorString().toStdString());
+    throw std::invalid_argument(
+        jsonSyntaxErrorLocation(json, error, "tear parameters").toString() +
+        ": invalid JSON: " + error.errorString().toStdString());
   }
   if (!document.isObject())
     throw std::invalid_argument("tear parameters: expected a JSON object of name: number");
