@@ -1,6 +1,7 @@
 #include <lacrima/HeadMesh.h>
 #include <lacrima/rig/DefaultHead.h>
 #include <lacrima/rig/MeshImport.h>
+#include <lacrima/rig/SphereFit.h>
 
 #include <Eigen/Dense>
 
@@ -27,26 +28,12 @@ const std::array<const char*, 10> kRoles = {"skin",      "eye_l",       "eye_r",
                                             "cornea_r",  "teeth_upper", "teeth_lower", "tongue",
                                             "eyelashes", "eyebrows"};
 
-struct Sphere {
-  Eigen::Vector3d centre;
-  double radius = 0;
-};
-
-// Least-squares sphere through the vertices of a sub-mesh: |p|^2 = 2 c.p + (r^2 - |c|^2) is
-// linear in c and the bracket.
-Sphere fitSphere(const HeadMesh& mesh, const HeadSubmesh& sub) {
-  Eigen::MatrixXd a(sub.vertexCount, 4);
-  Eigen::VectorXd b(sub.vertexCount);
-  for (int i = 0; i < sub.vertexCount; ++i) {
-    const Eigen::Vector3d p = mesh.positions.col(sub.firstVertex + i).cast<double>();
-    a.row(i) << 2 * p.transpose(), 1.0;
-    b(i) = p.squaredNorm();
-  }
-  const Eigen::Vector4d x = a.colPivHouseholderQr().solve(b);
-  Sphere s;
-  s.centre = x.head<3>();
-  s.radius = std::sqrt(x(3) + s.centre.squaredNorm());
-  return s;
+// The library's least-squares sphere through the vertices of a sub-mesh.
+Sphere fitSubmeshSphere(const HeadMesh& mesh, const HeadSubmesh& sub) {
+  const Eigen::Matrix3Xd points =
+      mesh.positions.middleCols(sub.firstVertex, sub.vertexCount).cast<double>();
+  const std::optional<Sphere> sphere = fitSphere(points);
+  return sphere ? *sphere : Sphere{};
 }
 
 double farthestFrom(const HeadMesh& mesh, const HeadSubmesh& sub, const Eigen::Vector3d& centre) {
@@ -251,7 +238,7 @@ class HeadImportTest : public QObject {
     if (!head_) QSKIP("default head not fetched");
     for (const auto& [name, side] : {std::pair{"eye_l", 1.0f}, std::pair{"eye_r", -1.0f}}) {
       const HeadSubmesh& eye = part(name);
-      const Sphere s = fitSphere(head(), eye);
+      const Sphere s = fitSubmeshSphere(head(), eye);
       const Eigen::Vector3f c = s.centre.cast<float>();
       qInfo("%s: centre %s radius %.4f", name, qPrintable(text(c)), s.radius);
       // Rotation centre (+-0.308, 7.284, 1.236), radius 0.145: fitted to the body, not the
