@@ -1,0 +1,66 @@
+#pragma once
+// Turns FAP values into frames: pose blending, then -- only when a tear channel is non-zero or
+// tears are still on the face -- the tear simulation, its surface and its trails, and the
+// texture-blend weights. Shared by the player (driven by Playback) and the editor's live preview
+// (driven by the sliders). Engine-free: no OGRE, no Qt Widgets.
+#include <lacrima/FapChannels.h>
+#include <lacrima/ProjectDocument.h>
+#include <lacrima/playback/FrameView.h>
+#include <lacrima/playback/HeadRig.h>
+#include <lacrima/tears/Parameters.h>
+
+#include <memory>
+
+namespace lacrima::playback {
+
+// Milliseconds spent per stage in the last produce() call.
+struct ProducerTimes {
+  double blend = 0, simulation = 0, surface = 0, trails = 0;
+  double total() const { return blend + simulation + surface + trails; }
+};
+
+// Work counters since construction or reset(): tests use them to prove effects on demand.
+struct ProducerCounters {
+  long long frames = 0, blends = 0, simulationSteps = 0, surfaceRuns = 0, trailRuns = 0;
+};
+
+class FrameProducer {
+public:
+  explicit FrameProducer(const HeadRig& rig, const SceneSettings& scene = {});
+  ~FrameProducer();
+  FrameProducer(const FrameProducer&) = delete;
+  FrameProducer& operator=(const FrameProducer&) = delete;
+
+  // Effects and simulation overrides. Changing the simulation parameters restarts the tears.
+  void setScene(const SceneSettings& scene);
+  const SceneSettings& scene() const;
+  // Tear sources in the head frame; nullopt entries keep the rig's default under each eye.
+  void setTearSources(const TearSources& sources);
+
+  // Advances by dt seconds with these channel values. `progress` in [0, 1] is how far through
+  // the animation this frame is (the 2009 redness ramp); the editor passes 0 or its time ratio.
+  const FrameView& produce(const FapValues& values, double dt, double progress);
+  // Re-blends the face for `values` without advancing the tears (scrubbing between frames,
+  // slider drags in a paused editor).
+  const FrameView& pose(const FapValues& values);
+  const FrameView& view() const;
+
+  // Neutral face, no tears, no trails, redness 0.
+  void reset();
+
+  // Full state of the tears (simulation, trails, wetness history): restoring it and producing
+  // the same inputs again gives bitwise-identical frames.
+  class Checkpoint;
+  std::shared_ptr<const Checkpoint> checkpoint() const;
+  void restore(const Checkpoint& checkpoint);
+
+  const ProducerTimes& lastTimes() const;
+  const ProducerCounters& counters() const;
+  int particleCount() const;
+
+private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace lacrima::playback

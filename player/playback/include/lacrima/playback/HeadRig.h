@@ -1,0 +1,30 @@
+#pragma once
+// A rigged head ready to animate: the mesh, its rig (poses, FAPU, tear sources) and the blender.
+// Built in memory at start-up (about 25 ms for the default head), so the player and editor work
+// with any head the rigging layer accepts, not only pre-exported ones.
+#include <lacrima/HeadMesh.h>
+#include <lacrima/PoseSet.h>
+#include <lacrima/rig/RigBuilder.h>
+
+#include <memory>
+#include <string>
+
+namespace lacrima::playback {
+
+struct HeadRig {
+  HeadMesh head;
+  BuiltRig rig;  // rig.input.mesh points at `head`: a HeadRig is never copied or moved
+  std::unique_ptr<PoseBlender> blender;
+
+  HeadRig() = default;
+  HeadRig(const HeadRig&) = delete;
+  HeadRig& operator=(const HeadRig&) = delete;
+};
+
+// The default head (fetched at set-up) with media/default-head.fdp.json. Throws FileError
+// naming what is missing when the head has not been fetched (packaging/fetch-default-head.sh).
+std::unique_ptr<HeadRig> loadDefaultHeadRig();
+// Any mesh assimp reads, with its feature-point file (lacrima-fdp v1). Throws FileError.
+std::unique_ptr<HeadRig> loadHeadRig(const std::string& meshPath, const std::string& fdpPath);
+
+}  // namespace lacrima::playback

@@ -1,0 +1,58 @@
+#pragma once
+// An animation playing on a rigged head: a FAP file or a project, its frames fed to a
+// FrameProducer at the file's rate, with seeking. The tears are deterministic, so going back
+// restores the nearest earlier checkpoint (one every `checkpointInterval` frames) and replays
+// forward from it; going forward steps on from the current frame.
+//
+// The tears advance once per animation frame (dt = 1 / fps). Between frames, the face is
+// interpolated (FapAnimation::sample) so a viewport rendering faster than the file stays smooth.
+#include <lacrima/FapAnimation.h>
+#include <lacrima/ProjectDocument.h>
+#include <lacrima/playback/FrameProducer.h>
+
+#include <memory>
+#include <string>
+
+namespace lacrima::playback {
+
+class Playback {
+public:
+  explicit Playback(const HeadRig& rig, int checkpointInterval = 50);
+  ~Playback();
+
+  // A .fap file or a project (.json, .lacrima). Throws FileError (file, line, what was expected);
+  // on error the current animation stays loaded.
+  void open(const std::string& path);
+  void setAnimation(FapAnimation animation, const SceneSettings& scene = {}, const TearSources& sources = {});
+  const FapAnimation& animation() const;
+  const std::string& path() const;  // empty when set from memory
+
+  int frameCount() const;
+  double frameRate() const;
+  double duration() const;
+  // True when the animation drives a tear channel; false means no simulation will ever run.
+  bool hasTears() const;
+
+  void setScene(const SceneSettings& scene);  // effects; simulation changes restart the tears
+  const SceneSettings& scene() const;
+
+  // Shows time t (clamped to the animation): the tears at the last whole frame <= t, the face
+  // interpolated at t.
+  const FrameView& seek(double seconds);
+  const FrameView& view() const;
+  int currentFrame() const;     // the last whole frame the tears have reached
+  double currentTime() const;
+
+  // Neutral face, all tears gone, time 0.
+  void reset();
+
+  const FrameProducer& producer() const;
+  int checkpointCount() const;
+  long long framesSimulated() const;  // produce() calls so far (replays after seeks included)
+
+private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace lacrima::playback

@@ -1,0 +1,49 @@
+#pragma once
+// Off-screen rendering of a face and its tears into images: batch renders (lacrima-player
+// --render), tests and benchmarks. Uses the same scene as the on-screen viewport.
+//
+// Needs an X display (OGRE on Debian is GLX only); the constructor throws std::runtime_error
+// saying so (run under xvfb-run) when there is none.
+#include <lacrima/playback/FrameView.h>
+
+#include <Eigen/Core>
+
+#include <QImage>
+#include <QPointF>
+#include <QSize>
+
+#include <memory>
+
+namespace lacrima::scene {
+
+struct RenderTimes {
+  double upload = 0, render = 0, readback = 0;  // milliseconds, last render()
+};
+
+class FaceRenderer {
+public:
+  // `neutral` must outlive the renderer.
+  FaceRenderer(const HeadMesh& neutral, QSize size);
+  ~FaceRenderer();
+  FaceRenderer(const FaceRenderer&) = delete;
+  FaceRenderer& operator=(const FaceRenderer&) = delete;
+
+  void resize(QSize size);
+  QSize size() const;
+  void show(const playback::FrameView& view);
+  QImage render();  // Format_RGBA8888, upright
+  // Camera: the same framing as the viewport's reset view, then orbit/zoom in its terms.
+  void resetView();
+  void orbit(double yawDegrees, double pitchDegrees);
+  void zoom(double factor);  // < 1 moves closer
+  // Pixel position of a point in the head frame under the current camera (tests: where the
+  // eyes and cheeks are in the image); y grows downwards.
+  QPointF project(const Eigen::Vector3d& headPoint) const;
+  const RenderTimes& lastTimes() const;
+
+private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace lacrima::scene
