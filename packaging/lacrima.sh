@@ -48,25 +48,37 @@ build_lacrima() {
   fi
 }
 
+# A display the player can open a window on: a local X server's socket, or a remote one
+# (ssh -X), which the player tries itself.
+display_available() {
+  [ -n "${DISPLAY:-}" ] || return 1
+  local number=${DISPLAY#*:}
+  number=${number%%.*}
+  case "$DISPLAY" in
+    :* | unix:*) [ -S "/tmp/.X11-unix/X$number" ] ;;
+    *) return 0 ;;
+  esac
+}
+
+# The player on the committed demo (media/demo/crying.fap): a window when there is a display,
+# else every frame rendered headless under Xvfb.
 run_demo() {
-  local bin="$build/bin" out="$build/demo"
-  mkdir -p "$out"
-  "$bin/lacrima-fap" convert "$root/media/demo/crying.json" -o "$out/crying.fap"
-  "$bin/lacrima-fap" check "$out/crying.fap"
-  "$bin/lacrima-fap" interpolate "$out/crying.fap" -o "$out/crying-smooth-60fps.fap" --fps 60 --smooth
-  "$bin/lacrima-fap" dump "$out/crying.fap" >"$out/crying.csv"
+  local bin="$build/bin" demo="$root/media/demo/crying.fap" out="$build/demo/render"
+  "$bin/lacrima-fap" check "$demo"
   if [ "$head_available" -eq 0 ]; then
-    echo "lacrima: demo written to $out: crying.fap (+ 60 fps, CSV); no default head to rig"
+    echo "lacrima: no default head, so nothing to play the demo on (bash packaging/fetch-default-head.sh fetches it)"
     return 0
   fi
-  "$bin/lacrima-rig" --default -o "$out/rig" --fdp-image "$out/feature-points.png" 2>/dev/null
-  # The face at the height of the sob (frame 165 = 7.5 s): its FAP values from the CSV dump.
-  local faps
-  faps=$(awk -F, 'NR == 167 { for (i = 4; i <= 69; ++i) if ($i != 0) printf " --fap %d=%s", i - 1, $i }' "$out/crying.csv")
-  # shellcheck disable=SC2086  # one word per option
-  "$bin/lacrima-rig" --default --pose-image "$out/sob.png" $faps 2>/dev/null
-  echo "lacrima: demo written to $out: crying.fap (+ 60 fps, CSV), the rigged default head in rig/"
-  echo "         (head.mesh, head.glb, rig.json), feature-points.png and sob.png (the face at 7.5 s)"
+  if display_available; then
+    echo "lacrima: opening the player on the demo (Space plays/pauses, Home resets, Ctrl+O opens another file)"
+    "$bin/lacrima-player" --play "$demo"
+    return 0
+  fi
+  echo "lacrima: no display, so the demo is rendered headless (xvfb-run) into $out"
+  rm -rf "$out"
+  xvfb-run -a -s "-screen 0 1280x1024x24" "$bin/lacrima-player" --render "$out" --size 1280x720 "$demo" >/dev/null
+  echo "lacrima: the demo's frames are $out/frame_0000.png ... $(basename "$(ls "$out"/frame_*.png | tail -n 1)");"
+  echo "         twelve of them side by side: $out/contact_sheet.png"
 }
 
 run_tests() {

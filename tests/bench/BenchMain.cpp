@@ -10,6 +10,8 @@ int runTears(int argc, char** argv);
 int runGeodesics(int argc, char** argv);
 int runPoses(int argc, char** argv);
 int runTearsSweep(int argc, char** argv);
+int runEditor(int argc, char** argv);
+int runPlayer(int argc, char** argv);
 }
 
 namespace {
@@ -29,8 +31,10 @@ const Subcommand kSubcommands[] = {
      "neighbours)", lacrima::bench::runTearsSweep},
     {"geodesics", "geodesic distance: accuracy against time (sphere, plane), ms per feature point",
      lacrima::bench::runGeodesics},
+    {"editor", "the editor: live preview with 500 tear particles (>= 30 fps), slider and timeline costs", lacrima::bench::runEditor},
     {"poses", "rig, bake and blend every FAP pose on synthetic and real (default, ICT) heads",
      lacrima::bench::runPoses},
+    {"player", "the whole player (playback + OGRE render) on the demo at 1280x720: fps, stage shares", lacrima::bench::runPlayer},
 };
 
 void printUsage(FILE* out) {

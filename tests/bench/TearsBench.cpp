@@ -36,6 +36,9 @@ struct Options {
   double skin = SimulationOptions{}.neighbourSkin;
   NeighbourMethod neighbours = NeighbourMethod::Grid;
   SurfaceTensionModel tension = SurfaceTensionModel::Mueller;
+  PressureSolver solver = SimulationOptions{}.pressureSolver;
+  double maxStepMs = 0;
+  double substepFactor = 1;  // scales the CFL and acceleration safety factors
   TearSettings settings;
 };
 
@@ -43,7 +46,9 @@ void printHelp(FILE* out) {
   std::fprintf(out,
                "usage: lacrima-bench tears [--particles N] [--frames F] [--fps R] [--param NAME=VALUE ...]\n"
                "                           [--neighbours grid|octree] [--tension mueller|akinci] [--skin S]\n"
-               "                           [--head sheet|default] [--sway] [--json]\n\n"
+               "                           [--solver wcsph|dfsph] [--max-step MS] [--substep-factor F]\n"
+               "                           [--head sheet|default]\n"
+               "                           [--sway] [--json]\n\n"
                "Runs the tear pipeline (simulation + surface mesher + trails) on a generated, tilted\n"
                "cheek-sized sheet (decimetres) or the default head, with N/2 particles commanded per\n"
                "eye from the first frame, and reports the median frame time of the whole pipeline.\n\n"
@@ -54,6 +59,9 @@ void printHelp(FILE* out) {
                "                  kernel node_size cube_size iso), validated against its range\n"
                "  --neighbours    neighbour structure (default grid)\n"
                "  --tension       surface tension model (default mueller)\n"
+               "  --solver S      pressure solver: wcsph (equation of state) or dfsph (divergence-free)\n"
+               "  --max-step MS   longest sub-step in milliseconds (default: no cap)\n"
+               "  --substep-factor F  scales the CFL and acceleration safety factors (default 1)\n"
                "  --skin S        Verlet skin of the pair list, in kernel radii (default 0.3; 0 = no reuse)\n"
                "  --head H        sheet (default) or default: the cached default head (skipped when absent)\n"
                "  --sway          the sheet (or head) sways (rotates and translates) every frame\n"
@@ -116,6 +124,25 @@ int parse(int argc, char** argv, Options& o) {
         std::fprintf(stderr, "lacrima-bench tears: --skin takes 0..2 kernel radii\n");
         return 2;
       }
+    } else if (arg == "--solver" && hasValue) {
+      const std::string v = argv[++i];
+      if (v != "wcsph" && v != "dfsph") {
+        std::fprintf(stderr, "lacrima-bench tears: --solver takes wcsph or dfsph\n");
+        return 2;
+      }
+      o.solver = v == "wcsph" ? PressureSolver::Wcsph : PressureSolver::Dfsph;
+    } else if (arg == "--max-step" && hasValue) {
+      o.maxStepMs = std::atof(argv[++i]);
+      if (!(o.maxStepMs >= 0 && o.maxStepMs <= 1000)) {
+        std::fprintf(stderr, "lacrima-bench tears: --max-step takes 0..1000 ms\n");
+        return 2;
+      }
+    } else if (arg == "--substep-factor" && hasValue) {
+      o.substepFactor = std::atof(argv[++i]);
+      if (!(o.substepFactor > 0 && o.substepFactor <= 10)) {
+        std::fprintf(stderr, "lacrima-bench tears: --substep-factor takes (0, 10]\n");
+        return 2;
+      }
     } else if (arg == "--neighbours" && hasValue) {
       const std::string v = argv[++i];
       if (v != "grid" && v != "octree") {
@@ -155,6 +182,23 @@ double searchRate(NeighbourSearch& search, const std::vector<Eigen::Vector3d>& x
   return static_cast<double>(x.size()) * runs / seconds / 1e6;
 }
 
+// Median milliseconds of checkpoint() and of restore() on the simulation's current state (the
+// state is restored to itself, so the run is not disturbed).
+std::pair<double, double> checkpointCost(TearSimulation& sim) {
+  std::vector<double> save, load;
+  for (int run = 0; run < 21; ++run) {
+    auto start = Clock::now();
+    const TearCheckpoint c = sim.checkpoint();
+    save.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    start = Clock::now();
+    sim.restore(c);
+    load.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+  }
+  std::sort(save.begin(), save.end());
+  std::sort(load.begin(), load.end());
+  return {save[save.size() / 2], load[load.size() / 2]};
+}
+
 const char* mark(bool pass) { return pass ? "PASS" : "MISS"; }
 
 }  // namespace
@@ -178,6 +222,12 @@ int runTears(int argc, char** argv) {
   simOptions.neighbours = o.neighbours;
   simOptions.surfaceTension = o.tension;
   simOptions.neighbourSkin = o.skin;
+  simOptions.pressureSolver = o.solver;
+  simOptions.maxSubstepSeconds = o.maxStepMs / 1000;
+  simOptions.lambdaCfl *= o.substepFactor;
+  simOptions.lambdaAcceleration *= o.substepFactor;
+  if (const char* a = std::getenv("LAMBDA_A")) simOptions.lambdaAcceleration = std::atof(a);
+  if (const char* a = std::getenv("PROBE")) simOptions.collisionProbeKernels = std::atof(a);
   TearPipeline pipeline(*scene, o.settings, simOptions);
   TearSimulation& sim = pipeline.simulation();
   const int left = (o.particles + 1) / 2, right = o.particles / 2;
@@ -218,6 +268,8 @@ int runTears(int argc, char** argv) {
     for (double v : frameMs) s += v;
     return s / static_cast<double>(frameMs.size());
   }();
+  const auto [checkpointMs, restoreMs] = checkpointCost(sim);
+  const std::size_t checkpointBytes = sim.checkpoint().bytes();
   UniformGrid grid;
   Octree octree(sim.parameters().nodeSize);
   const double gridRate = searchRate(grid, p.position, sim.kernelRadius());
@@ -239,6 +291,9 @@ int runTears(int argc, char** argv) {
     json.field("fps", o.fps);
     json.field("neighbours", o.neighbours == NeighbourMethod::Grid ? "grid" : "octree");
     json.field("tension_model", o.tension == SurfaceTensionModel::Mueller ? "mueller" : "akinci");
+    json.field("solver", o.solver == PressureSolver::Wcsph ? "wcsph" : "dfsph");
+    json.field("max_substep_ms", o.maxStepMs);
+    json.field("substep_factor", o.substepFactor);
     json.field("scene", o.head ? "default_head" : "cheek_sheet");
     json.field("sway", o.sway);
     json.field("ms_per_frame", median);
@@ -276,6 +331,10 @@ int runTears(int argc, char** argv) {
     json.field("ode_queries", c.odeQueries);
     json.field("contacts_tracked", c.contactsTracked);
     json.field("swept_particles", c.sweptParticles);
+    json.field("brute_force_queries", c.bruteForceQueries);
+    json.field("divergence_iterations", c.divergenceIterations);
+    json.field("density_iterations", c.densityIterations);
+    json.field("solver_capped", c.solverCapped);
     json.endObject();
     json.key("neighbour_search_mparticles_per_s");
     json.beginObject();
@@ -283,6 +342,9 @@ int runTears(int argc, char** argv) {
     json.field("octree", octreeRate);
     json.field("target_at_least", 1.0);
     json.endObject();
+    json.field("checkpoint_ms", checkpointMs);
+    json.field("restore_ms", restoreMs);
+    json.field("checkpoint_bytes", static_cast<long long>(checkpointBytes));
     json.field("kernel_radius", sim.kernelRadius());
     json.field("neighbours_per_particle", neighboursPerParticle);
     json.field("all_finite", finite);
@@ -292,8 +354,9 @@ int runTears(int argc, char** argv) {
     return finite ? 0 : 1;
   }
 
-  std::printf("tears on the %s: %d particles requested, %d alive, %d frames at %g fps, %s neighbours, %s tension%s\n",
-              scene->name.c_str(), o.particles, p.size(), o.frames, o.fps, o.neighbours == NeighbourMethod::Grid ? "grid" : "octree",
+  std::printf("tears on the %s: %d particles requested, %d alive, %d frames at %g fps, %s, %s neighbours, %s tension%s\n",
+              scene->name.c_str(), o.particles, p.size(), o.frames, o.fps, o.solver == PressureSolver::Wcsph ? "WCSPH" : "DFSPH",
+              o.neighbours == NeighbourMethod::Grid ? "grid" : "octree",
               o.tension == SurfaceTensionModel::Mueller ? "Mueller" : "Akinci", o.sway ? ", swaying" : "");
   std::printf("  frame time     median %8.3f ms  (mean %.3f, max %.3f; simulation alone %.3f)", median, mean,
               sorted.back(), simulationMedian);
@@ -309,7 +372,12 @@ int runTears(int argc, char** argv) {
               c.cflLimited, c.accelerationLimited, c.viscosityLimited,
               c.substeps - c.cflLimited - c.accelerationLimited - c.viscosityLimited, c.neighbourSearches,
               c.neighbourSearches / n);
+  if (o.solver == PressureSolver::Dfsph)
+    std::printf("  DFSPH: %.2f divergence and %.2f density sweeps per sub-step, %lld solves capped\n",
+                c.substeps ? static_cast<double>(c.divergenceIterations) / c.substeps : 0.0,
+                c.substeps ? static_cast<double>(c.densityIterations) / c.substeps : 0.0, c.solverCapped);
   std::printf("  neighbours within h per particle at the end: %.1f\n", neighboursPerParticle);
+  std::printf("  checkpoint %.3f ms, restore %.3f ms, %.1f kB\n", checkpointMs, restoreMs, checkpointBytes / 1024.0);
   std::printf("  neighbour search: grid %.2f M particles/s, octree %.2f M particles/s   target >= 1  %s\n", gridRate,
               octreeRate, mark(gridRate >= 1));
   std::printf("  all finite: %s   max distance from the skin centre: %.2f half skin heights\n", finite ? "yes" : "NO", maxDistance);

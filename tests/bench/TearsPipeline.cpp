@@ -2,11 +2,13 @@
 
 #include "RealHeads.h"
 
+#include <lacrima/rig/RigBuilder.h>
 #include <lacrima/tears/SyntheticSkin.h>
 
 #include <Eigen/Geometry>
 
 #include <chrono>
+#include <exception>
 #include <numbers>
 
 namespace lacrima::bench {
@@ -14,7 +16,12 @@ namespace lacrima::bench {
 using namespace lacrima::tears;
 
 std::unique_ptr<TearSimulation> TearScene::simulate(const TearSettings& settings, SimulationOptions options) const {
-  if (head) return TearSimulation::forHead(*head, settings, options);
+  if (head) {
+    HeadTearOptions sources;  // the rig's, as the player passes them
+    sources.leftSource = leftSource;
+    sources.rightSource = rightSource;
+    return TearSimulation::forHead(*head, settings, options, sources);
+  }
   options.headHeight = headHeight;
   auto sim = std::make_unique<TearSimulation>(rest, skinTriangles, settings, options);
   sim->setSource(Eye::Left, leftSource);
@@ -48,23 +55,32 @@ TearScene cheekScene() {
 }
 
 std::optional<TearScene> defaultHeadScene(std::string& why) {
-  std::optional<HeadMesh> head = loadRealMesh(defaultHeadSpec(), why);
-  if (!head) return std::nullopt;
-  const HeadSubmesh* skin = head->findSubmesh("skin");
+  std::optional<LoadedHead> loaded = loadRealHead(defaultHeadSpec(), why);
+  if (!loaded) return std::nullopt;
+  const HeadSubmesh* skin = loaded->mesh.findSubmesh("skin");
   if (!skin) {
     why = "the default head has no 'skin' sub-mesh";
     return std::nullopt;
   }
   TearScene scene;
+  try {
+    // The rig's tear sources (skin just below each lower-lid mid-point), as the player uses.
+    const BuiltRig rig = buildRig(loaded->mesh, loaded->fdp);
+    scene.leftSource = rig.tearLeft.position;
+    scene.rightSource = rig.tearRight.position;
+  } catch (const std::exception& e) {
+    why = std::string("rigging the default head failed: ") + e.what();
+    return std::nullopt;
+  }
   scene.name = "default head";
-  scene.rest = head->positions;
-  scene.skinTriangles = skin->triangles;  // forHead hands the simulation exactly this list
+  scene.rest = loaded->mesh.positions;
+  scene.skinTriangles = skin->triangles;  // the trail builder's skin; forHead adds the eyes after it
   Eigen::AlignedBox3d box;
   for (const Eigen::Vector3i& t : scene.skinTriangles)
     for (int k = 0; k < 3; ++k) box.extend(scene.rest.col(t[k]).cast<double>());
   scene.centre = box.center();
   scene.radius = 0.5 * box.sizes().y();
-  scene.head = std::move(head);
+  scene.head = std::move(loaded->mesh);
   return scene;
 }
 

@@ -23,6 +23,7 @@ struct TearScene {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   double radius = 1;                            // half the skin's height, for escape distances
   std::optional<HeadMesh> head;                 // set for a real head: simulations via forHead
+  // Tear sources in the head frame: the sheet's, or the rig's for the default head.
   Eigen::Vector3d leftSource = Eigen::Vector3d::Zero(), rightSource = Eigen::Vector3d::Zero();
   double headHeight = 0;                        // SimulationOptions::headHeight for the sheet
 
@@ -34,7 +35,8 @@ struct TearScene {
 };
 
 TearScene cheekScene();
-// The cached default head; nullopt with `why` set when it is absent or unreadable.
+// The cached default head, rigged for its tear sources; nullopt with `why` set when it is absent
+// or unreadable.
 std::optional<TearScene> defaultHeadScene(std::string& why);
 
 struct FrameTimes {

@@ -187,7 +187,7 @@ private slots:
     const Run run = runFap({"convert", demo, "-o", out});
     QVERIFY2(run.exitCode == 0, qPrintable(run.err));
     const FapReadResult read = FapReader::readFile(out.toStdString());
-    QCOMPARE(read.animation.frameCount(), 12 * 22 + 1);
+    QCOMPARE(read.animation.frameCount(), 14 * 22 + 1);  // the demo lasts 14 s
     QVERIFY(read.warnings.empty());
     QVERIFY(read.animation.hasTears());
   }

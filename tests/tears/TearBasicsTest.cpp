@@ -8,6 +8,7 @@
 #include <lacrima/tears/Kernels.h>
 #include <lacrima/tears/Octree.h>
 #include <lacrima/tears/PairList.h>
+#include <lacrima/tears/TrailBuilder.h>
 #include <lacrima/tears/UniformGrid.h>
 
 #include <QtTest>
@@ -55,6 +56,47 @@ std::vector<std::set<int>> bruteForce(const std::vector<Eigen::Vector3d>& x, dou
     for (std::size_t j = 0; j < x.size(); ++j)
       if (i != j && (x[i] - x[j]).squaredNorm() < h * h) sets[i].insert(static_cast<int>(j));
   return sets;
+}
+
+template <typename T>
+bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+bool sameBits(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  return a.rows() == b.rows() && a.cols() == b.cols() &&
+         (a.size() == 0 || std::memcmp(a.data(), b.data(), static_cast<std::size_t>(a.size()) * sizeof(double)) == 0);
+}
+
+// Everything a player sees of one frame: the particles, the trail mesh and the wetness.
+struct FrameState {
+  std::vector<Eigen::Vector3d> position, velocity;
+  std::vector<double> mass;
+  std::vector<std::uint64_t> id;
+  std::vector<int> contact;
+  Eigen::MatrixXd trail;
+  double wetLeft = 0, wetRight = 0;
+};
+
+FrameState stateOf(const TearSimulation& sim, const TrailBuilder& trails) {
+  FrameState s;
+  const ParticleSet& p = sim.particles();
+  s.position = p.position;
+  s.velocity = p.velocity;
+  s.mass = p.mass;
+  s.id = p.id;
+  for (const SkinContact& c : p.contact) s.contact.push_back(c.triangle);
+  s.trail = trails.mesh().positions();
+  s.wetLeft = sim.wetness(Eye::Left).trailVolume;
+  s.wetRight = sim.wetness(Eye::Right).trailVolume;
+  return s;
+}
+
+bool sameBits(const FrameState& a, const FrameState& b) {
+  return sameBits(a.position, b.position) && sameBits(a.velocity, b.velocity) && sameBits(a.mass, b.mass) &&
+         a.id == b.id && a.contact == b.contact && sameBits(a.trail, b.trail) &&
+         std::memcmp(&a.wetLeft, &b.wetLeft, sizeof(double)) == 0 &&
+         std::memcmp(&a.wetRight, &b.wetRight, sizeof(double)) == 0;
 }
 
 std::vector<std::set<int>> asSets(const NeighbourList& list) {
@@ -133,49 +175,60 @@ private slots:
   }
 
   void verletPairsWithinHMatchBruteForce() {
-    // The solver's half lists: candidates within h + skin, reused after every particle moved
-    // by up to skin / 2 in a random direction, then filtered to h by the density pass. The
-    // pairs it keeps must be exactly the brute-force set at the MOVED positions.
+    // The solver's half lists: candidates within h + skin, reused while the two largest
+    // displacements sum to less than the skin, then filtered to h by the density pass. The
+    // pairs it keeps must be exactly the brute-force set at the MOVED positions, both when
+    // every particle moved by just under skin / 2 and when one moved by 0.75 skin and the rest
+    // by 0.24 skin (a drop falling past still ones).
     for (bool clustered : {false, true}) {
       for (double h : {0.004, 0.016}) {
-        const double skin = 0.3 * h;
-        auto x = scatter(1500, 0.1, clustered ? 5 : 9, clustered);
-        CellIndex index;
-        index.build(x, h + skin);
-        std::vector<Eigen::Vector3d> sorted;
-        for (int i : index.order()) sorted.push_back(x[static_cast<std::size_t>(i)]);
-        index.build(sorted, h + skin);  // already in cell order: the order is the identity
-        for (std::size_t s = 0; s < sorted.size(); ++s) QCOMPARE(index.order()[s], static_cast<int>(s));
-        VerletPairs verlet;
-        verlet.build(index, h, skin);
-        QVERIFY(verlet.stillValid(sorted));
+        for (bool oneFast : {false, true}) {
+          const double skin = 0.3 * h;
+          auto x = scatter(1500, 0.1, clustered ? 5 : 9, clustered);
+          CellIndex index;
+          index.build(x, h + skin);
+          std::vector<Eigen::Vector3d> sorted;
+          for (int i : index.order()) sorted.push_back(x[static_cast<std::size_t>(i)]);
+          index.build(sorted, h + skin);  // already in cell order: the order is the identity
+          for (std::size_t s = 0; s < sorted.size(); ++s) QCOMPARE(index.order()[s], static_cast<int>(s));
+          VerletPairs verlet;
+          verlet.build(index, h, skin);
+          QVERIFY(verlet.stillValid(sorted));
 
-        std::mt19937_64 random(clustered ? 21 : 22);
-        std::normal_distribution<double> gauss;
-        ParticleSet p;
-        for (std::size_t i = 0; i < sorted.size(); ++i) {
-          Eigen::Vector3d dir(gauss(random), gauss(random), gauss(random));
-          dir.normalize();
-          p.add(sorted[i] + 0.499 * skin * dir, 1.0, i + 1, Eye::Left);
-        }
-        QVERIFY(verlet.stillValid(p.position));
-        ActivePairs active;
-        DensitySolver(h).compute(p, verlet, active);
-        std::vector<std::set<int>> sets(p.position.size());
-        bool duplicate = false;
-        for (int i = 0; i < active.particleCount(); ++i)
-          for (std::uint32_t k = active.start[static_cast<std::size_t>(i)]; k < active.start[static_cast<std::size_t>(i) + 1]; ++k) {
-            const int j = static_cast<int>(active.partner[k]);
-            QVERIFY(j > i);  // each pair once
-            duplicate = duplicate || !sets[static_cast<std::size_t>(i)].insert(j).second;
-            sets[static_cast<std::size_t>(j)].insert(i);
+          std::mt19937_64 random(clustered ? 21 : 22);
+          std::normal_distribution<double> gauss;
+          ParticleSet p;
+          const std::size_t fast = 3 * sorted.size() / 4;
+          for (std::size_t i = 0; i < sorted.size(); ++i) {
+            Eigen::Vector3d dir(gauss(random), gauss(random), gauss(random));
+            dir.normalize();
+            const double step = !oneFast ? 0.499 : (i == fast ? 0.75 : 0.24);
+            p.add(sorted[i] + step * skin * dir, 1.0, i + 1, Eye::Left);
           }
-        QVERIFY(!duplicate);
-        QVERIFY(sets == bruteForce(p.position, h));
+          QVERIFY(verlet.stillValid(p.position));
+          ActivePairs active;
+          DensitySolver(h).compute(p, verlet, active);
+          std::vector<std::set<int>> sets(p.position.size());
+          bool duplicate = false;
+          for (int i = 0; i < active.particleCount(); ++i)
+            for (std::uint32_t k = active.start[static_cast<std::size_t>(i)]; k < active.start[static_cast<std::size_t>(i) + 1]; ++k) {
+              const int j = static_cast<int>(active.partner[k]);
+              QVERIFY(j > i);  // each pair once
+              duplicate = duplicate || !sets[static_cast<std::size_t>(i)].insert(j).second;
+              sets[static_cast<std::size_t>(j)].insert(i);
+            }
+          QVERIFY(!duplicate);
+          QVERIFY(sets == bruteForce(p.position, h));
 
-        // One particle further than skin / 2: the list must ask to be rebuilt.
-        p.position[7] = sorted[7] + Eigen::Vector3d(0.51 * skin, 0, 0);
-        QVERIFY(!verlet.stillValid(p.position));
+          // Two displacements summing past the skin: the list must ask to be rebuilt.
+          p.position[7] = sorted[7] + Eigen::Vector3d(0.77 * skin, 0, 0);
+          p.position[9] = sorted[9] + Eigen::Vector3d(0, 0.24 * skin, 0);
+          QVERIFY(!verlet.stillValid(p.position));
+          p.position[fast] = sorted[fast];
+          p.position[7] = sorted[7] + Eigen::Vector3d(0.51 * skin, 0, 0);
+          p.position[9] = sorted[9] + Eigen::Vector3d(0, 0.5 * skin, 0);
+          QVERIFY(!verlet.stillValid(p.position));
+        }
       }
     }
   }
@@ -330,6 +383,79 @@ private slots:
     QCOMPARE(a.first.size(), b.first.size());
     QVERIFY(std::memcmp(a.first.data(), b.first.data(), a.first.size() * sizeof(Eigen::Vector3d)) == 0);
     QVERIFY(std::memcmp(a.second.data(), b.second.data(), a.second.size() * sizeof(Eigen::Vector3d)) == 0);
+  }
+
+  void checkpointRestoreRepeatsTheFutureBitwise_data() {
+    QTest::addColumn<int>("method");
+    QTest::addColumn<int>("solver");
+    QTest::newRow("grid") << static_cast<int>(NeighbourMethod::Grid) << static_cast<int>(PressureSolver::Wcsph);
+    QTest::newRow("octree") << static_cast<int>(NeighbourMethod::Octree) << static_cast<int>(PressureSolver::Wcsph);
+    QTest::newRow("grid, DFSPH") << static_cast<int>(NeighbourMethod::Grid) << static_cast<int>(PressureSolver::Dfsph);
+  }
+
+  void checkpointRestoreRepeatsTheFutureBitwise() {
+    // Run A: 120 frames. Run B: 60 frames, checkpoint (and copy the trail builder), 30 frames
+    // of other input (counts, skin motion), restore, then A's frames 60..119: B must end where
+    // A ends, bit for bit. The input exercises what a checkpoint must carry: spawning and
+    // removal (emitter ids), a swaying sheet (carried contacts, refitted ODE mesh), drops
+    // sliding off (recycling), and trails.
+    QFETCH(int, method);
+    QFETCH(int, solver);
+    CheekSheetOptions sheetOptions;
+    sheetOptions.height = 1.2;  // short: some drops run off the bottom and are recycled
+    const SyntheticSkin sheet = makeCheekSheet(sheetOptions);
+    SimulationOptions options;
+    options.neighbours = static_cast<NeighbourMethod>(method);
+    options.pressureSolver = static_cast<PressureSolver>(solver);
+    const auto skinAt = [&](int f, double amplitude) {
+      return movedSheet(sheet, Eigen::Vector3d(amplitude * std::sin(0.3 * f), 0, 0),
+                        Eigen::AngleAxisd(0.5 * amplitude * std::sin(0.2 * f), Eigen::Vector3d::UnitY()));
+    };
+    const auto countsAt = [](int f) { return std::pair{std::min(60, 10 + f), f < 80 ? 30 : 12}; };
+    const auto stepA = [&](TearSimulation& sim, TrailBuilder& trails, int f) {
+      const Eigen::Matrix3Xf x = skinAt(f, 0.02);
+      const auto [left, right] = countsAt(f);
+      sim.step(x, left, right, kFrameDt);
+      trails.update(sim, x, kFrameDt);
+    };
+
+    auto a = makeSheetSimulation(sheet, {}, options);
+    TrailBuilder trailsA(sheet.triangles);
+    for (int f = 0; f < 120; ++f) stepA(*a, trailsA, f);
+    const FrameState expected = stateOf(*a, trailsA);
+    if (options.pressureSolver == PressureSolver::Wcsph) QVERIFY(a->counters().recycled > 0);  // DFSPH drops slide slower
+    QVERIFY(a->counters().removed > 0);
+    QVERIFY(!trailsA.mesh().empty());
+
+    auto b = makeSheetSimulation(sheet, {}, options);
+    TrailBuilder trailsB(sheet.triangles);
+    for (int f = 0; f < 60; ++f) stepA(*b, trailsB, f);
+    const TearCheckpoint saved = b->checkpoint();
+    const TearCheckpoint copy = saved;  // a checkpoint is a value
+    const TrailBuilder savedTrails = trailsB;
+    QCOMPARE(copy.particleCount(), b->particles().size());
+    QVERIFY(copy.bytes() > static_cast<std::size_t>(b->particles().size()) * sizeof(Eigen::Vector3d));
+    const FrameState atSave = stateOf(*b, trailsB);
+    for (int f = 0; f < 30; ++f) {
+      const Eigen::Matrix3Xf x = skinAt(f, 0.05);
+      b->step(x, 5 + 2 * f, 40 - f, kFrameDt);
+      trailsB.update(*b, x, kFrameDt);
+    }
+    QVERIFY(!sameBits(stateOf(*b, trailsB), atSave));
+    b->restore(copy);
+    trailsB = savedTrails;
+    // Restored: the state is the saved one (trail mesh too), before any step.
+    QVERIFY(sameBits(stateOf(*b, trailsB), atSave));
+    for (int f = 60; f < 120; ++f) stepA(*b, trailsB, f);
+    QVERIFY2(sameBits(stateOf(*b, trailsB), expected), "the restored run diverged from the original");
+
+    // Restoring twice from the same checkpoint repeats again; a foreign or empty one is refused.
+    b->restore(saved);
+    trailsB = savedTrails;
+    for (int f = 60; f < 120; ++f) stepA(*b, trailsB, f);
+    QVERIFY(sameBits(stateOf(*b, trailsB), expected));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, a->restore(saved));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, a->restore(TearCheckpoint{}));
   }
 
   void octreeAndGridSimulateAlike() {

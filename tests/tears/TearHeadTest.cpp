@@ -3,13 +3,17 @@
 // the skin and survive a jaw-opening deformation arriving in a single frame. Skipped when the
 // head has not been fetched (packaging/fetch-default-head.sh).
 #include <lacrima/rig/DefaultHead.h>
+#include <lacrima/rig/FeaturePointFile.h>
+#include <lacrima/rig/RigBuilder.h>
 #include <lacrima/tears/TearSimulation.h>
 
 #include <QtTest>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
+#include <random>
 
 using namespace lacrima;
 using namespace lacrima::tears;
@@ -33,6 +37,23 @@ Eigen::AlignedBox3d eyeBounds(const HeadMesh& head, const char* name) {
   for (int v = eye->firstVertex; v < eye->firstVertex + eye->vertexCount; ++v)
     box.extend(head.positions.col(v).cast<double>());
   return box;
+}
+
+// Closest point of triangle abc to p (brute-force reference, by projection and edge clamping).
+Eigen::Vector3d closestPoint(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                             const Eigen::Vector3d& c) {
+  const Eigen::Vector3d n = (b - a).cross(c - a).normalized();
+  const Eigen::Vector3d q = p - (p - a).dot(n) * n;  // in the plane
+  const auto inside = [&](const Eigen::Vector3d& u, const Eigen::Vector3d& w) { return (w - u).cross(q - u).dot(n) >= 0; };
+  if (inside(a, b) && inside(b, c) && inside(c, a)) return q;
+  const auto onSegment = [&](const Eigen::Vector3d& u, const Eigen::Vector3d& w) {
+    const double s = std::clamp((p - u).dot(w - u) / (w - u).squaredNorm(), 0.0, 1.0);
+    return Eigen::Vector3d(u + s * (w - u));
+  };
+  Eigen::Vector3d best = onSegment(a, b);
+  for (const Eigen::Vector3d& candidate : {onSegment(b, c), onSegment(c, a)})
+    if ((candidate - p).squaredNorm() < (best - p).squaredNorm()) best = candidate;
+  return best;
 }
 
 }  // namespace
@@ -71,6 +92,85 @@ private slots:
     allowed_.min().array() -= 0.35;
     allowed_.max().array() += 0.35;
     eyeLevel_ = std::min(eyeBounds(*head_, "eye_l").min().y(), eyeBounds(*head_, "eye_r").min().y());
+  }
+
+  void defaultSourcesSitWhereTheRigPutsThem() {
+    // forHead's own rule (no feature points) against the rig's (lower-lid mid-point minus
+    // IRISD0 / 4, nearest skin vertex): the same place to within 2 mm (0.02 dm), on the skin,
+    // facing forward; and sources the caller gives are used as they are.
+    Warnings warnings;
+    const FeaturePointFile fdp = readFeaturePointFile(LACRIMA_SOURCE_DIR "/media/default-head.fdp.json", &warnings);
+    validateFeaturePoints(fdp, *head_, &warnings);
+    const BuiltRig rig = buildRig(*head_, fdp);
+    for (auto [eye, rigSource] : {std::pair{Eye::Left, rig.tearLeft}, std::pair{Eye::Right, rig.tearRight}}) {
+      const Eigen::Vector3d own = TearSimulation::defaultTearSource(*head_, eye);
+      const double gap = (own - rigSource.position).norm();
+      qInfo("%s eye: default source %.4f %.4f %.4f, the rig's %.4f %.4f %.4f (%.2f mm apart)",
+            eye == Eye::Left ? "left" : "right", own.x(), own.y(), own.z(), rigSource.position.x(),
+            rigSource.position.y(), rigSource.position.z(), 100 * gap);
+      QVERIFY2(gap < 0.02, QByteArray::number(gap));
+      QVERIFY(rigSource.normal.z() > 0.7);
+      QVERIFY((eye == Eye::Left) == (own.x() > 0));  // +x is the face's own left
+    }
+    HeadTearOptions given;
+    given.leftSource = rig.tearLeft.position;
+    given.rightSource = rig.tearRight.position + Eigen::Vector3d(0, -0.1, 0);
+    auto sim = TearSimulation::forHead(*head_, {}, {}, given);
+    QCOMPARE(sim->source(Eye::Left), rig.tearLeft.position);
+    QCOMPARE(sim->source(Eye::Right), *given.rightSource);
+  }
+
+  void nearestSkinPointMatchesBruteForce() {
+    // The collider's nearest-point query (ODE sphere against the trimesh, then exact closest
+    // points) against a scan of every triangle of the collision surface (skin and eyes), for
+    // points scattered in front of the face at distances up to the emitter's search radius.
+    // ODE lists at most a buffer's worth of triangles, in its tree's order: with a large sphere
+    // it used to miss the nearest (an emission 0.4 mm off the source on this head).
+    auto sim = TearSimulation::forHead(*head_);
+    const HeadSubmesh* skin = head_->findSubmesh("skin");
+    std::vector<Eigen::Vector3i> surface = skin->triangles;  // what forHead collides with
+    for (const char* name : {"eye_l", "eye_r", "cornea_l", "cornea_r"}) {
+      const HeadSubmesh* eye = head_->findSubmesh(name);
+      QVERIFY(eye);
+      surface.insert(surface.end(), eye->triangles.begin(), eye->triangles.end());
+    }
+    const auto v = [&](int i) { return Eigen::Vector3d(head_->positions.col(i).cast<double>()); };
+    const double radius = 8 * sim->kernelRadius();
+    std::mt19937_64 random(17);
+    std::uniform_real_distribution<double> unit(0, 1);
+    int checked = 0, found = 0;
+    for (int q = 0; q < 400; ++q) {
+      // A random skin triangle on the front of the face, then a point off it.
+      const Eigen::Vector3i& t = skin->triangles[static_cast<std::size_t>(unit(random) * skin->triangles.size())];
+      const Eigen::Vector3d n = (v(t[1]) - v(t[0])).cross(v(t[2]) - v(t[0])).normalized();
+      if (!n.allFinite() || n.z() < 0.3 || v(t[0]).y() < skinBox_.min().y() + 0.3 * skinBox_.sizes().y()) continue;
+      const Eigen::Vector3d x = (v(t[0]) + v(t[1]) + v(t[2])) / 3 + unit(random) * radius * n +
+                                0.5 * radius * Eigen::Vector3d(unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5);
+      double best = std::numeric_limits<double>::infinity();
+      for (const auto& u : surface) {
+        const Eigen::Vector3d a = v(u[0]), b = v(u[1]), c = v(u[2]);
+        const Eigen::Vector3d un = (b - a).cross(c - a);
+        if (!(un.squaredNorm() > 0)) continue;
+        const Eigen::Vector3d p = closestPoint(x, a, b, c);
+        if ((x - p).dot(un) < 0) continue;  // behind that triangle: not a point the tears see
+        best = std::min(best, (x - p).norm());
+      }
+      const SkinPoint hit = sim->nearestSkinPoint(x, radius);
+      ++checked;
+      if (best >= radius) {
+        QVERIFY2(!hit.found() || hit.distance >= radius * (1 - 1e-9), "found a point beyond the radius");
+        continue;
+      }
+      ++found;
+      QVERIFY2(hit.found(), QByteArray("query ") + QByteArray::number(q) + ": nothing found, brute force " +
+                                QByteArray::number(best));
+      QVERIFY2(std::abs(hit.distance - best) < 1e-9, QByteArray("query ") + QByteArray::number(q) + ": distance " +
+                                                        QByteArray::number(hit.distance) + ", brute force " +
+                                                        QByteArray::number(best));
+    }
+    qInfo("%d queries, %d with skin in reach, %lld ODE calls, %lld answered by a scan", checked, found,
+          sim->counters().odeQueries, sim->counters().bruteForceQueries);
+    QVERIFY(found > 100);
   }
 
   void tearsRunDownTheCheeks() {

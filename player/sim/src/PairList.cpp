@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace lacrima::tears {
 
@@ -67,10 +68,18 @@ void VerletPairs::fromFull(const NeighbourList& full, std::span<const Eigen::Vec
 
 bool VerletPairs::stillValid(std::span<const Eigen::Vector3d> x) const {
   if (!valid_ || x.size() != anchor_.size()) return false;
-  const double limit2 = 0.25 * skin_ * skin_;
-  for (std::size_t i = 0; i < x.size(); ++i)
-    if (!((x[i] - anchor_[i]).squaredNorm() < limit2)) return false;  // NaN fails too
-  return true;
+  // The two largest displacements: no pair can have closed by more than their sum.
+  double first = 0, second = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double d2 = (x[i] - anchor_[i]).squaredNorm();
+    if (!(d2 <= first)) {  // NaN lands here too, and fails below
+      second = first;
+      first = d2;
+    } else if (d2 > second) {
+      second = d2;
+    }
+  }
+  return std::sqrt(first) + std::sqrt(second) < skin_;
 }
 
 }  // namespace lacrima::tears

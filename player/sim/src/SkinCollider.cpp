@@ -9,7 +9,10 @@
 namespace lacrima::tears {
 namespace {
 
-constexpr int kMaxContacts = 16;
+// Contacts ODE may report per query; a full buffer means the answer may be incomplete
+// (nearest() then narrows the sphere, kShrinkAttempts times at most, before scanning).
+constexpr int kMaxContacts = 32;
+constexpr int kShrinkAttempts = 4;
 constexpr int kEnvelopeVertices = 8;
 
 bool finite(const dContactGeom& c) {
@@ -31,6 +34,16 @@ SkinCollider::SkinCollider(const Eigen::Matrix3Xd& vertices, std::vector<Eigen::
   // triangles (collapsed by a pose, or modelled) never hold a contact.
   degenerateArea2_ = std::pow(1e-6 * radius_, 4);
   computeNormals(vertices_, normals_, degenerate_);
+  // Triangles around each vertex (CSR), for contacts that slide onto a neighbouring triangle.
+  vertexStart_.assign(n + 1, 0);
+  for (const auto& t : triangles_)
+    for (int k = 0; k < 3; ++k) ++vertexStart_[static_cast<std::size_t>(t[k]) + 1];
+  for (std::size_t v = 0; v < n; ++v) vertexStart_[v + 1] += vertexStart_[v];
+  vertexTriangles_.resize(static_cast<std::size_t>(vertexStart_[n]));
+  std::vector<int> fill(vertexStart_.begin(), vertexStart_.end() - 1);
+  for (std::size_t t = 0; t < triangles_.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      vertexTriangles_[static_cast<std::size_t>(fill[static_cast<std::size_t>(triangles_[t][k])]++)] = static_cast<int>(t);
 
   odeVertices_.assign(3 * (n + kEnvelopeVertices), 0.0);
   for (int c = 0; c < kEnvelopeVertices; ++c) {
@@ -84,30 +97,68 @@ void SkinCollider::resetSurface(const Eigen::Matrix3Xd& v, CollisionCounters& co
   writeOdeVertices(vertices_, counters);
 }
 
+void SkinCollider::restoreSurface(const Surface& surface, CollisionCounters& counters) {
+  if (surface.vertices.cols() != vertices_.cols() || surface.normals.size() != triangles_.size())
+    throw std::invalid_argument("the saved skin does not match this collider");
+  vertices_ = surface.vertices;
+  normals_ = surface.normals;
+  degenerate_ = surface.degenerate;
+  writeOdeVertices(vertices_, counters);
+}
+
 Eigen::Vector3d SkinCollider::pointAt(int t, const Eigen::Vector3d& b, const Eigen::Matrix3Xd& v) const {
   const auto& tri = triangles_[static_cast<std::size_t>(t)];
   return b[0] * v.col(tri[0]) + b[1] * v.col(tri[1]) + b[2] * v.col(tri[2]);
 }
 
-bool SkinCollider::nearest(const Eigen::Vector3d& x, double radius, SkinHit& hit, CollisionCounters& counters) {
-  dGeomSphereSetRadius(sphere_.get(), radius);
-  dGeomSetPosition(sphere_.get(), x.x(), x.y(), x.z());
-  ++counters.odeQueries;
-  const int n = dCollide(sphere_.get(), mesh_.get(), kMaxContacts, contacts_.data(), sizeof(dContactGeom));
+bool SkinCollider::consider(const Eigen::Vector3d& x, int t, double radius, SkinHit& hit, bool found) const {
+  if (t < 0 || t >= triangleCount() || degenerate(t)) return false;
+  const auto& tri = triangles_[static_cast<std::size_t>(t)];
+  const TrianglePoint cp = closestPointOnTriangle(x, vertices_.col(tri[0]), vertices_.col(tri[1]), vertices_.col(tri[2]));
+  if ((x - cp.point).dot(normals_[static_cast<std::size_t>(t)]) < 0) return false;  // behind: not ours
+  const double distance = (x - cp.point).norm();
+  if (!(distance <= radius)) return false;
+  if (found && !(distance < hit.distance || (distance == hit.distance && t < hit.triangle))) return false;
+  hit = {t, cp.point, cp.barycentric, cp.interior, distance};
+  return true;
+}
+
+bool SkinCollider::contactAround(const Eigen::Vector3d& x, int from, SkinHit& hit) const {
   bool found = false;
-  for (int c = 0; c < n; ++c) {
-    const dContactGeom& contact = contacts_[static_cast<std::size_t>(c)];
-    const int t = contact.side2;
-    if (!finite(contact) || t < 0 || t >= triangleCount() || degenerate(t)) continue;
-    const auto& tri = triangles_[static_cast<std::size_t>(t)];
-    const TrianglePoint cp = closestPointOnTriangle(x, vertices_.col(tri[0]), vertices_.col(tri[1]), vertices_.col(tri[2]));
-    if ((x - cp.point).dot(normals_[static_cast<std::size_t>(t)]) < 0) continue;  // behind: not ours
-    const double distance = (x - cp.point).norm();
-    if (!found || distance < hit.distance || (distance == hit.distance && t < hit.triangle)) {
-      hit = {t, cp.point, cp.barycentric, cp.interior, distance};
-      found = true;
-    }
+  const auto& tri = triangles_[static_cast<std::size_t>(from)];
+  for (int k = 0; k < 3; ++k) {
+    const auto v = static_cast<std::size_t>(tri[k]);
+    for (int a = vertexStart_[v]; a < vertexStart_[v + 1]; ++a)
+      if (consider(x, vertexTriangles_[static_cast<std::size_t>(a)], radius_ + band_, hit, found)) found = true;
   }
+  // Over a face, not at a rim of the ring: a contact as good as the global search's. At an edge
+  // or vertex of the ring, a triangle further out might be closer: leave it to ODE.
+  return found && hit.interior;
+}
+
+bool SkinCollider::nearest(const Eigen::Vector3d& x, double radius, SkinHit& hit, CollisionCounters& counters) {
+  bool found = false;
+  double r = radius;
+  for (int attempt = 0; attempt < kShrinkAttempts; ++attempt) {
+    dGeomSphereSetRadius(sphere_.get(), r);
+    dGeomSetPosition(sphere_.get(), x.x(), x.y(), x.z());
+    ++counters.odeQueries;
+    const int n = dCollide(sphere_.get(), mesh_.get(), kMaxContacts, contacts_.data(), sizeof(dContactGeom));
+    for (int c = 0; c < n; ++c) {
+      const dContactGeom& contact = contacts_[static_cast<std::size_t>(c)];
+      if (finite(contact) && consider(x, contact.side2, radius, hit, found)) found = true;
+    }
+    if (n < kMaxContacts) return found;  // complete: every triangle reaching into the sphere was listed
+    // Saturated: ODE stops at the buffer's size, listing triangles in its tree's order, not by
+    // distance, so a closer one may be missing. Anything closer than the best so far lies in
+    // the sphere of that radius: ask again with it.
+    if (!found || !(hit.distance < r)) break;
+    r = hit.distance;
+  }
+  // Still saturated (a very dense patch of mesh): scan every triangle. Counted; rare.
+  ++counters.bruteForceQueries;
+  for (int t = 0; t < triangleCount(); ++t)
+    if (consider(x, t, radius, hit, found)) found = true;
   return found;
 }
 
@@ -253,9 +304,14 @@ void SkinCollider::resolve(ParticleSet& p, std::span<const Eigen::Vector3d> prev
       }
     }
     if (contact.triangle >= 0) {
-      // Slid off its triangle (or the triangle collapsed): find the one it is on now.
+      // Slid off its triangle (or the triangle collapsed): find the one it is on now, among
+      // the triangles around the old one first, then through ODE.
       SkinHit hit;
-      if (nearest(p.position[s], radius_ + band_, hit, counters)) {
+      if (contactAround(p.position[s], contact.triangle, hit)) {
+        ++counters.contactsTracked;
+        p.travelled[s] += moved.norm();
+        makeContact(i, p, hit);
+      } else if (nearest(p.position[s], radius_ + band_, hit, counters)) {
         p.travelled[s] += moved.norm();
         makeContact(i, p, hit);
       } else {
@@ -266,10 +322,14 @@ void SkinCollider::resolve(ParticleSet& p, std::span<const Eigen::Vector3d> prev
     }
     // Free particle.
     const double travel = moved.norm();
+    const double before = p.clearance[s];
     p.clearance[s] -= travel;
     if (p.clearance[s] > 0) continue;
     SkinHit hit;
-    if (travel > 0.5 * radius_) {
+    // A free particle's centre starts at least radius + clearance from the skin (clearance >= 0),
+    // so a shorter path cannot have crossed it and ends in front, where the sphere test below
+    // finds the skin. Half a radius of margin.
+    if (travel > before + 0.5 * radius_) {
       // Fast: the sphere test at the end point could miss a crossing, so test the path, one
       // radius beyond the end point (ending within a radius of the skin is a contact too).
       if (rayFirstHit(previous[s], p.position[s] + moved / travel * radius_, hit, counters)) {

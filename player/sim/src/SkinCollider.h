@@ -14,7 +14,9 @@
 // is absorbed by a velocity constraint, so it needs no time-step limit at all.
 //
 // Contacts are tracked on their triangle by barycentric coordinates: while the particle's
-// projection stays inside that triangle, no ODE call is made. When the face deforms between
+// projection stays inside that triangle, no ODE call is made, and when it slides onto one of the
+// triangles around it (sharing a vertex), that one is found from the mesh's adjacency, also
+// without ODE (ODE answers only when the particle ends up over none of them). When the face deforms between
 // frames, a tracked particle is carried with its triangle (same barycentric point, same height
 // along the new normal); a free particle near the skin is anchored to the nearest point of the
 // OLD surface, that anchor is moved with the surface, and a ray from the moved anchor to the
@@ -42,6 +44,7 @@ struct CollisionCounters {
   long long trimeshUpdates = 0;  // dGeomTriMeshDataUpdate calls
   long long sweptParticles = 0;  // free particles the moving skin swept through, pushed out
   long long contactsTracked = 0; // contact tests answered from the cached triangle alone
+  long long bruteForceQueries = 0;  // nearest() answered by scanning every triangle (ODE's list was full)
 };
 
 struct SkinHit {
@@ -79,6 +82,17 @@ public:
   // adds the distance slid along the skin to `travelled`.
   void resolve(ParticleSet& particles, std::span<const Eigen::Vector3d> previous, CollisionCounters& counters);
 
+  // The surface state (vertices, normals), for checkpoints: restoring it refits ODE's trimesh to
+  // those vertices, which makes every later query answer exactly as it did after the save (the
+  // mesh's bounding-volume tree has a fixed topology; a refit depends on the vertices alone).
+  struct Surface {
+    Eigen::Matrix3Xd vertices;
+    std::vector<Eigen::Vector3d> normals;
+    std::vector<std::uint8_t> degenerate;
+  };
+  Surface surface() const { return {vertices_, normals_, degenerate_}; }
+  void restoreSurface(const Surface& surface, CollisionCounters& counters);
+
   // Nearest skin point within `radius` of x (front side only).
   bool nearest(const Eigen::Vector3d& x, double radius, SkinHit& hit, CollisionCounters& counters);
 
@@ -86,6 +100,13 @@ private:
   void computeNormals(const Eigen::Matrix3Xd& v, std::vector<Eigen::Vector3d>& normals,
                       std::vector<std::uint8_t>& degenerate) const;
   void writeOdeVertices(const Eigen::Matrix3Xd& v, CollisionCounters& counters);
+  // Takes triangle t as the hit if its closest point to x is within radius, in front, and nearer
+  // than `hit` (when `found`); ties go to the lower index, so the answer is order-independent.
+  bool consider(const Eigen::Vector3d& x, int t, double radius, SkinHit& hit, bool found) const;
+  // A contact for x among the triangles sharing a vertex with `from` (no ODE call): true when
+  // the nearest of them within radius + band lies under x (interior), as after a slide onto a
+  // neighbouring triangle.
+  bool contactAround(const Eigen::Vector3d& x, int from, SkinHit& hit) const;
   bool rayFirstHit(const Eigen::Vector3d& from, const Eigen::Vector3d& to, SkinHit& hit, CollisionCounters& counters);
   Eigen::Vector3d pointAt(int t, const Eigen::Vector3d& barycentric, const Eigen::Matrix3Xd& v) const;
   void makeContact(int i, ParticleSet& particles, const SkinHit& hit);
@@ -94,6 +115,7 @@ private:
   std::vector<Eigen::Vector3i> triangles_;
   std::vector<Eigen::Vector3d> normals_;
   std::vector<std::uint8_t> degenerate_;
+  std::vector<int> vertexStart_, vertexTriangles_;  // triangles around each vertex (CSR)
   double radius_, band_, probe_, degenerateArea2_;
 
   // ODE keeps pointers into these two arrays: they are sized once and never reallocated.

@@ -227,8 +227,9 @@ void SurfaceMesher::collectCorners() {
     }
 }
 
-// c at the corners, particle by particle: each particle adds V (h^2 - r^2)^3 to the corners
-// within h of it ((2h/s)^3 of them), cheaper than gathering 27 cells per corner.
+// c and grad c at the corners, particle by particle: each particle adds V (h^2 - r^2)^3 and
+// V (h^2 - r^2)^2 (corner - x) to the corners within h of it ((2h/s)^3 of them), cheaper than
+// gathering 27 cells per corner; the vertices' normals then interpolate the corner gradients.
 void SurfaceMesher::splat(double s) {
   const double h = field_.kernelRadius(), h2 = h * h;
   const CellIndex& index = field_.index();
@@ -237,9 +238,11 @@ void SurfaceMesher::splat(double s) {
   const double* sy = index.sortedY().data();
   const double* sz = index.sortedZ().data();
   cornerValue_.assign(corner_.size(), 0.0);
+  cornerGradient_.assign(corner_.size(), Eigen::Vector3d::Zero());
   for (std::size_t t = 0; t < index.particleCount(); ++t) {
     const Eigen::Vector3d x(sx[t], sy[t], sz[t]);
     if (volume[t] == 0 || !x.allFinite()) continue;
+    const double v = volume[t];
     const std::int64_t x0 = static_cast<std::int64_t>(std::ceil((x.x() - h) / s)), x1 = floorDiv(x.x() + h, s);
     const std::int64_t y0 = static_cast<std::int64_t>(std::ceil((x.y() - h) / s)), y1 = floorDiv(x.y() + h, s);
     for (std::int64_t i = x0; i <= x1; ++i) {
@@ -255,13 +258,18 @@ void SurfaceMesher::splat(double s) {
           const double d = rest - ez * ez;
           if (d <= 0) continue;
           const std::int32_t c = cornerId(Lattice(i, j, k));
-          if (c >= 0) cornerValue_[static_cast<std::size_t>(c)] += volume[t] * d * d * d;
+          if (c < 0) continue;
+          const double vd2 = v * d * d;
+          cornerValue_[static_cast<std::size_t>(c)] += vd2 * d;
+          cornerGradient_[static_cast<std::size_t>(c)] += vd2 * Eigen::Vector3d(ex, ey, ez);
         }
       }
     }
   }
-  const double w = Poly6Kernel(h).valueCoefficient();
-  for (double& v : cornerValue_) v *= w;
+  const Poly6Kernel kernel(h);
+  const double w = kernel.valueCoefficient(), g = kernel.gradientCoefficient();
+  for (double& value : cornerValue_) value *= w;
+  for (Eigen::Vector3d& gradient : cornerGradient_) gradient *= g;
 }
 
 // The vertex on the cube edge from corner `lowerCorner` (at lattice point `lower`) along `axis`
@@ -279,12 +287,15 @@ std::int32_t SurfaceMesher::vertexOnEdge(const Lattice& lower, std::int32_t lowe
   Eigen::Vector3d p = lower.cast<double>() * s;
   p[axis] += mu * s;
   surface_.position_.push_back(p);
+  const Eigen::Vector3d& ga = cornerGradient_[static_cast<std::size_t>(lowerCorner)];
+  vertexGradient_.push_back(ga + mu * (cornerGradient_[static_cast<std::size_t>(upperCorner)] - ga));
   return id;
 }
 
 void SurfaceMesher::march(double s, double iso) {
   const MarchingCubesTable& table = MarchingCubesTable::instance();
   edgeVertex_.assign(3 * corner_.size(), -1);  // keeps its capacity between frames
+  vertexGradient_.clear();
   for (std::size_t i = 0; i < cube_.size(); ++i) {
     const auto& corners = cubeCorner_[i];
     int configuration = 0;
@@ -313,7 +324,7 @@ void SurfaceMesher::computeNormals() {
   bool anyFallback = false;
   const double h = field_.kernelRadius();
   for (std::size_t v = 0; v < n; ++v) {
-    const Eigen::Vector3d g = field_.gradient(surface_.position_[v]);
+    const Eigen::Vector3d& g = vertexGradient_[v];
     const double norm = g.norm();
     // |grad c| of a surface is ~1 / h; far below that the direction is rounding noise.
     if (norm > 1e-9 / h && std::isfinite(norm)) {

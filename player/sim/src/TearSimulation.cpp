@@ -3,9 +3,12 @@
 #include <lacrima/tears/TearSimulation.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <numbers>
 #include <stdexcept>
 
 namespace lacrima::tears {
@@ -22,6 +25,7 @@ void addCollisionCounters(TearCounters& total, const CollisionCounters& c) {
   total.trimeshUpdates += c.trimeshUpdates;
   total.sweptParticles += c.sweptParticles;
   total.contactsTracked += c.contactsTracked;
+  total.bruteForceQueries += c.bruteForceQueries;
 }
 
 int clampCount(int count) { return std::clamp(count, 0, kMaxTearParticles); }
@@ -40,14 +44,85 @@ double heightOf(const Eigen::Matrix3Xf& positions, const std::vector<int>& verti
   return std::max(1e-6, static_cast<double>(hi - lo));
 }
 
+std::uint64_t nextInstance() {
+  static std::atomic<std::uint64_t> counter{0};
+  return ++counter;
+}
+
 }  // namespace
+
+// Everything restore() needs to make the future repeat. Left out on purpose: the pair geometry
+// of a sub-step (ActivePairs, the force pass's float copies) and the cell index, which every
+// sub-step rebuilds before reading, and the exposed grid, rebuilt on demand.
+struct TearCheckpoint::State {
+  std::uint64_t instance = 0;
+  ParticleSet particles;
+  VerletPairs candidates;  // when the pair list is next rebuilt decides the particle order
+  Emitter emitter;
+  SkinCollider::Surface skin;
+  bool skinStale = true;
+  std::array<Eigen::Vector3d, 2> sources;
+  Eigen::AlignedBox3d box;
+  std::array<double, 2> trailVolume{0, 0};
+  double lastSubstep = 0, lastNetAcceleration = -1;
+};
+
+TearCheckpoint::TearCheckpoint() = default;
+TearCheckpoint::~TearCheckpoint() = default;
+TearCheckpoint::TearCheckpoint(const TearCheckpoint&) = default;
+TearCheckpoint& TearCheckpoint::operator=(const TearCheckpoint&) = default;
+TearCheckpoint::TearCheckpoint(TearCheckpoint&&) noexcept = default;
+TearCheckpoint& TearCheckpoint::operator=(TearCheckpoint&&) noexcept = default;
+
+int TearCheckpoint::particleCount() const { return state_ ? state_->particles.size() : 0; }
+
+std::size_t TearCheckpoint::bytes() const {
+  if (!state_) return 0;
+  const ParticleSet& p = state_->particles;
+  const std::size_t n = static_cast<std::size_t>(p.size());
+  const std::size_t perParticle = 3 * sizeof(Eigen::Vector3d) + 7 * sizeof(double) + sizeof(std::uint64_t) +
+                                  sizeof(Eye) + sizeof(SkinContact);
+  const std::size_t pairs = (n + 1 + state_->candidates.pairCount()) * sizeof(std::uint32_t) + n * sizeof(Eigen::Vector3d);
+  const std::size_t skin = static_cast<std::size_t>(state_->skin.vertices.size()) * sizeof(double) +
+                           state_->skin.normals.size() * (sizeof(Eigen::Vector3d) + 1);
+  return sizeof(State) + n * perParticle + pairs + skin;
+}
+
+TearCheckpoint TearSimulation::checkpoint() const {
+  auto state = std::make_shared<TearCheckpoint::State>(TearCheckpoint::State{
+      instance_, particles_, candidates_, emitter_, collider_->surface(), skinStale_, sources_, box_, trailVolume_,
+      lastSubstep_, lastNetAcceleration_});
+  TearCheckpoint c;
+  c.state_ = std::move(state);
+  return c;
+}
+
+void TearSimulation::restore(const TearCheckpoint& checkpoint) {
+  if (checkpoint.empty()) throw std::invalid_argument("restoring an empty tear checkpoint");
+  const TearCheckpoint::State& s = *checkpoint.state_;
+  if (s.instance != instance_) throw std::invalid_argument("the tear checkpoint was taken from another simulation");
+  CollisionCounters c;
+  collider_->restoreSurface(s.skin, c);
+  addCollisionCounters(counters_, c);
+  particles_ = s.particles;  // assignment: the buffers keep their capacity
+  candidates_ = s.candidates;
+  emitter_ = s.emitter;
+  skinStale_ = s.skinStale;
+  sources_ = s.sources;
+  box_ = s.box;
+  trailVolume_ = s.trailVolume;
+  lastSubstep_ = s.lastSubstep;
+  lastNetAcceleration_ = s.lastNetAcceleration;
+  exposedGridStale_ = true;
+  times_ = {};
+}
 
 TearSimulation::TearSimulation(const Eigen::Matrix3Xf& rest, const std::vector<Eigen::Vector3i>& triangles,
                                const TearSettings& settings, const SimulationOptions& options)
-    : settings_(settings), options_(options),
+    : instance_(nextInstance()), settings_(settings), options_(options),
       octree_(1.0),  // replaced below once the scale is known
       density_(1.0), pressure_(1.0, 0, 1, true), viscosity_(1.0, 0), mueller_(1.0, 0), akinci_(1.0, 0, 1),
-      contact_(0, 0, 1, 1, 1), massLoss_(1, 1, 1), emitter_(1, 1) {
+      contact_(0, 0, 1, 1, 1), massLoss_(1, 1, 1), emitter_(1, 1), dfsph_(1.0, {}) {
   if (triangles.empty()) throw std::invalid_argument("the skin has no triangles");
   if (!rest.allFinite()) throw std::invalid_argument("skin positions are not finite");
   // Compact the skin: only vertices on skin triangles, in first-use order (deterministic).
@@ -77,6 +152,12 @@ TearSimulation::TearSimulation(const Eigen::Matrix3Xf& rest, const std::vector<E
                             options_.massFloor);
   emitter_ = Emitter(params_.spacing, params_.particleMass);
   stepper_ = AdaptiveTimeStep(options_.lambdaCfl, options_.lambdaAcceleration, options_.lambdaViscosity);
+  DivergenceFreeSettings dfsph;
+  const double stiffness = settings_.pressure > 0 ? TearSettings{}.pressure / settings_.pressure : 1e3;
+  dfsph.densityTolerance = std::clamp(options_.dfsphTolerance * stiffness, 1e-4, 0.1);
+  dfsph.divergenceTolerance = dfsph.densityTolerance;
+  dfsph.maxIterations = std::max(2, options_.dfsphMaxIterations);
+  dfsph_ = DivergenceFreeSolver(params_.h, dfsph);
 
   Eigen::AlignedBox3d bounds;
   for (Eigen::Index v = 0; v < skinPositions_.cols(); ++v) bounds.extend(skinPositions_.col(v));
@@ -98,28 +179,60 @@ TearSimulation::TearSimulation(const Eigen::Matrix3Xf& rest, const std::vector<E
   envelope.min() -= grow;
   envelope.max() += grow;
   collider_ = std::make_unique<SkinCollider>(skinPositions_, skinTriangles_, envelope, params_.particleRadius,
-                                             params_.contactBand, params_.h);
+                                             params_.contactBand, std::max(0.0, options_.collisionProbeKernels) * params_.h);
 }
 
 TearSimulation::~TearSimulation() = default;
 
 std::unique_ptr<TearSimulation> TearSimulation::forHead(const HeadMesh& head, const TearSettings& settings,
-                                                        const SimulationOptions& options) {
+                                                        const SimulationOptions& options, const HeadTearOptions& headOptions) {
   const HeadSubmesh* skin = head.findSubmesh("skin");
   if (!skin) throw std::invalid_argument("the head has no 'skin' sub-mesh");
-  auto simulation = std::make_unique<TearSimulation>(head.positions, skin->triangles, settings, options);
-  // Lower eyelid: below the eyeball centre by 0.8 of its radius and in front by 0.6 of it.
-  const char* eyes[2] = {"eye_l", "eye_r"};
-  for (int e = 0; e < 2; ++e) {
-    const HeadSubmesh* eye = head.findSubmesh(eyes[e]);
-    if (!eye || eye->vertexCount == 0) continue;
-    Eigen::AlignedBox3d box;
-    for (int v = eye->firstVertex; v < eye->firstVertex + eye->vertexCount; ++v)
-      box.extend(head.positions.col(v).cast<double>());
-    const double radius = 0.5 * box.sizes().maxCoeff();
-    simulation->setSource(static_cast<Eye>(e), box.center() + Eigen::Vector3d(0, -0.8 * radius, 0.6 * radius));
-  }
+  std::vector<Eigen::Vector3i> surface = skin->triangles;
+  if (headOptions.eyesCollide)
+    for (const char* name : {"eye_l", "eye_r", "cornea_l", "cornea_r"})
+      if (const HeadSubmesh* eye = head.findSubmesh(name)) surface.insert(surface.end(), eye->triangles.begin(), eye->triangles.end());
+  auto simulation = std::make_unique<TearSimulation>(head.positions, surface, settings, options);
+  // The unit scale is the height of all collision vertices: the eyes lie inside the skin's.
+  for (auto [eye, given] : {std::pair{Eye::Left, &headOptions.leftSource}, std::pair{Eye::Right, &headOptions.rightSource}})
+    simulation->setSource(eye, *given ? **given : defaultTearSource(head, eye));
   return simulation;
+}
+
+Eigen::Vector3d TearSimulation::defaultTearSource(const HeadMesh& head, Eye eye) {
+  const HeadSubmesh* skin = head.findSubmesh("skin");
+  if (!skin || skin->triangles.empty()) throw std::invalid_argument("the head has no 'skin' sub-mesh");
+  const HeadSubmesh* ball = head.findSubmesh(eye == Eye::Left ? "eye_l" : "eye_r");
+  if (!ball || ball->vertexCount == 0) {
+    // No eye to go by: the constructor's rule for a head of this skin's size.
+    Eigen::AlignedBox3d bounds;
+    for (const auto& t : skin->triangles)
+      for (int a = 0; a < 3; ++a) bounds.extend(head.positions.col(t[a]).cast<double>());
+    const double height = bounds.sizes().y(), side = eye == Eye::Left ? 1 : -1;
+    return {bounds.center().x() + side * 0.11 * height, bounds.max().y() - 0.35 * height, bounds.max().z()};
+  }
+  // The eyeball: its mesh may be the front cap only, so the radius comes from the width and the
+  // centre lies one radius behind the front-most point.
+  Eigen::AlignedBox3d box;
+  for (int v = ball->firstVertex; v < ball->firstVertex + ball->vertexCount; ++v)
+    box.extend(head.positions.col(v).cast<double>());
+  const double radius = 0.5 * std::max(box.sizes().x(), box.sizes().y());
+  const Eigen::Vector3d centre(box.center().x(), box.center().y(), box.max().z() - radius);
+  const double below = 25 * std::numbers::pi / 180;
+  const Eigen::Vector3d target = centre + 1.1 * radius * Eigen::Vector3d(0, -std::sin(below), std::cos(below));
+  // The nearest skin vertex (first in triangle order on ties: deterministic).
+  double best = std::numeric_limits<double>::infinity();
+  Eigen::Vector3d source = target;
+  for (const auto& t : skin->triangles)
+    for (int a = 0; a < 3; ++a) {
+      const Eigen::Vector3d x = head.positions.col(t[a]).cast<double>();
+      const double d = (x - target).squaredNorm();
+      if (d < best) {
+        best = d;
+        source = x;
+      }
+    }
+  return source;
 }
 
 void TearSimulation::setSource(Eye eye, const Eigen::Vector3d& point) {
@@ -166,6 +279,16 @@ void TearSimulation::updateSkin(const Eigen::Matrix3Xf& positions) {
     collider_->moveSurface(skinPositions_, particles_, c);
   }
   addCollisionCounters(counters_, c);
+}
+
+SkinPoint TearSimulation::nearestSkinPoint(const Eigen::Vector3d& x, double radius) {
+  SkinPoint result;
+  SkinHit hit;
+  CollisionCounters c;
+  if (x.allFinite() && radius > 0 && collider_->nearest(x, radius, hit, c))
+    result = {hit.triangle, hit.point, collider_->faceNormal(hit.triangle), hit.distance};
+  addCollisionCounters(counters_, c);
+  return result;
 }
 
 EmissionSite TearSimulation::siteFor(Eye eye) {
@@ -291,6 +414,9 @@ void TearSimulation::simulate(double frameDt) {
   const Eigen::Vector3d g = gravity();
   const double minimumStep = frameDt / options_.maxSubsteps;
   const bool akinci = options_.surfaceTension == SurfaceTensionModel::Akinci;
+  const bool dfsph = options_.pressureSolver == PressureSolver::Dfsph;
+  // DFSPH has no equation of state: no sound speed in the CFL condition.
+  const double soundSpeed = dfsph ? 0.0 : params_.soundSpeed;
   std::array<EmissionSite, 2> sites;
   std::array<bool, 2> siteKnown{false, false};
   double remaining = frameDt;
@@ -303,7 +429,15 @@ void TearSimulation::simulate(double frameDt) {
 
     start = Clock::now();
     density_.compute(particles_, candidates_, pairs_);
-    pressure_.computePressures(particles_);
+    if (dfsph) {
+      std::fill(particles_.pressure.begin(), particles_.pressure.end(), 0.0);  // the solves replace it
+      dfsph_.prepare(particles_, pairs_);
+      const double expected = lastSubstep_ > 0 ? std::min(lastSubstep_, remaining) : remaining;
+      counters_.divergenceIterations += dfsph_.solveDivergence(particles_, pairs_, expected);
+      counters_.solverCapped += dfsph_.stats().divergenceCapped;
+    } else {
+      pressure_.computePressures(particles_);
+    }
     times_.density += msSince(start);
 
     start = Clock::now();
@@ -315,7 +449,18 @@ void TearSimulation::simulate(double frameDt) {
       maxAcceleration2 = std::max(maxAcceleration2, particles_.acceleration[static_cast<std::size_t>(i)].squaredNorm());
       maxRate = std::max(maxRate, particles_.viscosityRate[static_cast<std::size_t>(i)]);
     }
-    StepChoice choice = stepper_.choose(h, params_.soundSpeed, relativeSpeed, std::sqrt(maxAcceleration2), maxRate, remaining);
+    const double longest = options_.maxSubstepSeconds > 0 ? std::min(remaining, options_.maxSubstepSeconds) : remaining;
+    // DFSPH: pressure is not in the accelerations yet, and surface tension alone is several g on
+    // surface particles; what moves them is the balance, known after the solve. The last
+    // sub-step's net acceleration stands in for it (the explicit one before there is any).
+    const double accelerationBound = dfsph && lastNetAcceleration_ >= 0 ? lastNetAcceleration_ : std::sqrt(maxAcceleration2);
+    StepChoice choice = stepper_.choose(h, soundSpeed, relativeSpeed, accelerationBound, maxRate, longest);
+    if (longest < remaining && choice.limit == StepLimit::Frame) {
+      // Capped by maxSubstepSeconds: even pieces of the frame, as for the other limits.
+      choice.dt = remaining / std::ceil(remaining / longest * (1 - 1e-12));
+    } else if (choice.limit == StepLimit::Frame) {
+      choice.dt = remaining;
+    }
     if (choice.limit == StepLimit::Cfl) ++counters_.cflLimited;
     if (choice.limit == StepLimit::Acceleration) ++counters_.accelerationLimited;
     if (choice.limit == StepLimit::Viscosity) ++counters_.viscosityLimited;
@@ -337,6 +482,17 @@ void TearSimulation::simulate(double frameDt) {
     const double dt = choice.dt;
     viscosity_.apply(particles_, forcePass_.weightedVelocity(), forcePass_.weightSum(), dt);
     contact_.applyExternal(particles_, g, dt);
+    if (dfsph) {
+      contactNormal_.resize(particles_.velocity.size());
+      for (std::size_t i = 0; i < contactNormal_.size(); ++i) {
+        const int t = particles_.contact[i].triangle;
+        contactNormal_[i] = t >= 0 ? collider_->faceNormal(t) : Eigen::Vector3d::Zero();
+      }
+      counters_.densityIterations += dfsph_.solveDensity(particles_, pairs_, dt, contactNormal_);
+      counters_.solverCapped += dfsph_.stats().densityCapped;
+      lastSubstep_ = dt;
+      lastNetAcceleration_ = dfsph_.stats().maxNetAcceleration;
+    }
     contact_.constrain(particles_, collider_->view(), g, dt);
     if (capped) {
       const double vLimit = stepper_.lambdaCfl() * h / dt;

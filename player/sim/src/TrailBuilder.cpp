@@ -109,7 +109,10 @@ void TrailBuilder::continueTrack(Track& track, const ParticleSet& particles, con
   seeds_.clear();
   for (int i : finder_.particlesOf(drop)) {
     const int t = particles.contact[static_cast<std::size_t>(i)].triangle;
-    if (t >= 0 && seeds_.size() < kMaxSeeds && std::find(seeds_.begin(), seeds_.end(), t) == seeds_.end()) seeds_.push_back(t);
+    // Contacts past the skin's triangles are on other collision surfaces (the eyes): not skin.
+    if (t >= 0 && t < skin_.triangleCount() && seeds_.size() < kMaxSeeds &&
+        std::find(seeds_.begin(), seeds_.end(), t) == seeds_.end())
+      seeds_.push_back(t);
   }
   if (seeds_.empty()) return;  // in the air: it wets nothing; the track keeps its last section
   if (track.centre.triangle >= 0) seeds_.push_back(track.centre.triangle);

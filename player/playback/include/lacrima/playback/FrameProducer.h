@@ -43,13 +43,17 @@ public:
   // Re-blends the face for `values` without advancing the tears (scrubbing between frames,
   // slider drags in a paused editor).
   const FrameView& pose(const FapValues& values);
+  // Same, moving the redness ramp to `progress` too (a player between two frames).
+  const FrameView& pose(const FapValues& values, double progress);
   const FrameView& view() const;
 
   // Neutral face, no tears, no trails, redness 0.
   void reset();
 
   // Full state of the tears (simulation, trails, wetness history): restoring it and producing
-  // the same inputs again gives bitwise-identical frames.
+  // the same inputs again gives bitwise-identical frames. A checkpoint holding tears is void
+  // once the tear parameters or sources change (restore throws std::invalid_argument); one
+  // taken before any tear stays valid. The face is re-blended from the checkpoint's values.
   class Checkpoint;
   std::shared_ptr<const Checkpoint> checkpoint() const;
   void restore(const Checkpoint& checkpoint);

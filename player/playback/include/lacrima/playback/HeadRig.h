@@ -6,8 +6,11 @@
 #include <lacrima/PoseSet.h>
 #include <lacrima/rig/RigBuilder.h>
 
+#include <Eigen/Core>
+
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace lacrima::playback {
 
@@ -15,6 +18,8 @@ struct HeadRig {
   HeadMesh head;
   BuiltRig rig;  // rig.input.mesh points at `head`: a HeadRig is never copied or moved
   std::unique_ptr<PoseBlender> blender;
+  // Feature-point file and rig warnings ("file: message"), for a status line or stderr.
+  std::vector<std::string> warnings;
 
   HeadRig() = default;
   HeadRig(const HeadRig&) = delete;
@@ -26,5 +31,9 @@ struct HeadRig {
 std::unique_ptr<HeadRig> loadDefaultHeadRig();
 // Any mesh assimp reads, with its feature-point file (lacrima-fdp v1). Throws FileError.
 std::unique_ptr<HeadRig> loadHeadRig(const std::string& meshPath, const std::string& fdpPath);
+
+// The triangles of every sub-mesh the feature-point file calls skin (rig.roles), by head vertex
+// index: the surface tears run on. For the default head, exactly its "skin" sub-mesh.
+std::vector<Eigen::Vector3i> skinTriangles(const HeadRig& rig);
 
 }  // namespace lacrima::playback

@@ -6,6 +6,7 @@
 //
 // The tears advance once per animation frame (dt = 1 / fps). Between frames, the face is
 // interpolated (FapAnimation::sample) so a viewport rendering faster than the file stays smooth.
+#include <lacrima/Diagnostics.h>
 #include <lacrima/FapAnimation.h>
 #include <lacrima/ProjectDocument.h>
 #include <lacrima/playback/FrameProducer.h>
@@ -21,11 +22,13 @@ public:
   ~Playback();
 
   // A .fap file or a project (.json, .lacrima). Throws FileError (file, line, what was expected);
-  // on error the current animation stays loaded.
+  // on error the current animation stays loaded. Shows the first frame.
   void open(const std::string& path);
   void setAnimation(FapAnimation animation, const SceneSettings& scene = {}, const TearSources& sources = {});
   const FapAnimation& animation() const;
   const std::string& path() const;  // empty when set from memory
+  const Warnings& warnings() const;  // the FAP reader's for the open file
+  const TearSources& tearSources() const;
 
   int frameCount() const;
   double frameRate() const;
@@ -43,7 +46,8 @@ public:
   int currentFrame() const;     // the last whole frame the tears have reached
   double currentTime() const;
 
-  // Neutral face, all tears gone, time 0.
+  // Neutral face, all tears gone, time 0. Checkpoints stay valid; the next seek plays from the
+  // first frame.
   void reset();
 
   const FrameProducer& producer() const;

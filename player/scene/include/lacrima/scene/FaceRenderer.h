@@ -16,8 +16,13 @@
 
 namespace lacrima::scene {
 
+class FaceScene;
+
+// upload: the last show(); render: submitting the frame (the software rasteriser may still be
+// drawing when it returns); readback: waiting for the pixels and copying them into the image.
+// render + readback is what a frame costs.
 struct RenderTimes {
-  double upload = 0, render = 0, readback = 0;  // milliseconds, last render()
+  double upload = 0, render = 0, readback = 0;  // milliseconds
 };
 
 class FaceRenderer {
@@ -36,10 +41,18 @@ public:
   void resetView();
   void orbit(double yawDegrees, double pitchDegrees);
   void zoom(double factor);  // < 1 moves closer
+  void pan(double right, double up);  // moves the target by fractions of the view's height
   // Pixel position of a point in the head frame under the current camera (tests: where the
   // eyes and cheeks are in the image); y grows downwards.
   QPointF project(const Eigen::Vector3d& headPoint) const;
   const RenderTimes& lastTimes() const;
+
+  // Multisampling of the render target: 0 (none), 2 or 4 (other values round down to these).
+  static constexpr int kDefaultSamples = 0;
+  void setSamples(int samples);
+  int samples() const;
+  // The scene behind the images (camera, per-frame details) for tools and tests.
+  FaceScene& scene();
 
 private:
   struct State;

@@ -2,9 +2,11 @@
 // Half neighbour lists for the solver: every pair once (i < j), forces applied to both ends.
 //
 // VerletPairs holds the candidate pairs closer than R = h + skin when it was built, and stays
-// usable while no particle has moved more than skin / 2 since: for any pair now closer than h,
-//   |x_i0 - x_j0| <= |x_i - x_j| + |x_i - x_i0| + |x_j - x_j0| < h + skin / 2 + skin / 2 = R,
-// so it was listed (Verlet 1967). Each sub-step filters the candidates to the pairs within h
+// usable while the two largest displacements since then, d1 >= d2, sum to less than the skin:
+// for any pair now closer than h,
+//   |x_i0 - x_j0| <= |x_i - x_j| + |x_i - x_i0| + |x_j - x_j0| < h + d1 + d2 < R,
+// so it was listed (Verlet 1967). Bounding d1 + d2 rather than 2 d1 lets a single fast particle
+// (a drop falling off the chin) move up to a whole skin before everything is searched again. Each sub-step filters the candidates to the pairs within h
 // (ActivePairs, with their distance), so every pass sees exactly the pairs a fresh search would.
 //
 // Built from a CellIndex over particles already in cell order (sorted position == particle
@@ -27,7 +29,8 @@ public:
   // From full lists (any structure): pairs i < j, no skin (valid for the current positions only).
   void fromFull(const NeighbourList& full, std::span<const Eigen::Vector3d> positions);
 
-  // Whether every particle is still within skin / 2 of where it was at the build.
+  // Whether the list still holds every pair within h (the two largest displacements since the
+  // build sum to less than the skin).
   bool stillValid(std::span<const Eigen::Vector3d> positions) const;
   void invalidate() { valid_ = false; }
   bool valid() const { return valid_; }

@@ -52,8 +52,15 @@ public:
   std::vector<double> clearance;  // free particles: guaranteed gap to the skin (lower bound)
 
 private:
-  // permute's buffers, one per attribute type, kept so reordering does not allocate.
+  // permute's buffers, one per attribute type, kept so reordering does not allocate. They hold
+  // no state: copying a ParticleSet (a checkpoint) leaves them behind.
   struct Scratch {
+    Scratch() = default;
+    Scratch(const Scratch&) {}
+    Scratch& operator=(const Scratch&) { return *this; }
+    Scratch(Scratch&&) = default;
+    Scratch& operator=(Scratch&&) = default;
+
     std::vector<Eigen::Vector3d> vectors;
     std::vector<double> scalars;
     std::vector<std::uint64_t> ids;

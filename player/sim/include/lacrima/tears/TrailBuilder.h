@@ -84,7 +84,12 @@ private:
 class TrailBuilder {
 public:
   // `skinTriangles`: the skin's triangles by head vertex index, the same list (and order) the
-  // simulation was built with, so particle contact triangles index into it.
+  // simulation was built with, so particle contact triangles index into it. The simulation may
+  // collide with more (TearSimulation::forHead appends the eyes): contacts past this list are
+  // not on the skin and leave no trail.
+  //
+  // A TrailBuilder is a plain value: a copy continues exactly as the original would (keep one
+  // beside a TearCheckpoint to seek).
   explicit TrailBuilder(std::vector<Eigen::Vector3i> skinTriangles, const TrailSettings& settings = {});
 
   // One update after the simulation's step, with the head positions of that step and the

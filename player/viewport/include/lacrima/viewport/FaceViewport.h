@@ -6,7 +6,10 @@
 // resetView() frames the face again. Rendering is on demand: a new frame revision, a camera move
 // or a resize schedules one render; a static scene is not re-rendered.
 //
-// Needs an X display (OGRE on Debian is GLX only): run tests under xvfb-run.
+// Needs an X display (OGRE on Debian is GLX only): run tests under xvfb-run. On any Qt platform
+// other than xcb (the offscreen platform of headless tests, Wayland) the widget never starts
+// OGRE: it shows the message "3-D preview needs an X display", every method is a safe no-op and
+// grabFrame() returns a null image. If OGRE fails to start, the widget shows why the same way.
 #include <lacrima/playback/FrameView.h>
 
 #include <QImage>
@@ -33,6 +36,10 @@ public:
   double lastRenderMilliseconds() const;
   long long renderCount() const;  // renders so far: a static scene does not add any
 
+  // Whether the widget draws with OGRE (false: it shows message() instead).
+  bool usesOgre() const;
+  QString message() const;
+
   QPaintEngine* paintEngine() const override { return nullptr; }
 
 signals:
@@ -48,8 +55,16 @@ protected:
   void mouseDoubleClickEvent(QMouseEvent* event) override;
   void wheelEvent(QWheelEvent* event) override;
   bool event(QEvent* event) override;  // deferred render requests
+  bool eventFilter(QObject* watched, QEvent* event) override;  // exposes of the native window
 
 private:
+  void showMessage(const QString& text);
+  void watchExposes();
+  bool ensureScene();
+  bool ensureWindow();
+  void requestRender();
+  bool renderNow(bool swap);
+
   struct State;
   std::unique_ptr<State> state_;
 };

@@ -1,0 +1,101 @@
+// lacrima-editor: keyframe MPEG-4 facial animation with tears.
+//
+//   lacrima-editor [FILE]                 a project (.json) or a FAP file to import
+//   lacrima-editor FILE --screenshot PNG  render the window (with the preview) to PNG and exit
+// Exit status: 0 on success, 1 when FILE or the screenshot cannot be read or written, 2 on
+// wrong usage.
+#include <lacrima/editor/EditorModel.h>
+#include <lacrima/editor/EditorTheme.h>
+#include <lacrima/editor/MainWindow.h>
+#include <lacrima/editor/PresetPanel.h>
+#include <lacrima/editor/PreviewPanel.h>
+#include <lacrima/editor/SliderPanel.h>
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QElapsedTimer>
+#include <QImage>
+#include <QLineEdit>
+#include <QTimer>
+#include <QTreeWidget>
+
+#include <cstdio>
+
+using namespace lacrima::editor;
+
+int main(int argc, char** argv) {
+  QApplication app(argc, argv);
+  QApplication::setApplicationName(QStringLiteral("lacrima-editor"));
+  QApplication::setOrganizationName(QStringLiteral("lacrima"));
+  QApplication::setApplicationVersion(QStringLiteral(LACRIMA_VERSION));
+
+  QCommandLineParser parser;
+  parser.setApplicationDescription(QStringLiteral("Keyframe MPEG-4 facial animation with real-time tears."));
+  parser.addHelpOption();
+  parser.addVersionOption();
+  parser.addPositionalArgument(QStringLiteral("file"), QStringLiteral("A project (.json) to open or a FAP file to import."), QStringLiteral("[file]"));
+  const QCommandLineOption screenshot(QStringLiteral("screenshot"), QStringLiteral("Save the window as PNG to <file> and exit."), QStringLiteral("file"));
+  const QCommandLineOption size(QStringLiteral("size"), QStringLiteral("Window size for --screenshot (default 1440x900)."), QStringLiteral("WxH"), QStringLiteral("1440x900"));
+  const QCommandLineOption time(QStringLiteral("time"), QStringLiteral("Start at this time in seconds."), QStringLiteral("seconds"));
+  const QCommandLineOption filter(QStringLiteral("filter"), QStringLiteral("Start with this channel filter."), QStringLiteral("text"));
+  const QCommandLineOption focus(QStringLiteral("focus"), QStringLiteral("Draw this channel's curve in the timeline."), QStringLiteral("fap"));
+  const QCommandLineOption presets(QStringLiteral("presets"), QStringLiteral("Use this presets file instead of the built-in one."), QStringLiteral("file"));
+  const QCommandLineOption noPreview(QStringLiteral("no-preview"), QStringLiteral("Do not load the head (no 3D preview)."));
+  const QCommandLineOption warm(QStringLiteral("warm-up"), QStringLiteral("For --screenshot: simulate this many frames of tears first."), QStringLiteral("frames"), QStringLiteral("0"));
+  parser.addOptions({screenshot, size, time, filter, focus, presets, noPreview, warm});
+  parser.process(app);
+
+  const bool batch = parser.isSet(screenshot);
+  theme::apply(app);  // screenshots show the editor as people see it
+
+  const QStringList files = parser.positionalArguments();
+  if (files.size() > 1) {
+    std::fprintf(stderr, "lacrima-editor: one file at a time\n");
+    return 2;
+  }
+
+  EditorOptions options;
+  options.preview = !parser.isSet(noPreview);
+  options.interactive = !batch;
+  options.offerRecovery = !batch;
+  options.presetsPath = parser.value(presets);
+  MainWindow window(options);
+  if (!window.lastError().isEmpty()) std::fprintf(stderr, "lacrima-editor: %s\n", qPrintable(window.lastError()));
+
+  if (!files.isEmpty() && !window.openFile(files.front())) {
+    std::fprintf(stderr, "lacrima-editor: %s\n", qPrintable(window.lastError()));
+    if (batch) return 1;
+  }
+  if (parser.isSet(time)) window.model().setCurrentTime(parser.value(time).toDouble());
+  if (parser.isSet(filter)) window.sliders()->setFilterText(parser.value(filter));
+  if (parser.isSet(focus)) window.model().setFocusChannel(parser.value(focus).toInt());
+
+  if (!batch) {
+    window.show();
+    return app.exec();
+  }
+
+  const QStringList wh = parser.value(size).split(QLatin1Char('x'));
+  if (wh.size() != 2 || wh[0].toInt() < 320 || wh[1].toInt() < 240) {
+    std::fprintf(stderr, "lacrima-editor: --size expects WxH, e.g. 1440x900\n");
+    return 2;
+  }
+  window.resize(wh[0].toInt(), wh[1].toInt());
+  window.show();
+  // Let the window lay out and the head load before grabbing.
+  QElapsedTimer settle;
+  settle.start();
+  while (settle.elapsed() < 300) app.processEvents(QEventLoop::AllEvents, 50);
+  window.preview()->loadHead();
+  for (int i = 0; i < parser.value(warm).toInt(); ++i) window.preview()->step(window.model().frameDuration());
+  settle.restart();
+  while (settle.elapsed() < 300) app.processEvents(QEventLoop::AllEvents, 50);
+  const QImage image = window.screenshot();
+  // Quality 0 is zlib level 9 for PNG: the smallest file, same pixels.
+  if (image.isNull() || !image.save(parser.value(screenshot), "PNG", 0)) {
+    std::fprintf(stderr, "lacrima-editor: cannot write %s\n", qPrintable(parser.value(screenshot)));
+    return 1;
+  }
+  std::printf("%s: %dx%d\n", qPrintable(parser.value(screenshot)), image.width(), image.height());
+  return 0;
+}

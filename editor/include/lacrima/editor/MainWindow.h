@@ -1,0 +1,140 @@
+#pragma once
+// The editor window: channels on the left, the preview in the middle, presets / keys / history
+// on the right, transport and timeline at the bottom; menus and shortcuts for everything.
+//
+// Files: projects are the foundation's JSON documents (saved atomically); FAP files are
+// imported (frames become keys, optionally reduced) and exported (extended or strict 68).
+// Comfort: the title carries the unsaved mark, closing or replacing unsaved work asks first,
+// recent files are remembered (QSettings), and unsaved work is autosaved to a recovery file
+// two seconds after each change and every 30 s, removed on a clean exit; the next editor to
+// start offers to restore it (RecoveryStore.h).
+//
+// Every path-taking operation exists without dialogs (openFile, saveTo, importFap, exportFap),
+// for the command line and tests; with `interactive` off, nothing ever opens a modal dialog
+// (errors go to lastError() and the status bar, and unsaved changes are discarded).
+#include <lacrima/editor/FapTransfer.h>
+
+#include <QMainWindow>
+
+#include <memory>
+#include <optional>
+
+class QLabel;
+class QMenu;
+class QTimer;
+class QUndoView;
+
+namespace lacrima::editor {
+
+class EditorModel;
+class KeyListPanel;
+class PlaybackClock;
+class PresetPanel;
+class PreviewPanel;
+class RecoveryBanner;
+class RecoveryStore;
+class SliderPanel;
+class TimelineWidget;
+class TransportBar;
+
+struct EditorOptions {
+  bool preview = true;         // load the head and show the viewport
+  bool interactive = true;     // dialogs and prompts (off: tests, batch screenshots)
+  bool offerRecovery = true;   // look for crashed sessions at start
+  QString recoveryDirectory;   // empty: RecoveryStore::defaultDirectory()
+  QString presetsPath;         // empty: the built-in presets
+  int autosaveDelayMs = 2000;  // after a change
+  int autosaveIntervalMs = 30000;
+};
+
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+public:
+  explicit MainWindow(EditorOptions options = {}, QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  EditorModel& model() { return *model_; }
+  PlaybackClock& clock() { return *clock_; }
+  SliderPanel* sliders() const { return sliders_; }
+  TimelineWidget* timeline() const { return timeline_; }
+  TransportBar* transport() const { return transport_; }
+  PresetPanel* presets() const { return presets_; }
+  PreviewPanel* preview() const { return preview_; }
+  KeyListPanel* keyList() const { return keyList_; }
+  RecoveryBanner* recoveryBanner() const { return banner_; }
+  RecoveryStore& recovery() { return *recovery_; }
+  // Actions by object name ("file.save", "key.add", ...), for tests and the shortcut list.
+  QAction* action(const QString& name) const;
+
+  // --- files (false on failure; the reason is in lastError()) ---------------------------
+  void newDocument();
+  bool openFile(const QString& path);  // a project, or a .fap to import
+  bool saveTo(const QString& path);
+  bool importFap(const QString& path, std::optional<double> reductionTolerance);
+  bool exportFap(const QString& path, const FapExportOptions& options);
+  QString filePath() const { return filePath_; }
+  QString lastError() const { return lastError_; }
+
+  // --- autosave and recovery --------------------------------------------------------------
+  void autosaveNow();
+  void checkForRecovery();  // shows the banner when a crashed session left work
+  bool restoreRecovery();   // the newest orphan
+  void discardRecovery();
+
+  // The whole window as a picture, the 3D preview included (QWidget::grab cannot read the
+  // viewport's native OpenGL surface, so its own render is painted in).
+  QImage screenshot();
+
+  // --- clipboard --------------------------------------------------------------------------
+  void copyKeys();
+  void pasteKeys(std::optional<double> at = std::nullopt);
+
+protected:
+  void closeEvent(QCloseEvent* event) override;
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
+
+private:
+  void createDocks();
+  void createMenus();
+  QAction* addAction(QMenu* menu, const QString& name, const QString& text, const QKeySequence& shortcut,
+                     const QString& tip = {});
+  bool maybeSave();
+  void updateTitle();
+  void updateStatusFigures();
+  void addRecentFile(const QString& path);
+  void rebuildRecentMenu();
+  void reportError(const QString& title, const QString& message);
+  void onDocumentChanged();
+  void openDialog();
+  bool saveDialog();
+  void importDialog();
+  void exportDialog();
+  void settingsDialog();
+  void loadPresetsDialog();
+  void showShortcuts();
+
+  EditorOptions options_;
+  std::unique_ptr<EditorModel> model_;
+  std::unique_ptr<PlaybackClock> clock_;
+  std::unique_ptr<RecoveryStore> recovery_;
+  SliderPanel* sliders_ = nullptr;
+  TimelineWidget* timeline_ = nullptr;
+  TransportBar* transport_ = nullptr;
+  PresetPanel* presets_ = nullptr;
+  PreviewPanel* preview_ = nullptr;
+  KeyListPanel* keyList_ = nullptr;
+  RecoveryBanner* banner_ = nullptr;
+  QUndoView* history_ = nullptr;
+  QMenu* recentMenu_ = nullptr;
+  QMenu* viewMenu_ = nullptr;
+  QLabel* figures_ = nullptr;
+  QTimer* autosaveSoon_ = nullptr;
+  QTimer* autosavePeriodic_ = nullptr;
+  bool autosaveDirty_ = false;
+  QString filePath_;
+  QString lastError_;
+  QString pendingRecovery_;
+};
+
+}  // namespace lacrima::editor

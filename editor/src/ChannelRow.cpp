@@ -1,0 +1,183 @@
+#include <lacrima/editor/ChannelRow.h>
+
+#include <lacrima/FapTable.h>
+#include <lacrima/editor/ChannelLimits.h>
+#include <lacrima/editor/EditorModel.h>
+#include <lacrima/editor/EditorTheme.h>
+#include <lacrima/editor/ZeroSlider.h>
+
+#include <QCoreApplication>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QSpinBox>
+#include <QToolButton>
+
+#include <cmath>
+
+namespace lacrima::editor {
+namespace {
+
+QString fromView(std::string_view text) {
+  return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
+}
+
+QString tooltipFor(const FapInfo& info) {
+  const ChannelLimits limits = editLimits(info.number);
+  QString unit = fromView(toString(info.unit));
+  if (info.unit == FapUnit::AU) unit = QStringLiteral("AU (10⁻⁵ rad)");
+  QString text = QStringLiteral("<b>%1 &nbsp;%2</b><br>%3<br><br>")
+                     .arg(info.number)
+                     .arg(fromView(info.name), fromView(info.description));
+  text += QCoreApplication::translate("ChannelRow", "Unit: %1 · %2").arg(unit,
+      info.bidirectional ? QCoreApplication::translate("ChannelRow", "bidirectional")
+                         : QCoreApplication::translate("ChannelRow", "unidirectional"));
+  if (!info.featurePoint.empty())
+    text += QCoreApplication::translate("ChannelRow", " · feature point %1").arg(fromView(info.featurePoint));
+  text += QStringLiteral("<br>") + QCoreApplication::translate("ChannelRow", "Slider %1 … %2, typed values %3 … %4")
+                                       .arg(info.sliderMin).arg(info.sliderMax).arg(limits.min).arg(limits.max);
+  text += QStringLiteral("<br><i>") +
+          QCoreApplication::translate("ChannelRow", "Double-click the slider to reset; Shift-drag for fine steps.") +
+          QStringLiteral("</i>");
+  return text;
+}
+
+}  // namespace
+
+WheelGuard* WheelGuard::instance() {
+  static WheelGuard* guard = new WheelGuard(QCoreApplication::instance());
+  return guard;
+}
+
+bool WheelGuard::eventFilter(QObject* watched, QEvent* event) {
+  if (event->type() == QEvent::Wheel) {
+    auto* widget = qobject_cast<QWidget*>(watched);
+    if (widget && !widget->hasFocus()) {
+      event->ignore();
+      return true;
+    }
+  }
+  return QObject::eventFilter(watched, event);
+}
+
+ChannelRow::ChannelRow(EditorModel& model, int fap, QWidget* parent)
+    : QWidget(parent), model_(model), fap_(fap) {
+  const FapInfo& info = fapInfo(fap);
+  const ChannelLimits limits = editLimits(fap);
+  setObjectName(QStringLiteral("channel-%1").arg(fap));
+
+  auto* layout = new QHBoxLayout(this);
+  layout->setContentsMargins(4, 1, 4, 1);
+  layout->setSpacing(4);
+
+  key_ = new KeyToggle(this);
+  number_ = new QLabel(QString::number(fap), this);
+  number_->setFixedWidth(20);
+  number_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+  QPalette dim = number_->palette();
+  dim.setColor(QPalette::WindowText, dim.color(QPalette::WindowText).darker(150));
+  number_->setPalette(dim);
+
+  name_ = new QLabel(fromView(info.name), this);
+  name_->setFixedWidth(138);
+  name_->setTextFormat(Qt::PlainText);
+
+  slider_ = new ZeroSlider(info.sliderMin, info.sliderMax, info.quantizerStep, theme::groupColour(info.group), this);
+
+  spin_ = new QSpinBox(this);
+  spin_->setRange(limits.min, limits.max);
+  spin_->setButtonSymbols(QAbstractSpinBox::NoButtons);
+  spin_->setKeyboardTracking(false);  // one edit per Enter, not one per typed digit
+  spin_->setAlignment(Qt::AlignRight);
+  spin_->setFixedWidth(58);
+  spin_->setFocusPolicy(Qt::StrongFocus);
+  spin_->installEventFilter(WheelGuard::instance());
+  spin_->setSingleStep(info.quantizerStep);
+
+  reset_ = new QToolButton(this);
+  reset_->setText(QStringLiteral("↺"));
+  reset_->setAutoRaise(true);
+  reset_->setFixedSize(20, 20);
+  reset_->setToolTip(tr("Reset %1 to 0 at the current time").arg(fromView(info.name)));
+  reset_->setFocusPolicy(Qt::NoFocus);
+
+  layout->addWidget(key_);
+  layout->addWidget(number_);
+  layout->addWidget(name_);
+  layout->addWidget(slider_, 1);
+  layout->addWidget(spin_);
+  layout->addWidget(reset_);
+
+  const QString tip = tooltipFor(info);
+  name_->setToolTip(tip);
+  number_->setToolTip(tip);
+  slider_->setToolTip(tip);
+  spin_->setToolTip(tip);
+
+  connect(slider_, &ZeroSlider::dragStarted, this, [this] {
+    session_ = model_.beginDragSession();
+    model_.setFocusChannel(fap_);
+  });
+  connect(slider_, &ZeroSlider::valueEdited, this, [this](int v) { edit(v); });
+  connect(slider_, &ZeroSlider::dragFinished, this, [this] { session_ = 0; });
+  connect(slider_, &ZeroSlider::resetRequested, this, [this] {
+    const int one[] = {fap_};
+    model_.resetChannels(one, tr("Reset %1").arg(name_->text()));
+  });
+  connect(spin_, &QSpinBox::valueChanged, this, [this](int v) {
+    model_.setFocusChannel(fap_);
+    edit(v);
+  });
+  connect(reset_, &QToolButton::clicked, this, [this] {
+    const int one[] = {fap_};
+    model_.setFocusChannel(fap_);
+    model_.resetChannels(one, tr("Reset %1").arg(name_->text()));
+  });
+  connect(key_, &KeyToggle::clicked, this, [this] {
+    model_.setFocusChannel(fap_);
+    if (model_.keyedAtCurrentTime().test(channelIndex(fap_))) {
+      model_.unkeyChannel(fap_);
+    } else {
+      model_.setChannels({{fap_, model_.currentValue(fap_)}}, tr("Key %1").arg(name_->text()));
+    }
+  });
+}
+
+void ChannelRow::edit(int value) {
+  if (value == shownValue_) return;
+  shownValue_ = value;
+  model_.setChannel(fap_, value, slider_->isDragging() ? session_ : 0);
+}
+
+void ChannelRow::show(float value, KeyToggle::State state) {
+  const int v = static_cast<int>(std::lround(value));
+  key_->setState(state);
+  slider_->setEmphasis(state == KeyToggle::State::Keyed);
+  if (v == shownValue_ && spin_->value() == v && slider_->value() == v) return;
+  shownValue_ = v;
+  slider_->setValue(v);
+  const QSignalBlocker block(spin_);
+  spin_->setValue(v);
+}
+
+void ChannelRow::setHighlighted(bool on) {
+  if (on == highlighted_) return;
+  highlighted_ = on;
+  update();
+}
+
+void ChannelRow::paintEvent(QPaintEvent*) {
+  if (!highlighted_) return;
+  QPainter p(this);
+  QColor c = palette().color(QPalette::Highlight);
+  c.setAlphaF(0.16);
+  p.fillRect(rect(), c);
+}
+
+void ChannelRow::mousePressEvent(QMouseEvent* event) {
+  model_.setFocusChannel(fap_);
+  QWidget::mousePressEvent(event);
+}
+
+}  // namespace lacrima::editor

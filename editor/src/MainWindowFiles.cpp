@@ -1,0 +1,379 @@
+// MainWindow: files, recent files, autosave and recovery, closing.
+#include <lacrima/editor/MainWindow.h>
+
+#include <lacrima/editor/EditorModel.h>
+#include <lacrima/editor/PlaybackClock.h>
+#include <lacrima/editor/PresetPanel.h>
+#include <lacrima/editor/RecoveryBanner.h>
+#include <lacrima/editor/RecoveryStore.h>
+
+#include <QCheckBox>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QLabel>
+#include <QMenu>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QSettings>
+#include <QStatusBar>
+#include <QTimer>
+
+namespace lacrima::editor {
+namespace {
+
+constexpr int kMaxRecentFiles = 8;
+const QString kRecentKey = QStringLiteral("files/recent");
+const QString kToleranceKey = QStringLiteral("import/tolerance");
+const QString kReduceKey = QStringLiteral("import/reduce");
+
+bool isFapFile(const QString& path) { return !path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive); }
+
+QString joinWarnings(const Warnings& warnings) {
+  QStringList lines;
+  for (const Diagnostic& d : warnings) lines << QString::fromStdString(d.toString());
+  return lines.join(QLatin1Char('\n'));
+}
+
+}  // namespace
+
+void MainWindow::reportError(const QString& title, const QString& message) {
+  lastError_ = message;
+  statusBar()->showMessage(message, 10000);
+  if (options_.interactive) QMessageBox::warning(this, title, message);
+}
+
+bool MainWindow::maybeSave() {
+  if (!model_->isModified() || !options_.interactive) return true;
+  const auto answer = QMessageBox::warning(
+      this, tr("Unsaved changes"),
+      tr("“%1” has unsaved changes. Save them first?").arg(QString::fromStdString(model_->document().name)),
+      QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+  if (answer == QMessageBox::Cancel) return false;
+  if (answer == QMessageBox::Save) return filePath_.isEmpty() ? saveDialog() : saveTo(filePath_);
+  return true;
+}
+
+void MainWindow::newDocument() {
+  clock_->pause();
+  ProjectDocument document;
+  document.name = "untitled";
+  filePath_.clear();
+  model_->resetDocument(std::move(document), true);
+  recovery_->discard();
+  autosaveDirty_ = false;
+  updateTitle();
+  updateStatusFigures();
+}
+
+bool MainWindow::openFile(const QString& path) {
+  if (isFapFile(path)) {
+    QSettings settings;
+    const bool reduce = settings.value(kReduceKey, true).toBool();
+    const double tolerance = settings.value(kToleranceKey, 1.0).toDouble();
+    return importFap(path, reduce ? std::optional<double>(tolerance) : std::nullopt);
+  }
+  try {
+    ProjectDocument document = ProjectDocument::load(path.toStdString());
+    clock_->pause();
+    filePath_ = QFileInfo(path).absoluteFilePath();
+    model_->resetDocument(std::move(document), true);
+    recovery_->discard();
+    autosaveDirty_ = false;
+    addRecentFile(filePath_);
+    updateTitle();
+    updateStatusFigures();
+    statusBar()->showMessage(tr("Opened %1").arg(path), 4000);
+    return true;
+  } catch (const std::exception& e) {
+    reportError(tr("Cannot open the project"), QString::fromUtf8(e.what()));
+    return false;
+  }
+}
+
+bool MainWindow::saveTo(const QString& path) {
+  try {
+    // A first save names an untitled project after its file (one undo step, before saving).
+    if (model_->document().name == "untitled") {
+      ProjectDocument named = model_->document();
+      named.name = QFileInfo(path).completeBaseName().toStdString();
+      if (!named.name.empty()) model_->setSettings(named, tr("Name project"));
+    }
+    model_->document().save(path.toStdString());
+    filePath_ = QFileInfo(path).absoluteFilePath();
+    model_->markSaved();
+    recovery_->discard();
+    autosaveDirty_ = false;
+    addRecentFile(filePath_);
+    updateTitle();
+    statusBar()->showMessage(tr("Saved %1").arg(path), 4000);
+    return true;
+  } catch (const std::exception& e) {
+    reportError(tr("Cannot save"), QString::fromUtf8(e.what()));
+    return false;
+  }
+}
+
+bool MainWindow::importFap(const QString& path, std::optional<double> reductionTolerance) {
+  try {
+    FapImportResult result = editor::importFap(path.toStdString(), FapImportOptions{reductionTolerance});
+    clock_->pause();
+    filePath_.clear();
+    model_->resetDocument(std::move(result.document), false);
+    addRecentFile(QFileInfo(path).absoluteFilePath());
+    updateTitle();
+    updateStatusFigures();
+    QString message = reductionTolerance
+                          ? tr("Imported %1: %2 frames → %3 keys (tolerance %4, largest error %5)")
+                                .arg(QFileInfo(path).fileName())
+                                .arg(result.frames)
+                                .arg(result.keys)
+                                .arg(*reductionTolerance)
+                                .arg(result.maxError, 0, 'g', 3)
+                          : tr("Imported %1: %2 frames as %2 keys").arg(QFileInfo(path).fileName()).arg(result.frames);
+    if (!result.warnings.empty()) message += tr(" · %n warning(s)", nullptr, static_cast<int>(result.warnings.size()));
+    statusBar()->showMessage(message, 10000);
+    if (!result.warnings.empty()) statusBar()->setToolTip(joinWarnings(result.warnings));
+    autosaveNow();  // an import is unsaved work from the first moment
+    return true;
+  } catch (const std::exception& e) {
+    reportError(tr("Cannot import the FAP file"), QString::fromUtf8(e.what()));
+    return false;
+  }
+}
+
+bool MainWindow::exportFap(const QString& path, const FapExportOptions& options) {
+  try {
+    const FapExportResult result = editor::exportFap(model_->document(), path.toStdString(), options);
+    QString message = tr("Exported %1 frames at %2 fps to %3 (%4)")
+                          .arg(result.frames)
+                          .arg(options.fps)
+                          .arg(QFileInfo(path).fileName())
+                          .arg(options.strict ? tr("strict 68 FAPs")
+                                              : result.wroteTears ? tr("with tear channels") : tr("68 FAPs, no tears"));
+    if (!result.warnings.empty()) message += QStringLiteral(" · ") + joinWarnings(result.warnings);
+    statusBar()->showMessage(message, 10000);
+    return true;
+  } catch (const std::exception& e) {
+    reportError(tr("Cannot export"), QString::fromUtf8(e.what()));
+    return false;
+  }
+}
+
+// --- dialogs --------------------------------------------------------------------------------
+
+void MainWindow::openDialog() {
+  if (!options_.interactive || !maybeSave()) return;
+  const QString path = QFileDialog::getOpenFileName(this, tr("Open project or FAP file"), QFileInfo(filePath_).path(),
+                                                    tr("Projects and FAP files (*.json *.fap);;Projects (*.json);;FAP files (*.fap)"));
+  if (!path.isEmpty()) openFile(path);
+}
+
+bool MainWindow::saveDialog() {
+  if (!options_.interactive) return false;
+  QString suggestion = filePath_;
+  if (suggestion.isEmpty()) suggestion = QString::fromStdString(model_->document().name) + QStringLiteral(".json");
+  QString path = QFileDialog::getSaveFileName(this, tr("Save project"), suggestion, tr("Projects (*.json)"));
+  if (path.isEmpty()) return false;
+  if (!path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive)) path += QStringLiteral(".json");
+  return saveTo(path);
+}
+
+void MainWindow::importDialog() {
+  if (!options_.interactive || !maybeSave()) return;
+  const QString path = QFileDialog::getOpenFileName(this, tr("Import FAP file"), QString(), tr("FAP files (*.fap);;All files (*)"));
+  if (path.isEmpty()) return;
+  QSettings settings;
+  QDialog dialog(this);
+  dialog.setWindowTitle(tr("Import %1").arg(QFileInfo(path).fileName()));
+  auto* form = new QFormLayout(&dialog);
+  auto* reduce = new QCheckBox(tr("Reduce keys"), &dialog);
+  reduce->setChecked(settings.value(kReduceKey, true).toBool());
+  reduce->setToolTip(tr("Drop every frame that linear interpolation between the kept keys reproduces within the tolerance, on every channel"));
+  auto* tolerance = new QDoubleSpinBox(&dialog);
+  tolerance->setRange(0, 1000);
+  tolerance->setDecimals(2);
+  tolerance->setValue(settings.value(kToleranceKey, 1.0).toDouble());
+  tolerance->setSuffix(tr(" units"));
+  tolerance->setToolTip(tr("Largest difference allowed on any channel, in its own units (FAPU steps, AU, particles). "
+                           "1 follows the motion of integer files; 0 keeps every frame that is not on a straight line."));
+  form->addRow(reduce);
+  form->addRow(tr("Tolerance"), tolerance);
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
+  form->addRow(buttons);
+  connect(reduce, &QCheckBox::toggled, tolerance, &QWidget::setEnabled);
+  tolerance->setEnabled(reduce->isChecked());
+  connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+  connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+  if (dialog.exec() != QDialog::Accepted) return;
+  settings.setValue(kReduceKey, reduce->isChecked());
+  settings.setValue(kToleranceKey, tolerance->value());
+  importFap(path, reduce->isChecked() ? std::optional<double>(tolerance->value()) : std::nullopt);
+}
+
+void MainWindow::exportDialog() {
+  if (!options_.interactive) return;
+  QDialog dialog(this);
+  dialog.setWindowTitle(tr("Export FAP"));
+  auto* form = new QFormLayout(&dialog);
+  auto* fps = new QDoubleSpinBox(&dialog);
+  fps->setRange(1, 240);
+  fps->setDecimals(0);
+  fps->setValue(model_->document().fps);
+  fps->setSuffix(tr(" fps"));
+  auto* profile = new QComboBox(&dialog);
+  profile->addItem(tr("Extended: 68 FAPs + tear channels 69-70 (Lacrima player)"));
+  profile->addItem(tr("Strict: the 68 standard FAPs (other players)"));
+  form->addRow(tr("Frame rate"), fps);
+  form->addRow(tr("Profile"), profile);
+  form->addRow(new QLabel(tr("Frames cover the first key to the last; FAP 1 and 2 are not written (portable profile)."), &dialog));
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
+  form->addRow(buttons);
+  connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+  connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+  if (dialog.exec() != QDialog::Accepted) return;
+  QString suggestion = filePath_.isEmpty() ? QString::fromStdString(model_->document().name) + QStringLiteral(".fap")
+                                           : QFileInfo(filePath_).path() + '/' + QFileInfo(filePath_).completeBaseName() + QStringLiteral(".fap");
+  QString path = QFileDialog::getSaveFileName(this, tr("Export FAP"), suggestion, tr("FAP files (*.fap)"));
+  if (path.isEmpty()) return;
+  if (!path.endsWith(QLatin1String(".fap"), Qt::CaseInsensitive)) path += QStringLiteral(".fap");
+  exportFap(path, FapExportOptions{fps->value(), profile->currentIndex() == 1});
+}
+
+void MainWindow::loadPresetsDialog() {
+  if (!options_.interactive) return;
+  const QString path = QFileDialog::getOpenFileName(this, tr("Load presets"), QString(), tr("Presets (*.json)"));
+  if (path.isEmpty()) return;
+  try {
+    presets_->setLibrary(PresetLibrary::load(path.toStdString()), path);
+    statusBar()->showMessage(tr("Loaded %n preset(s) from %1", nullptr, static_cast<int>(presets_->library().presets().size())).arg(path), 5000);
+  } catch (const FileError& e) {
+    reportError(tr("Cannot load the presets"), QString::fromUtf8(e.what()));
+  }
+}
+
+// --- recent files ---------------------------------------------------------------------------
+
+void MainWindow::addRecentFile(const QString& path) {
+  QSettings settings;
+  QStringList recent = settings.value(kRecentKey).toStringList();
+  recent.removeAll(path);
+  recent.prepend(path);
+  while (recent.size() > kMaxRecentFiles) recent.removeLast();
+  settings.setValue(kRecentKey, recent);
+  rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+  if (!recentMenu_) return;
+  recentMenu_->clear();
+  const QStringList recent = QSettings().value(kRecentKey).toStringList();
+  int number = 1;
+  for (const QString& path : recent) {
+    QAction* a = recentMenu_->addAction(QStringLiteral("&%1  %2").arg(number++).arg(QFileInfo(path).fileName()));
+    a->setStatusTip(path);
+    a->setEnabled(QFileInfo::exists(path));
+    connect(a, &QAction::triggered, this, [this, path] {
+      if (maybeSave()) openFile(path);
+    });
+  }
+  if (recent.isEmpty()) recentMenu_->addAction(tr("(none yet)"))->setEnabled(false);
+  recentMenu_->addSeparator();
+  connect(recentMenu_->addAction(tr("Clear list")), &QAction::triggered, this, [this] {
+    QSettings().remove(kRecentKey);
+    rebuildRecentMenu();
+  });
+}
+
+// --- autosave and recovery ------------------------------------------------------------------
+
+void MainWindow::autosaveNow() {
+  autosaveSoon_->stop();
+  autosaveDirty_ = false;
+  try {
+    if (model_->isModified()) recovery_->save(model_->document(), filePath_);
+    else recovery_->discard();
+  } catch (const FileError& e) {
+    statusBar()->showMessage(tr("Autosave failed: %1").arg(QString::fromUtf8(e.what())), 8000);
+  }
+}
+
+void MainWindow::checkForRecovery() {
+  const auto orphans = recovery_->orphans();
+  if (orphans.empty()) {
+    banner_->hide();
+    pendingRecovery_.clear();
+    return;
+  }
+  const RecoveryStore::Orphan& newest = orphans.front();
+  pendingRecovery_ = newest.file;
+  QString where = newest.sourcePath.isEmpty() ? tr("never saved") : newest.sourcePath;
+  QString text = tr("<b>Unsaved work was found</b> from an editor that did not close cleanly: “%1” "
+                    "(%n key(s), %2, autosaved %3).", nullptr, newest.keys)
+                     .arg(newest.name.toHtmlEscaped(), where.toHtmlEscaped(),
+                          QLocale().toString(newest.savedAt.toLocalTime(), QLocale::ShortFormat));
+  if (orphans.size() > 1) text += tr(" %n older one(s) too.", nullptr, static_cast<int>(orphans.size() - 1));
+  banner_->setText(text);
+  banner_->show();
+}
+
+bool MainWindow::restoreRecovery() {
+  if (pendingRecovery_.isEmpty()) return false;
+  bool restored = false;
+  try {
+    QString source;
+    ProjectDocument document = RecoveryStore::read(pendingRecovery_, &source);
+    clock_->pause();
+    model_->resetDocument(std::move(document), false);
+    filePath_ = source;
+    RecoveryStore::remove(pendingRecovery_);
+    autosaveNow();  // the restored work is this session's to protect now
+    updateTitle();
+    updateStatusFigures();
+    statusBar()->showMessage(tr("Restored the unsaved work; save it to keep it"), 8000);
+    restored = true;
+  } catch (const std::exception& e) {
+    reportError(tr("Cannot restore"), QString::fromUtf8(e.what()));
+  }
+  checkForRecovery();
+  return restored;
+}
+
+void MainWindow::discardRecovery() {
+  if (!pendingRecovery_.isEmpty()) RecoveryStore::remove(pendingRecovery_);
+  checkForRecovery();
+}
+
+// --- closing and dropping -------------------------------------------------------------------
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!maybeSave()) {
+    event->ignore();
+    return;
+  }
+  clock_->pause();
+  recovery_->discard();  // a clean exit leaves nothing to recover
+  QSettings settings;
+  settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+  settings.setValue(QStringLiteral("window/state"), saveState());
+  event->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+  if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+  const auto urls = event->mimeData()->urls();
+  if (urls.isEmpty() || !urls.front().isLocalFile()) return;
+  if (maybeSave()) openFile(urls.front().toLocalFile());
+}
+
+}  // namespace lacrima::editor

@@ -1,0 +1,187 @@
+// lacrima-player: plays MPEG-4 facial animation (FAP files and Lacrima projects) on a rigged
+// head with real-time tears, or renders it to images (--render). Exit codes as the other
+// tools: 0 success, 1 bad input or a failed write, 2 wrong usage.
+#include "BatchRender.h"
+#include "ErrorReport.h"
+#include "PlayerWindow.h"
+
+#include <lacrima/Diagnostics.h>
+#include <lacrima/playback/HeadRig.h>
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QDir>
+#include <QFileInfo>
+#include <QTimer>
+
+#include <cstdio>
+#include <cstring>
+#include <unistd.h>
+
+using namespace lacrima;
+
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitBadInput = 1;
+constexpr int kExitUsage = 2;
+
+bool hasOption(int argc, char** argv, const char* name) {
+  for (int i = 1; i < argc; ++i)
+    if (std::strcmp(argv[i], name) == 0 || std::strncmp(argv[i], name, std::strlen(name)) == 0) return true;
+  return false;
+}
+
+bool parseSize(const QString& text, QSize& size) {
+  const QStringList parts = text.toLower().split('x');
+  bool okW = false, okH = false;
+  if (parts.size() != 2) return false;
+  const int w = parts[0].toInt(&okW), h = parts[1].toInt(&okH);
+  if (!okW || !okH || w < 16 || h < 16 || w > 8192 || h > 8192) return false;
+  size = QSize(w, h);
+  return true;
+}
+
+std::unique_ptr<playback::HeadRig> loadRig(const QCommandLineParser& parser) {
+  if (parser.isSet("mesh")) return playback::loadHeadRig(parser.value("mesh").toStdString(), parser.value("fdp").toStdString());
+  return playback::loadDefaultHeadRig();
+}
+
+// One line per step on a log, a bar redrawn in place on a terminal.
+void showProgress(int done, int total) {
+  static const bool terminal = isatty(fileno(stderr));
+  if (terminal) {
+    const int width = 40, filled = done * width / std::max(1, total);
+    std::fprintf(stderr, "\rlacrima-player: [%.*s%*s] frame %d/%d", filled, "########################################",
+                 width - filled, "", done, total);
+    if (done == total) std::fputc('\n', stderr);
+  } else if (done == total || done % std::max(1, total / 10) == 0) {
+    std::fprintf(stderr, "lacrima-player: rendered %d/%d frames\n", done, total);
+  }
+}
+
+int renderMode(const QCommandLineParser& parser, const QSize& size) {
+  const QStringList files = parser.positionalArguments();
+  if (files.size() != 1) {
+    std::fprintf(stderr, "lacrima-player: --render needs exactly one FILE to render\n");
+    return kExitUsage;
+  }
+  const auto rig = loadRig(parser);
+  player::BatchRenderOptions options;
+  options.input = files.front();
+  options.outputDir = parser.value("render");
+  options.size = size;
+  options.progress = showProgress;
+  const player::BatchRenderResult result = player::renderAnimation(*rig, options);
+  std::fprintf(stderr, "lacrima-player: %d frames in %.1f s\n", result.frames, result.seconds);
+  std::printf("%s/frame_0000.png ... frame_%04d.png and %s\n", QDir(options.outputDir).absolutePath().toLocal8Bit().constData(),
+              result.frames - 1, QFileInfo(result.contactSheet).absoluteFilePath().toLocal8Bit().constData());
+  return kExitOk;
+}
+
+int windowMode(QApplication& app, const QCommandLineParser& parser, const QSize* size) {
+  const QStringList files = parser.positionalArguments();
+  if (files.size() > 1) {
+    std::fprintf(stderr, "lacrima-player: give at most one FILE to open\n");
+    return kExitUsage;
+  }
+  player::PlayerWindow window(loadRig(parser));
+  for (const std::string& w : window.rig().warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  window.resize(size ? *size : QSize(1360, 820));
+  const bool screenshot = parser.isSet("screenshot");
+  if (screenshot) window.setErrorDialogsEnabled(false);
+  window.show();
+  if (!files.isEmpty() && !window.openFile(files.front()) && screenshot) return kExitBadInput;
+  if (!screenshot) {
+    if (parser.isSet("play")) window.play();
+    return app.exec();
+  }
+  // --screenshot: pose the window at --at seconds, let it lay out and render, grab it.
+  bool ok = false;
+  const double at = parser.value("at").toDouble(&ok);
+  if (!ok) {
+    std::fprintf(stderr, "lacrima-player: --at: expected seconds, got %s\n", parser.value("at").toLocal8Bit().constData());
+    return kExitUsage;
+  }
+  int status = kExitOk;
+  QTimer::singleShot(300, &window, [&] {
+    window.seek(at);
+    QTimer::singleShot(300, &window, [&] {
+      const QString path = parser.value("screenshot");
+      if (!window.screenshot().save(path)) {
+        std::fprintf(stderr, "lacrima-player: cannot write %s\n", path.toLocal8Bit().constData());
+        status = kExitBadInput;
+      }
+      app.quit();
+    });
+  });
+  app.exec();
+  return status;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // OGRE on Debian renders through GLX: both modes need an X display. Say so before Qt would
+  // abort on a missing one.
+  const bool render = hasOption(argc, argv, "--render");
+  const bool help = hasOption(argc, argv, "--help") || hasOption(argc, argv, "-h") || hasOption(argc, argv, "--version");
+  const bool haveX = !qEnvironmentVariableIsEmpty("DISPLAY");
+  if (!haveX && !help) {
+    if (render)
+      std::fprintf(stderr, "lacrima-player: --render needs an X display (OGRE renders through GLX) and there is none;\n"
+                           "  run it under a virtual one: xvfb-run -a lacrima-player --render OUT_DIR FILE\n");
+    else
+      std::fprintf(stderr, "lacrima-player: no X display to open a window on (DISPLAY is not set);\n"
+                           "  render images instead: xvfb-run -a lacrima-player --render OUT_DIR FILE\n");
+    return kExitBadInput;
+  }
+  // The OGRE viewport embeds a GLX window: use X even in a Wayland session (XWayland). Help
+  // and version need no display at all.
+  if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", haveX ? "xcb" : "offscreen");
+  QApplication app(argc, argv);
+  QCoreApplication::setApplicationName("lacrima-player");
+  QCoreApplication::setApplicationVersion(LACRIMA_VERSION);
+  QCommandLineParser parser;
+  parser.setApplicationDescription(
+      "Plays MPEG-4 facial animation with real-time tears: a FAP file (.fap) or a Lacrima project\n"
+      "(.json) on the default head or your own (--mesh, --fdp).\n\n"
+      "Examples:\n"
+      "  lacrima-player media/demo/crying.fap\n"
+      "  xvfb-run -a lacrima-player --render out/ --size 1280x720 media/demo/crying.fap\n"
+      "  lacrima-player --mesh head.obj --fdp head.fdp.json animation.fap\n\n"
+      "Keys: Space play/pause, Home reset, Left/Right one frame, V reset the view, Ctrl+O open.\n"
+      "Mouse: left drag orbits, right drag pans, the wheel zooms, double-click frames the face.\n\n"
+      "Exit codes: 0 success, 1 bad input or failed write, 2 wrong usage.");
+  parser.addHelpOption();
+  parser.addVersionOption();
+  parser.addPositionalArgument("FILE", "The animation: a .fap file or a project (.json).", "[FILE]");
+  parser.addOptions({
+      {"render", "Render every frame to OUT_DIR/frame_NNNN.png plus contact_sheet.png, then exit (needs an X "
+                 "display: run under xvfb-run).", "OUT_DIR"},
+      {"size", "Image size for --render, window size otherwise (default 1280x720 for --render).", "WxH"},
+      {"mesh", "Your own head (any format assimp reads) instead of the default head; needs --fdp.", "FILE"},
+      {"fdp", "The feature-point file (*.fdp.json) of --mesh.", "FILE"},
+      {"play", "Start playing as soon as the file is open."},
+      {"screenshot", "Grab the whole window to PNG after showing FILE at --at seconds, then exit.", "PNG"},
+      {"at", "Time for --screenshot, in seconds (default 0).", "SECONDS", "0"},
+  });
+  parser.process(app);
+  if (parser.isSet("mesh") != parser.isSet("fdp")) {
+    std::fprintf(stderr, "lacrima-player: --mesh and --fdp go together (a head and its feature points)\n");
+    return kExitUsage;
+  }
+  QSize size(1280, 720);
+  if (parser.isSet("size") && !parseSize(parser.value("size"), size)) {
+    std::fprintf(stderr, "lacrima-player: --size: expected WIDTHxHEIGHT, e.g. 1280x720 (16 to 8192 each)\n");
+    return kExitUsage;
+  }
+  try {
+    if (parser.isSet("render")) return renderMode(parser, size);
+    return windowMode(app, parser, parser.isSet("size") ? &size : nullptr);
+  } catch (const std::exception& e) {
+    const QString input = parser.positionalArguments().value(0);
+    std::fprintf(stderr, "lacrima-player: %s\n", player::describeError(e, input).oneLine.toLocal8Bit().constData());
+    return kExitBadInput;
+  }
+}

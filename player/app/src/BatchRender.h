@@ -1,0 +1,33 @@
+#pragma once
+// lacrima-player --render: every frame of an animation as a PNG (frame_0000.png, ...) and a
+// contact sheet of 12 evenly spaced frames (contact_sheet.png), through the same scene the
+// viewport shows (FaceRenderer), with progress on stderr. Needs an X display (xvfb-run).
+#include <lacrima/playback/HeadRig.h>
+
+#include <QSize>
+#include <QString>
+
+#include <functional>
+
+namespace lacrima::player {
+
+struct BatchRenderOptions {
+  QString input;       // .fap or project
+  QString outputDir;   // created if missing
+  QSize size{1280, 720};
+  int sheetFrames = 12;
+  // Called after each frame with (frames done, frames in all).
+  std::function<void(int, int)> progress;
+};
+
+struct BatchRenderResult {
+  int frames = 0;
+  QString contactSheet;  // its path
+  double seconds = 0;    // wall time
+};
+
+// Throws FileError for an unreadable input or an unwritable output folder or image, and
+// std::runtime_error when there is no display to render with.
+BatchRenderResult renderAnimation(const playback::HeadRig& rig, const BatchRenderOptions& options);
+
+}  // namespace lacrima::player

@@ -1,0 +1,28 @@
+#pragma once
+// Opening what the player plays: a .fap file (FapReader, tolerant) or a Lacrima project
+// (ProjectDocument, baked at its frame rate, with its scene settings and tear sources).
+// A path ending in .json or .lacrima (any case) is a project, anything else a FAP file, the
+// rule lacrima-fap uses.
+#include <lacrima/Diagnostics.h>
+#include <lacrima/FapAnimation.h>
+#include <lacrima/ProjectDocument.h>
+
+#include <string>
+
+namespace lacrima::playback {
+
+struct AnimationFile {
+  FapAnimation animation;
+  bool project = false;
+  SceneSettings scene;      // the project's; defaults for a FAP file
+  TearSources tearSources;  // the project's; rig defaults for a FAP file
+  Warnings warnings;        // the FAP reader's (gaps filled, odd header, ...)
+};
+
+bool isProjectPath(const std::string& path);
+
+// Throws FileError naming the file, the line (and column or JSON path) and what was expected,
+// also for a file that decodes to no frames at all.
+AnimationFile readAnimationFile(const std::string& path);
+
+}  // namespace lacrima::playback

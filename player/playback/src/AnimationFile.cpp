@@ -1,0 +1,41 @@
+// Reading a FAP file or a project for playback (AnimationFile.h).
+#include <lacrima/FapReader.h>
+#include <lacrima/playback/AnimationFile.h>
+
+#include <algorithm>
+#include <cctype>
+
+namespace lacrima::playback {
+
+namespace {
+
+bool endsWith(std::string text, std::string_view suffix) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+}  // namespace
+
+bool isProjectPath(const std::string& path) { return endsWith(path, ".json") || endsWith(path, ".lacrima"); }
+
+AnimationFile readAnimationFile(const std::string& path) {
+  AnimationFile file;
+  if (isProjectPath(path)) {
+    const ProjectDocument document = ProjectDocument::load(path);
+    file.project = true;
+    file.animation = document.bake();
+    file.scene = document.scene;
+    file.tearSources = document.tearSources;
+    if (file.animation.frames.empty())
+      throw FileError({path, 0, 0}, "the project has no keys, so nothing to play; expected at least one key");
+  } else {
+    FapReadResult read = FapReader::readFile(path);
+    file.animation = std::move(read.animation);
+    file.warnings = std::move(read.warnings);
+    if (file.animation.frames.empty())
+      throw FileError({path, 0, 0}, "the file holds no frames; expected at least one mask and value line");
+  }
+  return file;
+}
+
+}  // namespace lacrima::playback

@@ -1,0 +1,67 @@
+// Loading and rigging a head in memory (HeadRig.h).
+#include <lacrima/Diagnostics.h>
+#include <lacrima/playback/HeadRig.h>
+#include <lacrima/playback/MediaFiles.h>
+#include <lacrima/rig/DefaultHead.h>
+#include <lacrima/rig/FeaturePointFile.h>
+#include <lacrima/rig/MeshImport.h>
+
+#include <stdexcept>
+
+namespace lacrima::playback {
+
+namespace {
+
+// Binds the feature points, bakes the poses and builds the blender for `rig->head`.
+void rigHead(HeadRig& rig, const std::string& fdpPath) {
+  Warnings warnings;
+  const FeaturePointFile fdp = readFeaturePointFile(fdpPath, &warnings);
+  validateFeaturePoints(fdp, rig.head, &warnings);
+  rig.rig = buildRig(rig.head, fdp);
+  for (const Diagnostic& d : warnings) rig.warnings.push_back(d.toString());
+  for (const std::string& w : rig.rig.warnings) rig.warnings.push_back(fdpPath + ": " + w);
+  try {
+    rig.blender = std::make_unique<PoseBlender>(rig.head, rig.rig.poses);
+  } catch (const std::invalid_argument& e) {
+    throw FileError({fdpPath, 0, 0}, std::string("the baked poses do not fit the head: ") + e.what());
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<HeadRig> loadDefaultHeadRig() {
+  if (!defaultHeadAvailable())
+    throw FileError({defaultHeadPackageDir(), 0, 0},
+                    "the default head is not in the cache; fetch it with packaging/fetch-default-head.sh "
+                    "(packaging/lacrima.sh does), or bring your own with --mesh FILE --fdp FILE");
+  auto rig = std::make_unique<HeadRig>();
+  rig->head = loadDefaultHead();
+  rigHead(*rig, findMediaFile("default-head.fdp.json"));
+  return rig;
+}
+
+std::unique_ptr<HeadRig> loadHeadRig(const std::string& meshPath, const std::string& fdpPath) {
+  auto rig = std::make_unique<HeadRig>();
+  try {
+    rig->head = importHeadMesh(meshPath);
+  } catch (const FileError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    // importHeadMesh's message already names the file; keep it as the location for dialogs.
+    throw FileError({meshPath, 0, 0}, e.what());
+  }
+  rigHead(*rig, fdpPath);
+  return rig;
+}
+
+std::vector<Eigen::Vector3i> skinTriangles(const HeadRig& rig) {
+  std::vector<Eigen::Vector3i> triangles;
+  for (const HeadSubmesh& s : rig.head.submeshes) {
+    const auto role = rig.rig.roles.find(s.name);
+    if (role != rig.rig.roles.end() && role->second == "skin")
+      triangles.insert(triangles.end(), s.triangles.begin(), s.triangles.end());
+  }
+  return triangles;
+}
+
+}  // namespace lacrima::playback

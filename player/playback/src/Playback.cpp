@@ -1,0 +1,150 @@
+// Playback (Playback.h): frames fed to the producer in order, checkpoints as they pass, replays
+// from the nearest earlier checkpoint when going back.
+#include <lacrima/playback/AnimationFile.h>
+#include <lacrima/playback/Playback.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+namespace lacrima::playback {
+
+struct Playback::State {
+  const HeadRig& rig;
+  int interval;
+  FrameProducer producer;
+  FapAnimation animation;
+  std::string path;
+  Warnings warnings;
+  SceneSettings scene;
+  TearSources sources;
+  // Producer state just BEFORE producing frame k, by k. Going to frame f restores the largest
+  // k <= f and produces k..f, so a restore is always followed by a fresh frame.
+  std::map<int, std::shared_ptr<const FrameProducer::Checkpoint>> checkpoints;
+  int nextFrame = 0;  // the next frame to produce
+  double time = 0;
+  long long simulated = 0;
+
+  State(const HeadRig& r, int checkpointInterval) : rig(r), interval(std::max(1, checkpointInterval)), producer(r) {}
+
+  double progressAt(double seconds) const {
+    const double d = animation.duration();
+    return d > 0 ? std::clamp(seconds / d, 0.0, 1.0) : 0.0;
+  }
+
+  int frameAt(double seconds) const {
+    const int last = animation.frameCount() - 1;
+    // A small tolerance so that t = k / fps, computed in floating point, lands on frame k.
+    return std::clamp(static_cast<int>(std::floor(seconds * animation.fps + 1e-6)), 0, last);
+  }
+
+  void produceUpTo(int frame) {
+    if (frame < nextFrame - 1) {
+      auto it = checkpoints.upper_bound(frame);
+      if (it == checkpoints.begin()) {  // frame 0's is taken first, so this is only a guard
+        producer.reset();
+        nextFrame = 0;
+      } else {
+        --it;
+        producer.restore(*it->second);
+        nextFrame = it->first;
+      }
+    }
+    const double dt = 1.0 / animation.fps;
+    for (; nextFrame <= frame; ++nextFrame) {
+      if (nextFrame % interval == 0 && !checkpoints.contains(nextFrame)) checkpoints[nextFrame] = producer.checkpoint();
+      producer.produce(animation.frames[static_cast<std::size_t>(nextFrame)], dt, progressAt(nextFrame / animation.fps));
+      ++simulated;
+    }
+  }
+};
+
+Playback::Playback(const HeadRig& rig, int checkpointInterval)
+    : state_(std::make_unique<State>(rig, checkpointInterval)) {}
+
+Playback::~Playback() = default;
+
+void Playback::open(const std::string& path) {
+  AnimationFile file = readAnimationFile(path);  // throws; nothing has changed yet
+  try {
+    setAnimation(std::move(file.animation), file.scene, file.tearSources);
+  } catch (const std::invalid_argument& e) {
+    throw FileError({path, 0, 0}, e.what());
+  }
+  state_->path = path;
+  state_->warnings = std::move(file.warnings);
+}
+
+void Playback::setAnimation(FapAnimation animation, const SceneSettings& scene, const TearSources& sources) {
+  if (animation.frames.empty()) throw std::invalid_argument("the animation has no frames");
+  if (!(animation.fps > 0) || !std::isfinite(animation.fps))
+    throw std::invalid_argument("the animation's frame rate is not a positive number");
+  for (const auto& point : {sources.left, sources.right})
+    if (point && !point->allFinite()) throw std::invalid_argument("a tear source is not a finite point");
+  State& s = *state_;
+  s.producer.setScene(scene);  // throws for invalid tear parameters before anything changes
+  s.animation = std::move(animation);
+  s.scene = scene;
+  s.sources = sources;
+  s.path.clear();
+  s.warnings.clear();
+  s.checkpoints.clear();
+  s.producer.setTearSources(sources);
+  s.producer.reset();
+  s.nextFrame = 0;
+  s.time = 0;
+  seek(0);
+}
+
+const FapAnimation& Playback::animation() const { return state_->animation; }
+const std::string& Playback::path() const { return state_->path; }
+const Warnings& Playback::warnings() const { return state_->warnings; }
+const TearSources& Playback::tearSources() const { return state_->sources; }
+
+int Playback::frameCount() const { return state_->animation.frameCount(); }
+double Playback::frameRate() const { return state_->animation.fps; }
+double Playback::duration() const { return state_->animation.duration(); }
+bool Playback::hasTears() const { return state_->animation.hasTears(); }
+
+void Playback::setScene(const SceneSettings& scene) {
+  State& s = *state_;
+  const bool restart = scene.simulation != s.scene.simulation;
+  s.producer.setScene(scene);
+  s.scene = scene;
+  if (restart && !s.animation.frames.empty()) {
+    // New parameters make every stored state wrong: replay from the start to where we were,
+    // so the picture is what a straight play with these parameters shows.
+    s.checkpoints.clear();
+    s.nextFrame = 0;
+    seek(s.time);
+  }
+}
+
+const SceneSettings& Playback::scene() const { return state_->scene; }
+
+const FrameView& Playback::seek(double seconds) {
+  State& s = *state_;
+  if (s.animation.frames.empty()) return s.producer.view();
+  const double t = std::isfinite(seconds) ? std::clamp(seconds, 0.0, s.animation.duration()) : 0.0;
+  s.produceUpTo(s.frameAt(t));
+  s.time = t;
+  return s.producer.pose(s.animation.sample(t), s.progressAt(t));
+}
+
+const FrameView& Playback::view() const { return state_->producer.view(); }
+int Playback::currentFrame() const { return std::max(0, state_->nextFrame - 1); }
+double Playback::currentTime() const { return state_->time; }
+
+void Playback::reset() {
+  State& s = *state_;
+  s.producer.reset();
+  s.nextFrame = 0;
+  s.time = 0;
+}
+
+const FrameProducer& Playback::producer() const { return state_->producer; }
+int Playback::checkpointCount() const { return static_cast<int>(state_->checkpoints.size()); }
+long long Playback::framesSimulated() const { return state_->simulated; }
+
+}  // namespace lacrima::playback

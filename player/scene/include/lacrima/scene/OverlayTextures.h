@@ -1,0 +1,30 @@
+#pragma once
+// The overlay layers themselves, made from the head's own textures at start-up (so they match
+// whatever skin and eyes a head brings). Engine-free: QImage in, QImage out (Format_RGBA8888).
+//
+// Irritated skin (the redness layer): in linear light, each texel becomes
+//   (0.92 r, 0.56 g m, 0.66 b m),  m = 0.82 .. 1.12 from two octaves of value noise
+// (about 20 and 60 blotches across the texture): redder (towards pink, not orange) and darker, mottled as skin flushed by
+// crying is, not a flat tint. The mask decides where it shows (OverlayMasks.h).
+//
+// Wet, bloodshot eye (the wet-eye layer): sclera texels (bright, saturation < 0.3) turn pink and
+// get thin red vessels where ridged noise |n| is small; iris and pupil keep their colour; the
+// whole eye is a little brighter (a film of water scatters light). The eye shader adds the gloss.
+//
+// Island padding (for the skin's own texture too): texels a sub-mesh's uv triangles cover are
+// found by rasterising them; the outermost covered ring is dropped (island borders are often
+// painted badly, and bilinear filtering at a uv seam blends them in, which shows as a thin line
+// along the seam, e.g. where the default head's face island meets the neck); then covered
+// colours are grown outwards `grow` texels (each uncovered texel takes the mean of its covered
+// neighbours, ring by ring). Texels farther out keep their colour.
+#include <lacrima/HeadMesh.h>
+
+#include <QImage>
+
+namespace lacrima::scene {
+
+QImage makeIrritatedSkin(const QImage& skinDiffuse);
+QImage makeWetEye(const QImage& eyeDiffuse);
+QImage padUvIslands(const QImage& texture, const HeadMesh& head, const HeadSubmesh& submesh, int grow = 4);
+
+}  // namespace lacrima::scene

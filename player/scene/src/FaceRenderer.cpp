@@ -1,0 +1,141 @@
+#include <lacrima/scene/FaceRenderer.h>
+
+#include <lacrima/scene/FaceScene.h>
+#include <lacrima/scene/OgreRuntime.h>
+
+#include <OgreHardwarePixelBuffer.h>
+#include <OgreRenderTexture.h>
+#include <OgreRoot.h>
+#include <OgreTextureManager.h>
+#include <OgreViewport.h>
+
+#include <chrono>
+#include <stdexcept>
+
+namespace lacrima::scene {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double millisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+constexpr int kMaxSide = 8192;
+
+}  // namespace
+
+struct FaceRenderer::State {
+  std::shared_ptr<OgreRuntime> runtime;
+  std::unique_ptr<FaceScene> scene;
+  Ogre::TexturePtr target;
+  QSize size;
+  int samples = FaceRenderer::kDefaultSamples;
+  RenderTimes times;
+
+  ~State() { releaseTarget(); }
+
+  void releaseTarget() {
+    if (!target) return;
+    const std::string name = target->getName(), group = target->getGroup();
+    target.reset();
+    Ogre::TextureManager::getSingleton().remove(name, group);
+  }
+
+  void createTarget() {
+    releaseTarget();
+    target = Ogre::TextureManager::getSingleton().createManual(
+        runtime->uniqueName("render-target"), runtime->resourceGroup(), Ogre::TEX_TYPE_2D,
+        static_cast<Ogre::uint>(size.width()), static_cast<Ogre::uint>(size.height()), 0, Ogre::PF_BYTE_RGBA,
+        Ogre::TU_RENDERTARGET, nullptr, false, static_cast<Ogre::uint>(samples));
+    Ogre::RenderTarget* rt = target->getBuffer()->getRenderTarget();
+    rt->setAutoUpdated(false);
+    scene->attach(*rt);
+  }
+};
+
+FaceRenderer::FaceRenderer(const HeadMesh& neutral, QSize size) : state_(std::make_unique<State>()) {
+  if (size.width() < 1 || size.height() < 1 || size.width() > kMaxSide || size.height() > kMaxSide)
+    throw std::invalid_argument("FaceRenderer: image size must be 1..8192 pixels per side");
+  state_->runtime = OgreRuntime::acquire();
+  state_->scene = std::make_unique<FaceScene>(state_->runtime, neutral);
+  state_->size = size;
+  state_->createTarget();
+}
+
+FaceRenderer::~FaceRenderer() {
+  // The render target before the scene whose camera it shows, the scene before the runtime.
+  state_->releaseTarget();
+  state_->scene.reset();
+}
+
+void FaceRenderer::resize(QSize size) {
+  if (size == state_->size) return;
+  if (size.width() < 1 || size.height() < 1 || size.width() > kMaxSide || size.height() > kMaxSide)
+    throw std::invalid_argument("FaceRenderer: image size must be 1..8192 pixels per side");
+  state_->size = size;
+  state_->createTarget();
+}
+
+QSize FaceRenderer::size() const { return state_->size; }
+
+void FaceRenderer::setSamples(int samples) {
+  samples = samples >= 4 ? 4 : samples >= 2 ? 2 : 0;
+  if (samples == state_->samples) return;
+  state_->samples = samples;
+  state_->createTarget();
+}
+
+int FaceRenderer::samples() const { return state_->samples; }
+
+void FaceRenderer::show(const playback::FrameView& view) {
+  const auto start = Clock::now();
+  state_->scene->show(view);
+  state_->times.upload = millisecondsSince(start);
+}
+
+QImage FaceRenderer::render() {
+  State& s = *state_;
+  Ogre::RenderTarget* rt = s.target->getBuffer()->getRenderTarget();
+  auto start = Clock::now();
+  rt->update(true);  // with multisampling, the "swap" resolves the samples into the texture
+  s.times.render = millisecondsSince(start);
+  start = Clock::now();
+  QImage image(s.size, QImage::Format_RGBA8888);
+  const Ogre::PixelBox box(static_cast<Ogre::uint32>(s.size.width()), static_cast<Ogre::uint32>(s.size.height()), 1,
+                           Ogre::PF_BYTE_RGBA, image.bits());
+  rt->copyContentsToMemory(Ogre::Box(0, 0, static_cast<Ogre::uint32>(s.size.width()),
+                                     static_cast<Ogre::uint32>(s.size.height())),
+                           box, Ogre::RenderTarget::FB_AUTO);
+  s.times.readback = millisecondsSince(start);
+  return image;
+}
+
+void FaceRenderer::resetView() { state_->scene->resetView(); }
+
+void FaceRenderer::orbit(double yawDegrees, double pitchDegrees) {
+  OrbitView view = state_->scene->view();
+  view.orbit(yawDegrees, pitchDegrees);
+  state_->scene->setView(view);
+}
+
+void FaceRenderer::zoom(double factor) {
+  OrbitView view = state_->scene->view();
+  view.zoom(factor);
+  state_->scene->setView(view);
+}
+
+void FaceRenderer::pan(double right, double up) {
+  OrbitView view = state_->scene->view();
+  view.pan(right, up);
+  state_->scene->setView(view);
+}
+
+QPointF FaceRenderer::project(const Eigen::Vector3d& headPoint) const {
+  return state_->scene->project(headPoint, state_->size);
+}
+
+const RenderTimes& FaceRenderer::lastTimes() const { return state_->times; }
+
+FaceScene& FaceRenderer::scene() { return *state_->scene; }
+
+}  // namespace lacrima::scene

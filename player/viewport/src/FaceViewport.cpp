@@ -1,0 +1,312 @@
+#include <lacrima/viewport/FaceViewport.h>
+
+#include <lacrima/scene/FaceScene.h>
+#include <lacrima/scene/OgreRuntime.h>
+
+#include <OgreRenderWindow.h>
+#include <OgreRoot.h>
+
+#include <QCoreApplication>
+#include <QGuiApplication>
+#include <QLabel>
+#include <QMouseEvent>
+#include <QVBoxLayout>
+#include <QWheelEvent>
+#include <QWindow>
+
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <string>
+
+namespace lacrima::viewport {
+namespace {
+
+const QEvent::Type kRenderRequest = static_cast<QEvent::Type>(QEvent::registerEventType());
+
+constexpr double kOrbitDegreesPerPixel = 0.35;
+constexpr double kZoomPerNotch = 0.9;  // one wheel notch (120 units) closer
+
+}  // namespace
+
+struct FaceViewport::State {
+  // OGRE is used only on X11 (xcb): OGRE on Debian renders through GLX. On other platforms
+  // (offscreen in tests, Wayland without XWayland) the widget shows `message` instead and never
+  // starts OGRE.
+  bool ogre = false;
+  QLabel* message = nullptr;
+
+  std::shared_ptr<scene::OgreRuntime> runtime;
+  std::unique_ptr<scene::FaceScene> scene;
+  Ogre::RenderWindow* window = nullptr;
+  const HeadMesh* head = nullptr;
+  std::optional<long long> shownRevision;
+  bool dirty = true, requestPosted = false;
+  bool exposed = false;  // the window system reported lost pixels since the last render
+  QWindow* watchedWindow = nullptr;
+  long long renders = 0;
+  double lastMilliseconds = 0;
+  QPoint lastMouse;
+  Qt::MouseButton dragButton = Qt::NoButton;
+
+  void destroyWindow() {
+    if (window && runtime) runtime->root().destroyRenderTarget(window);
+    window = nullptr;
+  }
+  ~State() {
+    destroyWindow();
+    scene.reset();
+    runtime.reset();
+  }
+};
+
+FaceViewport::FaceViewport(QWidget* parent) : QWidget(parent), state_(std::make_unique<State>()) {
+  // Qt paints nothing here itself: OGRE owns the pixels (or the message label covers them).
+  setAttribute(Qt::WA_OpaquePaintEvent);
+  setAttribute(Qt::WA_NoSystemBackground);
+  setFocusPolicy(Qt::StrongFocus);
+  setMinimumSize(64, 48);
+  state_->ogre = QGuiApplication::platformName() == QLatin1String("xcb");
+  if (state_->ogre) {
+    setAttribute(Qt::WA_NativeWindow);
+    setAttribute(Qt::WA_PaintOnScreen);
+  } else {
+    showMessage(tr("3-D preview needs an X display"));
+  }
+}
+
+FaceViewport::~FaceViewport() = default;
+
+void FaceViewport::showMessage(const QString& text) {
+  State& s = *state_;
+  s.destroyWindow();
+  s.scene.reset();
+  s.runtime.reset();
+  s.ogre = false;
+  setAttribute(Qt::WA_PaintOnScreen, false);
+  if (!s.message) {
+    s.message = new QLabel(this);
+    s.message->setAlignment(Qt::AlignCenter);
+    s.message->setWordWrap(true);
+    s.message->setAutoFillBackground(true);
+    QPalette palette = s.message->palette();
+    palette.setColor(QPalette::Window, QColor(38, 39, 43));
+    palette.setColor(QPalette::WindowText, QColor(170, 172, 178));
+    s.message->setPalette(palette);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(s.message);
+  }
+  s.message->setText(text);
+  s.message->show();
+}
+
+QString FaceViewport::message() const { return state_->message ? state_->message->text() : QString(); }
+
+bool FaceViewport::usesOgre() const { return state_->ogre; }
+
+bool FaceViewport::ensureScene() {
+  State& s = *state_;
+  if (!s.ogre) return false;
+  if (s.scene) return true;
+  try {
+    s.runtime = scene::OgreRuntime::acquire();
+    s.scene = std::make_unique<scene::FaceScene>(s.runtime);
+    if (s.head) s.scene->setHead(*s.head);
+    return true;
+  } catch (const std::exception& e) {
+    showMessage(tr("3-D preview unavailable: %1").arg(QString::fromStdString(e.what())));
+    return false;
+  }
+}
+
+bool FaceViewport::ensureWindow() {
+  State& s = *state_;
+  if (s.window) return true;
+  if (!isVisible() || width() <= 0 || height() <= 0 || !ensureScene()) return false;
+  try {
+    const qreal ratio = devicePixelRatioF();
+    Ogre::NameValuePairList misc;
+    misc["externalWindowHandle"] = std::to_string(static_cast<unsigned long long>(winId()));
+    misc["vsync"] = "false";
+    s.window = s.runtime->root().createRenderWindow(s.runtime->uniqueName("viewport"),
+                                                    static_cast<unsigned>(std::lround(width() * ratio)),
+                                                    static_cast<unsigned>(std::lround(height() * ratio)), false, &misc);
+    s.window->setAutoUpdated(false);
+    s.scene->attach(*s.window);
+    s.dirty = true;
+    return true;
+  } catch (const std::exception& e) {
+    showMessage(tr("3-D preview unavailable: %1").arg(QString::fromStdString(e.what())));
+    return false;
+  }
+}
+
+void FaceViewport::setHead(const HeadMesh& neutral) {
+  State& s = *state_;
+  s.head = &neutral;
+  s.shownRevision.reset();
+  if (!s.ogre || !ensureScene()) return;
+  s.scene->setHead(neutral);
+  requestRender();
+}
+
+void FaceViewport::showFrame(const playback::FrameView& view) {
+  State& s = *state_;
+  if (!s.ogre) return;
+  if (view.neutral && view.neutral != s.head) setHead(*view.neutral);
+  if (s.shownRevision && *s.shownRevision == view.revision) return;
+  if (!ensureScene()) return;
+  // Upload now: the frame's pointers are only valid until the producer's next frame.
+  s.scene->show(view);
+  s.shownRevision = view.revision;
+  requestRender();
+}
+
+void FaceViewport::resetView() {
+  if (!state_->scene) return;
+  state_->scene->resetView();
+  requestRender();
+}
+
+void FaceViewport::requestRender() {
+  State& s = *state_;
+  s.dirty = true;
+  if (s.requestPosted || !s.ogre) return;
+  s.requestPosted = true;
+  QCoreApplication::postEvent(this, new QEvent(kRenderRequest));
+}
+
+void FaceViewport::watchExposes() {
+  State& s = *state_;
+  QWindow* window = windowHandle();
+  if (!window || window == s.watchedWindow) return;
+  if (s.watchedWindow) s.watchedWindow->removeEventFilter(this);
+  window->installEventFilter(this);
+  s.watchedWindow = window;
+}
+
+bool FaceViewport::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == state_->watchedWindow && event->type() == QEvent::Expose) state_->exposed = true;
+  return QWidget::eventFilter(watched, event);
+}
+
+bool FaceViewport::renderNow(bool swap) {
+  State& s = *state_;
+  if (!ensureWindow()) return false;
+  const auto start = std::chrono::steady_clock::now();
+  s.window->update(swap);
+  s.lastMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  s.dirty = false;
+  s.exposed = false;
+  ++s.renders;
+  emit rendered(s.lastMilliseconds);
+  return true;
+}
+
+QImage FaceViewport::grabFrame() {
+  State& s = *state_;
+  if (!s.ogre || !renderNow(false)) return {};
+  const auto w = static_cast<Ogre::uint32>(s.window->getWidth()), h = static_cast<Ogre::uint32>(s.window->getHeight());
+  QImage image(static_cast<int>(w), static_cast<int>(h), QImage::Format_RGBA8888);
+  s.window->copyContentsToMemory(Ogre::Box(0, 0, w, h), Ogre::PixelBox(w, h, 1, Ogre::PF_BYTE_RGBA, image.bits()),
+                                 Ogre::RenderTarget::FB_BACK);
+  s.window->swapBuffers();
+  return image;
+}
+
+double FaceViewport::lastRenderMilliseconds() const { return state_->lastMilliseconds; }
+
+long long FaceViewport::renderCount() const { return state_->renders; }
+
+void FaceViewport::showEvent(QShowEvent* event) {
+  QWidget::showEvent(event);
+  if (!state_->ogre) return;
+  watchExposes();
+  requestRender();
+}
+
+void FaceViewport::paintEvent(QPaintEvent*) {
+  // Paint events come from exposes and from update(). Only an expose loses the window's pixels
+  // (the one case a static scene is drawn again); a plain update() of an unchanged scene is free.
+  State& s = *state_;
+  if (s.ogre && (s.dirty || s.exposed || !s.window)) renderNow(true);
+}
+
+void FaceViewport::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  State& s = *state_;
+  if (!s.window) return;
+  const qreal ratio = devicePixelRatioF();
+  s.window->resize(static_cast<unsigned>(std::lround(width() * ratio)), static_cast<unsigned>(std::lround(height() * ratio)));
+  s.window->windowMovedOrResized();
+  s.scene->setAspect(double(s.window->getWidth()) / double(std::max(1u, s.window->getHeight())));
+  requestRender();
+}
+
+void FaceViewport::mousePressEvent(QMouseEvent* event) {
+  state_->lastMouse = event->position().toPoint();
+  state_->dragButton = event->button();
+  event->accept();
+}
+
+void FaceViewport::mouseMoveEvent(QMouseEvent* event) {
+  State& s = *state_;
+  const QPoint now = event->position().toPoint();
+  const QPoint delta = now - s.lastMouse;
+  s.lastMouse = now;
+  if (!s.scene || delta.isNull()) return;
+  scene::OrbitView view = s.scene->view();
+  if (event->buttons() & Qt::LeftButton) {
+    // Drag the head round: right turns it to its left, up tilts it back.
+    view.orbit(-delta.x() * kOrbitDegreesPerPixel, delta.y() * kOrbitDegreesPerPixel);
+  } else if (event->buttons() & (Qt::RightButton | Qt::MiddleButton)) {
+    const double h = std::max(1, height());
+    view.pan(-delta.x() / h, delta.y() / h);
+  } else {
+    return;
+  }
+  s.scene->setView(view);
+  requestRender();
+  event->accept();
+}
+
+void FaceViewport::mouseReleaseEvent(QMouseEvent* event) {
+  state_->dragButton = Qt::NoButton;
+  event->accept();
+}
+
+void FaceViewport::mouseDoubleClickEvent(QMouseEvent* event) {
+  resetView();
+  event->accept();
+}
+
+void FaceViewport::wheelEvent(QWheelEvent* event) {
+  State& s = *state_;
+  if (!s.scene) return;
+  const double notches = event->angleDelta().y() / 120.0;
+  if (notches == 0) return;
+  scene::OrbitView view = s.scene->view();
+  view.zoom(std::pow(kZoomPerNotch, notches));
+  s.scene->setView(view);
+  requestRender();
+  event->accept();
+}
+
+bool FaceViewport::event(QEvent* event) {
+  State& s = *state_;
+  if (event->type() == kRenderRequest) {
+    s.requestPosted = false;
+    if (s.dirty && s.ogre && isVisible()) renderNow(true);
+    return true;
+  }
+  if (event->type() == QEvent::WinIdChange && s.ogre) {
+    // Re-parented into another top-level: the X window OGRE drew into is gone.
+    s.destroyWindow();
+    watchExposes();
+    requestRender();
+  }
+  return QWidget::event(event);
+}
+
+}  // namespace lacrima::viewport

@@ -1,0 +1,306 @@
+// lacrima-bench editor: what the editor costs while an animator works. The live preview of the
+// face with 500 tear particles (target >= 30 fps, measured through the editor's own preview
+// panel: FrameProducer::produce, then the viewport's render), and the widget costs behind
+// "instant": building the window and the 70 sliders, refreshing all sliders on a time change,
+// one slider drag step (an undo command merged into the drag), and painting the timeline of a
+// long animation.
+#include "BenchSupport.h"
+
+#include <lacrima/FapTable.h>
+#include <lacrima/JsonWriter.h>
+#include <lacrima/editor/EditorModel.h>
+#include <lacrima/editor/FapTransfer.h>
+#include <lacrima/editor/MainWindow.h>
+#include <lacrima/editor/PreviewPanel.h>
+#include <lacrima/editor/SliderPanel.h>
+#include <lacrima/editor/TimelineWidget.h>
+#include <lacrima/viewport/FaceViewport.h>
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QWindow>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace lacrima::bench {
+
+namespace {
+
+constexpr double kPreviewTargetFps = 30;
+constexpr int kTearsPerEye = 250;  // 500 particles in all
+
+struct Options {
+  int frames = 110;   // timed preview frames (5 s at 22 fps)
+  int warmUp = 44;    // frames before timing: the tears reach their count and start running
+  int width = 1440, height = 900;  // the editor window; the viewport gets what the docks leave
+  bool json = false;
+};
+
+void printHelp(FILE* out) {
+  std::fprintf(out,
+               "usage: lacrima-bench editor [--frames N] [--warm-up N] [--size WxH] [--json]\n\n"
+               "Times the editor's widgets and its live preview with %d tear particles.\n"
+               "The preview needs an X display (OGRE is GLX only): run under\n"
+               "  xvfb-run -a -s \"-screen 0 1280x1024x24\" lacrima-bench editor\n"
+               "Without a display or without the default head, only the widget figures are printed.\n\n"
+               "  --frames N    timed preview frames (default 110)\n"
+               "  --warm-up N   preview frames before timing (default 44)\n"
+               "  --size WxH    editor window size (default 1440x900: a 628x598 viewport)\n"
+               "  --json        one JSON object instead of the table\n",
+               2 * kTearsPerEye);
+}
+
+int parseOptions(int argc, char** argv, Options& options) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h") {
+      printHelp(stdout);
+      return 1;
+    }
+    if (arg == "--json") {
+      options.json = true;
+    } else if (arg == "--size" && i + 1 < argc) {
+      const std::string size = argv[++i];
+      const auto x = size.find('x');
+      if (x == std::string::npos || !parseWholeNumber(size.substr(0, x).c_str(), 640, 8000, options.width) ||
+          !parseWholeNumber(size.substr(x + 1).c_str(), 480, 8000, options.height)) {
+        std::fprintf(stderr, "lacrima-bench editor: --size takes WxH, e.g. 1440x900, not '%s'\n", size.c_str());
+        return 2;
+      }
+    } else if ((arg == "--frames" || arg == "--warm-up") && i + 1 < argc) {
+      int& target = arg == "--frames" ? options.frames : options.warmUp;
+      if (!parseWholeNumber(argv[++i], arg == "--frames" ? 1 : 0, 100000, target)) {
+        std::fprintf(stderr, "lacrima-bench editor: %s takes a whole number, not '%s'\n", arg.c_str(), argv[i]);
+        return 2;
+      }
+    } else {
+      std::fprintf(stderr, "lacrima-bench editor: unknown or incomplete option '%s'\n\n", arg.c_str());
+      printHelp(stderr);
+      return 2;
+    }
+  }
+  return 0;
+}
+
+// Two full poses a second apart: every slider changes between them.
+ProjectDocument twoPoses() {
+  ProjectDocument doc;
+  for (int k = 0; k < 2; ++k) {
+    Keyframe key;
+    key.time = k;
+    for (int fap = 3; fap <= kChannelCount; ++fap) {
+      const FapInfo& info = fapInfo(fap);
+      key.set(fap, static_cast<float>(k == 0 ? info.sliderMin / 3 : info.sliderMax / 3));
+    }
+    doc.keys.insert(key);
+  }
+  return doc;
+}
+
+// Two minutes of smooth motion on every channel, imported as one key per frame.
+ProjectDocument longAnimation() {
+  FapAnimation animation;
+  animation.fps = 22;
+  animation.frames.assign(2640, FapValues{});
+  for (std::size_t i = 0; i < animation.frames.size(); ++i)
+    for (int fap = 3; fap <= kChannelCount; ++fap)
+      animation.frames[i][static_cast<std::size_t>(channelIndex(fap))] =
+          static_cast<float>(std::lround(std::max(0.0, 200 * std::sin(0.05 * i + fap))));
+  for (int fap = 3; fap <= kChannelCount; ++fap) animation.animated.set(static_cast<std::size_t>(channelIndex(fap)));
+  return editor::importAnimation(animation).document;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+void timingJson(JsonWriter& json, std::string_view name, const Timing& t) {
+  json.key(name);
+  json.beginObject();
+  json.field("median", t.medianMs);
+  json.field("min", t.minMs);
+  json.field("max", t.maxMs);
+  json.field("runs", t.runs);
+  json.endObject();
+}
+
+}  // namespace
+
+int runEditor(int argc, char** argv) {
+  Options options;
+  if (const int status = parseOptions(argc, argv, options)) return status == 1 ? 0 : status;
+
+  // No display: the widget figures still mean something on the offscreen platform.
+  const bool display = std::getenv("DISPLAY") && *std::getenv("DISPLAY");
+  if (!display && !std::getenv("QT_QPA_PLATFORM")) setenv("QT_QPA_PLATFORM", "offscreen", 1);
+  int qtArgc = 1;
+  char name[] = "lacrima-bench";
+  char* qtArgv[] = {name, nullptr};
+  QApplication app(qtArgc, qtArgv);
+  QStandardPaths::setTestModeEnabled(true);  // keep the user's recent files and window state out of it
+  QTemporaryDir recovery;
+
+  editor::EditorOptions editorOptions;
+  editorOptions.interactive = false;
+  editorOptions.offerRecovery = false;
+  editorOptions.recoveryDirectory = recovery.path();
+
+  // Building: the whole window without the head, and the 70-slider panel alone.
+  editorOptions.preview = false;
+  const Timing windowBuild = timeRuns(5, [&] { editor::MainWindow window(editorOptions); });
+  editor::EditorModel panelModel;
+  const Timing panelBuild = timeRuns(10, [&] { editor::SliderPanel panel(panelModel); });
+
+  editor::EditorModel model;
+  model.resetDocument(twoPoses(), true);
+  editor::SliderPanel panel(model);
+  panel.resize(460, 900);
+  panel.show();
+  // A time change refreshes every slider (values, key marks, group counts).
+  int flip = 0;
+  const Timing sliderRefresh = timeRuns(200, [&] { model.setCurrentTime((flip++ % 2) ? 1.0 : 0.5); });
+  // One step of a slider drag: a command pushed and merged into the drag, then the refresh.
+  const int session = model.beginDragSession();
+  int value = 0;
+  const Timing dragStep = timeRuns(200, [&] { model.setChannel(3, (value++ % 500) + 10, session); });
+
+  // The timeline of a two-minute, 68-channel animation (2,640 keys), whole and zoomed in.
+  editor::EditorModel longModel;
+  longModel.resetDocument(longAnimation(), true);
+  editor::TimelineWidget timeline(longModel);
+  timeline.resize(1400, 200);
+  timeline.show();
+  QElapsedTimer exposing;
+  exposing.start();
+  while (!(timeline.windowHandle() && timeline.windowHandle()->isExposed()) && exposing.elapsed() < 2000)
+    app.processEvents(QEventLoop::AllEvents, 20);
+  app.processEvents();
+  // repaint() paints now, through the window's backing store, as a real update does.
+  timeline.fitAll();
+  const Timing paintAll = timeRuns(30, [&] { timeline.repaint(); });
+  timeline.setView(30.0, 200.0);
+  const Timing paintZoomed = timeRuns(30, [&] { timeline.repaint(); });
+  int scrubFrame = 0;
+  const Timing scrub = timeRuns(60, [&] {
+    longModel.setCurrentTime(30.0 + (scrubFrame++ % 100) / 22.0);
+    timeline.repaint();
+  });
+
+  // The live preview with 500 tear particles, in a full editor window.
+  editorOptions.preview = true;
+  bool previewRan = false;
+  QString previewNote;
+  double frameMs = 0, produceMs = 0, renderMs = 0, fps = 0;
+  int viewportWidth = 0, viewportHeight = 0;
+  int particles = 0;
+  {
+    editor::MainWindow window(editorOptions);
+    window.resize(options.width, options.height);
+    window.show();
+    QElapsedTimer settle;
+    settle.start();
+    while (settle.elapsed() < 200) app.processEvents(QEventLoop::AllEvents, 20);
+    if (!display) {
+      previewNote = QStringLiteral("no X display: the viewport needs one (run under xvfb-run)");
+    } else if (!window.preview()->loadHead() || !window.preview()->viewportWidget()) {
+      previewNote = QStringLiteral("no preview: ") + window.preview()->statusText();
+    } else {
+      editor::EditorModel& m = window.model();
+      m.setChannels({{kTearLeftFap, kTearsPerEye}, {kTearRightFap, kTearsPerEye}, {3, 200}, {31, 220}, {32, 220}},
+                    QStringLiteral("bench"));
+      window.preview()->setTearPreview(false);  // the benchmark steps the tears itself
+      const double dt = 1.0 / 22.0;
+      for (int i = 0; i < options.warmUp; ++i) {
+        window.preview()->step(dt);
+        app.processEvents();
+      }
+      auto* viewport = qobject_cast<viewport::FaceViewport*>(window.preview()->viewportWidget());
+      std::vector<double> frames, produce, render;
+      QElapsedTimer total;
+      total.start();
+      for (int i = 0; i < options.frames; ++i) {
+        QElapsedTimer frame;
+        frame.start();
+        window.preview()->step(dt);
+        app.processEvents();  // the viewport renders on its deferred request
+        frames.push_back(frame.nsecsElapsed() / 1e6);
+        produce.push_back(window.preview()->lastProduceMilliseconds());
+        if (viewport) render.push_back(viewport->lastRenderMilliseconds());
+      }
+      renderMs = median(render);
+      viewportWidth = window.preview()->viewportWidget()->width();
+      viewportHeight = window.preview()->viewportWidget()->height();
+      const double elapsed = total.nsecsElapsed() / 1e6;
+      frameMs = median(frames);
+      produceMs = median(produce);
+      fps = options.frames * 1000.0 / elapsed;
+      particles = window.preview()->particleCount();
+      previewRan = true;
+    }
+    window.model().markSaved();
+  }
+  const bool previewPass = previewRan && fps >= kPreviewTargetFps;
+
+  if (options.json) {
+    JsonWriter json(JsonWriter::Layout::Compact);
+    json.beginObject();
+    json.field("benchmark", "editor");
+    timingJson(json, "window_build_ms", windowBuild);
+    timingJson(json, "slider_panel_build_ms", panelBuild);
+    timingJson(json, "slider_refresh_ms", sliderRefresh);
+    timingJson(json, "slider_drag_step_ms", dragStep);
+    timingJson(json, "timeline_paint_all_ms", paintAll);
+    timingJson(json, "timeline_paint_zoomed_ms", paintZoomed);
+    timingJson(json, "timeline_scrub_ms", scrub);
+    json.field("timeline_keys", static_cast<int>(longModel.document().keys.keys().size()));
+    json.key("preview");
+    json.beginObject();
+    json.field("ran", previewRan);
+    if (!previewRan) json.field("note", previewNote.toStdString());
+    json.field("particles", particles);
+    json.field("frames", options.frames);
+    json.field("fps", fps);
+    json.field("frame_ms_median", frameMs);
+    json.field("produce_ms_median", produceMs);
+    json.field("render_ms_median", renderMs);
+    json.field("viewport_width", viewportWidth);
+    json.field("viewport_height", viewportHeight);
+    json.field("target_fps_at_least", kPreviewTargetFps);
+    json.field("pass", previewPass);
+    json.endObject();
+    json.field("pass", previewPass);
+    json.endObject();
+    std::fputs(std::move(json).finish().c_str(), stdout);
+    return 0;
+  }
+
+  std::printf("editor widgets (median of runs)\n");
+  std::printf("  build window (no head)           %8.2f ms\n", windowBuild.medianMs);
+  std::printf("  build 70-slider panel            %8.2f ms\n", panelBuild.medianMs);
+  std::printf("  refresh all sliders (time step)  %8.3f ms\n", sliderRefresh.medianMs);
+  std::printf("  slider drag step (undo + merge)  %8.3f ms\n", dragStep.medianMs);
+  std::printf("  timeline paint, %d keys, all    %8.2f ms\n", static_cast<int>(longModel.document().keys.keys().size()), paintAll.medianMs);
+  std::printf("  timeline paint, zoomed in        %8.2f ms\n", paintZoomed.medianMs);
+  std::printf("  timeline scrub step + paint      %8.2f ms\n", scrub.medianMs);
+  if (previewRan) {
+    std::printf("preview, face + %d tear particles, %d frames, viewport %dx%d\n", particles, options.frames,
+                viewportWidth, viewportHeight);
+    std::printf("  %.1f fps   target >= %g fps: %s\n", fps, kPreviewTargetFps, previewPass ? "PASS" : "MISS");
+    std::printf("  frame %.1f ms median: produce %.1f ms (blend + tears), render %.1f ms, the rest is Qt events\n",
+                frameMs, produceMs, renderMs);
+  } else {
+    std::printf("preview: skipped (%s)\n", qPrintable(previewNote));
+  }
+  return 0;
+}
+
+}  // namespace lacrima::bench

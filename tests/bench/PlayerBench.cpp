@@ -1,0 +1,193 @@
+// lacrima-bench player: frames per second of the whole player on the demo (media/demo/
+// crying.fap on the default head): per animation frame the playback produces the frame (pose
+// blend, tear simulation, surface, trails) and FaceRenderer draws it (upload, render, read
+// back). Target: >= 30 fps at 1280x720 with software rendering. Needs an X display (OGRE is
+// GLX only): run under xvfb-run.
+#include "BenchSupport.h"
+
+#include <lacrima/JsonWriter.h>
+#include <lacrima/playback/MediaFiles.h>
+#include <lacrima/playback/Playback.h>
+#include <lacrima/rig/DefaultHead.h>
+#include <lacrima/scene/FaceRenderer.h>
+
+#include <QGuiApplication>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace lacrima::bench {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr double kTargetFps = 30;
+
+struct Options {
+  int width = 1280, height = 720;
+  int frames = 0;  // 0: the whole demo once
+  bool json = false;
+};
+
+void printHelp(FILE* out) {
+  std::fprintf(out,
+               "usage: lacrima-bench player [--size WxH] [--frames N] [--json]\n\n"
+               "Plays the demo (media/demo/crying.fap) on the default head through the player's\n"
+               "playback and renderer, one render per animation frame, and reports frames per second\n"
+               "of the whole loop with each stage's share. Needs an X display: run under xvfb-run.\n\n"
+               "  --size WxH   image size (default 1280x720)\n"
+               "  --frames N   frames to play (default: the whole demo; longer runs replay it)\n"
+               "  --json       one JSON object instead of the table\n");
+}
+
+// 0 = run, 1 = help printed, 2 = usage error.
+int parse(int argc, char** argv, Options& o) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const bool hasValue = i + 1 < argc;
+    if (arg == "--help" || arg == "-h") {
+      printHelp(stdout);
+      return 1;
+    } else if (arg == "--json") {
+      o.json = true;
+    } else if (arg == "--frames" && hasValue) {
+      if (!parseWholeNumber(argv[++i], 1, 1000000, o.frames)) {
+        std::fprintf(stderr, "lacrima-bench player: --frames takes 1..1000000\n");
+        return 2;
+      }
+    } else if (arg == "--size" && hasValue) {
+      const std::string v = argv[++i];
+      const auto x = v.find('x');
+      if (x == std::string::npos || !parseWholeNumber(v.substr(0, x).c_str(), 16, 8192, o.width) ||
+          !parseWholeNumber(v.substr(x + 1).c_str(), 16, 8192, o.height)) {
+        std::fprintf(stderr, "lacrima-bench player: --size takes WIDTHxHEIGHT, e.g. 1280x720\n");
+        return 2;
+      }
+    } else {
+      std::fprintf(stderr, "lacrima-bench player: unknown or incomplete option '%s'\n\n", arg.c_str());
+      printHelp(stderr);
+      return 2;
+    }
+  }
+  return 0;
+}
+
+double msSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
+
+struct Stage {
+  const char* name;
+  double total = 0;  // ms over all frames
+};
+
+}  // namespace
+
+int runPlayer(int argc, char** argv) {
+  Options o;
+  if (const int status = parse(argc, argv, o)) return status == 1 ? 0 : status;
+  if (std::getenv("DISPLAY") == nullptr || !*std::getenv("DISPLAY")) {
+    std::fprintf(stderr, "lacrima-bench player: needs an X display (OGRE renders through GLX); run it as\n"
+                         "  xvfb-run -a -s \"-screen 0 1280x1024x24\" lacrima-bench player\n");
+    return 1;
+  }
+  if (!defaultHeadAvailable()) {
+    std::fprintf(stderr, "lacrima-bench player: skipped: the default head is not fetched (packaging/fetch-default-head.sh)\n");
+    return 0;
+  }
+  int qtArgc = 1;
+  char name[] = "lacrima-bench";
+  char* qtArgv[] = {name, nullptr};
+  QGuiApplication app(qtArgc, qtArgv);
+
+  try {
+    const auto rigStart = Clock::now();
+    const auto rig = playback::loadDefaultHeadRig();
+    const double rigMs = msSince(rigStart);
+    playback::Playback playback(*rig);
+    const std::string demo = playback::findMediaFile("demo/crying.fap");
+    playback.open(demo);
+    scene::FaceRenderer renderer(rig->head, QSize(o.width, o.height));
+    // Warm-up: the first render compiles the shaders.
+    renderer.show(playback.view());
+    renderer.render();
+
+    const int demoFrames = playback.frameCount();
+    const int frames = o.frames > 0 ? o.frames : demoFrames;
+    std::array<Stage, 7> stages{{{"blend"}, {"simulation"}, {"surface"}, {"trails"}, {"upload"}, {"render"}, {"readback"}}};
+    std::vector<double> frameMs;
+    frameMs.reserve(static_cast<std::size_t>(frames));
+    int peakParticles = 0;
+    playback.reset();
+    const auto start = Clock::now();
+    for (int i = 0; i < frames; ++i) {
+      const int f = i % demoFrames;
+      const auto t0 = Clock::now();
+      if (f == 0 && i > 0) playback.reset();
+      const playback::FrameView& view = playback.seek(f / playback.frameRate());
+      renderer.show(view);
+      const QImage image = renderer.render();
+      frameMs.push_back(msSince(t0));
+      const playback::ProducerTimes& p = playback.producer().lastTimes();
+      const scene::RenderTimes& r = renderer.lastTimes();
+      const std::array<double, 7> ms{p.blend, p.simulation, p.surface, p.trails, r.upload, r.render, r.readback};
+      for (std::size_t s = 0; s < stages.size(); ++s) stages[s].total += ms[s];
+      peakParticles = std::max(peakParticles, playback.producer().particleCount());
+      if (image.isNull()) throw std::runtime_error("the renderer returned no image");
+    }
+    const double wallMs = msSince(start);
+    const double fps = frames * 1000.0 / wallMs;
+    std::vector<double> sorted = frameMs;
+    std::sort(sorted.begin(), sorted.end());
+    const double median = sorted[sorted.size() / 2], worst = sorted.back();
+    double staged = 0;
+    for (const Stage& s : stages) staged += s.total;
+    const double other = std::max(0.0, wallMs - staged);
+    const bool pass = fps >= kTargetFps;
+
+    if (o.json) {
+      JsonWriter json(JsonWriter::Layout::Compact);
+      json.beginObject();
+      json.field("benchmark", "player");
+      json.field("animation", demo);
+      json.field("width", o.width);
+      json.field("height", o.height);
+      json.field("frames", frames);
+      json.field("peak_particles", peakParticles);
+      json.field("rig_ms", rigMs);
+      json.field("fps", fps);
+      json.field("ms_per_frame_mean", wallMs / frames);
+      json.field("ms_per_frame_median", median);
+      json.field("ms_per_frame_max", worst);
+      json.key("stages_ms_per_frame");
+      json.beginObject();
+      for (const Stage& s : stages) json.field(s.name, s.total / frames);
+      json.field("other", other / frames);
+      json.endObject();
+      json.field("target_fps_at_least", kTargetFps);
+      json.field("pass", pass);
+      json.endObject();
+      const std::string text = std::move(json).finish();
+      std::fwrite(text.data(), 1, text.size(), stdout);
+    } else {
+      std::printf("player on %s: %d frames at %dx%d, up to %d tear particles (rig built in %.0f ms)\n", demo.c_str(), frames,
+                  o.width, o.height, peakParticles, rigMs);
+      std::printf("  %-12s %10s %8s\n", "stage", "ms/frame", "share");
+      for (const Stage& s : stages)
+        std::printf("  %-12s %10.2f %7.1f%%\n", s.name, s.total / frames, 100.0 * s.total / wallMs);
+      std::printf("  %-12s %10.2f %7.1f%%\n", "other", other / frames, 100.0 * other / wallMs);
+      std::printf("  %-12s %10.2f   (median %.2f, max %.2f)\n", "whole frame", wallMs / frames, median, worst);
+      std::printf("frames per second: %.1f  (target >= %.0f: %s)\n", fps, kTargetFps, pass ? "met" : "NOT MET");
+    }
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "lacrima-bench player: %s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace lacrima::bench

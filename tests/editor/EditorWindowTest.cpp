@@ -1,0 +1,442 @@
+// The editor as people use it: real widgets on the offscreen platform, driven by mouse and
+// keyboard events and by the window's actions.
+#include <lacrima/FapReader.h>
+#include <lacrima/FapTable.h>
+#include <lacrima/FapWriter.h>
+#include <lacrima/editor/ChannelRow.h>
+#include <lacrima/editor/EditorModel.h>
+#include <lacrima/editor/KeyListPanel.h>
+#include <lacrima/editor/MainWindow.h>
+#include <lacrima/editor/PlaybackClock.h>
+#include <lacrima/editor/PresetPanel.h>
+#include <lacrima/editor/RecoveryBanner.h>
+#include <lacrima/editor/RecoveryStore.h>
+#include <lacrima/editor/SliderPanel.h>
+#include <lacrima/editor/TimelineWidget.h>
+#include <lacrima/editor/ZeroSlider.h>
+
+#include <QAction>
+#include <QComboBox>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QToolButton>
+#include <QtTest>
+
+#include <memory>
+
+using namespace lacrima;
+using namespace lacrima::editor;
+
+namespace {
+
+EditorOptions testOptions(const QString& recoveryDir) {
+  EditorOptions options;
+  options.preview = false;
+  options.interactive = false;
+  options.offerRecovery = true;
+  options.recoveryDirectory = recoveryDir;
+  return options;
+}
+
+// Drags a slider from its zero mark to `fraction` of its width (0 = left end, 1 = right end).
+void dragSlider(ZeroSlider* slider, double fraction) {
+  const int y = slider->height() / 2;
+  const int zero = static_cast<int>(6 + (0.0 - slider->minimum()) / (slider->maximum() - slider->minimum()) * (slider->width() - 12));
+  const int target = static_cast<int>(6 + fraction * (slider->width() - 12));
+  QTest::mousePress(slider, Qt::LeftButton, {}, QPoint(zero, y));
+  for (int step = 1; step <= 8; ++step) {
+    QMouseEvent move(QEvent::MouseMove, QPointF(zero + (target - zero) * step / 8.0, y), slider->mapToGlobal(QPointF(0, 0)),
+                     Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(slider, &move);
+  }
+  QTest::mouseRelease(slider, Qt::LeftButton, {}, QPoint(target, y));
+}
+
+void setSpin(QSpinBox* spin, int value) {
+  spin->setFocus();
+  spin->selectAll();
+  QTest::keyClicks(spin, QString::number(value));
+  QTest::keyClick(spin, Qt::Key_Return);
+  spin->clearFocus();  // window shortcuts (K, Space, Delete) act again, as after a click elsewhere
+}
+
+}  // namespace
+
+class EditorWindowTest : public QObject {
+  Q_OBJECT
+
+private:
+  QTemporaryDir recoveryDir_;
+  std::unique_ptr<MainWindow> window_;
+
+  MainWindow& window() { return *window_; }
+  EditorModel& model() { return window_->model(); }
+
+private slots:
+  void initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("lacrima-test"));
+    QCoreApplication::setApplicationName(QStringLiteral("editor-window-test"));
+    QSettings().clear();
+  }
+
+  void init() {
+    window_ = std::make_unique<MainWindow>(testOptions(recoveryDir_.path()));
+    window_->resize(1400, 900);
+    window_->show();
+    window_->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(window_.get()));
+  }
+
+  void cleanup() {
+    window_->model().markSaved();  // nothing to recover from a finished test
+    window_->close();
+    window_.reset();
+  }
+
+  void buildsSeventyChannelsGroupedAsTheStandard() {
+    SliderPanel* panel = window().sliders();
+    QCOMPARE(panel->visibleChannels().size(), std::size_t{70});
+    for (int fap = 3; fap <= 70; ++fap) {
+      ChannelRow* row = panel->row(fap);
+      QVERIFY(row);
+      QCOMPARE(row->slider()->minimum(), fapInfo(fap).sliderMin);
+      QCOMPARE(row->slider()->maximum(), fapInfo(fap).sliderMax);
+      QVERIFY(row->slider()->toolTip().contains(QString::fromUtf8(fapInfo(fap).description.data(),
+                                                                   static_cast<qsizetype>(fapInfo(fap).description.size()))));
+    }
+    QVERIFY(panel->visemePicker());
+    QCOMPARE(panel->visemePicker()->count(), 15);
+    QCOMPARE(panel->expressionPicker()->count(), 7);
+    // Groups in the standard's order: their first channels appear in number order.
+    const std::vector<int> order = panel->visibleChannels();
+    QVERIFY(std::is_sorted(order.begin(), order.end()));
+  }
+
+  void movingASliderChangesTheProject() {
+    ChannelRow* row = window().sliders()->row(3);  // open_jaw, 0..1080
+    QVERIFY(model().document().keys.empty());
+    dragSlider(row->slider(), 0.5);
+    QCOMPARE(model().document().keys.keys().size(), std::size_t{1});
+    const Keyframe& key = model().document().keys.keys().front();
+    QCOMPARE(key.time, 0.0);
+    QVERIFY(key.has(3));
+    QVERIFY(std::abs(key.value(3) - 540.0f) <= 12.0f);
+    QCOMPARE(row->spinBox()->value(), static_cast<int>(key.value(3)));
+    QCOMPARE(model().undoStack()->count(), 1);  // the whole drag is one step
+    QVERIFY(window().isWindowModified());
+    QVERIFY(window().windowTitle().contains(QStringLiteral("[*]")));
+    // The spin box edits the same key.
+    setSpin(row->spinBox(), 123);
+    QCOMPARE(model().document().keys.keys().front().value(3), 123.0f);
+    QCOMPARE(row->slider()->value(), 123);
+  }
+
+  void keysAtZeroAndOneSecondExport23FramesAtTwentyTwoFps() {
+    ChannelRow* jaw = window().sliders()->row(3);
+    ChannelRow* tears = window().sliders()->row(69);
+    setSpin(jaw->spinBox(), 220);
+    setSpin(jaw->spinBox(), 0);  // keyed at 0 s with 0
+    QTest::mouseClick(tears->keyToggle(), Qt::LeftButton);  // keys tears_l_eye = 0 at 0 s
+    QVERIFY(model().keyedAtCurrentTime().test(channelIndex(69)));
+    QTest::keyClick(window().timeline(), Qt::Key_Right);  // next frame...
+    model().setCurrentTime(1.0);                           // ...and to 1 s
+    setSpin(jaw->spinBox(), 440);
+    setSpin(tears->spinBox(), 44);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("jaw.fap"));
+    QVERIFY2(window().exportFap(path, FapExportOptions{}), qPrintable(window().lastError()));
+    const FapAnimation animation = FapReader::readFile(path.toStdString()).animation;
+    QCOMPARE(animation.frameCount(), 23);
+    QCOMPARE(animation.fps, 22.0);
+    for (int i = 0; i < 23; ++i) {
+      QCOMPARE(animation.frames[i][channelIndex(3)], 20.0f * i);
+      QCOMPARE(animation.frames[i][channelIndex(69)], 2.0f * i);
+    }
+  }
+
+  void undoAndRedoThroughTheMenuRestoreExactly() {
+    std::vector<ProjectDocument> states{model().document()};
+    dragSlider(window().sliders()->row(31)->slider(), 0.8);
+    states.push_back(model().document());
+    model().setCurrentTime(0.5);
+    window().action(QStringLiteral("key.add"))->trigger();
+    states.push_back(model().document());
+    window().presets()->apply(QStringLiteral("sad-crying"));
+    states.push_back(model().document());
+    window().action(QStringLiteral("edit.mirror"))->trigger();
+    states.push_back(model().document());
+    window().action(QStringLiteral("key.smooth"))->trigger();
+    states.push_back(model().document());
+    QCOMPARE(model().undoStack()->count(), 5);
+    QAction* undo = window().action(QStringLiteral("edit.undo"));
+    QAction* redo = window().action(QStringLiteral("edit.redo"));
+    for (int i = 4; i >= 0; --i) {
+      undo->trigger();
+      QVERIFY(model().document() == states[static_cast<std::size_t>(i)]);
+    }
+    QVERIFY(!undo->isEnabled());
+    QVERIFY(!window().isWindowModified());
+    for (std::size_t i = 1; i < states.size(); ++i) {
+      redo->trigger();
+      QVERIFY(model().document() == states[i]);
+    }
+    // Keyboard shortcuts reach the same actions.
+    QTest::keySequence(&window(), QKeySequence(QStringLiteral("Ctrl+Z")));
+    QVERIFY(model().document() == states[4]);
+    QTest::keySequence(&window(), QKeySequence(QStringLiteral("Ctrl+Shift+Z")));
+    QVERIFY(model().document() == states[5]);
+  }
+
+  void mirrorActionMapsStretchLeftToRight() {
+    setSpin(window().sliders()->row(6)->spinBox(), 150);
+    window().action(QStringLiteral("edit.mirror"))->trigger();
+    QCOMPARE(window().sliders()->row(7)->spinBox()->value(), 150);
+    QCOMPARE(window().sliders()->row(6)->spinBox()->value(), 0);
+    QVERIFY(!model().document().keys.keys().front().has(6));
+  }
+
+  void symmetricToggleMovesBothSliders() {
+    window().action(QStringLiteral("edit.symmetric"))->trigger();
+    QVERIFY(model().symmetricEdit());
+    dragSlider(window().sliders()->row(19)->slider(), 0.75);  // close_t_l_eyelid
+    QCOMPARE(window().sliders()->row(20)->spinBox()->value(), window().sliders()->row(19)->spinBox()->value());
+    QVERIFY(window().sliders()->row(19)->spinBox()->value() > 400);
+    QCOMPARE(model().undoStack()->count(), 1);
+  }
+
+  void theFilterFindsSliders() {
+    QLineEdit* filter = window().sliders()->filterBox();
+    filter->setFocus();
+    QTest::keyClicks(filter, QStringLiteral("jaw"));
+    QCOMPARE(window().sliders()->visibleChannels(), (std::vector<int>{3, 14, 15}));
+    QVERIFY(window().sliders()->row(3)->isVisible());
+    QVERIFY(!window().sliders()->row(31)->isVisible());
+    filter->clear();
+    QTest::keyClicks(filter, QStringLiteral("31"));
+    QCOMPARE(window().sliders()->visibleChannels(), (std::vector<int>{31}));
+    filter->clear();
+    QTest::keyClicks(filter, QStringLiteral("tears"));
+    QCOMPARE(window().sliders()->visibleChannels(), (std::vector<int>{69, 70}));
+    filter->clear();
+    QTest::keyClicks(filter, QStringLiteral("expression"));
+    QCOMPARE(window().sliders()->visibleChannels(), (std::vector<int>{2}));
+    filter->clear();
+    QCOMPARE(window().sliders()->visibleChannels().size(), std::size_t{70});
+    // Typing K in the filter types a K; it does not add a key.
+    QTest::keyClicks(filter, QStringLiteral("k"));
+    QCOMPARE(filter->text(), QStringLiteral("k"));
+    QVERIFY(model().document().keys.empty());
+  }
+
+  void resetsPerSliderAndPerGroup() {
+    for (int fap : {31, 32, 33}) setSpin(window().sliders()->row(fap)->spinBox(), 200);
+    QTest::mouseClick(window().sliders()->row(31)->resetButton(), Qt::LeftButton);
+    QCOMPARE(model().currentValue(31), 0.0f);
+    QCOMPARE(model().currentValue(32), 200.0f);
+    QTest::mouseClick(window().sliders()->groupResetButton(static_cast<int>(FapGroup::Eyebrows)), Qt::LeftButton);
+    QCOMPARE(model().currentValue(32), 0.0f);
+    QCOMPARE(model().currentValue(33), 0.0f);
+    QCOMPARE(model().undoStack()->count(), 5);  // three sets, one reset, one group reset
+  }
+
+  void highLevelPickersSetTheirCodes() {
+    QComboBox* expression = window().sliders()->expressionPicker();
+    expression->setCurrentIndex(3);
+    emit expression->activated(3);  // what a user's pick sends
+    QCOMPARE(model().currentValue(2), 3.0f);  // anger
+    QComboBox* viseme = window().sliders()->visemePicker();
+    viseme->setCurrentIndex(10);
+    emit viseme->activated(10);
+    QCOMPARE(model().currentValue(1), 10.0f);  // aa
+    model().setCurrentTime(1.0);
+    QCOMPARE(expression->currentIndex(), 3);  // codes hold
+  }
+
+  void timelineAddsMovesCopiesPastesAndDeletesKeys() {
+    TimelineWidget* timeline = window().timeline();
+    timeline->setView(-0.1, 200.0);  // 200 px per second
+    setSpin(window().sliders()->row(3)->spinBox(), 300);
+    model().setCurrentTime(1.0);
+    setSpin(window().sliders()->row(3)->spinBox(), 600);
+    QTest::keyClick(&window(), Qt::Key_Home);
+    QCOMPARE(model().currentTime(), 0.0);
+    // K adds a whole-pose key at the playhead.
+    model().setCurrentTime(0.5);
+    QTest::keyClick(&window(), Qt::Key_K);
+    QCOMPARE(model().document().keys.keys().size(), std::size_t{3});
+    QCOMPARE(model().document().keys.keys()[1].value(3), 450.0f);
+    // Drag the 0.5 s key right by 0.3 s (6.6 frames at 200 px/s; keys move by whole frames).
+    const QPoint from = timeline->keyPosition(1).toPoint();
+    QTest::mousePress(timeline, Qt::LeftButton, {}, from);
+    for (int dx = 10; dx <= 60; dx += 10) {
+      QMouseEvent move(QEvent::MouseMove, QPointF(from.x() + dx, from.y()), timeline->mapToGlobal(QPointF(from.x() + dx, from.y())),
+                       Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+      QCoreApplication::sendEvent(timeline, &move);
+    }
+    QTest::mouseRelease(timeline, Qt::LeftButton, {}, QPoint(from.x() + 60, from.y()));
+    const double moved = model().document().keys.keys()[1].time;
+    QCOMPARE(moved, 18.0 / 22.0);  // frame 11 -> 18
+    QVERIFY(model().isSelected(moved));
+    // Copy the selected key and paste it at 2 s.
+    QTest::keySequence(&window(), QKeySequence::Copy);
+    model().setCurrentTime(2.0);
+    QTest::keySequence(&window(), QKeySequence::Paste);
+    QCOMPARE(model().document().keys.keys().size(), std::size_t{4});
+    QCOMPARE(model().document().keys.keys().back().time, 2.0);
+    QCOMPARE(model().document().keys.keys().back().value(3), 450.0f);
+    // Smooth, then delete it.
+    QTest::keyClick(&window(), Qt::Key_S);
+    QVERIFY(model().document().keys.keys().back().interpolation == Interpolation::Smooth);
+    QTest::keyClick(&window(), Qt::Key_Delete);
+    QCOMPARE(model().document().keys.keys().size(), std::size_t{3});
+    // The key table shows the same keys.
+    QCOMPARE(window().keyList()->view()->model()->rowCount(), 3);
+  }
+
+  void presetPanelAppliesAtThePlayhead() {
+    PresetPanel* presets = window().presets();
+    model().setCurrentTime(1.0);
+    QVERIFY(presets->apply(QStringLiteral("surprise")));
+    QCOMPARE(model().currentTime(), 1.0);
+    QCOMPARE(model().currentValue(3), 450.0f);
+    QCOMPARE(window().sliders()->row(3)->spinBox()->value(), 450);
+    QVERIFY(!presets->apply(QStringLiteral("no-such-preset")));
+  }
+
+  void savingClearsTheMarkAndRemembersTheFile() {
+    QTemporaryDir dir;
+    setSpin(window().sliders()->row(3)->spinBox(), 100);
+    QVERIFY(window().isWindowModified());
+    const QString path = dir.filePath(QStringLiteral("take.json"));
+    QVERIFY(window().saveTo(path));
+    QVERIFY(!window().isWindowModified());
+    QCOMPARE(model().document().name, std::string("take"));
+    QVERIFY(QSettings().value(QStringLiteral("files/recent")).toStringList().contains(QFileInfo(path).absoluteFilePath()));
+    QVERIFY(ProjectDocument::load(path.toStdString()) == model().document());
+    // Open it in a fresh document: identical, clean.
+    window().newDocument();
+    QVERIFY(window().openFile(path));
+    QVERIFY(ProjectDocument::load(path.toStdString()) == model().document());
+    QVERIFY(!window().isWindowModified());
+    QVERIFY(!window().openFile(dir.filePath(QStringLiteral("missing.json"))));
+    QVERIFY(window().lastError().contains(QStringLiteral("missing.json")));
+  }
+
+  void importThenExportRoundTrip() {
+    QTemporaryDir dir;
+    FapAnimation original;
+    original.fps = 22;
+    original.frames.assign(120, FapValues{});
+    for (int i = 0; i < 120; ++i) {
+      original.frames[i][channelIndex(3)] = static_cast<float>(std::lround(300 * std::sin(i * 0.1)) + 300);
+      original.frames[i][channelIndex(70)] = static_cast<float>(i / 3);
+    }
+    original.animated.set(channelIndex(3));
+    original.animated.set(channelIndex(70));
+    const QString in = dir.filePath(QStringLiteral("in.fap"));
+    FapWriter::save(original, in.toStdString());
+    QVERIFY(window().importFap(in, std::nullopt));
+    QCOMPARE(model().document().keys.keys().size(), std::size_t{120});
+    QVERIFY(window().isWindowModified());  // an import is unsaved work
+    const QString out = dir.filePath(QStringLiteral("out.fap"));
+    QVERIFY(window().exportFap(out, FapExportOptions{}));
+    QVERIFY(FapReader::readFile(in.toStdString()).animation.frames == FapReader::readFile(out.toStdString()).animation.frames);
+    // With reduction: fewer keys, same file within a unit.
+    QVERIFY(window().importFap(in, 0.5));
+    QVERIFY(model().document().keys.keys().size() < 120);
+    QVERIFY(window().exportFap(out, FapExportOptions{}));
+    const FapAnimation back = FapReader::readFile(out.toStdString()).animation;
+    for (int i = 0; i < 120; ++i)
+      for (int c = 0; c < kChannelCount; ++c) QVERIFY(std::abs(back.frames[i][c] - original.frames[i][c]) <= 1.0f);
+  }
+
+  void autosaveIsRecoveredAfterACrash() {
+    QTemporaryDir dir;
+    auto first = std::make_unique<MainWindow>(testOptions(dir.path()));
+    first->show();
+    first->model().setChannel(3, 250);
+    first->model().setCurrentTime(2.0);
+    first->presets()->apply(QStringLiteral("sad-crying"));
+    first->autosaveNow();
+    QVERIFY(first->recovery().hasFile());
+    const ProjectDocument unsaved = first->model().document();
+    // While the first editor runs, a second one offers nothing.
+    {
+      MainWindow second(testOptions(dir.path()));
+      QVERIFY(second.recoveryBanner()->isHidden());
+    }
+    // Crash: the first editor goes away without closing (no clean exit).
+    first.reset();
+    MainWindow next(testOptions(dir.path()));
+    next.show();
+    QVERIFY(next.recoveryBanner()->isVisible());
+    QTest::mouseClick(next.recoveryBanner()->restoreButton(), Qt::LeftButton);
+    QVERIFY(next.model().document() == unsaved);
+    QVERIFY(next.isWindowModified());
+    QVERIFY(next.recoveryBanner()->isHidden());
+    // Closing cleanly removes the recovery file.
+    next.model().markSaved();
+    next.close();
+    QVERIFY(QDir(dir.path()).entryList({QStringLiteral("*.json")}, QDir::Files).isEmpty());
+  }
+
+  void autosaveRunsSoonAfterAChange() {
+    QTemporaryDir dir;
+    EditorOptions options = testOptions(dir.path());
+    options.autosaveDelayMs = 50;
+    MainWindow editor(options);
+    editor.show();
+    editor.model().setChannel(31, 100);
+    QTRY_VERIFY(editor.recovery().hasFile());
+    QVERIFY(RecoveryStore::read(editor.recovery().filePath()) == editor.model().document());
+    // Undoing back to the saved state leaves nothing to recover.
+    editor.model().undoStack()->undo();
+    QTRY_VERIFY(!editor.recovery().hasFile());
+    editor.close();
+  }
+
+  void discardingAnOfferRemovesIt() {
+    QTemporaryDir dir;
+    {
+      RecoveryStore crashed(dir.path());
+      ProjectDocument doc;
+      Keyframe key;
+      key.set(3, 10);
+      doc.keys.insert(key);
+      crashed.save(doc, {});
+    }
+    MainWindow editor(testOptions(dir.path()));
+    editor.show();
+    QVERIFY(editor.recoveryBanner()->isVisible());
+    QTest::mouseClick(editor.recoveryBanner()->discardButton(), Qt::LeftButton);
+    QVERIFY(editor.recoveryBanner()->isHidden());
+    QVERIFY(editor.model().document().keys.empty());
+    QVERIFY(QDir(dir.path()).entryList({QStringLiteral("*.json")}, QDir::Files).isEmpty());
+    editor.close();
+  }
+
+  void spaceTogglesPlayback() {
+    setSpin(window().sliders()->row(3)->spinBox(), 10);
+    model().setCurrentTime(1.0);
+    setSpin(window().sliders()->row(3)->spinBox(), 220);
+    model().setCurrentTime(0.0);
+    QTest::keyClick(&window(), Qt::Key_Space);
+    QVERIFY(window().clock().isPlaying());
+    QTRY_VERIFY(model().currentTime() > 0.1);
+    QTest::keyClick(&window(), Qt::Key_Space);
+    QVERIFY(!window().clock().isPlaying());
+    // Stopping lands on a frame.
+    const double frames = model().currentTime() * 22.0;
+    QCOMPARE(frames, std::round(frames));
+  }
+};
+
+QTEST_MAIN(EditorWindowTest)
+#include "EditorWindowTest.moc"

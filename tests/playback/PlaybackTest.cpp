@@ -1,0 +1,336 @@
+// The playback layer on the real default head, offscreen (no OGRE): deterministic seeking,
+// effects on demand, bad files, the texture-blend weights and the effect toggles.
+// Skipped when the default head has not been fetched.
+#include "PlaybackTestSupport.h"
+
+#include <lacrima/FapWriter.h>
+#include <lacrima/playback/Playback.h>
+#include <lacrima/rig/DefaultHead.h>
+#include <lacrima/tears/TrailBuilder.h>
+#include <lacrima/tears/SurfaceMesher.h>
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <fstream>
+#include <map>
+
+using namespace lacrima;
+using namespace lacrima::playback;
+using namespace lacrima::playback::test;
+
+namespace {
+
+void writeText(const QString& path, const std::string& text) {
+  std::ofstream out(path.toStdString(), std::ios::binary);
+  out << text;
+}
+
+double seconds(int frame) { return frame / kFps; }
+
+}  // namespace
+
+class PlaybackTest : public QObject {
+  Q_OBJECT
+
+  std::unique_ptr<HeadRig> rig_;
+  QTemporaryDir dir_;
+
+private slots:
+  void initTestCase() {
+    if (!defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    rig_ = loadDefaultHeadRig();
+    QVERIFY(rig_ && rig_->blender);
+    QVERIFY(dir_.isValid());
+  }
+
+  // Going back restores the nearest earlier checkpoint and replays: the particles are bit for
+  // bit those of a straight play, and only the frames after that checkpoint are replayed.
+  void seekBackIsBitwiseIdentical() {
+    const FapAnimation animation = cryingAnimation(70, 40);
+    SceneSettings scene;
+    scene.particles = true;
+    Playback straight(*rig_, 1000);  // no checkpoint but frame 0's: a plain play
+    straight.setAnimation(animation, scene);
+    std::map<int, tears::ParticleSet> reference;
+    for (int f = 0; f <= 60; ++f) {
+      straight.seek(seconds(f));
+      if (f == 25 || f == 47 || f == 60) reference[f] = *straight.view().particles;
+    }
+    QCOMPARE(reference[60].size(), 80);
+
+    Playback scrubbed(*rig_, 10);
+    scrubbed.setAnimation(animation, scene);
+    scrubbed.seek(seconds(60));  // forward in one jump: steps every frame
+    QCOMPARE(scrubbed.currentFrame(), 60);
+    QCOMPARE(scrubbed.framesSimulated(), 61LL);
+    QCOMPARE(scrubbed.checkpointCount(), 7);  // before frames 0, 10, ..., 60
+    QVERIFY(sameParticles(*scrubbed.view().particles, reference[60]));
+
+    long long before = scrubbed.framesSimulated();
+    scrubbed.seek(seconds(25) + 0.01);  // between frames 25 and 26
+    QCOMPARE(scrubbed.currentFrame(), 25);
+    QCOMPARE(scrubbed.framesSimulated() - before, 6LL);  // restored before frame 20, replayed 20..25
+    QVERIFY2(sameParticles(*scrubbed.view().particles, reference[25]), "restoring a checkpoint changed the tears");
+    before = scrubbed.framesSimulated();
+    scrubbed.seek(seconds(60));  // on from the restored state
+    QCOMPARE(scrubbed.framesSimulated() - before, 35LL);
+    QVERIFY2(sameParticles(*scrubbed.view().particles, reference[60]), "playing on after a restore changed the tears");
+    scrubbed.seek(seconds(47));
+    QVERIFY(sameParticles(*scrubbed.view().particles, reference[47]));
+    scrubbed.seek(seconds(12));
+    scrubbed.seek(seconds(47));
+    QVERIFY(sameParticles(*scrubbed.view().particles, reference[47]));
+    scrubbed.reset();  // the same simulation object, back to no tears
+    scrubbed.seek(seconds(60));
+    QVERIFY2(sameParticles(*scrubbed.view().particles, reference[60]), "a reset left something of the old tears");
+  }
+
+  // A file without tear channels: no simulation, no surface, no trails, ever.
+  void noTearsNoSimulation() {
+    Playback playback(*rig_);
+    SceneSettings scene;
+    scene.particles = scene.surface = scene.trails = true;
+    playback.setAnimation(dryAnimation(60), scene);
+    QVERIFY(!playback.hasTears());
+    for (int f = 0; f < 60; ++f) {
+      const FrameView& v = playback.seek(seconds(f) + 0.02);
+      QVERIFY(!v.particles && !v.surface && !v.trails);
+    }
+    playback.seek(0);  // back and forth again
+    playback.seek(playback.duration());
+    const ProducerCounters& c = playback.producer().counters();
+    QVERIFY(c.frames >= 60);
+    QVERIFY(c.blends >= 60);
+    QCOMPARE(c.simulationSteps, 0LL);
+    QCOMPARE(c.surfaceRuns, 0LL);
+    QCOMPARE(c.trailRuns, 0LL);
+    QCOMPARE(playback.producer().particleCount(), 0);
+    QCOMPARE(playback.view().overlays.wetEyes[0], 0.0);
+  }
+
+  // The simulation runs while tears are commanded or present, and stops once they are gone.
+  void simulationStopsWhenTearsAreGone() {
+    Playback playback(*rig_);
+    playback.setAnimation(cryingAnimation(60, 30, 0, 20));
+    playback.seek(playback.duration());
+    const ProducerCounters& c = playback.producer().counters();
+    // Frames 0-19 command tears, frame 20 removes them all (the oldest first), then nothing.
+    QCOMPARE(c.simulationSteps, 21LL);
+    QCOMPARE(c.surfaceRuns, 20LL);  // frame 20 ends with no particles: nothing to mesh
+    QVERIFY(c.trailRuns >= 20);     // trails go on drying after the tears
+    QCOMPARE(playback.producer().particleCount(), 0);
+    QVERIFY(!playback.view().surface && !playback.view().particles);
+  }
+
+  // A malformed file is an error naming the file and line, and the loaded animation stays.
+  void badFileKeepsPreviousAnimation() {
+    const QString good = dir_.filePath("good.fap");
+    FapWriter::save(cryingAnimation(30, 10), good.toStdString());
+    Playback playback(*rig_);
+    playback.open(good.toStdString());
+    QCOMPARE(playback.frameCount(), 30);
+    playback.seek(seconds(12));
+
+    const QString bad = dir_.filePath("bad.fap");
+    std::string mask;
+    for (int fap = 1; fap <= 68; ++fap) mask += std::string(fap > 1 ? " " : "") + (fap == 3 ? "1" : "0");
+    // Line 3, the first value line, has a word where open_jaw's value should be.
+    const std::string text = "2.1 bad 22 2\n" + mask + "\n0 wide\n";
+    writeText(bad, text);
+    try {
+      playback.open(bad.toStdString());
+      QFAIL("a malformed FAP file was accepted");
+    } catch (const FileError& e) {
+      QCOMPARE(QString::fromStdString(e.where().file), bad);
+      QCOMPARE(e.where().line, 3);
+      QVERIFY(QString(e.what()).startsWith(bad + ":3"));
+    }
+    QCOMPARE(QString::fromStdString(playback.path()), good);
+    QCOMPARE(playback.frameCount(), 30);
+    QCOMPARE(playback.currentFrame(), 12);
+    playback.seek(seconds(20));
+    QCOMPARE(playback.currentFrame(), 20);
+
+    const QString badProject = dir_.filePath("bad.json");
+    writeText(badProject, "{\n  \"format\": \"lacrima-project\",\n  \"version\": 1,\n  \"fps\": 22,\n  \"keys\": [ }\n");
+    try {
+      playback.open(badProject.toStdString());
+      QFAIL("a malformed project was accepted");
+    } catch (const FileError& e) {
+      QCOMPARE(QString::fromStdString(e.where().file), badProject);
+      QCOMPARE(e.where().line, 5);
+    }
+    QCOMPARE(QString::fromStdString(playback.path()), good);
+
+    try {
+      playback.open(dir_.filePath("missing.fap").toStdString());
+      QFAIL("a missing file was accepted");
+    } catch (const FileError& e) {
+      QVERIFY(QString(e.what()).contains("missing.fap"));
+    }
+    QCOMPARE(playback.frameCount(), 30);
+  }
+
+  // A project brings its scene settings and tear sources.
+  void projectBringsItsScene() {
+    const QString path = dir_.filePath("scene.json");
+    writeText(path, R"({
+  "format": "lacrima-project", "version": 1, "name": "t", "fps": 22, "interpolation": "linear",
+  "keys": [ { "time": 0, "values": { "open_jaw": 0, "tears_l_eye": 20 } },
+            { "time": 1, "values": { "open_jaw": 200, "tears_l_eye": 20 } } ],
+  "tearSources": { "left": [0.3, 7.0, 1.0], "right": null },
+  "scene": { "particles": true, "surface": false, "trails": false, "textureBlending": true,
+             "redness": "tears", "blush": true, "simulation": { "adhesion": 40 } }
+})");
+    Playback playback(*rig_);
+    playback.open(path.toStdString());
+    QCOMPARE(playback.frameCount(), 23);
+    QVERIFY(playback.scene().particles && !playback.scene().surface);
+    QCOMPARE(playback.scene().redness, SceneSettings::Redness::Tears);
+    QCOMPARE(playback.scene().simulation.at("adhesion"), 40.0);
+    QVERIFY(playback.tearSources().left.has_value());
+    QVERIFY(!playback.tearSources().right.has_value());
+    const FrameView& v = playback.seek(playback.duration());
+    QVERIFY(v.particles && !v.surface && !v.trails);
+    QCOMPARE(playback.producer().counters().surfaceRuns, 0LL);
+  }
+
+  // Redness follows the animation (2009) or the tears shed; the eyes are wet while tears are
+  // there; the blush follows the redness when asked for; texture blending off zeroes them all.
+  void overlayWeights() {
+    Playback playback(*rig_);
+    playback.setAnimation(cryingAnimation(89, 30, 10, 50));  // 4 s
+    double last = -1;
+    for (int f = 0; f < 89; ++f) {
+      const OverlayWeights& w = playback.seek(seconds(f)).overlays;
+      QVERIFY(w.redness >= last);
+      last = w.redness;
+      if (f == 0) QCOMPARE(w.redness, 0.0);
+      if (f < 10) QVERIFY(w.wetEyes[0] == 0 && w.wetEyes[1] == 0);
+      if (f == 30) QVERIFY(w.wetEyes[0] > 0.25 && w.wetEyes[1] > 0.25);
+      if (f == 80) QVERIFY(w.wetEyes[0] == 0 && w.wetEyes[1] == 0);
+      QCOMPARE(w.blush, 0.0);
+    }
+    QCOMPARE(last, 1.0);
+    QCOMPARE(playback.seek(playback.duration() / 2).overlays.redness, 0.5);
+
+    SceneSettings scene;
+    scene.redness = SceneSettings::Redness::Tears;
+    scene.blush = true;
+    playback.setAnimation(cryingAnimation(89, 30, 10, 50), scene);
+    last = 0;
+    for (int f = 0; f < 89; ++f) {
+      const OverlayWeights& w = playback.seek(seconds(f)).overlays;
+      if (f < 10) QCOMPARE(w.redness, 0.0);  // no tears yet
+      QVERIFY(w.redness >= last);
+      QCOMPARE(w.blush, w.redness);
+      last = w.redness;
+    }
+    QVERIFY2(last > 0.05, QByteArray::number(last));
+
+    scene.textureBlending = false;
+    playback.setScene(scene);
+    const FrameView& v = playback.seek(seconds(30));
+    QVERIFY(!v.textureBlending);
+    QCOMPARE(v.overlays, OverlayWeights{});
+  }
+
+  // Toggles switch the work and the pointers; the revision moves only when something changed.
+  void togglesRespected() {
+    Playback playback(*rig_);
+    SceneSettings scene;
+    scene.particles = false;
+    scene.surface = true;
+    scene.trails = true;
+    playback.setAnimation(cryingAnimation(80, 40), scene);
+    const FrameView* v = &playback.seek(seconds(40));
+    QVERIFY(!v->particles && v->surface && v->trails);
+    QVERIFY(v->surface->triangleCount() > 0 && v->trails->triangleCount() > 0);
+
+    const long long revision = v->revision;
+    playback.seek(seconds(40));
+    QCOMPARE(playback.view().revision, revision);  // nothing changed: a static scene
+    playback.seek(seconds(40) + 0.02);
+    QVERIFY(playback.view().revision > revision);  // the face moved between frames
+
+    scene.surface = false;
+    scene.particles = true;
+    playback.setScene(scene);
+    const long long surfaceRuns = playback.producer().counters().surfaceRuns;
+    v = &playback.seek(seconds(50));
+    QVERIFY(v->particles && !v->surface && v->trails);
+    QVERIFY(v->particleRadius > 0);
+    QCOMPARE(playback.producer().counters().surfaceRuns, surfaceRuns);
+
+    scene.trails = false;
+    playback.setScene(scene);
+    const long long trailRuns = playback.producer().counters().trailRuns;
+    v = &playback.seek(seconds(60));
+    QVERIFY(!v->trails);
+    QCOMPARE(playback.producer().counters().trailRuns, trailRuns);
+
+    scene.surface = true;  // on again while paused: meshed at once
+    playback.setScene(scene);
+    QVERIFY(playback.view().surface && playback.view().surface->triangleCount() > 0);
+    scene.trails = true;  // trails start again from the drops' current places
+    playback.setScene(scene);
+    v = &playback.seek(seconds(75));
+    QVERIFY(v->trails && v->trails->triangleCount() > 0);
+  }
+
+  // Reset: neutral face, no tears, time 0; playing again starts from the first frame.
+  void resetGivesNeutralFace() {
+    Playback playback(*rig_);
+    playback.setAnimation(cryingAnimation(40, 30));
+    playback.seek(seconds(35));
+    QVERIFY(playback.producer().particleCount() > 0);
+    playback.reset();
+    QCOMPARE(playback.currentFrame(), 0);
+    QCOMPARE(playback.currentTime(), 0.0);
+    QCOMPARE(playback.producer().particleCount(), 0);
+    const FrameView& v = playback.view();
+    QVERIFY(*v.positions == rig_->head.positions);
+    QVERIFY(!v.particles && !v.surface && !v.trails);
+    QCOMPARE(v.overlays, OverlayWeights{});
+    playback.seek(seconds(3));
+    QCOMPARE(playback.currentFrame(), 3);
+    QVERIFY(playback.producer().particleCount() > 0);
+  }
+
+  // New tear parameters restart the tears: the picture is a straight play's with them.
+  void parameterChangeReplays() {
+    const FapAnimation animation = cryingAnimation(50, 30);
+    SceneSettings scene;
+    scene.particles = true;
+    Playback changed(*rig_, 10);
+    changed.setAnimation(animation, scene);
+    changed.seek(seconds(40));
+    scene.simulation["adhesion"] = 60;
+    scene.simulation["viscosity"] = 2;
+    changed.setScene(scene);
+    QCOMPARE(changed.currentFrame(), 40);
+
+    Playback fresh(*rig_, 10);
+    fresh.setAnimation(animation, scene);
+    fresh.seek(seconds(40));
+    QVERIFY(sameParticles(*changed.view().particles, *fresh.view().particles));
+
+    scene.simulation["adhesion"] = -5;  // out of range: refused, nothing changes
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, changed.setScene(scene));
+    QCOMPARE(changed.scene().simulation.at("adhesion"), 60.0);
+  }
+
+  // Bringing your own head: a missing mesh is an error naming it.
+  void missingHeadFileIsNamed() {
+    try {
+      loadHeadRig(dir_.filePath("nohead.obj").toStdString(), dir_.filePath("nohead.fdp.json").toStdString());
+      QFAIL("a missing head file was accepted");
+    } catch (const FileError& e) {
+      QVERIFY(QString(e.what()).contains("nohead.obj"));
+    }
+  }
+};
+
+QTEST_GUILESS_MAIN(PlaybackTest)
+#include "PlaybackTest.moc"

@@ -1,0 +1,155 @@
+// The real main window of lacrima-player under xvfb-run, driven through QTest: the demo loaded
+// through the Open action's path, Play until frames advance, Reset to a neutral face with no
+// tears; a bad file gives an error dialog and keeps the animation; drops open files; toggles
+// and parameters reach the playback.
+#include "PlayerWindow.h"
+#include "EffectsPanel.h"
+#include "TearParametersPanel.h"
+
+#include <lacrima/rig/DefaultHead.h>
+#include <lacrima/viewport/FaceViewport.h>
+
+#include <QCheckBox>
+#include <QDoubleSpinBox>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QPushButton>
+#include <QSlider>
+#include <QTemporaryDir>
+#include <QToolButton>
+#include <QtTest>
+
+#include <fstream>
+
+using namespace lacrima;
+using namespace lacrima::player;
+
+namespace {
+
+const QString kDemo = QStringLiteral(LACRIMA_SOURCE_DIR "/media/demo/crying.fap");
+
+}  // namespace
+
+class PlayerWindowTest : public QObject {
+  Q_OBJECT
+
+  std::unique_ptr<PlayerWindow> window_;
+  QTemporaryDir dir_;
+
+  QToolButton* button(const char* name) { return window_->findChild<QToolButton*>(name); }
+
+private slots:
+  void initTestCase() {
+    if (!defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    window_ = std::make_unique<PlayerWindow>(playback::loadDefaultHeadRig());
+    window_->resize(1100, 700);
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+  }
+
+  void loadPlayReset() {
+    QSignalSpy opened(window_.get(), &PlayerWindow::fileOpened);
+    QVERIFY(window_->openFile(kDemo));
+    QCOMPARE(opened.count(), 1);
+    QCOMPARE(window_->playback().currentFrame(), 0);
+    QVERIFY(window_->playback().frameCount() > 200);
+    QVERIFY(window_->windowTitle().contains("crying.fap"));
+
+    QToolButton* play = button("playButton");
+    QVERIFY(play && play->isEnabled());
+    QTest::mouseClick(play, Qt::LeftButton);
+    QVERIFY(window_->playing());
+    QTRY_VERIFY_WITH_TIMEOUT(window_->playback().currentFrame() >= 5, 20000);
+    QVERIFY(window_->viewport().renderCount() > 0);
+    qInfo("playing: frame %d after %lld renders, %.1f fps on screen", window_->playback().currentFrame(),
+          window_->viewport().renderCount(), window_->renderedFramesPerSecond());
+    QVERIFY(window_->timeline().value() > 0);
+
+    QTest::mouseClick(button("resetButton"), Qt::LeftButton);
+    QVERIFY(!window_->playing());
+    QCOMPARE(window_->playback().currentFrame(), 0);
+    QCOMPARE(window_->playback().currentTime(), 0.0);
+    QCOMPARE(window_->timeline().value(), 0);
+    QCOMPARE(window_->playback().producer().particleCount(), 0);
+    const playback::FrameView& view = window_->playback().view();
+    QVERIFY(*view.positions == window_->rig().head.positions);  // neutral
+    QVERIFY(!view.surface && !view.trails && !view.particles);
+  }
+
+  // Space toggles Play/Pause; the tears run while playing into the crying part.
+  void spacePlaysAndPauses() {
+    QVERIFY(window_->openFile(kDemo));
+    window_->seek(4.0);
+    // Xvfb has no window manager to hand out the focus: make the window Qt's active one.
+    window_->activateWindow();
+    QApplication::setActiveWindow(window_.get());
+    QCOMPARE(QApplication::activeWindow(), window_.get());
+    QTest::keyClick(window_.get(), Qt::Key_Space);
+    QVERIFY(window_->playing());
+    const int from = window_->playback().currentFrame();
+    QTRY_VERIFY_WITH_TIMEOUT(window_->playback().currentFrame() >= from + 3, 20000);
+    QTest::keyClick(window_.get(), Qt::Key_Space);
+    QVERIFY(!window_->playing());
+    QVERIFY(window_->playback().producer().particleCount() > 0);
+  }
+
+  void badFileShowsDialogAndKeepsAnimation() {
+    QVERIFY(window_->openFile(kDemo));
+    window_->seek(5.0);
+    const int frames = window_->playback().frameCount();
+    const QString bad = dir_.filePath("broken.fap");
+    std::ofstream(bad.toStdString()) << "2.1 broken 22 1\n1 1 1\n";
+    QSignalSpy failed(window_.get(), &PlayerWindow::openFailed);
+    QVERIFY(!window_->openFile(bad));
+    QCOMPARE(failed.count(), 1);
+    QVERIFY(failed.front().front().toString().startsWith(bad + ":2"));
+    auto* dialog = window_->findChild<QMessageBox*>("openErrorDialog");
+    QVERIFY(dialog);
+    QTRY_VERIFY(dialog->isVisible());
+    QVERIFY(dialog->text().contains("broken.fap") && dialog->text().contains("line 2"));
+    dialog->accept();
+    QCOMPARE(window_->playback().frameCount(), frames);
+    QCOMPARE(QString::fromStdString(window_->playback().path()), kDemo);
+    QVERIFY(window_->windowTitle().contains("crying.fap"));
+    QVERIFY(qAbs(window_->playback().currentTime() - 5.0) < 1e-9);
+  }
+
+  void dropOpensFile() {
+    const QString short_ = dir_.filePath("short.fap");
+    std::string mask;
+    for (int fap = 1; fap <= 68; ++fap) mask += std::string(fap > 1 ? " " : "") + (fap == 19 ? "1" : "0");
+    std::ofstream(short_.toStdString()) << "2.1 short 22 3\n" << mask << "\n0 100\n" << mask << "\n1 200\n" << mask << "\n2 300\n";
+    QMimeData mime;
+    mime.setUrls({QUrl::fromLocalFile(short_)});
+    QDragEnterEvent enter(QPoint(50, 50), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(window_.get(), &enter);
+    QVERIFY(enter.isAccepted());
+    QDropEvent drop(QPointF(50, 50), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(window_.get(), &drop);
+    QTRY_COMPARE(QString::fromStdString(window_->playback().path()), short_);
+    QCOMPARE(window_->playback().frameCount(), 3);
+    QVERIFY(!window_->playback().hasTears());
+  }
+
+  void togglesAndParametersReachPlayback() {
+    QVERIFY(window_->openFile(kDemo));
+    window_->seek(6.0);
+    QVERIFY(!window_->playback().scene().particles);
+    window_->effects().particles()->click();
+    QVERIFY(window_->playback().scene().particles);
+    QVERIFY(window_->playback().view().particles);
+    window_->effects().surface()->click();
+    QVERIFY(!window_->playback().view().surface);
+
+    QSignalSpy edited(&window_->parameters(), &TearParametersPanel::edited);
+    window_->parameters().spinBox("adhesion")->setValue(80);
+    QTRY_COMPARE(edited.count(), 1);
+    QCOMPARE(window_->playback().scene().simulation.at("adhesion"), 80.0);
+    QCOMPARE(window_->playback().currentFrame(), 132);  // replayed back to where it was
+    window_->parameters().thesisPreset()->click();
+    QVERIFY(window_->playback().scene().simulation.empty());
+  }
+};
+
+QTEST_MAIN(PlayerWindowTest)
+#include "PlayerWindowTest.moc"

@@ -1,0 +1,109 @@
+// lacrima-player --render run as a process (under xvfb-run): a short animation gives one PNG
+// per frame and a contact sheet, progress on stderr; a bad file and a missing display fail
+// with a clear message.
+#include <lacrima/FapWriter.h>
+#include <lacrima/FapTable.h>
+#include <lacrima/rig/DefaultHead.h>
+
+#include <QImage>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <fstream>
+
+using namespace lacrima;
+
+namespace {
+
+const QString kPlayer = QStringLiteral(LACRIMA_BIN_DIR "/lacrima-player");
+
+struct Run {
+  int exitCode = -1;
+  QString out, err;
+};
+
+Run run(const QStringList& arguments, const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment()) {
+  QProcess process;
+  process.setProcessEnvironment(environment);
+  process.start(kPlayer, arguments);
+  Run r;
+  if (!process.waitForFinished(300000)) {
+    process.kill();
+    return r;
+  }
+  r.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
+  r.out = QString::fromLocal8Bit(process.readAllStandardOutput());
+  r.err = QString::fromLocal8Bit(process.readAllStandardError());
+  return r;
+}
+
+}  // namespace
+
+class RenderCliTest : public QObject {
+  Q_OBJECT
+
+  QTemporaryDir dir_;
+  QString animation_;
+
+private slots:
+  void initTestCase() {
+    if (!defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    QVERIFY(dir_.isValid());
+    // 14 frames: the jaw opens while tears appear at both eyes.
+    FapAnimation a;
+    a.name = "short";
+    a.fps = 22;
+    for (int f = 0; f < 14; ++f) {
+      FapValues v{};
+      v[static_cast<std::size_t>(channelIndex(*fapByName("open_jaw")))] = static_cast<float>(30 * f);
+      v[static_cast<std::size_t>(channelIndex(kTearLeftFap))] = v[static_cast<std::size_t>(channelIndex(kTearRightFap))] = 20;
+      a.frames.push_back(v);
+    }
+    animation_ = dir_.filePath("short.fap");
+    FapWriter::save(a, animation_.toStdString());
+  }
+
+  void writesFramesAndContactSheet() {
+    const QString out = dir_.filePath("render");
+    const Run r = run({"--render", out, "--size", "320x240", animation_});
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    for (int f = 0; f < 14; ++f) {
+      const QImage image(out + QStringLiteral("/frame_%1.png").arg(f, 4, 10, QLatin1Char('0')));
+      QVERIFY2(!image.isNull(), qPrintable(QStringLiteral("frame %1 missing").arg(f)));
+      QCOMPARE(image.size(), QSize(320, 240));
+    }
+    QVERIFY(!QFile::exists(out + "/frame_0014.png"));
+    const QImage sheet(out + "/contact_sheet.png");
+    QVERIFY(!sheet.isNull());
+    QVERIFY(sheet.width() > 4 * 320 && sheet.height() > 3 * 240);  // 12 labelled thumbnails, 4 by 3
+    QVERIFY2(r.err.contains("14/14"), qPrintable(r.err));           // progress reached the end
+    QVERIFY(r.out.contains("contact_sheet.png"));
+    // Frames differ: the jaw moves and the tears grow.
+    QVERIFY(QImage(out + "/frame_0000.png") != QImage(out + "/frame_0013.png"));
+  }
+
+  void badFileFailsNamingTheLine() {
+    const QString bad = dir_.filePath("bad.fap");
+    std::ofstream(bad.toStdString()) << "2.1 bad 22 1\n0 0 2\n";
+    const Run r = run({"--render", dir_.filePath("bad-out"), bad});
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.contains(bad + ":2"), qPrintable(r.err));
+  }
+
+  void noDisplaySuggestsXvfb() {
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.remove("DISPLAY");
+    const Run r = run({"--render", dir_.filePath("no-display"), animation_}, environment);
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.contains("xvfb-run"), qPrintable(r.err));
+  }
+
+  void wrongUsage() {
+    QCOMPARE(run({"--render", dir_.filePath("x"), "--size", "big", animation_}).exitCode, 2);
+    QCOMPARE(run({"--render", dir_.filePath("x")}).exitCode, 2);
+  }
+};
+
+QTEST_GUILESS_MAIN(RenderCliTest)
+#include "RenderCliTest.moc"

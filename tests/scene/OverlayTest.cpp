@@ -1,0 +1,251 @@
+// The engine-free parts of the scene on the real default head (skipped when it is not fetched):
+// where the overlays apply (masks painted in uv space), the overlay layers made from the head's
+// textures, the static occlusion, and the orbit camera's framing and mouse mapping.
+#include <lacrima/rig/DefaultHead.h>
+#include <lacrima/scene/HeadOcclusion.h>
+#include <lacrima/scene/OrbitView.h>
+#include <lacrima/scene/OverlayMasks.h>
+#include <lacrima/scene/OverlayTextures.h>
+
+#include <QtTest>
+
+#include <cmath>
+#include <memory>
+
+using namespace lacrima;
+using namespace lacrima::scene;
+
+class OverlayTest : public QObject {
+  Q_OBJECT
+
+  std::unique_ptr<HeadMesh> head_;
+  EyeSphere left_, right_;
+
+  // The skin vertex nearest to `point`.
+  int skinVertexNear(const Eigen::Vector3f& point) const {
+    const HeadSubmesh* skin = head_->findSubmesh("skin");
+    int best = -1;
+    float bestDistance = 1e30f;
+    for (int v = skin->firstVertex; v < skin->firstVertex + skin->vertexCount; ++v) {
+      const float d = (head_->positions.col(v) - point).squaredNorm();
+      if (d < bestDistance) {
+        bestDistance = d;
+        best = v;
+      }
+    }
+    return best;
+  }
+
+private slots:
+  void initTestCase() {
+    if (!defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    head_ = std::make_unique<HeadMesh>(loadDefaultHead());
+    const auto l = eyeSphere(*head_, "eye_l"), r = eyeSphere(*head_, "eye_r");
+    QVERIFY(l && r);
+    left_ = *l;
+    right_ = *r;
+    QVERIFY(left_.centre.x() > 0 && right_.centre.x() < 0);
+    QVERIFY(left_.radius > 0.1f && left_.radius < 0.2f);  // an eyeball is about 12 mm across
+  }
+
+  void periocularWeightsSurroundTheEyesOnly() {
+    const OverlayVertexWeights w = overlayVertexWeights(*head_);
+    QCOMPARE(w.periocular.size(), std::size_t(head_->vertexCount()));
+    for (const EyeSphere& eye : {left_, right_}) {
+      const float r = eye.radius;
+      // Lower lid and outer corner: full weight.
+      QCOMPARE(w.periocular[std::size_t(skinVertexNear(eye.centre + Eigen::Vector3f(0, -1.2f * r, r)))], 1.0f);
+      // Top of the head, chin, back of the head: none.
+      QCOMPARE(w.periocular[std::size_t(skinVertexNear(eye.centre + Eigen::Vector3f(0, 7 * r, 0)))], 0.0f);
+      QCOMPARE(w.periocular[std::size_t(skinVertexNear(eye.centre + Eigen::Vector3f(0, -8 * r, 0)))], 0.0f);
+      QCOMPARE(w.periocular[std::size_t(skinVertexNear(eye.centre + Eigen::Vector3f(0, 0, -8 * r)))], 0.0f);
+    }
+    // Only skin carries weights.
+    const HeadSubmesh* eye = head_->findSubmesh("eye_l");
+    for (int v = eye->firstVertex; v < eye->firstVertex + eye->vertexCount; ++v) QCOMPARE(w.periocular[std::size_t(v)], 0.0f);
+    for (float x : w.periocular) QVERIFY(x >= 0 && x <= 1);
+  }
+
+  void cheekWeightsSitBelowTheEyes() {
+    const OverlayVertexWeights w = overlayVertexWeights(*head_);
+    for (const EyeSphere& eye : {left_, right_}) {
+      const float outwards = eye.centre.x() > 0 ? 1.0f : -1.0f;
+      const int cheek = skinVertexNear(eye.centre + Eigen::Vector3f(0.3f * eye.radius * outwards, -2.4f * eye.radius, eye.radius));
+      QVERIFY2(w.cheek[std::size_t(cheek)] > 0.8f, "no blush on the cheekbone");
+      QCOMPARE(w.cheek[std::size_t(skinVertexNear(eye.centre + Eigen::Vector3f(0, 5 * eye.radius, eye.radius)))], 0.0f);
+    }
+  }
+
+  void maskIsPaintedInUvSpace() {
+    const OverlayVertexWeights w = overlayVertexWeights(*head_);
+    const QImage mask = paintOverlayMask(*head_, w, 256);
+    QCOMPARE(mask.size(), QSize(256, 256));
+    QCOMPARE(mask.format(), QImage::Format_RGBA8888);
+    // At the uv of a vertex the mask holds (about) that vertex's weight.
+    auto at = [&](int v) {
+      const Eigen::Vector2f uv = head_->uvs.col(v) * 256.0f;
+      return QColor(mask.pixel(std::clamp(int(uv.x()), 0, 255), std::clamp(int(uv.y()), 0, 255)));
+    };
+    const int lid = skinVertexNear(left_.centre + Eigen::Vector3f(0, -1.2f * left_.radius, left_.radius));
+    const int top = skinVertexNear(left_.centre + Eigen::Vector3f(0, 7 * left_.radius, 0));
+    QVERIFY2(at(lid).red() > 200, "the lower lid is not in the redness mask");
+    QCOMPARE(at(top).red(), 0);
+    // Some texels of each kind, most texels untouched (the body's uv area, the scalp).
+    int red = 0, green = 0;
+    for (int y = 0; y < 256; ++y)
+      for (int x = 0; x < 256; ++x) {
+        const QColor c = mask.pixelColor(x, y);
+        red += c.red() > 128;
+        green += c.green() > 128;
+      }
+    QVERIFY(red > 50 && red < 256 * 256 / 10);
+    QVERIFY(green > 20 && green < 256 * 256 / 10);
+  }
+
+  void headsWithoutEyesGetNoMask() {
+    HeadMesh bare = *head_;
+    bare.submeshes.erase(std::remove_if(bare.submeshes.begin(), bare.submeshes.end(),
+                                        [](const HeadSubmesh& s) { return s.name.rfind("eye_", 0) == 0; }),
+                         bare.submeshes.end());
+    const OverlayVertexWeights w = overlayVertexWeights(bare);
+    for (float x : w.periocular) QCOMPARE(x, 0.0f);
+    const QImage mask = paintOverlayMask(bare, w, 64);
+    QCOMPARE(mask.pixelColor(32, 32), QColor(0, 0, 0));
+  }
+
+  void overlayLayersAreRedderAndWetter() {
+    QImage skin(64, 64, QImage::Format_RGBA8888);
+    skin.fill(QColor(220, 180, 160));
+    const QImage irritated = makeIrritatedSkin(skin);
+    QCOMPARE(irritated.size(), skin.size());
+    for (int y = 0; y < 64; y += 7)
+      for (int x = 0; x < 64; x += 7) {
+        const QColor c = irritated.pixelColor(x, y);
+        QVERIFY(c.red() < 220 && c.green() < 180);                                // darker
+        QVERIFY(double(c.red()) / c.green() > 220.0 / 180.0 * 1.15);              // redder
+      }
+    QImage eye(64, 64, QImage::Format_RGBA8888);
+    eye.fill(QColor(235, 232, 228));  // sclera
+    const QImage wet = makeWetEye(eye);
+    double redShift = 0;
+    for (int y = 0; y < 64; ++y)
+      for (int x = 0; x < 64; ++x) {
+        const QColor c = wet.pixelColor(x, y);
+        redShift += c.red() - c.green();
+      }
+    QVERIFY2(redShift / (64 * 64) > 15, "the sclera did not turn pink");
+    QCOMPARE(makeIrritatedSkin(QImage()).size(), QSize(1, 1));  // a head without a texture
+  }
+
+  void islandPaddingReplacesBordersAndFillsAround() {
+    // One square uv island over [4, 12) texels of a 16 x 16 texture: green inside with a red
+    // painted border ring, blue outside.
+    HeadMesh quad;
+    quad.positions = Eigen::Matrix3Xf::Zero(3, 4);
+    quad.normals = Eigen::Matrix3Xf::Zero(3, 4);
+    quad.uvs.resize(2, 4);
+    quad.uvs << 0.25f, 0.75f, 0.75f, 0.25f,
+                0.25f, 0.25f, 0.75f, 0.75f;
+    HeadSubmesh sub;
+    sub.name = "skin";
+    sub.vertexCount = 4;
+    sub.triangles = {Eigen::Vector3i(0, 1, 2), Eigen::Vector3i(0, 2, 3)};
+    QImage texture(16, 16, QImage::Format_RGBA8888);
+    texture.fill(QColor(0, 0, 255));
+    for (int y = 4; y < 12; ++y)
+      for (int x = 4; x < 12; ++x) {
+        const bool border = x == 4 || x == 11 || y == 4 || y == 11;
+        texture.setPixelColor(x, y, border ? QColor(255, 0, 0) : QColor(0, 200, 0));
+      }
+    const QImage padded = padUvIslands(texture, quad, sub, 2);
+    QCOMPARE(padded.size(), texture.size());
+    QCOMPARE(padded.pixelColor(8, 8), QColor(0, 200, 0));   // inside: untouched
+    QCOMPARE(padded.pixelColor(4, 8), QColor(0, 200, 0));   // the painted border: replaced
+    QCOMPARE(padded.pixelColor(11, 11), QColor(0, 200, 0));
+    QCOMPARE(padded.pixelColor(2, 8), QColor(0, 200, 0));   // grown outwards
+    QCOMPARE(padded.pixelColor(0, 0), QColor(0, 0, 255));   // far outside: kept
+    // The real head: the skin texture keeps its colours inside the islands.
+    const HeadSubmesh* skin = head_->findSubmesh("skin");
+    const QImage original(QString::fromStdString(head_->materials[std::size_t(skin->material)].diffuseTexture));
+    QVERIFY(!original.isNull());
+    const QImage skinPadded = padUvIslands(original, *head_, *skin);
+    const QImage reference = original.convertToFormat(QImage::Format_RGBA8888);
+    int same = 0, total = 0;
+    for (const Eigen::Vector3i& t : skin->triangles) {
+      const Eigen::Vector2f uv = (head_->uvs.col(t[0]) + head_->uvs.col(t[1]) + head_->uvs.col(t[2])) / 3.0f;
+      const int x = std::clamp(int(uv.x() * reference.width()), 0, reference.width() - 1);
+      const int y = std::clamp(int(uv.y() * reference.height()), 0, reference.height() - 1);
+      same += skinPadded.pixelColor(x, y) == reference.pixelColor(x, y);
+      ++total;
+    }
+    QVERIFY2(same > total * 9 / 10, "padding changed the inside of the islands");
+  }
+
+  void occlusionDarkensCavitiesNotTheFace() {
+    const std::vector<float> ao = headOcclusion(*head_);
+    QCOMPARE(ao.size(), std::size_t(head_->vertexCount()));
+    for (float a : ao) QVERIFY(a >= 0.25f && a <= 1.0f);
+    // Creases (nostrils, lips, ears) are darker; the face looking at the camera stays open.
+    const HeadSubmesh* skin = head_->findSubmesh("skin");
+    int dark = 0, facing = 0;
+    double facingSum = 0;
+    for (int v = skin->firstVertex; v < skin->firstVertex + skin->vertexCount; ++v) {
+      dark += ao[std::size_t(v)] < 0.8f;
+      if (head_->normals(2, v) > 0.8f && head_->positions(2, v) > left_.centre.z()) {  // the front of the face
+        facingSum += ao[std::size_t(v)];
+        ++facing;
+      }
+    }
+    QVERIFY(dark > 20);
+    QVERIFY(facingSum / facing > 0.93);
+    // The forehead is open: not occluded.
+    QVERIFY(ao[std::size_t(skinVertexNear(left_.centre + Eigen::Vector3f(-left_.centre.x(), 5 * left_.radius, left_.radius)))] > 0.95f);
+    // The back of the mouth is darker than the front teeth.
+    const HeadSubmesh* teeth = head_->findSubmesh("teeth_upper");
+    float front = 0, back = 1;
+    for (int v = teeth->firstVertex; v < teeth->firstVertex + teeth->vertexCount; ++v) {
+      front = std::max(front, ao[std::size_t(v)]);
+      back = std::min(back, ao[std::size_t(v)]);
+    }
+    QVERIFY(front > back + 0.3f);
+  }
+
+  void framingLooksAtTheFace() {
+    const OrbitView view = OrbitView::framing(*head_);
+    const Eigen::Vector3f mid = 0.5f * (left_.centre + right_.centre);
+    // The target is on the mid line a little below the eyes; the camera is in front of the face.
+    QVERIFY(std::abs(view.target.x() - mid.x()) < 1e-3);
+    QVERIFY(view.target.y() < mid.y() && view.target.y() > mid.y() - 0.5);
+    QVERIFY(view.eye().z() > head_->boundsMax().z());
+    // Looking at the target: the camera's -z axis points from the eye to the target.
+    const Eigen::Vector3d forward = -(view.orientation() * Eigen::Vector3d::UnitZ());
+    QVERIFY((forward - (view.target - view.eye()).normalized()).norm() < 1e-9);
+  }
+
+  void orbitZoomAndPanStayInRange() {
+    OrbitView view = OrbitView::framing(*head_);
+    const OrbitView start = view;
+    view.orbit(0, 500);
+    QCOMPARE(view.pitchDegrees, 85.0);
+    view.orbit(720 + 10, -1000);
+    QCOMPARE(view.pitchDegrees, -85.0);
+    QVERIFY(std::abs(view.yawDegrees - std::remainder(start.yawDegrees + 10, 360.0)) < 1e-9);
+    view.zoom(1e-9);
+    QCOMPARE(view.distance, view.minDistance);
+    view.zoom(1e9);
+    QCOMPARE(view.distance, view.maxDistance);
+    view.zoom(-1);
+    view.zoom(std::nan(""));
+    QCOMPARE(view.distance, view.maxDistance);
+    // Panning moves the target across the view, by the view's height per unit.
+    view = start;
+    view.pan(0.5, 0);
+    const Eigen::Vector3d right = view.orientation() * Eigen::Vector3d::UnitX();
+    const double viewHeight = 2 * start.distance * std::tan(start.fovYDegrees * M_PI / 360);
+    QVERIFY(((view.target - start.target) - 0.5 * viewHeight * right).norm() < 1e-9);
+    QVERIFY(std::abs((view.eye() - view.target).norm() - start.distance) < 1e-9);
+  }
+};
+
+QTEST_GUILESS_MAIN(OverlayTest)
+#include "OverlayTest.moc"
