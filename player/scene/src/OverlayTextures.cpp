@@ -59,10 +59,11 @@ QImage rgba(const QImage& image) {
   return image.convertToFormat(QImage::Format_RGBA8888);
 }
 
-}  // namespace
-
-QImage makeIrritatedSkin(const QImage& skinDiffuse) {
-  QImage out = rgba(skinDiffuse);
+// Calls shade(u, v, linear rgb) for every texel of `image` (uv at texel centres) and stores
+// the linear colour it leaves there; alpha is kept.
+template <typename Shade>
+QImage shadeTexels(const QImage& image, Shade shade) {
+  QImage out = rgba(image);
   const auto& lin = linearTable();
   const int w = out.width(), h = out.height();
   for (int y = 0; y < h; ++y) {
@@ -70,49 +71,47 @@ QImage makeIrritatedSkin(const QImage& skinDiffuse) {
     const float v = (static_cast<float>(y) + 0.5f) / static_cast<float>(h);
     for (int x = 0; x < w; ++x) {
       const float u = (static_cast<float>(x) + 0.5f) / static_cast<float>(w);
-      const float mottle = 0.65f * valueNoise(u, v, 20, 1) + 0.35f * valueNoise(u, v, 60, 2);
-      const float m = 0.82f + 0.30f * mottle;
       uchar* p = row + 4 * x;
-      p[0] = encode(lin[p[0]] * 0.92f);
-      p[1] = encode(lin[p[1]] * 0.56f * m);
-      p[2] = encode(lin[p[2]] * 0.66f * m);
+      std::array<float, 3> c{lin[p[0]], lin[p[1]], lin[p[2]]};
+      shade(u, v, c);
+      for (int k = 0; k < 3; ++k) p[k] = encode(c[static_cast<std::size_t>(k)]);
     }
   }
   return out;
 }
 
+}  // namespace
+
+QImage makeIrritatedSkin(const QImage& skinDiffuse) {
+  return shadeTexels(skinDiffuse, [](float u, float v, std::array<float, 3>& c) {
+    const float mottle = 0.65f * valueNoise(u, v, 20, 1) + 0.35f * valueNoise(u, v, 60, 2);
+    const float m = 0.82f + 0.30f * mottle;
+    c[0] *= 0.92f;
+    c[1] *= 0.56f * m;
+    c[2] *= 0.66f * m;
+  });
+}
+
 QImage makeWetEye(const QImage& eyeDiffuse) {
-  QImage out = rgba(eyeDiffuse);
-  const auto& lin = linearTable();
-  const int w = out.width(), h = out.height();
-  for (int y = 0; y < h; ++y) {
-    uchar* row = out.scanLine(y);
-    const float v = (static_cast<float>(y) + 0.5f) / static_cast<float>(h);
-    for (int x = 0; x < w; ++x) {
-      const float u = (static_cast<float>(x) + 0.5f) / static_cast<float>(w);
-      uchar* p = row + 4 * x;
-      float r = lin[p[0]], g = lin[p[1]], b = lin[p[2]];
-      const float high = std::max({r, g, b}), low = std::min({r, g, b});
-      const float saturation = high > 0 ? (high - low) / high : 0;
-      // Sclera: bright and nearly grey.
-      const float sclera = std::clamp((0.30f - saturation) / 0.12f, 0.0f, 1.0f) * std::clamp((high - 0.25f) / 0.2f, 0.0f, 1.0f);
-      // Vessels: where two octaves of noise cross 0.5, thin lines; thicker at low frequency.
-      const float ridge = std::abs(valueNoise(u, v, 14, 7) - 0.5f) + 0.5f * std::abs(valueNoise(u, v, 37, 8) - 0.5f);
-      const float vessel = std::clamp(1.0f - ridge / 0.045f, 0.0f, 1.0f);
-      const float pink = 0.55f * sclera;
-      r = r * (1 - pink) + r * 0.98f * pink;
-      g = g * (1 - pink) + g * 0.70f * pink;
-      b = b * (1 - pink) + b * 0.70f * pink;
-      const float redVessel = 0.75f * vessel * sclera;
-      r = r * (1 - redVessel) + 0.55f * redVessel;
-      g = g * (1 - redVessel) + 0.06f * redVessel;
-      b = b * (1 - redVessel) + 0.06f * redVessel;
-      p[0] = encode(r * 1.04f);
-      p[1] = encode(g * 1.04f);
-      p[2] = encode(b * 1.04f);
-    }
-  }
-  return out;
+  return shadeTexels(eyeDiffuse, [](float u, float v, std::array<float, 3>& c) {
+    float r = c[0], g = c[1], b = c[2];
+    const float high = std::max({r, g, b}), low = std::min({r, g, b});
+    const float saturation = high > 0 ? (high - low) / high : 0;
+    // Sclera: bright and nearly grey.
+    const float sclera = std::clamp((0.30f - saturation) / 0.12f, 0.0f, 1.0f) * std::clamp((high - 0.25f) / 0.2f, 0.0f, 1.0f);
+    // Vessels: where two octaves of noise cross 0.5, thin lines; thicker at low frequency.
+    const float ridge = std::abs(valueNoise(u, v, 14, 7) - 0.5f) + 0.5f * std::abs(valueNoise(u, v, 37, 8) - 0.5f);
+    const float vessel = std::clamp(1.0f - ridge / 0.045f, 0.0f, 1.0f);
+    const float pink = 0.55f * sclera;
+    r = r * (1 - pink) + r * 0.98f * pink;
+    g = g * (1 - pink) + g * 0.70f * pink;
+    b = b * (1 - pink) + b * 0.70f * pink;
+    const float redVessel = 0.75f * vessel * sclera;
+    r = r * (1 - redVessel) + 0.55f * redVessel;
+    g = g * (1 - redVessel) + 0.06f * redVessel;
+    b = b * (1 - redVessel) + 0.06f * redVessel;
+    c = {r * 1.04f, g * 1.04f, b * 1.04f};
+  });
 }
 
 QImage padUvIslands(const QImage& texture, const HeadMesh& head, const HeadSubmesh& submesh, int grow) {
