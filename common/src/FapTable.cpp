@@ -8,6 +8,10 @@
 namespace lacrima {
 namespace {
 
+// Head rotations edit over +-30 degrees (AU = 1e-5 rad). Greta's sliders stop at +-1860 AU,
+// about one degree: too little for a nod or a sob.
+constexpr int kHeadTurn = 52360;
+
 // Positive motion as the standard states it. Kept symbolic so the table reads like the
 // standard and so compile-time checks can tie it to FapMotion; converted to vectors once.
 enum class Dir {
@@ -145,11 +149,11 @@ constexpr std::array<Row, kChannelCount> kRows{{
      "Moves the body of the tongue vertically; positive raises it."},
     {47, "tongue_roll", AU, U, Curl, Zero, Tongue, "6.3;6.4", 512, -300, 300,
      "Curls both sides of the tongue upward into a trough."},
-    {48, "head_pitch", AU, B, Rotation, PitchDown, Head, "7.1", 170, -1860, 1860,
+    {48, "head_pitch", AU, B, Rotation, PitchDown, Head, "7.1", 170, -kHeadTurn, kHeadTurn,
      "Nods the head about the top of the spine; positive tips the face down."},
-    {49, "head_yaw", AU, B, Rotation, YawLeft, Head, "7.1", 170, -1860, 1860,
+    {49, "head_yaw", AU, B, Rotation, YawLeft, Head, "7.1", 170, -kHeadTurn, kHeadTurn,
      "Turns the head about the top of the spine; positive faces toward the face's left."},
-    {50, "head_roll", AU, B, Rotation, RollRight, Head, "7.1", 170, -1860, 1860,
+    {50, "head_roll", AU, B, Rotation, RollRight, Head, "7.1", 170, -kHeadTurn, kHeadTurn,
      "Tilts the head about the top of the spine; positive leans its top to the face's right."},
     {51, "lower_t_midlip_o", MNS, B, Translation, Down, OuterLips, "8.1", 2, -600, 600,
      "Moves the centre of the upper lip's outer edge; positive lowers it."},
