@@ -226,8 +226,6 @@ int runTears(int argc, char** argv) {
   simOptions.maxSubstepSeconds = o.maxStepMs / 1000;
   simOptions.lambdaCfl *= o.substepFactor;
   simOptions.lambdaAcceleration *= o.substepFactor;
-  if (const char* a = std::getenv("LAMBDA_A")) simOptions.lambdaAcceleration = std::atof(a);
-  if (const char* a = std::getenv("PROBE")) simOptions.collisionProbeKernels = std::atof(a);
   TearPipeline pipeline(*scene, o.settings, simOptions);
   TearSimulation& sim = pipeline.simulation();
   const int left = (o.particles + 1) / 2, right = o.particles / 2;

@@ -1,19 +1,24 @@
 // lacrima-bench tears-sweep: what accuracy costs in time. One fine reference run of the full tear
-// pipeline on the cheek sheet, then runs that each coarsen one quantity (sub-step safety factor,
-// kernel size, marching-cubes cube size, neighbour structure); each is reported with its error
-// against the reference beside its milliseconds per frame, as a table, a CSV file and a log-log
-// PNG plot.
+// pipeline on the cheek sheet (or the rigged default head), then runs that each coarsen one
+// quantity (sub-step safety factor, kernel size, marching-cubes cube size, neighbour structure,
+// pressure solver); each is reported with its error against the reference beside its
+// milliseconds per frame, as a table, a CSV file and a log-log PNG plot.
 //
 // Errors, in units of the reference particle radius so they read as "how many drop radii off":
 //   particle RMS  positions after the last frame, matched by particle id (ids are assigned in
-//                 emission order, so the same commanded counts give the same ids);
+//                 emission order, so the same commanded counts give the same ids). Drops are
+//                 chaotic (where a drop splits, or which way a particle goes round another, flips
+//                 with rounding), so this grows with time even between two fine runs;
+//   centroid      distance between each eye's mean particle position and the reference's,
+//                 averaged over the eyes: how far the tears ran, insensitive to that chaos;
 //   surface       symmetric mean distance between the two final tear surfaces' vertices and the
 //                 nearest vertex of the other (a Chamfer distance; vertices of the fine reference
 //                 are dense enough that this approximates point-to-surface distance), plus the
 //                 relative surface area difference.
 // The cube-size series runs extra meshers on the reference simulation, so its particles are the
 // reference's and its error is the surface discretisation alone; its ms per frame is that
-// simulation + trails + its own mesher.
+// simulation + trails + its own mesher. The reference is WCSPH: DFSPH rows include the model's
+// difference (an incompressible fluid against one with a 0.2 m/s speed of sound).
 #include "SweepPlot.h"
 #include "TearsPipeline.h"
 
@@ -25,7 +30,9 @@
 #include <cstdlib>
 #include <fstream>
 #include <limits>
+#include <array>
 #include <map>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -40,17 +47,21 @@ struct Options {
   int particles = 200;
   int frames = 66;  // 3 s at 22 fps: long enough for drops to run down the sheet
   double fps = 22;
+  bool head = false;  // the rigged default head instead of the cheek sheet
   std::string csv, png;
 };
 
 void printHelp(FILE* out) {
   std::fprintf(out,
-               "usage: lacrima-bench tears-sweep [--particles N] [--frames F] [--csv FILE] [--png FILE]\n\n"
+               "usage: lacrima-bench tears-sweep [--particles N] [--frames F] [--head sheet|default]\n"
+               "                                 [--csv FILE] [--png FILE]\n\n"
                "Error against a fine reference run beside ms per frame of the full tear pipeline\n"
-               "(simulation + surface + trails) on the cheek sheet, sweeping the sub-step safety\n"
-               "factor, the kernel size, the cube size and the neighbour structure.\n\n"
+               "(simulation + surface + trails) on the cheek sheet or the default head, sweeping the\n"
+               "sub-step safety factor, the kernel size, the cube size, the neighbour structure and\n"
+               "the pressure solver (WCSPH, DFSPH).\n\n"
                "  --particles N  particles in all (default 200)\n"
                "  --frames F     frames at 22 fps (default 66)\n"
+               "  --head H       sheet (default) or default: the cached default head with the rig's sources\n"
                "  --csv FILE     also write the table as CSV\n"
                "  --png FILE     also draw error against ms per frame (log axes) as a PNG\n");
 }
@@ -72,6 +83,13 @@ int parse(int argc, char** argv, Options& o) {
         return 2;
       }
       (arg == "--particles" ? o.particles : o.frames) = static_cast<int>(v);
+    } else if (arg == "--head" && hasValue) {
+      const std::string v = argv[++i];
+      if (v != "sheet" && v != "default") {
+        std::fprintf(stderr, "lacrima-bench tears-sweep: --head takes sheet or default\n");
+        return 2;
+      }
+      o.head = v == "default";
     } else if ((arg == "--csv" || arg == "--png") && hasValue) {
       (arg == "--csv" ? o.csv : o.png) = argv[++i];
     } else {
@@ -88,20 +106,23 @@ struct Variant {
   std::string series, label;
   double lambdaScale = 1, kernelScale = 1, cubeScale = 1;
   NeighbourMethod neighbours = NeighbourMethod::Grid;
+  PressureSolver solver = PressureSolver::Wcsph;
 };
 
 // What a run leaves behind for the comparison.
 struct RunResult {
   double msPerFrame = 0;  // mean over frames of the full pipeline
+  double substepsPerFrame = 0;
   std::map<std::uint64_t, Eigen::Vector3d> particles;
+  std::array<Eigen::Vector3d, 2> centroid{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
   std::vector<Eigen::Vector3d> surfaceVertices;
   double surfaceArea = 0;
 };
 
 struct Row {
   Variant variant;
-  double msPerFrame = 0;
-  double particleRms = 0, surfaceError = 0, areaDifference = 0;
+  double msPerFrame = 0, substepsPerFrame = 0;
+  double particleRms = 0, centroidError = 0, surfaceError = 0, areaDifference = 0;
   int matched = 0;
   bool surfaceSeries = false;  // the plotted error is the surface error
 };
@@ -119,6 +140,7 @@ TearSettings settingsFor(const Variant& v) {
 SimulationOptions optionsFor(const Variant& v) {
   SimulationOptions o;
   o.neighbours = v.neighbours;
+  o.pressureSolver = v.solver;
   o.lambdaCfl = kDefaultOptions.lambdaCfl * v.lambdaScale;
   o.lambdaAcceleration = kDefaultOptions.lambdaAcceleration * v.lambdaScale;
   // Explicit viscosity overshoots past k dt = 1 (AdaptiveTimeStep.h): scale it down, never up.
@@ -165,16 +187,27 @@ RunResult run(const TearScene& scene, const Variant& v, const Options& o, const 
   }
   RunResult r;
   r.msPerFrame = totalMs / o.frames;
+  r.substepsPerFrame = static_cast<double>(sim.counters().substeps) / o.frames;
   const ParticleSet& p = sim.particles();
-  for (int i = 0; i < p.size(); ++i)
-    r.particles.emplace(p.id[static_cast<std::size_t>(i)], p.position[static_cast<std::size_t>(i)]);
+  std::array<int, 2> count{0, 0};
+  for (int i = 0; i < p.size(); ++i) {
+    const auto s = static_cast<std::size_t>(i);
+    r.particles.emplace(p.id[s], p.position[s]);
+    const auto e = static_cast<std::size_t>(p.eye[s]);
+    r.centroid[e] += p.position[s];
+    ++count[e];
+  }
+  for (std::size_t e = 0; e < 2; ++e)
+    if (count[e] > 0) r.centroid[e] /= count[e];
   capture(pipeline.mesher().surface(), r);
   if (extras) {
     extras->clear();
     for (std::size_t k = 0; k < meshers.size(); ++k) {
       RunResult e;
       e.msPerFrame = (baseMs + extraMs[k]) / o.frames;
+      e.substepsPerFrame = r.substepsPerFrame;
       e.particles = r.particles;
+      e.centroid = r.centroid;
       capture(meshers[k]->surface(), e);
       extras->push_back(std::move(e));
     }
@@ -226,7 +259,8 @@ double meanNearest(const std::vector<Eigen::Vector3d>& from, const NearestVertex
 }
 
 Row compare(const Variant& v, const RunResult& r, const RunResult& ref, double radius, double cell) {
-  Row row{v, r.msPerFrame, 0, 0, 0, 0, false};
+  Row row{v, r.msPerFrame, r.substepsPerFrame, 0, 0, 0, 0, 0, false};
+  row.centroidError = 0.5 * ((r.centroid[0] - ref.centroid[0]).norm() + (r.centroid[1] - ref.centroid[1]).norm()) / radius;
   double sum = 0;
   for (const auto& [id, x] : r.particles) {
     const auto it = ref.particles.find(id);
@@ -250,30 +284,40 @@ Row compare(const Variant& v, const RunResult& r, const RunResult& ref, double r
 int runTearsSweep(int argc, char** argv) {
   Options o;
   if (const int status = parse(argc, argv, o)) return status == 1 ? 0 : status;
-  const TearScene scene = cheekScene();
+  std::optional<TearScene> loaded;
+  if (o.head) {
+    std::string why;
+    loaded = defaultHeadScene(why);
+    if (!loaded) {
+      std::printf("tears-sweep: skipping the default head: %s\n", why.c_str());
+      return 0;
+    }
+  } else {
+    loaded = cheekScene();
+  }
+  const TearScene& scene = *loaded;
 
   // The reference: the smallest sub-step and cube of the sweep, default kernel, grid.
   const double kFineLambda = 0.25, kFineCube = 0.25;
-  const Variant reference{"reference", "fine", kFineLambda, 1, kFineCube, NeighbourMethod::Grid};
+  const Variant reference{"reference", "fine", kFineLambda, 1, kFineCube, NeighbourMethod::Grid, PressureSolver::Wcsph};
   std::printf("tears-sweep: %d particles, %d frames at %g fps on the %s; reference: sub-step x%g, cube x%g ...\n",
               o.particles, o.frames, o.fps, scene.name.c_str(), kFineLambda, kFineCube);
   std::fflush(stdout);
   const std::vector<double> cubeScales = {0.5, 1, 2};
   std::vector<RunResult> cubeRuns;
   const RunResult ref = run(scene, reference, o, cubeScales, &cubeRuns);
-  const double radius = TearSimulation(scene.rest, scene.skinTriangles, settingsFor(reference),
-                                       [&] {
-                                         SimulationOptions s = optionsFor(reference);
-                                         s.headHeight = scene.headHeight;
-                                         return s;
-                                       }())
-                            .particleRadius();
+  const double radius = scene.simulate(settingsFor(reference), optionsFor(reference))->particleRadius();
   const double cell = 2 * radius;
 
   std::vector<Row> rows;
   rows.push_back(compare(reference, ref, ref, radius, cell));
-  for (double s : {0.5, 1.0, 2.0}) {
+  for (double s : {0.5, 1.0, 1.5, 2.0}) {
     const Variant v{"sub-step factor (lambda)", "x" + std::to_string(s).substr(0, 4), s, 1, 1, NeighbourMethod::Grid};
+    rows.push_back(compare(v, run(scene, v, o), ref, radius, cell));
+  }
+  for (double s : {0.5, 1.0, 1.5, 2.0}) {
+    const Variant v{"DFSPH, sub-step factor", "x" + std::to_string(s).substr(0, 4), s, 1, 1, NeighbourMethod::Grid,
+                    PressureSolver::Dfsph};
     rows.push_back(compare(v, run(scene, v, o), ref, radius, cell));
   }
   for (double s : {0.5, 0.75, 1.0, 1.5}) {
@@ -293,21 +337,24 @@ int runTearsSweep(int argc, char** argv) {
   }
 
   std::printf("  errors in reference particle radii (%.4g head units); ms = full pipeline per frame (mean)\n", radius);
-  std::printf("  %-26s %-7s %10s %14s %14s %10s %8s\n", "swept", "value", "ms/frame", "particle RMS", "surface err",
-              "area diff", "matched");
+  std::printf("  %-26s %-7s %10s %9s %13s %10s %12s %10s %8s\n", "swept", "value", "ms/frame", "substeps",
+              "particle RMS", "centroid", "surface err", "area diff", "matched");
   for (const Row& r : rows)
-    std::printf("  %-26s %-7s %10.3f %14.4g %14.4g %9.1f%% %8d\n", r.variant.series.c_str(), r.variant.label.c_str(),
-                r.msPerFrame, r.particleRms, r.surfaceError, 100 * r.areaDifference, r.matched);
+    std::printf("  %-26s %-7s %10.3f %9.1f %13.4g %10.4g %12.4g %9.1f%% %8d\n", r.variant.series.c_str(),
+                r.variant.label.c_str(), r.msPerFrame, r.substepsPerFrame, r.particleRms, r.centroidError,
+                r.surfaceError, 100 * r.areaDifference, r.matched);
 
   if (!o.csv.empty()) {
     std::ofstream csv(o.csv);
-    csv << "series,value,lambda_scale,kernel_scale,cube_scale,neighbours,ms_per_frame,particle_rms_radii,"
-           "surface_error_radii,area_difference,matched_particles\n";
+    csv << "scene,series,value,solver,lambda_scale,kernel_scale,cube_scale,neighbours,ms_per_frame,substeps_per_frame,"
+           "particle_rms_radii,centroid_error_radii,surface_error_radii,area_difference,matched_particles\n";
     for (const Row& r : rows) {
       const Variant& v = r.variant;
-      csv << v.series << ',' << v.label << ',' << v.lambdaScale << ',' << v.kernelScale << ',' << v.cubeScale << ','
-          << (v.neighbours == NeighbourMethod::Grid ? "grid" : "octree") << ',' << r.msPerFrame << ',' << r.particleRms
-          << ',' << r.surfaceError << ',' << r.areaDifference << ',' << r.matched << '\n';
+      csv << (o.head ? "default_head" : "cheek_sheet") << ',' << v.series << ',' << v.label << ','
+          << (v.solver == PressureSolver::Wcsph ? "wcsph" : "dfsph") << ',' << v.lambdaScale << ',' << v.kernelScale
+          << ',' << v.cubeScale << ',' << (v.neighbours == NeighbourMethod::Grid ? "grid" : "octree") << ','
+          << r.msPerFrame << ',' << r.substepsPerFrame << ',' << r.particleRms << ',' << r.centroidError << ','
+          << r.surfaceError << ',' << r.areaDifference << ',' << r.matched << '\n';
     }
     if (!csv) {
       std::fprintf(stderr, "tears-sweep: cannot write %s\n", o.csv.c_str());
@@ -320,11 +367,11 @@ int runTearsSweep(int argc, char** argv) {
     for (const Row& r : rows) {
       if (r.variant.series == "reference") continue;
       if (series.empty() || series.back().name.rfind(r.variant.series, 0) != 0)
-        series.push_back({r.variant.series + (r.surfaceSeries ? ": surface error" : ": particle RMS"), {}});
-      series.back().points.push_back({r.msPerFrame, r.surfaceSeries ? r.surfaceError : r.particleRms, r.variant.label});
+        series.push_back({r.variant.series + (r.surfaceSeries ? ": surface error" : ": centroid error"), {}});
+      series.back().points.push_back({r.msPerFrame, r.surfaceSeries ? r.surfaceError : r.centroidError, r.variant.label});
     }
     std::string why;
-    if (!writeLogLogPlot(o.png, "Tears: error against cost (" + std::to_string(o.particles) + " particles, " +
+    if (!writeLogLogPlot(o.png, "Tears on the " + scene.name + ": error against cost (" + std::to_string(o.particles) + " particles, " +
                                     std::to_string(o.frames) + " frames)",
                          "ms per frame (simulation + surface + trails)", "error vs reference (particle radii)", series,
                          why)) {

@@ -150,6 +150,45 @@ private slots:
     checkOnSheet(after, &motion);
   }
 
+  void sharpTurnDoesNotFoldTheTrail() {
+    // A drop slides straight down, then turns sideways (a turn of 60 or 90 degrees within one
+    // section): the inner edge of the strip would run backwards across the last cross-section,
+    // folding triangles over (wound clockwise seen from outside). Every triangle must stay wound
+    // outward, and the trail must still cover the turn.
+    for (double degrees : {60.0, 90.0}) {
+      Scene scene;
+      TrailBuilder trails(scene.sheet.triangles);
+      const double step = 0.01;  // a section per frame (d_min = h / 2 = 0.008)
+      const double turn = degrees * std::numbers::pi / 180;
+      double u = 0.0, v = 0.8;
+      for (int f = 0; f < 24; ++f) {
+        if (f < 12) {
+          v -= step;
+        } else {
+          u += step * std::sin(turn);
+          v -= step * std::cos(turn);
+        }
+        scene.step(trails, {{u, v, 40, 1}});
+      }
+      QVERIFY(trails.segments().size() >= 18);
+      checkOnSheet(trails.mesh());
+      // Neither edge of the strip runs backwards: each boundary point is level with or ahead of
+      // the last one along the centre's motion (a pivot stays put).
+      const auto x = trails.mesh().positions();
+      for (const TrailSegment& segment : trails.segments()) {
+        const Eigen::Vector3d forward = x.col(3 * segment.to + 1) - x.col(3 * segment.from + 1);
+        for (int side : {0, 2})
+          QVERIFY((x.col(3 * segment.to + side) - x.col(3 * segment.from + side)).dot(forward) >= -1e-12);
+      }
+      // Only pivot triangles (no area) are left out: the strip covers the turn.
+      const int expected = 4 * static_cast<int>(trails.segments().size());
+      qInfo("%g degrees: %d of %d triangles drawn", degrees, trails.mesh().triangleCount(), expected);
+      QVERIFY(trails.mesh().triangleCount() >= expected - 4);
+      if (QTest::currentTestFailed()) qWarning("turn of %g degrees", degrees);
+      QVERIFY(!QTest::currentTestFailed());
+    }
+  }
+
   void splittingDropBranches() {
     Scene scene;
     TrailBuilder trails(scene.sheet.triangles);

@@ -40,7 +40,7 @@ void pairFactors(const float* __restrict r2s, std::size_t count, float h, float 
 // pair only the state of j is gathered; 3-vectors are Float4 lanes 0..2, so each vector update
 // is one SSE2 operation. `Colour` removes the Müller sums from the loop at compile time instead
 // of testing a flag per pair.
-template <bool Colour>
+template <bool Colour, bool Pressure>
 float FluidForcePass::accumulate(const ActivePairs& pairs, int n, std::uint64_t const* ids) {
   const std::uint32_t* partner = pairs.partner.data();
   const float* offset = pairs.offset.data();
@@ -60,6 +60,8 @@ float FluidForcePass::accumulate(const ActivePairs& pairs, int n, std::uint64_t 
     const auto si = static_cast<std::size_t>(i);
     const Float4 vi = load4(velocity + 4 * si);
     const float mi = m[si], pi = pr[si], voli = vol[si];
+    (void)mi;
+    (void)pi;
     const float halfOverRhoi = 0.5f * invRho[si];
     Float4 ai{0, 0, 0, 0}, gi{0, 0, 0, 0}, wvi{0, 0, 0, 0};
     float wi = 0, li = 0;
@@ -73,21 +75,25 @@ float FluidForcePass::accumulate(const ActivePairs& pairs, int n, std::uint64_t 
       // Pressure: a_i -= m_j P d, a_j += m_i P d with P = (p_i + p_j) / (2 rho_i rho_j) g(r).
       // No test for p_i + p_j == 0 (frequent at the surface, where pressure is clamped, and
       // unpredictable): the force is then exactly zero.
-      const float shared = (pi + pr[j]) * halfOverRhoi * invRho[j];
-      Float4 f = (shared * radial[k]) * d;
-      if (r2s[k] <= 1e-18f && shared != 0.0f) [[unlikely]] {
-        // Coincident (radial is 0 there): a fixed, antisymmetric direction from the ids.
-        const Eigen::Vector3d e = pairDirection(ids[si], ids[j]);
-        const float a = -shared * atZero_;
-        f = Float4{a * static_cast<float>(e.x()), a * static_cast<float>(e.y()), a * static_cast<float>(e.z()), 0.0f};
-      }
       // Viscosity: sum_j V_j lap W and sum_j V_j lap W v_j (symmetric kernel); the weight sum
       // rides in lane 3 of the acceleration (d and so f have 0 there).
       const float lw = lapVisc[k];
       const float wj = vol[j] * lw, wiPart = voli * lw;
-      ai -= m[j] * f;
       wi += wj;
-      store4(acc + j4, load4(acc + j4) + mi * f + Float4{0, 0, 0, wiPart});
+      if constexpr (Pressure) {
+        const float shared = (pi + pr[j]) * halfOverRhoi * invRho[j];
+        Float4 f = (shared * radial[k]) * d;
+        if (r2s[k] <= 1e-18f && shared != 0.0f) [[unlikely]] {
+          // Coincident (radial is 0 there): a fixed, antisymmetric direction from the ids.
+          const Eigen::Vector3d e = pairDirection(ids[si], ids[j]);
+          const float a = -shared * atZero_;
+          f = Float4{a * static_cast<float>(e.x()), a * static_cast<float>(e.y()), a * static_cast<float>(e.z()), 0.0f};
+        }
+        ai -= m[j] * f;
+        store4(acc + j4, load4(acc + j4) + mi * f + Float4{0, 0, 0, wiPart});
+      } else {
+        acc[j4 + 3] += wiPart;
+      }
       wvi += wj * vj;
       Float4 wvj = wiPart * vi;
       if constexpr (Colour) {
@@ -147,8 +153,14 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs, const PressureFor
   pairFactors(pairs.r2.data(), pairCount, h_, h2_, spiky_, visc_, poly6_, radial_.data(), lapVisc_.data(),
               gradColour_.data(), lapColour_.data(), pairs.distance.data());
 
-  const float maxRelativeSpeed2 =
-      colour ? accumulate<true>(pairs, n, p.id.data()) : accumulate<false>(pairs, n, p.id.data());
+  // No pressure anywhere (DFSPH, whose solves replace it, or a fluid nowhere compressed): the
+  // pressure terms are left out of the loop rather than added as zeros.
+  const bool anyPressure = std::any_of(p_.begin(), p_.end(), [](float v) { return v != 0.0f; });
+  float maxRelativeSpeed2 = 0;
+  if (colour)
+    maxRelativeSpeed2 = anyPressure ? accumulate<true, true>(pairs, n, p.id.data()) : accumulate<true, false>(pairs, n, p.id.data());
+  else
+    maxRelativeSpeed2 = anyPressure ? accumulate<false, true>(pairs, n, p.id.data()) : accumulate<false, false>(pairs, n, p.id.data());
 
   weightSum_.resize(un);
   weighted_.resize(un);

@@ -1,4 +1,5 @@
 #include "SurfaceMesherKeyMap.h"
+#include "VectorState.h"
 
 #include <lacrima/tears/Kernels.h>
 #include <lacrima/tears/MarchingCubesTable.h>
@@ -56,6 +57,7 @@ const TearSurface& SurfaceMesher::update(TearSimulation& simulation, std::size_t
 
 const TearSurface& SurfaceMesher::build(std::span<const Eigen::Vector3d> positions, std::span<const double> masses,
                                         const UniformGrid& grid, const SurfaceMesherSettings& settings) {
+  clearUpperVectorState();
   const auto start = Clock::now();
   const double h = settings.kernelRadius;
   if (!(h > 0) || !std::isfinite(h) || !(settings.cubeSize > 0) || !std::isfinite(settings.cubeSize) ||
@@ -160,8 +162,13 @@ bool SurfaceMesher::collectCubes(double s, std::size_t maxCubes) {
   const double boxPoints = static_cast<double>(denseDims_.x()) * static_cast<double>(denseDims_.y()) *
                            static_cast<double>(denseDims_.z());
   dense_ = boxPoints <= 8.0 * expected + 4096.0 && boxPoints <= double(std::int64_t{1} << 26);
+  // The dense arrays are all -1 except the slots the last build set, listed: clearing those is
+  // proportional to the cubes, where refilling the box would be proportional to its volume
+  // (two drops far apart make a large, nearly empty box).
+  for (std::int64_t slot : denseCubeSlots_) denseCube_[static_cast<std::size_t>(slot)] = -1;
+  denseCubeSlots_.clear();
   if (dense_) {
-    denseCube_.assign(static_cast<std::size_t>(boxPoints), -1);
+    if (denseCube_.size() < static_cast<std::size_t>(boxPoints)) denseCube_.resize(static_cast<std::size_t>(boxPoints), -1);
   } else {
     cubeMap_->reset(static_cast<std::size_t>(expected));
   }
@@ -183,6 +190,7 @@ bool SurfaceMesher::collectCubes(double s, std::size_t maxCubes) {
             std::int32_t& slot = denseCube_[static_cast<std::size_t>(row + z)];
             if (slot >= 0) continue;
             slot = id;
+            denseCubeSlots_.push_back(row + z);
           } else if (!cubeMap_->insert(pack(k - cubeBase_), id).second) {
             continue;
           }
@@ -198,8 +206,10 @@ bool SurfaceMesher::collectCubes(double s, std::size_t maxCubes) {
 void SurfaceMesher::collectCorners() {
   corner_.clear();
   cubeCorner_.resize(cube_.size());
+  for (std::int64_t slot : denseCornerSlots_) denseCorner_[static_cast<std::size_t>(slot)] = -1;
+  denseCornerSlots_.clear();
   if (dense_) {
-    denseCorner_.assign(denseCube_.size(), -1);
+    if (denseCorner_.size() < denseCube_.size()) denseCorner_.resize(denseCube_.size(), -1);
     // Corner k of a cube is `step[k]` slots from its corner 0 (the box is row-major).
     const std::int64_t dz = 1, dy = denseDims_.z(), dx = denseDims_.y() * denseDims_.z();
     std::array<std::int64_t, 8> step;
@@ -207,10 +217,12 @@ void SurfaceMesher::collectCorners() {
     for (std::size_t i = 0; i < cube_.size(); ++i) {
       const std::int64_t base = denseSlot(cube_[i]);  // in the box, and so are its +1 corners
       for (int k = 0; k < 8; ++k) {
-        std::int32_t& slot = denseCorner_[static_cast<std::size_t>(base + step[static_cast<std::size_t>(k)])];
+        const std::int64_t at = base + step[static_cast<std::size_t>(k)];
+        std::int32_t& slot = denseCorner_[static_cast<std::size_t>(at)];
         if (slot < 0) {
           slot = static_cast<std::int32_t>(corner_.size());
           corner_.push_back(cube_[i] + cornerOffset(k));
+          denseCornerSlots_.push_back(at);
         }
         cubeCorner_[i][static_cast<std::size_t>(k)] = slot;
       }

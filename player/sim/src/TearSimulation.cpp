@@ -1,4 +1,5 @@
 #include "SkinCollider.h"
+#include "VectorState.h"
 
 #include <lacrima/tears/TearSimulation.h>
 
@@ -10,6 +11,8 @@
 #include <map>
 #include <numbers>
 #include <stdexcept>
+#include <cstdio>
+#include <cstdlib>
 
 namespace lacrima::tears {
 namespace {
@@ -307,6 +310,7 @@ EmissionSite TearSimulation::siteFor(Eye eye) {
 }
 
 void TearSimulation::step(const Eigen::Matrix3Xf& positions, int leftCount, int rightCount, double dt) {
+  clearUpperVectorState();
   ++counters_.frames;
   times_ = {};
   const std::array<int, 2> target{clampCount(leftCount), clampCount(rightCount)};
@@ -448,6 +452,18 @@ void TearSimulation::simulate(double frameDt) {
     for (int i = 0; i < particles_.size(); ++i) {
       maxAcceleration2 = std::max(maxAcceleration2, particles_.acceleration[static_cast<std::size_t>(i)].squaredNorm());
       maxRate = std::max(maxRate, particles_.viscosityRate[static_cast<std::size_t>(i)]);
+    }
+    if (std::getenv("SIMDBG") && counters_.substeps % 50 == 0) {
+      double best = 0; int bi = -1, bj = -1;
+      for (int i = 0; i < particles_.size(); ++i)
+        for (std::uint32_t k = pairs_.start[i]; k < pairs_.start[i + 1]; ++k) {
+          const int j = static_cast<int>(pairs_.partner[k]);
+          const double u = (particles_.velocity[i] - particles_.velocity[j]).norm();
+          if (u > best) { best = u; bi = i; bj = j; }
+        }
+      if (bi >= 0) std::fprintf(stderr, "DBG urel %.3f | i age %.3f v %.3f y %.3f contact %d | j age %.3f v %.3f y %.3f contact %d\n", best,
+        particles_.age[bi], particles_.velocity[bi].norm(), particles_.position[bi].y(), particles_.contact[bi].triangle,
+        particles_.age[bj], particles_.velocity[bj].norm(), particles_.position[bj].y(), particles_.contact[bj].triangle);
     }
     const double longest = options_.maxSubstepSeconds > 0 ? std::min(remaining, options_.maxSubstepSeconds) : remaining;
     // DFSPH: pressure is not in the accelerations yet, and surface tension alone is several g on

@@ -1,3 +1,5 @@
+#include "VectorState.h"
+
 #include <lacrima/tears/TearSimulation.h>
 #include <lacrima/tears/TrailBuilder.h>
 
@@ -33,6 +35,7 @@ const TrailMesh& TrailBuilder::update(const ParticleSet& particles, const Unifor
     milliseconds_ = 0;
     return mesh_;
   }
+  clearUpperVectorState();
   const auto start = Clock::now();
   if (headPositions.cols() <= skin_.maxVertex()) throw std::invalid_argument("trails: fewer head positions than the skin uses");
   if (!(h > 0) || !std::isfinite(h)) throw std::invalid_argument("trails: kernel radius must be positive");
@@ -159,6 +162,15 @@ void TrailBuilder::continueTrack(Track& track, const ParticleSet& particles, con
   section.point[1].height = std::min(h, settings_.middleHeightFraction * (top + particleRadius));
   if (section.point[0].triangle < 0) section.point[0] = centre;
   if (section.point[2].triangle < 0) section.point[2] = centre;
+  if (track.lastSection >= 0) {
+    // A sharp turn: the inner boundary would run backwards across the last cross-section and
+    // fold the strip over. The inner side pivots on the last section's point instead (its
+    // triangles fan out from it; the one left without area is not drawn).
+    const TrailSection& last = sections_[static_cast<std::size_t>(track.lastSection)];
+    for (int side : {0, 2})
+      if ((skin_.point(section.point[static_cast<std::size_t>(side)]) - skin_.point(last.point[static_cast<std::size_t>(side)])).dot(t) <= 0)
+        section.point[static_cast<std::size_t>(side)] = last.point[static_cast<std::size_t>(side)];
+  }
   const int index = static_cast<int>(sections_.size());
   sections_.push_back(section);
   if (track.lastSection >= 0) segments_.push_back({track.lastSection, index});
@@ -232,11 +244,13 @@ void TrailBuilder::rebuildMesh() {
     const Eigen::Vector3i triangles[4] = {{l0, m0, m1}, {l0, m1, l1}, {m0, r0, r1}, {m0, r1, m1}};
     const auto eye = static_cast<std::size_t>(sections_[static_cast<std::size_t>(segment.to)].eye);
     for (const Eigen::Vector3i& t : triangles) {
-      mesh_.triangle_.push_back(t);
       const Eigen::Vector3d& a = mesh_.position_[static_cast<std::size_t>(t[0])];
-      const double area = 0.5 * (mesh_.position_[static_cast<std::size_t>(t[1])] - a)
-                                    .cross(mesh_.position_[static_cast<std::size_t>(t[2])] - a)
-                                    .norm();
+      const Eigen::Vector3d cross = (mesh_.position_[static_cast<std::size_t>(t[1])] - a)
+                                        .cross(mesh_.position_[static_cast<std::size_t>(t[2])] - a);
+      // Without area (a pivot) or facing into the skin (folded at a turn): not drawn.
+      if (!(cross.dot(mesh_.normal_[static_cast<std::size_t>(t[0])]) > 0)) continue;
+      mesh_.triangle_.push_back(t);
+      const double area = 0.5 * cross.norm();
       double alpha = 0;
       for (int k = 0; k < 3; ++k) alpha += mesh_.alpha_[static_cast<std::size_t>(t[k])] / 3.0;
       wetArea_[eye] += area * alpha;

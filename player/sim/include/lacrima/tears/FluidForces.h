@@ -145,7 +145,7 @@ public:
   std::span<const Eigen::Vector3d> weightedVelocity() const { return weighted_; }
 
 private:
-  template <bool Colour>
+  template <bool Colour, bool Pressure>
   float accumulate(const ActivePairs& pairs, int n, std::uint64_t const* ids);
 
   std::vector<double> weightSum_, laplacian_;

@@ -139,6 +139,7 @@ private:
   bool dense_ = false;
   Lattice denseLow_, denseDims_;
   std::vector<std::int32_t> denseCube_, denseCorner_;  // id per box point, -1 = none
+  std::vector<std::int64_t> denseCubeSlots_, denseCornerSlots_;  // the slots set, to clear
   std::vector<std::int32_t> edgeVertex_;               // 3 per corner (axis), -1 = none yet
   std::vector<std::uint8_t> normalFallback_;
 };

@@ -9,6 +9,13 @@
 // in another layer. With both counts at zero and no particles left, step() does no work at all:
 // no skin update, no ODE query, no neighbour search (see counters()).
 //
+// Pressure: the weakly compressible equation of state (WCSPH, the default) or DFSPH
+// (DivergenceFreeSolver.h), chosen in SimulationOptions. Measured with lacrima-bench tears and
+// tears-sweep on the sheet and the default head, DFSPH is not faster here: surface tension at
+// this resolution, not the speed of sound alone, bounds its sub-steps (about as many as WCSPH's
+// at twice the cost each), and its incompressible drops cling harder (adhesion grows as density
+// falls), so they run a different course. It stays as an option, tested in every hard case.
+//
 // Deterministic: the same inputs give bitwise-identical particle states on the same build
 // (single thread, ordered containers only, no time-based seeds).
 //
@@ -67,7 +74,8 @@ private:
 
 // How pressure keeps the fluid from compressing: the weakly compressible equation of state of
 // Müller 2003 (sub-steps bound by the speed of sound), or DFSPH (DivergenceFreeSolver.h: two
-// iterative solves per sub-step, sub-steps bound only by relative motion).
+// iterative solves per sub-step, sub-steps bound by relative motion and by the net fluid
+// acceleration of the previous sub-step).
 enum class PressureSolver { Wcsph, Dfsph };
 
 struct SimulationOptions {

@@ -14,6 +14,10 @@
 //     (left, middle, right) is stored and joined to the last one by four triangles
 //       (L0, M0, M1), (L0, M1, L1), (M0, R0, R1), (M0, R1, M1),
 //     wound counter-clockwise seen from outside the skin.
+// Sharp turns: where the inner boundary point would land behind the last cross-section (along
+// the new direction), the strip would fold over itself; the inner side then keeps the last
+// section's point (the segment fans out around it), and any triangle left without area or
+// facing into the skin is not drawn.
 // A drop that splits hands its last section to every part, so the trail branches from it; drops
 // that merge continue the track of the larger share. In the update of a split or merge the
 // centre jumps without the fluid having moved there, so that update neither changes the
