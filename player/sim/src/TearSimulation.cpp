@@ -11,8 +11,6 @@
 #include <map>
 #include <numbers>
 #include <stdexcept>
-#include <cstdio>
-#include <cstdlib>
 
 namespace lacrima::tears {
 namespace {
@@ -452,18 +450,6 @@ void TearSimulation::simulate(double frameDt) {
     for (int i = 0; i < particles_.size(); ++i) {
       maxAcceleration2 = std::max(maxAcceleration2, particles_.acceleration[static_cast<std::size_t>(i)].squaredNorm());
       maxRate = std::max(maxRate, particles_.viscosityRate[static_cast<std::size_t>(i)]);
-    }
-    if (std::getenv("SIMDBG") && counters_.substeps % 50 == 0) {
-      double best = 0; int bi = -1, bj = -1;
-      for (int i = 0; i < particles_.size(); ++i)
-        for (std::uint32_t k = pairs_.start[i]; k < pairs_.start[i + 1]; ++k) {
-          const int j = static_cast<int>(pairs_.partner[k]);
-          const double u = (particles_.velocity[i] - particles_.velocity[j]).norm();
-          if (u > best) { best = u; bi = i; bj = j; }
-        }
-      if (bi >= 0) std::fprintf(stderr, "DBG urel %.3f | i age %.3f v %.3f y %.3f contact %d | j age %.3f v %.3f y %.3f contact %d\n", best,
-        particles_.age[bi], particles_.velocity[bi].norm(), particles_.position[bi].y(), particles_.contact[bi].triangle,
-        particles_.age[bj], particles_.velocity[bj].norm(), particles_.position[bj].y(), particles_.contact[bj].triangle);
     }
     const double longest = options_.maxSubstepSeconds > 0 ? std::min(remaining, options_.maxSubstepSeconds) : remaining;
     // DFSPH: pressure is not in the accelerations yet, and surface tension alone is several g on
