@@ -207,17 +207,8 @@ int runTears(int argc, char** argv) {
   Options o;
   if (const int status = parse(argc, argv, o)) return status == 1 ? 0 : status;
 
-  std::optional<TearScene> scene;
-  if (o.head) {
-    std::string why;
-    scene = defaultHeadScene(why);
-    if (!scene) {
-      std::printf("tears: skipping the default head: %s\n", why.c_str());
-      return 0;
-    }
-  } else {
-    scene = cheekScene();
-  }
+  std::optional<TearScene> scene = benchScene(o.head, "tears");
+  if (!scene) return 0;
   SimulationOptions simOptions;
   simOptions.neighbours = o.neighbours;
   simOptions.surfaceTension = o.tension;

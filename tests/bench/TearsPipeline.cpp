@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include <chrono>
+#include <cstdio>
 #include <exception>
 #include <numbers>
 
@@ -98,6 +99,14 @@ FrameTimes TearPipeline::step(const Eigen::Matrix3Xf& positions, int left, int r
   trails_.update(*sim_, positions, dt);
   t.trails = trails_.lastMilliseconds();
   return t;
+}
+
+std::optional<TearScene> benchScene(bool head, const char* bench) {
+  if (!head) return cheekScene();
+  std::string why;
+  std::optional<TearScene> scene = defaultHeadScene(why);
+  if (!scene) std::printf("%s: skipping the default head: %s\n", bench, why.c_str());
+  return scene;
 }
 
 }  // namespace lacrima::bench

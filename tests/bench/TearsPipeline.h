@@ -38,6 +38,9 @@ TearScene cheekScene();
 // The cached default head, rigged for its tear sources; nullopt with `why` set when it is absent
 // or unreadable.
 std::optional<TearScene> defaultHeadScene(std::string& why);
+// The scene a tear benchmark asked for: the default head (`head`) or the cheek sheet. Without
+// the head, prints "BENCH: skipping the default head: why" and returns nothing.
+std::optional<TearScene> benchScene(bool head, const char* bench);
 
 struct FrameTimes {
   double simulation = 0, surface = 0, trails = 0;  // ms

@@ -284,17 +284,8 @@ Row compare(const Variant& v, const RunResult& r, const RunResult& ref, double r
 int runTearsSweep(int argc, char** argv) {
   Options o;
   if (const int status = parse(argc, argv, o)) return status == 1 ? 0 : status;
-  std::optional<TearScene> loaded;
-  if (o.head) {
-    std::string why;
-    loaded = defaultHeadScene(why);
-    if (!loaded) {
-      std::printf("tears-sweep: skipping the default head: %s\n", why.c_str());
-      return 0;
-    }
-  } else {
-    loaded = cheekScene();
-  }
+  const std::optional<TearScene> loaded = benchScene(o.head, "tears-sweep");
+  if (!loaded) return 0;
   const TearScene& scene = *loaded;
 
   // The reference: the smallest sub-step and cube of the sweep, default kernel, grid.
