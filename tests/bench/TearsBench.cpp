@@ -313,6 +313,7 @@ int runTears(int argc, char** argv) {
     json.field("surface_runs", c.surfaceRuns);
     json.field("spawned", c.spawned);
     json.field("neighbour_searches", c.neighbourSearches);
+    json.field("stray_substeps", c.straySubsteps);
     json.field("cfl_limited", c.cflLimited);
     json.field("acceleration_limited", c.accelerationLimited);
     json.field("viscosity_limited", c.viscosityLimited);

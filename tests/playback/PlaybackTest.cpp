@@ -4,15 +4,18 @@
 #include "PlaybackTestSupport.h"
 
 #include <lacrima/FapWriter.h>
+#include <lacrima/HeadMesh.h>
 #include <lacrima/playback/Playback.h>
 #include <lacrima/rig/DefaultHead.h>
 #include <lacrima/tears/TrailBuilder.h>
 #include <lacrima/tears/SurfaceMesher.h>
 
+#include <Eigen/Geometry>
 #include <QTemporaryDir>
 #include <QtTest>
 
 #include <fstream>
+#include <array>
 #include <map>
 
 using namespace lacrima;
@@ -84,6 +87,45 @@ private slots:
     scrubbed.reset();  // the same simulation object, back to no tears
     scrubbed.seek(seconds(60));
     QVERIFY2(sameParticles(*scrubbed.view().particles, reference[60]), "a reset left something of the old tears");
+  }
+
+  // The eyes are part of the tears' collision surface: tears welling up at the upper lid, over
+  // the cornea, stay on the eye's surface, never inside the eyeball (the skin alone has a hole
+  // there, and without the eyes the first particles already appear inside).
+  void tearsStayOutOfTheEyes() {
+    struct Ball {
+      Eigen::Vector3d centre, front;
+      double radius;
+    };
+    std::array<Ball, 2> balls;
+    for (int e = 0; e < 2; ++e) {
+      const HeadSubmesh* eye = rig_->head.findSubmesh(e == 0 ? "eye_l" : "eye_r");
+      QVERIFY(eye);
+      Eigen::AlignedBox3d box;
+      for (int v = eye->firstVertex; v < eye->firstVertex + eye->vertexCount; ++v) box.extend(rig_->head.positions.col(v).cast<double>());
+      const double radius = 0.5 * std::max(box.sizes().x(), box.sizes().y());
+      balls[static_cast<std::size_t>(e)] = {Eigen::Vector3d(box.center().x(), box.center().y(), box.max().z() - radius),
+                                            Eigen::Vector3d(box.center().x(), box.center().y(), box.max().z()), radius};
+    }
+    QVERIFY(!eyeTriangles(*rig_).empty());
+    TearSources sources;
+    sources.left = balls[0].front + Eigen::Vector3d(0, 0.5 * balls[0].radius, 0);
+    sources.right = balls[1].front + Eigen::Vector3d(0, 0.5 * balls[1].radius, 0);
+    SceneSettings scene;
+    scene.particles = true;
+    Playback playback(*rig_);
+    playback.setAnimation(cryingAnimation(44, 40), scene, sources);
+    int checked = 0;
+    for (int f = 0; f < 44; ++f) {
+      const FrameView& v = playback.seek(seconds(f) + 0.01);
+      if (!v.particles) continue;
+      for (const Eigen::Vector3d& x : v.particles->position) {
+        for (const Ball& b : balls)
+          QVERIFY2((x - b.centre).norm() > 0.9 * b.radius, qPrintable(QString("frame %1: a tear particle inside an eyeball").arg(f)));
+        ++checked;
+      }
+    }
+    QVERIFY(checked > 40 * 40);
   }
 
   // A file without tear channels: no simulation, no surface, no trails, ever.

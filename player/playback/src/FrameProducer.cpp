@@ -90,7 +90,12 @@ struct FrameProducer::State {
 
   tears::TearSimulation& ensureSimulation() {
     if (!simulation) {
-      simulation = std::make_unique<tears::TearSimulation>(rig.head.positions, skin, settings);
+      // Skin first, then the eyes: contacts past the skin's triangles are on an eye, which the
+      // trail builder (given the skin alone) ignores.
+      std::vector<Eigen::Vector3i> collision = skin;
+      const std::vector<Eigen::Vector3i> eyes = eyeTriangles(rig);
+      collision.insert(collision.end(), eyes.begin(), eyes.end());
+      simulation = std::make_unique<tears::TearSimulation>(rig.head.positions, collision, settings);
       simulation->setSource(tears::Eye::Left, sources.left.value_or(rig.rig.tearLeft.position));
       simulation->setSource(tears::Eye::Right, sources.right.value_or(rig.rig.tearRight.position));
       pristine = simulation->checkpoint();

@@ -6,7 +6,10 @@
 #include <lacrima/rig/FeaturePointFile.h>
 #include <lacrima/rig/MeshImport.h>
 
+#include <algorithm>
+#include <initializer_list>
 #include <stdexcept>
+#include <string_view>
 
 namespace lacrima::playback {
 
@@ -54,14 +57,23 @@ std::unique_ptr<HeadRig> loadHeadRig(const std::string& meshPath, const std::str
   return rig;
 }
 
-std::vector<Eigen::Vector3i> skinTriangles(const HeadRig& rig) {
+namespace {
+
+std::vector<Eigen::Vector3i> trianglesWithRole(const HeadRig& rig, std::initializer_list<std::string_view> wanted) {
   std::vector<Eigen::Vector3i> triangles;
   for (const HeadSubmesh& s : rig.head.submeshes) {
     const auto role = rig.rig.roles.find(s.name);
-    if (role != rig.rig.roles.end() && role->second == "skin")
+    if (role == rig.rig.roles.end()) continue;
+    if (std::find(wanted.begin(), wanted.end(), std::string_view(role->second)) != wanted.end())
       triangles.insert(triangles.end(), s.triangles.begin(), s.triangles.end());
   }
   return triangles;
 }
+
+}  // namespace
+
+std::vector<Eigen::Vector3i> skinTriangles(const HeadRig& rig) { return trianglesWithRole(rig, {"skin"}); }
+
+std::vector<Eigen::Vector3i> eyeTriangles(const HeadRig& rig) { return trianglesWithRole(rig, {"eye_left", "eye_right"}); }
 
 }  // namespace lacrima::playback

@@ -23,7 +23,7 @@ void AkinciSurfaceTension::addAccelerations(ParticleSet& p, const ActivePairs& p
     for (std::uint32_t k = pairs.start[i]; k < pairs.start[i + 1]; ++k) {
       const std::uint32_t j = pairs.partner[k];
       const Eigen::Vector3d r = p.position[i] - p.position[j];
-      const double distance = pairs.distance[k];
+      const double distance = r.norm();
       const double correction = 2.0 * rho0_ / (p.density[i] + p.density[j]);
       const Eigen::Vector3d curvature = normal_[i] - normal_[j];
       const double c = distance > 1e-9 * h_ ? c_.value(distance) / distance : 0.0;

@@ -8,6 +8,8 @@
 namespace lacrima::tears {
 
 using Float4 = float __attribute__((vector_size(16)));
+// Lane-wise comparisons of Float4 give -1 (true) or 0 per lane.
+using Int4 = int __attribute__((vector_size(16)));
 
 // Unaligned load and store of 4 consecutive floats (std::vector<float> guarantees no more than
 // float alignment); GCC turns the memcpy into one movups.

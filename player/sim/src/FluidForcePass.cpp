@@ -11,50 +11,48 @@ namespace lacrima::tears {
 
 namespace {
 
-// Per-pair kernel factors from r alone: one flat loop over contiguous arrays, no gathers and no
-// branches, which GCC vectorises with SSE2 (restrict: the arrays never overlap).
-void pairFactors(const float* __restrict r2s, std::size_t count, float h, float h2, float spiky, float visc,
-                 float poly6, float* __restrict radial, float* __restrict lapVisc, float* __restrict gradColour,
-                 float* __restrict lapColour, double* __restrict distance) {
-  for (std::size_t k = 0; k < count; ++k) {
-    const float r2 = r2s[k];
-    const float r = std::sqrt(r2);
-    const float hr = h - r;
-    const float q = h2 - r2;
-    // Coincident pairs divide by infinity, giving exactly 0 (their force comes from the pair
-    // direction instead). Selecting the divisor, not the quotient, keeps the loop branch-free
-    // for GCC (it does not if-convert a division).
-    const float divisor = r2 > 1e-18f ? r : std::numeric_limits<float>::infinity();
-    radial[k] = spiky * hr * hr / divisor;
-    lapVisc[k] = visc * hr;
-    gradColour[k] = poly6 * q * q;
-    lapColour[k] = poly6 * q * (3.0f * h2 - 7.0f * r2);
-    distance[k] = r;  // for AkinciSurfaceTension
+// The largest closing speed -(v_i - v_j).(x_i - x_j) / r over the pairs, squared: Monaghan's
+// signal velocity without its sound-speed part. Only closing pairs count (min(., 0)). Four pairs
+// a step in SSE registers: GCC does not vectorise a float max reduction by itself (maxss is not
+// associative for NaN), and the scalar loop was a chain of dependent divisions and maxima.
+float largestClosingSpeed2(const float* approach, const float* r2s, std::size_t count) {
+  const Float4 zero{0, 0, 0, 0}, tiny{1e-18f, 1e-18f, 1e-18f, 1e-18f};
+  Float4 largest = zero;
+  std::size_t k = 0;
+  for (; k + 4 <= count; k += 4) {
+    const Float4 a = load4(approach + k), r2 = load4(r2s + k);
+    const Float4 closing = a < zero ? a : zero;
+    const Float4 value = closing * closing / (r2 > tiny ? r2 : tiny);
+    largest = value > largest ? value : largest;
   }
+  float result = std::max(std::max(largest[0], largest[1]), std::max(largest[2], largest[3]));
+  for (; k < count; ++k) {
+    const float closing = std::min(approach[k], 0.0f);
+    result = std::max(result, closing * closing / std::max(r2s[k], 1e-18f));
+  }
+  return result;
 }
 
 }  // namespace
 
 // The pair loop proper: sums over the half list in fixed order (particle, then partner), each
-// pair added to both ends. The kernel factors come precomputed per pair (pairFactors), so per
-// pair only the state of j is gathered; 3-vectors are Float4 lanes 0..2, so each vector update
-// is one SSE2 operation. `Colour` removes the Müller sums from the loop at compile time instead
-// of testing a flag per pair.
+// pair added to both ends. The pair geometry comes from DensitySolver's offsets; the kernel
+// factors are computed in the loop (a square root and a division per pair cost less than
+// streaming four more per-pair arrays through memory at 10,000 particles). 3-vectors are Float4
+// lanes 0..2, so each vector update is one SSE2 operation. `Colour` removes the Müller sums
+// from the loop at compile time instead of testing a flag per pair.
 template <bool Colour, bool Pressure>
-float FluidForcePass::accumulate(const ActivePairs& pairs, int n, std::uint64_t const* ids) {
+void FluidForcePass::accumulate(const ActivePairs& pairs, int n, std::uint64_t const* ids) {
   const std::uint32_t* partner = pairs.partner.data();
   const float* offset = pairs.offset.data();
   const float* r2s = pairs.r2.data();
-  const float* radial = radial_.data();
-  const float* lapVisc = lapVisc_.data();
-  const float* gradColour = gradColour_.data();
-  const float* lapColour = lapColour_.data();
   const float* velocity = velocity_.data();
   const float *m = m_.data(), *pr = p_.data(), *invRho = invRho_.data(), *vol = vol_.data();
   float* acc = acc_.data();          // acceleration, then the viscosity weight sum in lane 3
   float* weighted = weighted4_.data();  // weighted velocity, then the colour Laplacian in lane 3
   float* gradient = gradient4_.data();
-  float maxRelativeSpeed2 = 0;
+  float* approach = approach_.data();
+  const float h = h_, h2 = h2_, spiky = spiky_, visc = visc_, poly6 = poly6_;
 
   for (int i = 0; i < n; ++i) {
     const auto si = static_cast<std::size_t>(i);
@@ -69,22 +67,28 @@ float FluidForcePass::accumulate(const ActivePairs& pairs, int n, std::uint64_t 
       const std::uint32_t j = partner[k];
       const std::size_t j4 = 4 * static_cast<std::size_t>(j);
       const Float4 d = load4(offset + 4 * static_cast<std::size_t>(k));
+      const float r2 = r2s[k];
+      const float r = std::sqrt(r2);
+      const float hr = h - r;
       const Float4 vj = load4(velocity + j4);
       const Float4 u = vi - vj;
-      maxRelativeSpeed2 = std::max(maxRelativeSpeed2, dot3(u, u));
+      approach[k] = dot3(u, d);
       // Pressure: a_i -= m_j P d, a_j += m_i P d with P = (p_i + p_j) / (2 rho_i rho_j) g(r).
       // No test for p_i + p_j == 0 (frequent at the surface, where pressure is clamped, and
       // unpredictable): the force is then exactly zero.
       // Viscosity: sum_j V_j lap W and sum_j V_j lap W v_j (symmetric kernel); the weight sum
       // rides in lane 3 of the acceleration (d and so f have 0 there).
-      const float lw = lapVisc[k];
+      const float lw = visc * hr;
       const float wj = vol[j] * lw, wiPart = voli * lw;
       wi += wj;
       if constexpr (Pressure) {
+        // Coincident pairs divide by infinity, giving exactly 0 (their force comes from the
+        // pair direction instead); selecting the divisor keeps the common path branch-free.
+        const float radial = spiky * hr * hr / (r2 > 1e-18f ? r : std::numeric_limits<float>::infinity());
         const float shared = (pi + pr[j]) * halfOverRhoi * invRho[j];
-        Float4 f = (shared * radial[k]) * d;
-        if (r2s[k] <= 1e-18f && shared != 0.0f) [[unlikely]] {
-          // Coincident (radial is 0 there): a fixed, antisymmetric direction from the ids.
+        Float4 f = (shared * radial) * d;
+        if (r2 <= 1e-18f && shared != 0.0f) [[unlikely]] {
+          // Coincident: a fixed, antisymmetric direction from the ids.
           const Eigen::Vector3d e = pairDirection(ids[si], ids[j]);
           const float a = -shared * atZero_;
           f = Float4{a * static_cast<float>(e.x()), a * static_cast<float>(e.y()), a * static_cast<float>(e.z()), 0.0f};
@@ -97,10 +101,11 @@ float FluidForcePass::accumulate(const ActivePairs& pairs, int n, std::uint64_t 
       wvi += wj * vj;
       Float4 wvj = wiPart * vi;
       if constexpr (Colour) {
-        const float g = gradColour[k];
+        const float q = h2 - r2;
+        const float g = poly6 * q * q;
         gi += (vol[j] * g) * d;
         store4(gradient + j4, load4(gradient + j4) - (voli * g) * d);
-        const float l = lapColour[k];
+        const float l = poly6 * q * (3.0f * h2 - 7.0f * r2);
         li += vol[j] * l;
         wvj[3] = voli * l;
       }
@@ -113,7 +118,6 @@ float FluidForcePass::accumulate(const ActivePairs& pairs, int n, std::uint64_t 
     store4(weighted + i4, load4(weighted + i4) + wvi);
     if constexpr (Colour) store4(gradient + i4, load4(gradient + i4) + gi);
   }
-  return maxRelativeSpeed2;
 }
 
 double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs, const PressureForce& pressure,
@@ -144,23 +148,17 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs, const PressureFor
     vol_[i] = m_[i] * invRho_[i];
     weighted4_[4 * i + 3] = vol_[i] * selfLaplacian;
   }
-
-  // Per-pair factors from r alone: one flat loop over contiguous arrays with no gathers and no
-  // branches (the coincident case is a select), which GCC vectorises with SSE2.
   const std::size_t pairCount = n > 0 ? pairs.start[un] : 0;
-  for (auto* v : {&radial_, &lapVisc_, &gradColour_, &lapColour_})
-    if (v->size() < pairCount) v->resize(pairs.partner.size());
-  pairFactors(pairs.r2.data(), pairCount, h_, h2_, spiky_, visc_, poly6_, radial_.data(), lapVisc_.data(),
-              gradColour_.data(), lapColour_.data(), pairs.distance.data());
+  if (approach_.size() < pairCount) approach_.resize(pairs.partner.size());
 
   // No pressure anywhere (DFSPH, whose solves replace it, or a fluid nowhere compressed): the
   // pressure terms are left out of the loop rather than added as zeros.
   const bool anyPressure = std::any_of(p_.begin(), p_.end(), [](float v) { return v != 0.0f; });
-  float maxRelativeSpeed2 = 0;
   if (colour)
-    maxRelativeSpeed2 = anyPressure ? accumulate<true, true>(pairs, n, p.id.data()) : accumulate<true, false>(pairs, n, p.id.data());
+    anyPressure ? accumulate<true, true>(pairs, n, p.id.data()) : accumulate<true, false>(pairs, n, p.id.data());
   else
-    maxRelativeSpeed2 = anyPressure ? accumulate<false, true>(pairs, n, p.id.data()) : accumulate<false, false>(pairs, n, p.id.data());
+    anyPressure ? accumulate<false, true>(pairs, n, p.id.data()) : accumulate<false, false>(pairs, n, p.id.data());
+  const float closing2 = largestClosingSpeed2(approach_.data(), pairs.r2.data(), pairCount);
 
   weightSum_.resize(un);
   weighted_.resize(un);
@@ -183,7 +181,7 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs, const PressureFor
     }
     tension->addAccelerations(p, gradient_, laplacian_);
   }
-  return std::sqrt(static_cast<double>(maxRelativeSpeed2));
+  return std::sqrt(static_cast<double>(closing2));
 }
 
 }  // namespace lacrima::tears

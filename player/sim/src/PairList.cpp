@@ -1,22 +1,58 @@
+#include "Float4.h"
+
 #include <lacrima/tears/PairList.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace lacrima::tears {
+namespace {
+
+// The two largest of a stream of squared lengths, and the sum of their square roots.
+struct LargestTwo {
+  double first = 0, second = 0;
+  void add(double d2) {
+    if (d2 > first) {
+      second = first;
+      first = d2;
+    } else if (d2 > second) {
+      second = d2;
+    }
+  }
+  double sum() const { return std::sqrt(first) + std::sqrt(second); }
+};
+
+}  // namespace
 
 void VerletPairs::build(const CellIndex& index, double h, double skin) {
   const std::size_t n = index.particleCount();
-  const double radius = h + skin, r2max = radius * radius;
-  const double* sx = index.sortedX().data();
-  const double* sy = index.sortedY().data();
-  const double* sz = index.sortedZ().data();
+  const double radius = h + skin;
+  // The test runs in single precision on positions relative to the first particle; the bound
+  // is widened by 1e-5 so float rounding can only add candidates, never drop one within R.
+  const float r2max = static_cast<float>(radius * radius * (1 + 1e-5));
+  h_ = h;
   skin_ = skin;
+  clearStrays();
   start_.resize(n + 1);
   start_[0] = 0;
   if (partner_.size() < 64) partner_.resize(64);
   std::size_t written = 0;
+  const double* sx = index.sortedX().data();
+  const double* sy = index.sortedY().data();
+  const double* sz = index.sortedZ().data();
+  fx_.resize(n);
+  fy_.resize(n);
+  fz_.resize(n);
+  for (std::size_t s = 0; s < n; ++s) {
+    fx_[s] = static_cast<float>(sx[s] - sx[0]);
+    fy_[s] = static_cast<float>(sy[s] - sy[0]);
+    fz_[s] = static_cast<float>(sz[s] - sz[0]);
+  }
+  const float* fx = fx_.data();
+  const float* fy = fy_.data();
+  const float* fz = fz_.data();
 
   constexpr std::array<std::array<int, 2>, 4> kForward{{{0, 1}, {1, -1}, {1, 0}, {1, 1}}};
   std::array<CellIndex::Range, 4> rows;
@@ -29,13 +65,28 @@ void VerletPairs::build(const CellIndex& index, double h, double skin) {
       if (r.end > r.begin) rows[static_cast<std::size_t>(rowCount++)] = r;
     }
     for (std::uint32_t s = index.cellStart(c); s < index.cellStart(c + 1); ++s) {
-      const double xi = sx[s], yi = sy[s], zi = sz[s];
+      const float xi = fx[s], yi = fy[s], zi = fz[s];
+      const Float4 x4{xi, xi, xi, xi}, y4{yi, yi, yi, yi}, z4{zi, zi, zi, zi}, r4{r2max, r2max, r2max, r2max};
       auto scan = [&](std::uint32_t begin, std::uint32_t end) {
         if (partner_.size() < written + (end - begin)) partner_.resize(2 * (written + (end - begin)));
         std::uint32_t* dst = partner_.data();
-        // Branch-free append: most candidates fail the test, unpredictably.
-        for (std::uint32_t t = begin; t < end; ++t) {
-          const double dx = sx[t] - xi, dy = sy[t] - yi, dz = sz[t] - zi;
+        // Four distances at a time, then a branch-free append of each: most candidates fail
+        // the test, unpredictably.
+        std::uint32_t t = begin;
+        for (; t + 4 <= end; t += 4) {
+          const Float4 dx = load4(fx + t) - x4, dy = load4(fy + t) - y4, dz = load4(fz + t) - z4;
+          const Int4 inside = dx * dx + dy * dy + dz * dz < r4;  // -1 where true
+          dst[written] = t;
+          written -= static_cast<std::size_t>(static_cast<std::ptrdiff_t>(inside[0]));
+          dst[written] = t + 1;
+          written -= static_cast<std::size_t>(static_cast<std::ptrdiff_t>(inside[1]));
+          dst[written] = t + 2;
+          written -= static_cast<std::size_t>(static_cast<std::ptrdiff_t>(inside[2]));
+          dst[written] = t + 3;
+          written -= static_cast<std::size_t>(static_cast<std::ptrdiff_t>(inside[3]));
+        }
+        for (; t < end; ++t) {
+          const float dx = fx[t] - xi, dy = fy[t] - yi, dz = fz[t] - zi;
           dst[written] = t;
           written += static_cast<std::size_t>(dx * dx + dy * dy + dz * dz < r2max);
         }
@@ -62,24 +113,85 @@ void VerletPairs::fromFull(const NeighbourList& full, std::span<const Eigen::Vec
     start_[static_cast<std::size_t>(i) + 1] = static_cast<std::uint32_t>(partner_.size());
   }
   anchor_.assign(x.begin(), x.end());
+  h_ = 0;
   skin_ = 0;
+  clearStrays();
   valid_ = false;  // no skin: good for this step only
 }
 
-bool VerletPairs::stillValid(std::span<const Eigen::Vector3d> x) const {
-  if (!valid_ || x.size() != anchor_.size()) return false;
-  // The two largest displacements: no pair can have closed by more than their sum.
-  double first = 0, second = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double d2 = (x[i] - anchor_[i]).squaredNorm();
-    if (!(d2 <= first)) {  // NaN lands here too, and fails below
-      second = first;
-      first = d2;
-    } else if (d2 > second) {
-      second = d2;
-    }
+void VerletPairs::clearStrays() {
+  stray_.clear();
+  strayPairs_.clear();
+  strayCount_ = 0;
+}
+
+bool VerletPairs::refresh(const CellIndex& index, std::span<const Eigen::Vector3d> x) {
+  clearStrays();
+  if (!valid_ || x.size() != anchor_.size() || index.particleCount() != x.size()) return false;
+  // The drift v (PairList.h): the middle of the displacements' bounding box.
+  const std::size_t n = x.size();
+  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d d = x[i] - anchor_[i];
+    low = low.cwiseMin(d);
+    high = high.cwiseMax(d);
   }
-  return std::sqrt(first) + std::sqrt(second) < skin_;
+  const Eigen::Vector3d drift = n > 0 && low.allFinite() && high.allFinite() ? Eigen::Vector3d(0.5 * (low + high)) : Eigen::Vector3d::Zero();
+  // The two largest displacements: no pair can have closed by more than their sum. Measured
+  // both as they are and less the drift (one fast particle stretches the box and shifts its
+  // middle): either passing proves the list.
+  LargestTwo still, drifting;
+  bool finite = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d d = x[i] - anchor_[i];
+    const double d2 = d.squaredNorm();
+    finite = finite && d2 <= std::numeric_limits<double>::max();  // false for NaN and inf
+    still.add(d2);
+    drifting.add((d - drift).squaredNorm());
+  }
+  if (!finite) return false;
+  if (still.sum() < skin_ || drifting.sum() < skin_) return true;
+  if (!(skin_ > 0)) return false;
+
+  // Some moved too far. Strays are measured from the median displacement (per axis) instead:
+  // a few teleported or falling particles stretch the bounding box, not the median.
+  Eigen::Vector3d median;
+  for (int axis = 0; axis < 3; ++axis) {
+    medianScratch_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) medianScratch_[i] = x[i][axis] - anchor_[i][axis];
+    const auto middle = medianScratch_.begin() + static_cast<std::ptrdiff_t>(n / 2);
+    std::nth_element(medianScratch_.begin(), middle, medianScratch_.end());
+    median[axis] = *middle;
+  }
+  const std::size_t limit = std::max<std::size_t>(32, n / 32);
+  const double half2 = 0.25 * skin_ * skin_;
+  strayList_.clear();
+  for (std::size_t i = 0; i < n; ++i)
+    if (!((x[i] - anchor_[i] - median).squaredNorm() < half2)) {
+      strayList_.push_back(static_cast<std::uint32_t>(i));
+      if (strayList_.size() > limit) return false;
+    }
+  stray_.assign(n, 0);
+  for (std::uint32_t f : strayList_) stray_[f] = 1;
+  strayCount_ = static_cast<int>(strayList_.size());
+  const double reach = h_ + skin_, reach2 = reach * reach;
+  for (std::uint32_t f : strayList_) {
+    // Partner j now within h: its anchor x_j - median - e_j lies within h + skin / 2 of
+    // x_f - median, inside the 27 cells around that point.
+    const Eigen::Vector3i c = index.cellOf(x[f] - median);
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy) {
+        const CellIndex::Range r = index.row(c.x() + dx, c.y() + dy, c.z());
+        for (std::uint32_t j = r.begin; j < r.end; ++j)  // sorted position == particle index
+          if (!stray_[j] && (x[j] - x[f]).squaredNorm() < reach2)
+            strayPairs_.push_back({std::min(f, j), std::max(f, j)});
+      }
+  }
+  for (std::size_t a = 0; a < strayList_.size(); ++a)
+    for (std::size_t b = a + 1; b < strayList_.size(); ++b)
+      if ((x[strayList_[a]] - x[strayList_[b]]).squaredNorm() < reach2) strayPairs_.push_back({strayList_[a], strayList_[b]});
+  std::sort(strayPairs_.begin(), strayPairs_.end());
+  return true;
 }
 
 }  // namespace lacrima::tears

@@ -62,6 +62,23 @@ int ParticleSet::add(const Eigen::Vector3d& x, double m, std::uint64_t newId, Ey
   return size() - 1;
 }
 
+void ParticleSet::reset(int i, const Eigen::Vector3d& x, double m, std::uint64_t newId, Eye e) {
+  const auto s = static_cast<std::size_t>(i);
+  position[s] = x;
+  velocity[s].setZero();
+  acceleration[s].setZero();
+  mass[s] = m;
+  density[s] = 0.0;
+  pressure[s] = 0.0;
+  viscosityRate[s] = 0.0;
+  id[s] = newId;
+  age[s] = 0.0;
+  travelled[s] = 0.0;
+  eye[s] = e;
+  contact[s] = {};
+  clearance[s] = 0.0;
+}
+
 void ParticleSet::compact(std::span<const std::uint8_t> keep) {
   assert(keep.size() == position.size());
   compactVector(position, keep);

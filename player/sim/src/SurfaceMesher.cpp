@@ -1,41 +1,90 @@
+#include "Float4.h"
 #include "SurfaceMesherKeyMap.h"
 #include "VectorState.h"
 
-#include <lacrima/tears/Kernels.h>
 #include <lacrima/tears/MarchingCubesTable.h>
 #include <lacrima/tears/SurfaceMesher.h>
 #include <lacrima/tears/TearSimulation.h>
 
+#include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <stdexcept>
 
 namespace lacrima::tears {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+using Int4 = int __attribute__((vector_size(16)));  // lane masks of Float4 comparisons
 using Lattice = Eigen::Matrix<std::int64_t, 3, 1>;
 
-// Relative lattice coordinates are packed 20 bits per axis (x-major, z-minor), so a key fits in
-// 60 bits and an edge key (key << 2 | axis) in 62.
-constexpr int kBits = 20;
-constexpr std::int64_t kSpan = (std::int64_t{1} << kBits) - 4;  // room for +1 corners and margins
+constexpr int kShift = 2;  // 4^3 cubes: 8^3 ran as fast but doubles the memory of sparse drops
+constexpr int kBlock = 1 << kShift;                         // cubes per block edge
+constexpr int kBlockCorners = kBlock * kBlock * kBlock;     // corners owned by a block
+constexpr int kBlockFloats = 4 * kBlockCorners;            // value, then the gradient's x, y, z
+constexpr int kLines = (kBlock + 1) * (kBlock + 1);         // padded (x, y) lines of a block
+constexpr std::uint16_t kFullLine = (1u << (kBlock + 1)) - 1;  // a padded line all inside
+constexpr unsigned kLowBits = (1u << kBlock) - 1;                   // the block's own corners of a line
+
+// The lattice may span at most 2^20 points per axis (as the cell-keyed mesher allowed), so block
+// keys, relative to the lowest block, pack into 3 x 21 bits.
+constexpr std::int64_t kSpan = (std::int64_t{1} << 20) - 4;
+constexpr int kKeyBits = 21;
 
 std::uint64_t pack(const Lattice& relative) {
-  return (static_cast<std::uint64_t>(relative.x()) << (2 * kBits)) |
-         (static_cast<std::uint64_t>(relative.y()) << kBits) | static_cast<std::uint64_t>(relative.z());
+  return (static_cast<std::uint64_t>(relative.x()) << (2 * kKeyBits)) |
+         (static_cast<std::uint64_t>(relative.y()) << kKeyBits) | static_cast<std::uint64_t>(relative.z());
 }
 
-Lattice cornerOffset(int corner) { return {corner & 1, (corner >> 1) & 1, (corner >> 2) & 1}; }
+// floor and ceil of value / step; inline because the baseline x86-64 build calls libm for
+// std::floor. The quotients stay far inside the int64 range (build() refuses |x| / s > 1e15).
+std::int64_t floorDiv(double value, double step) {
+  const double q = value / step;
+  const auto t = static_cast<std::int64_t>(q);
+  return t - static_cast<std::int64_t>(static_cast<double>(t) > q);
+}
+std::int64_t ceilDiv(double value, double step) {
+  const double q = value / step;
+  const auto t = static_cast<std::int64_t>(q);
+  return t + static_cast<std::int64_t>(static_cast<double>(t) < q);
+}
+std::int64_t blockOf(std::int64_t lattice) { return lattice >> kShift; }  // arithmetic shift: floor
+int local(std::int64_t lattice) { return static_cast<int>(lattice & (kBlock - 1)); }
+int cornerSlot(int x, int y, int z) { return (x * kBlock + y) * kBlock + z; }
 
-std::int64_t floorDiv(double value, double step) { return static_cast<std::int64_t>(std::floor(value / step)); }
+// The lattice box of the corners within h of x, per axis [ceil((x - h) / s), floor((x + h) / s)].
+struct SupportBox {
+  Lattice low, high;
+  bool empty() const { return (low.array() > high.array()).any(); }
+};
+SupportBox supportOf(const Eigen::Vector3d& x, double h, double s) {
+  SupportBox b;
+  for (int a = 0; a < 3; ++a) {
+    b.low[a] = ceilDiv(x[a] - h, s);
+    b.high[a] = floorDiv(x[a] + h, s);
+  }
+  return b;
+}
+
+// Per cube edge: the lattice offset of its lower corner and its axis.
+struct EdgeStep {
+  int dx, dy, dz, axis;
+};
+std::array<EdgeStep, 12> edgeSteps() {
+  std::array<EdgeStep, 12> steps{};
+  for (int e = 0; e < 12; ++e) {
+    const int k = MarchingCubesTable::edgeLowerCorner(e);
+    steps[static_cast<std::size_t>(e)] = {k & 1, (k >> 1) & 1, (k >> 2) & 1, MarchingCubesTable::edgeAxis(e)};
+  }
+  return steps;
+}
 
 }  // namespace
 
-SurfaceMesher::SurfaceMesher()
-    : cellMap_(std::make_unique<detail::SurfaceMesherKeyMap>()),
-      cubeMap_(std::make_unique<detail::SurfaceMesherKeyMap>()),
-      cornerMap_(std::make_unique<detail::SurfaceMesherKeyMap>()) {}
+SurfaceMesher::SurfaceMesher() : blockMap_(std::make_unique<detail::SurfaceMesherKeyMap>()) {}
 
 SurfaceMesher::~SurfaceMesher() = default;
 
@@ -67,287 +116,335 @@ const TearSurface& SurfaceMesher::build(std::span<const Eigen::Vector3d> positio
   stats_ = {};
   if (positions.empty()) return surface_;
   field_.bind(positions, masses, grid, h);
-
-  // Active cells: the occupied cells and their 26 neighbours, each once, in a fixed order.
   const CellIndex& index = grid.index();
-  Eigen::Vector3i low = index.cellCoordinates(0), high = low;
-  for (std::size_t c = 1; c < index.cellCount(); ++c) {
-    const Eigen::Vector3i cell = index.cellCoordinates(c);
-    low = low.cwiseMin(cell);
-    high = high.cwiseMax(cell);
+  stats_.activeCells = index.cellCount();
+
+  // The box of the particles that carry volume.
+  const auto weight = field_.sortedVolumes();
+  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for (std::size_t t = 0; t < index.particleCount(); ++t) {
+    if (weight[t] == 0) continue;
+    const Eigen::Vector3d x(index.sortedX()[t], index.sortedY()[t], index.sortedZ()[t]);
+    low = low.cwiseMin(x);
+    high = high.cwiseMax(x);
   }
-  cellBase_ = low.cast<std::int64_t>() - Lattice::Constant(1);
-  const Lattice cellSpan = (high - low).cast<std::int64_t>() + Lattice::Constant(3);
-  if (cellSpan.maxCoeff() >= kSpan) {
+  if (!low.allFinite()) return surface_;  // no particle carries volume: c = 0 everywhere
+  const double extent = (high - low).maxCoeff() + 2 * h;
+  if (extent / h >= static_cast<double>(kSpan)) {
     // Particles a million kernel radii apart: beyond any head; refuse rather than wrap keys.
     stats_.capped = true;
     ++cappedBuilds_;
     return surface_;
   }
-  cellMap_->reset(27 * index.cellCount());
-  dilated_.clear();
-  for (std::size_t c = 0; c < index.cellCount(); ++c) {
-    const Lattice cell = index.cellCoordinates(c).cast<std::int64_t>();
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          const Lattice d = cell + Lattice(dx, dy, dz);
-          if (cellMap_->insert(pack(d - cellBase_), static_cast<std::int32_t>(dilated_.size())).second)
-            dilated_.push_back(d);
-        }
-  }
-  stats_.activeCells = dilated_.size();
 
-  // Cube size: as asked unless the lattice would not fit the keys or the cubes the cap.
+  // Cube size: as asked unless the lattice would not fit the keys or the blocks the cap. The
+  // occupied cells alone hold cells (h / s)^3 cubes: a lower bound that sets an absurdly small
+  // s right before the blocks are counted.
   double s = settings.cubeSize;
-  const double spanLimited = static_cast<double>(cellSpan.maxCoeff() + 2) * h / static_cast<double>(kSpan - 4);
-  const double cubesPerCell = std::pow(h / s, 3);
-  const double capLimited = h * std::cbrt(static_cast<double>(dilated_.size()) / static_cast<double>(settings.maxCubes));
-  if (spanLimited > s || static_cast<double>(dilated_.size()) * cubesPerCell > static_cast<double>(settings.maxCubes)) {
+  const double spanLimited = extent / static_cast<double>(kSpan - 4);
+  const double cells = static_cast<double>(index.cellCount());
+  const double capLimited = h * std::cbrt(cells / static_cast<double>(settings.maxCubes));
+  if (spanLimited > s || cells * std::pow(h / s, 3) > static_cast<double>(settings.maxCubes)) {
     s = std::max({s, spanLimited, capLimited});
     stats_.capped = true;
   }
-  while (!collectCubes(s, settings.maxCubes)) {
-    s *= 1.25;  // the estimate ignores the cubes shared by cell borders; close in from above
+  // Far from the origin the lattice coordinates must stay exact in a double and an int64.
+  if (std::max(low.cwiseAbs().maxCoeff(), high.cwiseAbs().maxCoeff()) / s > 1e15) {
     stats_.capped = true;
+    ++cappedBuilds_;
+    return surface_;
+  }
+  blockBase_ = Lattice(blockOf(ceilDiv(low.x() - h, s) - 1), blockOf(ceilDiv(low.y() - h, s) - 1),
+                       blockOf(ceilDiv(low.z() - h, s) - 1));
+  const std::size_t maxBlocks = std::max<std::size_t>(1, settings.maxCubes / kBlockCorners);
+  while (!collectBlocks(s, maxBlocks)) {
+    s *= 1.25;
+    stats_.capped = true;
+    blockBase_ = Lattice(blockOf(ceilDiv(low.x() - h, s) - 1), blockOf(ceilDiv(low.y() - h, s) - 1),
+                         blockOf(ceilDiv(low.z() - h, s) - 1));
   }
   if (stats_.capped) ++cappedBuilds_;
   stats_.cubeSize = s;
-  stats_.cubes = cube_.size();
+  stats_.blocks = block_.size();
+  stats_.cubes = stats_.corners = block_.size() * kBlockCorners;
 
-  collectCorners();
-  stats_.corners = corner_.size();
+  linkBlocks();
   splat(s);
-  march(s, settings.iso);
-  computeNormals();
+  const auto iso = static_cast<float>(settings.iso);
+  classify(iso);
+  createVertices(s, iso);
+  march();
+  if (anyFallback_) fallbackNormals();
   stats_.milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   return surface_;
 }
 
-// Row-major (x-major, z-minor) index of a lattice point in the dense box, or -1 outside it.
-std::int64_t SurfaceMesher::denseSlot(const Lattice& p) const {
-  const Lattice r = p - denseLow_;
-  if ((r.array() < 0).any() || (r.array() >= denseDims_.array()).any()) return -1;
-  return (r.x() * denseDims_.y() + r.y()) * denseDims_.z() + r.z();
-}
+std::int32_t SurfaceMesher::blockAt(const Lattice& block) const { return blockMap_->find(pack(block - blockBase_)); }
 
-// The corner id of a lattice point, or -1 when it is no cube's corner.
-std::int32_t SurfaceMesher::cornerId(const Lattice& p) const {
-  if (!dense_) return cornerMap_->find(pack(p - cubeBase_));
-  const std::int64_t slot = denseSlot(p);
-  return slot < 0 ? -1 : denseCorner_[static_cast<std::size_t>(slot)];
-}
-
-// Every cube meeting an active cell: on each axis k from floor(d h / s) to floor((d + 1) h / s),
-// a superset of the cubes whose interior overlaps the cell [d h, (d + 1) h] (at most one extra
-// cube per axis, at the rim, where c = 0). Returns false once more than maxCubes are found.
-bool SurfaceMesher::collectCubes(double s, std::size_t maxCubes) {
+// The blocks of every particle's support box, extended by one corner downwards, in particle
+// order (deterministic). Returns false once more than maxBlocks are found.
+bool SurfaceMesher::collectBlocks(double s, std::size_t maxBlocks) {
   const double h = field_.kernelRadius();
-  cubeBase_ = Lattice(floorDiv(static_cast<double>(cellBase_.x()) * h, s), floorDiv(static_cast<double>(cellBase_.y()) * h, s),
-                      floorDiv(static_cast<double>(cellBase_.z()) * h, s)) -
-              Lattice::Constant(1);
-  const double perCell = std::pow(h / s + 1.0, 3);
-  const double expected = std::min(static_cast<double>(maxCubes), perCell * static_cast<double>(dilated_.size()));
-  // The corners' bounding box: every cube of every dilated cell plus its +1 corners. Dense when
-  // it holds at most ~8 lattice points per expected cube (filling an int costs far less than a
-  // hash probe), else the hash maps keep memory proportional to the cubes.
-  Lattice cellHigh = dilated_.front();
-  for (const Lattice& d : dilated_) cellHigh = cellHigh.cwiseMax(d);
-  Lattice boxHigh;
-  for (int a = 0; a < 3; ++a) {
-    denseLow_[a] = floorDiv(static_cast<double>(cellBase_[a]) * h, s);
-    boxHigh[a] = floorDiv(static_cast<double>(cellHigh[a] + 1) * h, s) + 1;
-  }
-  denseDims_ = boxHigh - denseLow_ + Lattice::Constant(1);
-  const double boxPoints = static_cast<double>(denseDims_.x()) * static_cast<double>(denseDims_.y()) *
-                           static_cast<double>(denseDims_.z());
-  dense_ = boxPoints <= 8.0 * expected + 4096.0 && boxPoints <= double(std::int64_t{1} << 26);
-  // The dense arrays are all -1 except the slots the last build set, listed: clearing those is
-  // proportional to the cubes, where refilling the box would be proportional to its volume
-  // (two drops far apart make a large, nearly empty box).
-  for (std::int64_t slot : denseCubeSlots_) denseCube_[static_cast<std::size_t>(slot)] = -1;
-  denseCubeSlots_.clear();
-  if (dense_) {
-    if (denseCube_.size() < static_cast<std::size_t>(boxPoints)) denseCube_.resize(static_cast<std::size_t>(boxPoints), -1);
-  } else {
-    cubeMap_->reset(static_cast<std::size_t>(expected));
-  }
-  cube_.clear();
-  for (const Lattice& d : dilated_) {
-    Lattice lo, hi;
+  const CellIndex& index = field_.index();
+  const auto weight = field_.sortedVolumes();
+  blockMap_->reset(std::min(maxBlocks, 4 * block_.size() + 64));
+  block_.clear();
+  Lattice lastLow = Lattice::Constant(1), lastHigh = Lattice::Zero();  // an empty range
+  for (std::size_t t = 0; t < index.particleCount(); ++t) {
+    if (weight[t] == 0) continue;
+    const SupportBox box = supportOf({index.sortedX()[t], index.sortedY()[t], index.sortedZ()[t]}, h, s);
+    if (box.empty()) continue;  // no lattice point within h: adds nothing
+    Lattice bl, bh;
     for (int a = 0; a < 3; ++a) {
-      lo[a] = floorDiv(static_cast<double>(d[a]) * h, s);
-      hi[a] = floorDiv(static_cast<double>(d[a] + 1) * h, s);
+      bl[a] = blockOf(box.low[a] - 1);
+      bh[a] = blockOf(box.high[a]);
     }
-    for (std::int64_t x = lo.x(); x <= hi.x(); ++x)
-      for (std::int64_t y = lo.y(); y <= hi.y(); ++y) {
-        // The z run of this (x, y) is contiguous in the dense box: one index, then +1 per cube.
-        const std::int64_t row = dense_ ? denseSlot(Lattice(x, y, lo.z())) - lo.z() : 0;
-        for (std::int64_t z = lo.z(); z <= hi.z(); ++z) {
-          const Lattice k(x, y, z);
-          const auto id = static_cast<std::int32_t>(cube_.size());
-          if (dense_) {
-            std::int32_t& slot = denseCube_[static_cast<std::size_t>(row + z)];
-            if (slot >= 0) continue;
-            slot = id;
-            denseCubeSlots_.push_back(row + z);
-          } else if (!cubeMap_->insert(pack(k - cubeBase_), id).second) {
-            continue;
-          }
-          cube_.push_back(k);
-          if (cube_.size() > maxCubes) return false;
+    if (bl == lastLow && bh == lastHigh) continue;  // the same blocks as the particle before
+    lastLow = bl;
+    lastHigh = bh;
+    for (std::int64_t x = bl.x(); x <= bh.x(); ++x)
+      for (std::int64_t y = bl.y(); y <= bh.y(); ++y)
+        for (std::int64_t z = bl.z(); z <= bh.z(); ++z) {
+          const Lattice b(x, y, z);
+          if (!blockMap_->insert(pack(b - blockBase_), static_cast<std::int32_t>(block_.size())).second) continue;
+          block_.push_back(b);
+          if (block_.size() > maxBlocks) return false;
         }
-      }
   }
   return true;
 }
 
-// The eight corners of every cube, each lattice point once.
-void SurfaceMesher::collectCorners() {
-  corner_.clear();
-  cubeCorner_.resize(cube_.size());
-  for (std::int64_t slot : denseCornerSlots_) denseCorner_[static_cast<std::size_t>(slot)] = -1;
-  denseCornerSlots_.clear();
-  if (dense_) {
-    if (denseCorner_.size() < denseCube_.size()) denseCorner_.resize(denseCube_.size(), -1);
-    // Corner k of a cube is `step[k]` slots from its corner 0 (the box is row-major).
-    const std::int64_t dz = 1, dy = denseDims_.z(), dx = denseDims_.y() * denseDims_.z();
-    std::array<std::int64_t, 8> step;
-    for (int k = 0; k < 8; ++k) step[static_cast<std::size_t>(k)] = (k & 1) * dx + ((k >> 1) & 1) * dy + ((k >> 2) & 1) * dz;
-    for (std::size_t i = 0; i < cube_.size(); ++i) {
-      const std::int64_t base = denseSlot(cube_[i]);  // in the box, and so are its +1 corners
-      for (int k = 0; k < 8; ++k) {
-        const std::int64_t at = base + step[static_cast<std::size_t>(k)];
-        std::int32_t& slot = denseCorner_[static_cast<std::size_t>(at)];
-        if (slot < 0) {
-          slot = static_cast<std::int32_t>(corner_.size());
-          corner_.push_back(cube_[i] + cornerOffset(k));
-          denseCornerSlots_.push_back(at);
-        }
-        cubeCorner_[i][static_cast<std::size_t>(k)] = slot;
-      }
-    }
-    return;
+void SurfaceMesher::linkBlocks() {
+  neighbour_.resize(block_.size());
+  for (std::size_t b = 0; b < block_.size(); ++b) {
+    neighbour_[b][0] = static_cast<std::int32_t>(b);
+    for (int k = 1; k < 8; ++k) neighbour_[b][static_cast<std::size_t>(k)] = blockAt(block_[b] + Lattice(k & 1, (k >> 1) & 1, k >> 2));
   }
-  cornerMap_->reset(cube_.size() + cube_.size() / 2 + 64);
-  for (std::size_t i = 0; i < cube_.size(); ++i)
-    for (int k = 0; k < 8; ++k) {
-      const Lattice p = cube_[i] + cornerOffset(k);
-      const auto [id, inserted] = cornerMap_->insert(pack(p - cubeBase_), static_cast<std::int32_t>(corner_.size()));
-      if (inserted) corner_.push_back(p);
-      cubeCorner_[i][static_cast<std::size_t>(k)] = id;
-    }
 }
 
-// c and grad c at the corners, particle by particle: each particle adds V (h^2 - r^2)^3 and
-// V (h^2 - r^2)^2 (corner - x) to the corners within h of it ((2h/s)^3 of them), cheaper than
-// gathering 27 cells per corner; the vertices' normals then interpolate the corner gradients.
+// c and grad c at the corners, particle by particle: each particle adds a d^2 (d, e) to the
+// corners of its support box with d > 0 (d = 1 - r^2/h^2, e = (corner - x) / h, a = V w h^6),
+// cheaper than gathering 27 cells per corner. c = sum a d^3 and grad c = -6 / h sum a d^2 e.
+// The box's per-axis offsets, blocks and block-local coordinates are tabulated once per particle,
+// so the corner loop is a handful of single-precision operations and one four-float add.
 void SurfaceMesher::splat(double s) {
-  const double h = field_.kernelRadius(), h2 = h * h;
+  const double h = field_.kernelRadius(), inverse = 1.0 / h;
+  const auto step = static_cast<float>(s * inverse);
   const CellIndex& index = field_.index();
-  const auto volume = field_.sortedVolumes();
-  const double* sx = index.sortedX().data();
-  const double* sy = index.sortedY().data();
-  const double* sz = index.sortedZ().data();
-  cornerValue_.assign(corner_.size(), 0.0);
-  cornerGradient_.assign(corner_.size(), Eigen::Vector3d::Zero());
+  const auto weight = field_.sortedSplatWeights();
+  sum_.resize(block_.size() * kBlockFloats + 4);  // +4: the last four-wide add may overhang
+  std::memset(sum_.data(), 0, sum_.size() * sizeof(float));
+  Lattice lastLow = Lattice::Constant(1), lastHigh = Lattice::Zero(), dims = Lattice::Zero();
+  const Float4 lane = {0, 1, 2, 3}, zero = {0, 0, 0, 0};
   for (std::size_t t = 0; t < index.particleCount(); ++t) {
-    const Eigen::Vector3d x(sx[t], sy[t], sz[t]);
-    if (volume[t] == 0 || !x.allFinite()) continue;
-    const double v = volume[t];
-    const std::int64_t x0 = static_cast<std::int64_t>(std::ceil((x.x() - h) / s)), x1 = floorDiv(x.x() + h, s);
-    const std::int64_t y0 = static_cast<std::int64_t>(std::ceil((x.y() - h) / s)), y1 = floorDiv(x.y() + h, s);
-    for (std::int64_t i = x0; i <= x1; ++i) {
-      const double ex = static_cast<double>(i) * s - x.x();
-      for (std::int64_t j = y0; j <= y1; ++j) {
-        const double ey = static_cast<double>(j) * s - x.y();
-        const double rest = h2 - ex * ex - ey * ey;
+    if (weight[t] == 0) continue;
+    const Eigen::Vector3d x(index.sortedX()[t], index.sortedY()[t], index.sortedZ()[t]);
+    const SupportBox box = supportOf(x, h, s);
+    if (box.empty()) continue;
+    Lattice bl, bh;
+    for (int a = 0; a < 3; ++a) {
+      bl[a] = blockOf(box.low[a]);
+      bh[a] = blockOf(box.high[a]);
+    }
+    if (bl != lastLow || bh != lastHigh) {  // look the support's blocks up once per run of particles
+      lastLow = bl;
+      lastHigh = bh;
+      dims = bh - bl + Lattice::Ones();
+      particleBlocks_.clear();
+      for (std::int64_t bx = bl.x(); bx <= bh.x(); ++bx)
+        for (std::int64_t by = bl.y(); by <= bh.y(); ++by)
+          for (std::int64_t bz = bl.z(); bz <= bh.z(); ++bz) particleBlocks_.push_back(blockAt(Lattice(bx, by, bz)));
+    }
+    // Per axis and box point: offset from the particle in kernel units, block (relative to bl)
+    // and block-local coordinate. Offsets are padded with four zeros for four-wide loads.
+    const Lattice n = box.high - box.low + Lattice::Ones();
+    axisTable_.resize(static_cast<std::size_t>(n.sum()));
+    offsetTable_.resize(static_cast<std::size_t>(n.sum()) + 12);
+    std::array<AxisPoint*, 3> axis{};
+    std::array<float*, 3> offset{};
+    for (int a = 0, at = 0; a < 3; at += static_cast<int>(n[a]) + 4, ++a) {
+      axis[static_cast<std::size_t>(a)] = &axisTable_[static_cast<std::size_t>(at - 4 * a)];
+      offset[static_cast<std::size_t>(a)] = &offsetTable_[static_cast<std::size_t>(at)];
+      const auto first = static_cast<float>((static_cast<double>(box.low[a]) * s - x[a]) * inverse);
+      for (std::int64_t k = 0; k < n[a]; ++k) {
+        const std::int64_t lattice = box.low[a] + k;
+        offset[static_cast<std::size_t>(a)][k] = first + static_cast<float>(k) * step;
+        axis[static_cast<std::size_t>(a)][k] = {static_cast<int>(blockOf(lattice) - bl[a]), local(lattice)};
+      }
+      for (int k = 0; k < 4; ++k) offset[static_cast<std::size_t>(a)][n[a] + k] = 0.0f;
+    }
+    const float weightT = weight[t];
+    const Float4 a = {weightT, weightT, weightT, weightT};
+    for (std::int64_t i = 0; i < n.x(); ++i) {
+      const float ex = offset[0][i];
+      for (std::int64_t j = 0; j < n.y(); ++j) {
+        const float ey = offset[1][j];
+        const float rest = 1.0f - ex * ex - ey * ey;
         if (rest <= 0) continue;
-        const double reach = std::sqrt(rest);
-        const std::int64_t z0 = static_cast<std::int64_t>(std::ceil((x.z() - reach) / s)), z1 = floorDiv(x.z() + reach, s);
-        for (std::int64_t k = z0; k <= z1; ++k) {
-          const double ez = static_cast<double>(k) * s - x.z();
-          const double d = rest - ez * ez;
-          if (d <= 0) continue;
-          const std::int32_t c = cornerId(Lattice(i, j, k));
-          if (c < 0) continue;
-          const double vd2 = v * d * d;
-          cornerValue_[static_cast<std::size_t>(c)] += vd2 * d;
-          cornerGradient_[static_cast<std::size_t>(c)] += vd2 * Eigen::Vector3d(ex, ey, ez);
+        const std::size_t row = static_cast<std::size_t>((axis[0][i].block * dims.y() + axis[1][j].block) * dims.z());
+        const auto slot = static_cast<std::size_t>(cornerSlot(axis[0][i].local, axis[1][j].local, 0));
+        const Float4 rest4 = {rest, rest, rest, rest}, ex4 = {ex, ex, ex, ex}, ey4 = {ey, ey, ey, ey};
+        // The z run, one block at a time, four corners per step (contiguous in the block):
+        // lanes past the run or outside the support add exact zeros.
+        for (std::int64_t k = 0; k < n.z();) {
+          const int blockZ = axis[2][k].block;
+          std::int64_t end = k + 1;
+          while (end < n.z() && axis[2][end].block == blockZ) ++end;
+          const std::int32_t b = particleBlocks_[row + static_cast<std::size_t>(blockZ)];
+          float* base = &sum_[static_cast<std::size_t>(b) * kBlockFloats + slot + static_cast<std::size_t>(axis[2][k].local)];
+          for (; k < end; k += 4, base += 4) {
+            const Float4 ez = load4(&offset[2][k]);
+            const Float4 d = rest4 - ez * ez;
+            const auto left = static_cast<float>(end - k);
+            const Int4 keep = (d > zero) & (lane < Float4{left, left, left, left});
+            const Float4 w = reinterpret_cast<Float4>(reinterpret_cast<Int4>(a * d * d) & keep);
+            store4(base, load4(base) + w * d);
+            store4(base + kBlockCorners, load4(base + kBlockCorners) + w * ex4);
+            store4(base + 2 * kBlockCorners, load4(base + 2 * kBlockCorners) + w * ey4);
+            store4(base + 3 * kBlockCorners, load4(base + 3 * kBlockCorners) + w * ez);
+          }
+          k = end;
         }
       }
     }
   }
-  const Poly6Kernel kernel(h);
-  const double w = kernel.valueCoefficient(), g = kernel.gradientCoefficient();
-  for (double& value : cornerValue_) value *= w;
-  for (Eigen::Vector3d& gradient : cornerGradient_) gradient *= g;
 }
 
-// The vertex on the cube edge from corner `lowerCorner` (at lattice point `lower`) along `axis`
-// to `upperCorner`: created once per edge, keyed by the lower corner's id and the axis, so the
-// cubes sharing the edge share the vertex (watertight) without a hash of lattice keys.
-std::int32_t SurfaceMesher::vertexOnEdge(const Lattice& lower, std::int32_t lowerCorner, std::int32_t upperCorner,
-                                         int axis, double s, double iso) {
-  std::int32_t& id = edgeVertex_[3 * static_cast<std::size_t>(lowerCorner) + static_cast<std::size_t>(axis)];
-  if (id >= 0) return id;
-  id = static_cast<std::int32_t>(surface_.position_.size());
-  const double a = cornerValue_[static_cast<std::size_t>(lowerCorner)];
-  const double b = cornerValue_[static_cast<std::size_t>(upperCorner)];
-  // One end is inside (>= iso) and the other outside (< iso), so b - a != 0 and mu is in [0, 1].
-  const double mu = (iso - a) / (b - a);
-  Eigen::Vector3d p = lower.cast<double>() * s;
-  p[axis] += mu * s;
-  surface_.position_.push_back(p);
-  const Eigen::Vector3d& ga = cornerGradient_[static_cast<std::size_t>(lowerCorner)];
-  vertexGradient_.push_back(ga + mu * (cornerGradient_[static_cast<std::size_t>(upperCorner)] - ga));
-  return id;
-}
-
-void SurfaceMesher::march(double s, double iso) {
-  const MarchingCubesTable& table = MarchingCubesTable::instance();
-  edgeVertex_.assign(3 * corner_.size(), -1);  // keeps its capacity between frames
-  vertexGradient_.clear();
-  for (std::size_t i = 0; i < cube_.size(); ++i) {
-    const auto& corners = cubeCorner_[i];
-    int configuration = 0;
-    for (int k = 0; k < 8; ++k)
-      if (cornerValue_[static_cast<std::size_t>(corners[static_cast<std::size_t>(k)])] >= iso) configuration |= 1 << k;
-    if (configuration == 0 || configuration == 255) continue;
-    const MarchingCubesCase& c = table[configuration];
-    for (int t = 0; t < c.triangleCount; ++t) {
-      Eigen::Vector3i triangle;
-      for (int v = 0; v < 3; ++v) {
-        const int edge = c.edges[static_cast<std::size_t>(3 * t + v)];
-        const int lowerK = MarchingCubesTable::edgeLowerCorner(edge), upperK = MarchingCubesTable::edgeUpperCorner(edge);
-        const Lattice lower = cube_[i] + cornerOffset(lowerK);
-        triangle[v] = vertexOnEdge(lower, corners[static_cast<std::size_t>(lowerK)],
-                                   corners[static_cast<std::size_t>(upperK)], MarchingCubesTable::edgeAxis(edge), s, iso);
+// Inside bits (c >= iso) per block, then the padded 9 x 9 lines of 9 bits each; the blocks whose
+// lines are neither all outside nor all inside hold the surface.
+void SurfaceMesher::classify(float iso) {
+  const std::size_t n = block_.size();
+  inside_.resize(n * kBlock * kBlock);
+  for (std::size_t b = 0; b < n; ++b) {
+    const float* c = &sum_[b * kBlockFloats];
+    std::uint8_t* mask = &inside_[b * kBlock * kBlock];
+    for (int line = 0; line < kBlock * kBlock; ++line, c += kBlock) {
+      unsigned bits = 0;
+      for (int z = 0; z < kBlock; ++z) bits |= static_cast<unsigned>(c[z] >= iso) << z;
+      mask[line] = static_cast<std::uint8_t>(bits);
+    }
+  }
+  line_.resize(n * kLines);
+  surfaceBlock_.clear();
+  for (std::size_t b = 0; b < n; ++b) {
+    const auto& near = neighbour_[b];
+    std::uint16_t* lines = &line_[b * kLines];
+    unsigned any = 0, all = kFullLine;
+    for (int x = 0; x <= kBlock; ++x)
+      for (int y = 0; y <= kBlock; ++y) {
+        const int side = (x >> kShift) | ((y >> kShift) << 1);
+        const std::int32_t own = near[static_cast<std::size_t>(side)], above = near[static_cast<std::size_t>(side | 4)];
+        const int slot = (x & (kBlock - 1)) * kBlock + (y & (kBlock - 1));
+        unsigned bits = own >= 0 ? inside_[static_cast<std::size_t>(own) * kBlock * kBlock + static_cast<std::size_t>(slot)] : 0u;
+        if (above >= 0) bits |= (inside_[static_cast<std::size_t>(above) * kBlock * kBlock + static_cast<std::size_t>(slot)] & 1u) << kBlock;
+        lines[x * (kBlock + 1) + y] = static_cast<std::uint16_t>(bits);
+        any |= bits;
+        all &= bits;
       }
-      surface_.triangle_.push_back(triangle);
-    }
+    if (any != 0 && all != kFullLine) surfaceBlock_.push_back(static_cast<std::uint32_t>(b));
   }
 }
 
-void SurfaceMesher::computeNormals() {
-  const std::size_t n = surface_.position_.size();
-  surface_.normal_.resize(n);
-  normalFallback_.assign(n, 0);
-  bool anyFallback = false;
-  const double h = field_.kernelRadius();
-  for (std::size_t v = 0; v < n; ++v) {
-    const Eigen::Vector3d& g = vertexGradient_[v];
-    const double norm = g.norm();
-    // |grad c| of a surface is ~1 / h; far below that the direction is rounding noise.
-    if (norm > 1e-9 / h && std::isfinite(norm)) {
-      surface_.normal_[v] = -g / norm;
-    } else {
-      surface_.normal_[v].setZero();
-      normalFallback_[v] = 1;
-      anyFallback = true;
-    }
+// One vertex per crossing edge whose lower corner the block owns, in a fixed order (block, line,
+// axis, z), before any cube looks one up.
+void SurfaceMesher::createVertices(double s, float iso) {
+  edgeVertex_.resize(block_.size() * kBlockCorners * 3);
+  normalFallback_.clear();
+  anyFallback_ = false;
+  // Value and gradient sum of a corner (block-relative coordinates up to kBlock); zeros in a missing block.
+  const auto corner = [&](std::size_t b, int x, int y, int z) {
+    const int side = (x >> kShift) | ((y >> kShift) << 1) | ((z >> kShift) << 2);
+    const std::int32_t owner = neighbour_[b][static_cast<std::size_t>(side)];
+    std::array<double, 4> v{};
+    if (owner < 0) return v;
+    const float* at = &sum_[static_cast<std::size_t>(owner) * kBlockFloats +
+                            static_cast<std::size_t>(cornerSlot(x & (kBlock - 1), y & (kBlock - 1), z & (kBlock - 1)))];
+    for (int k = 0; k < 4; ++k) v[static_cast<std::size_t>(k)] = at[k * kBlockCorners];
+    return v;
+  };
+  for (const std::uint32_t b : surfaceBlock_) {
+    const std::uint16_t* lines = &line_[b * kLines];
+    const Lattice origin = block_[b] * kBlock;
+    for (int x = 0; x < kBlock; ++x)
+      for (int y = 0; y < kBlock; ++y) {
+        const unsigned m = lines[x * (kBlock + 1) + y];
+        const std::array<unsigned, 3> crossing = {(m ^ lines[(x + 1) * (kBlock + 1) + y]) & kLowBits,
+                                                  (m ^ lines[x * (kBlock + 1) + y + 1]) & kLowBits, (m ^ (m >> 1)) & kLowBits};
+        for (int axis = 0; axis < 3; ++axis)
+          for (unsigned bits = crossing[static_cast<std::size_t>(axis)]; bits != 0; bits &= bits - 1) {
+            const int z = std::countr_zero(bits);
+            const std::array<double, 4> lower = corner(b, x, y, z);
+            const std::array<double, 4> upper = corner(b, x + (axis == 0), y + (axis == 1), z + (axis == 2));
+            // One end is inside (>= iso) and the other outside (< iso), so the values differ and
+            // mu is in [0, 1].
+            const double a = lower[0], mu = (static_cast<double>(iso) - a) / (upper[0] - a);
+            Eigen::Vector3d p = (origin + Lattice(x, y, z)).cast<double>() * s;
+            p[axis] += mu * s;
+            // The normal is -grad c / |grad c| = +sum / |sum| (grad c = -6 / h sum).
+            Eigen::Vector3d g;
+            for (int k = 0; k < 3; ++k)
+              g[k] = lower[static_cast<std::size_t>(k + 1)] +
+                     mu * (upper[static_cast<std::size_t>(k + 1)] - lower[static_cast<std::size_t>(k + 1)]);
+            const double norm = g.norm();
+            const auto id = static_cast<std::int32_t>(surface_.position_.size());
+            edgeVertex_[(b * kBlockCorners + static_cast<std::size_t>(cornerSlot(x, y, z))) * 3 + static_cast<std::size_t>(axis)] = id;
+            surface_.position_.push_back(p);
+            // The sum is ~0.1 on a surface; far below that its direction is single-precision noise.
+            const bool usable = norm > 1e-6 && std::isfinite(norm);
+            surface_.normal_.push_back(usable ? Eigen::Vector3d(g / norm) : Eigen::Vector3d::Zero());
+            normalFallback_.push_back(usable ? 0 : 1);
+            anyFallback_ = anyFallback_ || !usable;
+          }
+      }
   }
-  if (!anyFallback) return;
+}
+
+// The cubes of the surface blocks, row by row along z: a row whose four lines agree has no
+// surface; otherwise the case table's triangles, their vertices looked up in the block owning
+// each edge's lower corner.
+void SurfaceMesher::march() {
+  static const std::array<EdgeStep, 12> steps = edgeSteps();
+  const MarchingCubesTable& table = MarchingCubesTable::instance();
+  for (const std::uint32_t b : surfaceBlock_) {
+    const std::uint16_t* lines = &line_[b * kLines];
+    const auto& near = neighbour_[b];
+    for (int x = 0; x < kBlock; ++x)
+      for (int y = 0; y < kBlock; ++y) {
+        const unsigned l0 = lines[x * (kBlock + 1) + y], l1 = lines[(x + 1) * (kBlock + 1) + y];
+        const unsigned l2 = lines[x * (kBlock + 1) + y + 1], l3 = lines[(x + 1) * (kBlock + 1) + y + 1];
+        // Cube z is all outside when no line has bit z or z + 1, all inside when every line has
+        // both: only the other cubes of the row are looked at.
+        const unsigned any = l0 | l1 | l2 | l3, all = l0 & l1 & l2 & l3;
+        const unsigned uniform = ~(any | (any >> 1)) | (all & (all >> 1));
+        for (unsigned mixed = ~uniform & kLowBits; mixed != 0; mixed &= mixed - 1) {
+          const int z = std::countr_zero(mixed);
+          // Corner k of the cube: line (k & 3) (x + 1 for bit 0, y + 1 for bit 1), z + (k >> 2).
+          const auto face = [&](int at) {
+            return ((l0 >> at) & 1u) | (((l1 >> at) & 1u) << 1) | (((l2 >> at) & 1u) << 2) | (((l3 >> at) & 1u) << 3);
+          };
+          const unsigned configuration = face(z) | (face(z + 1) << 4);
+          const MarchingCubesCase& c = table[static_cast<int>(configuration)];
+          for (int t = 0; t < c.triangleCount; ++t) {
+            Eigen::Vector3i triangle;
+            for (int v = 0; v < 3; ++v) {
+              const EdgeStep& e = steps[static_cast<std::size_t>(c.edges[static_cast<std::size_t>(3 * t + v)])];
+              const int px = x + e.dx, py = y + e.dy, pz = z + e.dz;
+              const int side = (px >> kShift) | ((py >> kShift) << 1) | ((pz >> kShift) << 2);
+              // A crossing edge's lower corner lies in an active block (the support boxes were
+              // extended downwards), so the owner exists and has created the vertex.
+              const auto owner = static_cast<std::size_t>(near[static_cast<std::size_t>(side)]);
+              const int slot = cornerSlot(px & (kBlock - 1), py & (kBlock - 1), pz & (kBlock - 1));
+              triangle[v] = edgeVertex_[(owner * kBlockCorners + static_cast<std::size_t>(slot)) * 3 + static_cast<std::size_t>(e.axis)];
+            }
+            surface_.triangle_.push_back(triangle);
+          }
+        }
+      }
+  }
+}
+
+// Where the interpolated gradient vanished: the area-weighted normals of the vertex's triangles.
+void SurfaceMesher::fallbackNormals() {
   for (const Eigen::Vector3i& t : surface_.triangle_) {
     const Eigen::Vector3d& a = surface_.position_[static_cast<std::size_t>(t[0])];
     const Eigen::Vector3d areaNormal = (surface_.position_[static_cast<std::size_t>(t[1])] - a)
@@ -355,7 +452,7 @@ void SurfaceMesher::computeNormals() {
     for (int k = 0; k < 3; ++k)
       if (normalFallback_[static_cast<std::size_t>(t[k])]) surface_.normal_[static_cast<std::size_t>(t[k])] += areaNormal;
   }
-  for (std::size_t v = 0; v < n; ++v) {
+  for (std::size_t v = 0; v < surface_.normal_.size(); ++v) {
     if (!normalFallback_[v]) continue;
     const double norm = surface_.normal_[v].norm();
     surface_.normal_[v] = norm > 0 ? Eigen::Vector3d(surface_.normal_[v] / norm) : Eigen::Vector3d::UnitY();

@@ -1,7 +1,7 @@
 #pragma once
 // Open-addressing hash map from 64-bit lattice keys to dense indices (linear probing, load
-// factor <= 1/2, Fibonacci hashing). The mesher keys cubes, lattice corners and cube edges by
-// their packed integer coordinates; the map keeps its slots between frames, so a steady drop
+// factor <= 1/2, Fibonacci hashing). The mesher keys its active blocks by their packed
+// integer coordinates; the map keeps its slots between frames, so a steady drop
 // meshes without allocating. clear() costs the capacity, which follows the largest use.
 #include <algorithm>
 #include <cstdint>

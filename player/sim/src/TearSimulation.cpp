@@ -53,12 +53,14 @@ std::uint64_t nextInstance() {
 }  // namespace
 
 // Everything restore() needs to make the future repeat. Left out on purpose: the pair geometry
-// of a sub-step (ActivePairs, the force pass's float copies) and the cell index, which every
-// sub-step rebuilds before reading, and the exposed grid, rebuilt on demand.
+// of a sub-step (ActivePairs, the force pass's float copies), which every sub-step rebuilds
+// before reading, and the exposed grid, rebuilt on demand. The cell index is kept: the pair
+// list searches its cells for strays until the next rebuild.
 struct TearCheckpoint::State {
   std::uint64_t instance = 0;
   ParticleSet particles;
   VerletPairs candidates;  // when the pair list is next rebuilt decides the particle order
+  CellIndex cells;         // the list's cells (stray searches)
   Emitter emitter;
   SkinCollider::Surface skin;
   bool skinStale = true;
@@ -83,7 +85,8 @@ std::size_t TearCheckpoint::bytes() const {
   const std::size_t n = static_cast<std::size_t>(p.size());
   const std::size_t perParticle = 3 * sizeof(Eigen::Vector3d) + 7 * sizeof(double) + sizeof(std::uint64_t) +
                                   sizeof(Eye) + sizeof(SkinContact);
-  const std::size_t pairs = (n + 1 + state_->candidates.pairCount()) * sizeof(std::uint32_t) + n * sizeof(Eigen::Vector3d);
+  const std::size_t pairs = (n + 1 + state_->candidates.pairCount()) * sizeof(std::uint32_t) + n * sizeof(Eigen::Vector3d) +
+                            n * (sizeof(int) + 3 * sizeof(double)) + state_->cells.cellCount() * 4 * sizeof(std::uint64_t);
   const std::size_t skin = static_cast<std::size_t>(state_->skin.vertices.size()) * sizeof(double) +
                            state_->skin.normals.size() * (sizeof(Eigen::Vector3d) + 1);
   return sizeof(State) + n * perParticle + pairs + skin;
@@ -91,7 +94,7 @@ std::size_t TearCheckpoint::bytes() const {
 
 TearCheckpoint TearSimulation::checkpoint() const {
   auto state = std::make_shared<TearCheckpoint::State>(TearCheckpoint::State{
-      instance_, particles_, candidates_, emitter_, collider_->surface(), skinStale_, sources_, box_, trailVolume_,
+      instance_, particles_, candidates_, cellIndex_, emitter_, collider_->surface(), skinStale_, sources_, box_, trailVolume_,
       lastSubstep_, lastNetAcceleration_});
   TearCheckpoint c;
   c.state_ = std::move(state);
@@ -107,6 +110,7 @@ void TearSimulation::restore(const TearCheckpoint& checkpoint) {
   addCollisionCounters(counters_, c);
   particles_ = s.particles;  // assignment: the buffers keep their capacity
   candidates_ = s.candidates;
+  cellIndex_ = s.cells;
   emitter_ = s.emitter;
   skinStale_ = s.skinStale;
   sources_ = s.sources;
@@ -366,26 +370,23 @@ void TearSimulation::step(const Eigen::Matrix3Xf& positions, int leftCount, int 
 }
 
 void TearSimulation::recycleEscaped(std::array<EmissionSite, 2>& sites, std::array<bool, 2>& siteKnown) {
-  std::array<int, 2> escaped{0, 0};
-  keep_.assign(static_cast<std::size_t>(particles_.size()), 1);
+  // Escaped particles are re-emitted in their own slots: compacting would renumber every
+  // particle after them and void the pair list, a full neighbour search every sub-step while
+  // drops keep falling off the chin.
+  for (auto& slots : escaped_) slots.clear();
   for (int i = 0; i < particles_.size(); ++i) {
     const auto s = static_cast<std::size_t>(i);
-    if (!box_.contains(particles_.position[s])) {
-      keep_[s] = 0;
-      ++escaped[static_cast<std::size_t>(particles_.eye[s])];
-    }
+    if (!box_.contains(particles_.position[s])) escaped_[static_cast<std::size_t>(particles_.eye[s])].push_back(i);
   }
-  if (escaped[0] + escaped[1] == 0) return;
-  particles_.compact(keep_);
-  candidates_.invalidate();
   for (int e = 0; e < 2; ++e) {
-    if (escaped[static_cast<std::size_t>(e)] == 0) continue;
+    const auto& slots = escaped_[static_cast<std::size_t>(e)];
+    if (slots.empty()) continue;
     if (!siteKnown[static_cast<std::size_t>(e)]) {
       sites[static_cast<std::size_t>(e)] = siteFor(static_cast<Eye>(e));
       siteKnown[static_cast<std::size_t>(e)] = true;
     }
-    emitter_.spawn(particles_, static_cast<Eye>(e), escaped[static_cast<std::size_t>(e)], sites[static_cast<std::size_t>(e)]);
-    counters_.recycled += escaped[static_cast<std::size_t>(e)];
+    emitter_.respawn(particles_, static_cast<Eye>(e), slots, sites[static_cast<std::size_t>(e)]);
+    counters_.recycled += static_cast<long long>(slots.size());
   }
 }
 
@@ -404,7 +405,13 @@ void TearSimulation::updatePairs() {
     ++counters_.neighbourSearches;
     return;
   }
-  if (candidates_.stillValid(particles_.position)) return;
+  if (candidates_.refresh(cellIndex_, particles_.position)) {
+    if (candidates_.hasStrays()) {
+      ++counters_.straySubsteps;
+      counters_.strays += candidates_.strayCount();
+    }
+    return;
+  }
   cellIndex_.build(particles_.position, h + skin);
   particles_.permute(cellIndex_.order());  // now sorted position == particle index
   candidates_.build(cellIndex_, h, skin);

@@ -35,5 +35,9 @@ std::unique_ptr<HeadRig> loadHeadRig(const std::string& meshPath, const std::str
 // The triangles of every sub-mesh the feature-point file calls skin (rig.roles), by head vertex
 // index: the surface tears run on. For the default head, exactly its "skin" sub-mesh.
 std::vector<Eigen::Vector3i> skinTriangles(const HeadRig& rig);
+// The triangles of the eye sub-meshes (roles eye_left and eye_right: eyeballs and corneas), by
+// head vertex index. With the skin they make the tears' collision surface: they close the skin's
+// eye openings, so a tear that reaches the lid margin runs over the eye instead of into the head.
+std::vector<Eigen::Vector3i> eyeTriangles(const HeadRig& rig);
 
 }  // namespace lacrima::playback

@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace lacrima::tears {
@@ -31,11 +32,18 @@ public:
   int removeOldest(ParticleSet& particles, Eye eye, int count) const;
   // Appends `count` particles for `eye` at `site`.
   void spawn(ParticleSet& particles, Eye eye, int count, const EmissionSite& site);
+  // Re-emits the particles in `slots` (escaped ones) as new particles of `eye` at `site`, in
+  // place: no other particle changes index, so the solver's pair list stays usable (the moved
+  // ones become strays, PairList.h).
+  void respawn(ParticleSet& particles, Eye eye, std::span<const int> slots, const EmissionSite& site);
 
   std::uint64_t nextId() const { return nextId_; }
 
 private:
   const std::vector<Eigen::Vector3d>& latticeWithin(double radius);
+  // Places `count` new particles (positions and ids) and hands each to `put`.
+  template <typename Put>
+  void place(const ParticleSet& particles, int count, const EmissionSite& site, Put put);
 
   double spacing_, mass_;
   std::uint64_t nextId_ = 1;

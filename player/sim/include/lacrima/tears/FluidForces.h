@@ -36,8 +36,12 @@ public:
   void compute(ParticleSet& particles, const VerletPairs& candidates, ActivePairs& active) const;
 
 private:
+  template <bool Strays>
+  void accumulate(const VerletPairs& candidates, ActivePairs& active) const;
+
   double h_;
   Poly6Kernel w_;
+  mutable float h2_ = 0, wScale_ = 0;
   // Single-precision copies of the particle state, refilled every call (capacity is kept).
   mutable std::vector<float> position_, m_, rho_;  // position: 4 floats per particle (x, y, z, 0)
 };
@@ -134,10 +138,10 @@ private:
 class FluidForcePass {
 public:
   // Adds pressure (and Müller tension) to particles.acceleration, fills particles.viscosityRate
-  // and weightSum(). Returns the largest |v_i - v_j| over pairs within h, the velocity scale of
-  // the CFL condition (SPH is Galilean invariant: a drop sliding as a whole at any speed is as
-  // stable as one at rest).
-  // Also turns pairs.distance from r^2 (DensitySolver) into r.
+  // and weightSum(). Returns the largest closing speed -(v_i - v_j).(x_i - x_j) / r over pairs
+  // within h, the velocity part of Monaghan's signal velocity in the CFL condition: SPH is
+  // Galilean invariant (a drop sliding as a whole at any speed is as stable as one at rest),
+  // and pairs that slide past or separate compress nothing.
   // Reads the velocities: call it before they change in this sub-step.
   double run(ParticleSet& particles, ActivePairs& pairs, const PressureForce& pressure,
              const ViscosityForce& viscosity, const MuellerSurfaceTension* tension);
@@ -146,7 +150,7 @@ public:
 
 private:
   template <bool Colour, bool Pressure>
-  float accumulate(const ActivePairs& pairs, int n, std::uint64_t const* ids);
+  void accumulate(const ActivePairs& pairs, int n, std::uint64_t const* ids);
 
   std::vector<double> weightSum_, laplacian_;
   std::vector<Eigen::Vector3d> gradient_, weighted_;
@@ -156,8 +160,8 @@ private:
   // SSE register, so a scattered vector update is one load, one add and one store.
   std::vector<float> velocity_, m_, p_, invRho_, vol_;
   std::vector<float> acc_, weighted4_, gradient4_;
-  // Per-pair kernel factors, from r alone (one flat, vectorised loop over the pairs).
-  std::vector<float> radial_, lapVisc_, gradColour_, lapColour_;
+  // Per pair: (v_i - v_j).(x_i - x_j), reduced to the closing speed after the pair loop.
+  std::vector<float> approach_;
   float h_ = 0, h2_ = 0, spiky_ = 0, atZero_ = 0, visc_ = 0, poly6_ = 0;
 };
 

@@ -6,13 +6,29 @@
 // for any pair now closer than h,
 //   |x_i0 - x_j0| <= |x_i - x_j| + |x_i - x_i0| + |x_j - x_j0| < h + d1 + d2 < R,
 // so it was listed (Verlet 1967). Bounding d1 + d2 rather than 2 d1 lets a single fast particle
-// (a drop falling off the chin) move up to a whole skin before everything is searched again. Each sub-step filters the candidates to the pairs within h
-// (ActivePairs, with their distance), so every pass sees exactly the pairs a fresh search would.
+// move up to a whole skin before anything is searched again. Each sub-step filters the
+// candidates to the pairs within h (ActivePairs, with their offsets), so every pass sees
+// exactly the pairs a fresh search would.
 //
 // Built from a CellIndex over particles already in cell order (sorted position == particle
 // index): the candidates of particle s are s+1 .. the end of its own z-row, plus the four
 // "forward" rows (dx, dy) = (0, 1), (1, -1), (1, 0), (1, 1); their mirror images are the other
 // particle's forward rows, so each pair is met exactly once.
+//
+// Drift. A displacement v common to every particle changes no distance, so d_i above may be
+// measured as x_i - x_i0 - v for any one v: the test uses the middle of the displacements'
+// bounding box, and a film sliding down the cheek as a whole keeps its list however far it
+// slides.
+//
+// Strays. One fast particle (a drop falling off the chin past still ones, or one re-emitted at
+// its source) would otherwise force a full rebuild every sub-step. When the test fails, v
+// becomes the median displacement (per axis: a few outliers do not move it) and the particles
+// with |d_i - v| >= skin / 2 become strays. Any pair of two others still has d_i + d_j < skin,
+// so the list stays exact for them; each stray's pairs are searched afresh every sub-step in
+// the build's cells around x_f - v (a partner within h of it now has its anchor within
+// h + skin / 2 < cell edge of that point, so the 27 cells around it hold every one). The
+// density pass skips listed pairs that involve a stray and adds the stray pairs instead.
+// Beyond max(32, n / 32) strays a rebuild is cheaper, and refresh() asks for one.
 #include <lacrima/tears/CellIndex.h>
 #include <lacrima/tears/NeighbourSearch.h>
 
@@ -29,9 +45,10 @@ public:
   // From full lists (any structure): pairs i < j, no skin (valid for the current positions only).
   void fromFull(const NeighbourList& full, std::span<const Eigen::Vector3d> positions);
 
-  // Whether the list still holds every pair within h (the two largest displacements since the
-  // build sum to less than the skin).
-  bool stillValid(std::span<const Eigen::Vector3d> positions) const;
+  // Whether the list (with its strays) still holds every pair within h of `positions`; false
+  // means rebuild. `index` is the one the list was built from. Finds this sub-step's strays and
+  // their pairs.
+  bool refresh(const CellIndex& index, std::span<const Eigen::Vector3d> positions);
   void invalidate() { valid_ = false; }
   bool valid() const { return valid_; }
 
@@ -41,21 +58,40 @@ public:
   std::uint32_t end(int i) const { return start_[static_cast<std::size_t>(i) + 1]; }
   const std::uint32_t* partners() const { return partner_.data(); }
 
+  // This sub-step's strays (refresh()): empty flags when there are none, else one per particle
+  // (1 = its listed pairs are void), and the pairs of every stray within h + skin of it now, as
+  // (lower, higher) index, sorted.
+  bool hasStrays() const { return strayCount_ > 0; }
+  const std::vector<std::uint8_t>& strayFlags() const { return stray_; }
+  struct Pair {
+    std::uint32_t lower, higher;
+    auto operator<=>(const Pair&) const = default;
+  };
+  const std::vector<Pair>& strayPairs() const { return strayPairs_; }
+  int strayCount() const { return strayCount_; }
+
 private:
+  void clearStrays();
+
   std::vector<std::uint32_t> start_;    // size n + 1
   std::vector<std::uint32_t> partner_;  // j > i
   std::vector<Eigen::Vector3d> anchor_; // positions at the build
-  double skin_ = 0;
+  std::vector<float> fx_, fy_, fz_;     // build scratch: sorted positions in float
+  double h_ = 0, skin_ = 0;
   bool valid_ = false;
+  std::vector<std::uint8_t> stray_;
+  std::vector<Pair> strayPairs_;
+  std::vector<std::uint32_t> strayList_;
+  std::vector<double> medianScratch_;
+  int strayCount_ = 0;
 };
 
-// The pairs within h this sub-step, i < j, with their distance r = |x_i - x_j|.
+// The pairs within h this sub-step, i < j, with their offset and squared distance.
 // The float arrays are the pair geometry DensitySolver already computed (relative to one origin,
 // single precision), kept so the force pass streams them instead of gathering positions again.
 struct ActivePairs {
   std::vector<std::uint32_t> start;  // size n + 1
   std::vector<std::uint32_t> partner;
-  std::vector<double> distance;      // r, written by FluidForcePass (Akinci reads it)
   std::vector<float> offset;         // 4 per pair: x_i - x_j, then 0 (one SSE register)
   std::vector<float> r2;             // |x_i - x_j|^2
 

@@ -27,6 +27,8 @@ public:
 
   // Appends one particle at rest; returns its index.
   int add(const Eigen::Vector3d& x, double mass, std::uint64_t id, Eye eye);
+  // Makes slot i a new particle at rest (as add() would, without moving any other particle).
+  void reset(int i, const Eigen::Vector3d& x, double mass, std::uint64_t id, Eye eye);
   // Keeps particles with keep[i] != 0, in their order.
   void compact(std::span<const std::uint8_t> keep);
   // Reorders every array: particle order[s] moves to index s (order is a permutation).

@@ -2,31 +2,39 @@
 // The tear's surface: marching cubes (Lorensen & Cline 1987) over the SPH colour field
 // (SurfaceMesherField.h) at the iso value of the tear parameters (thesis 4.3.1).
 //
-// Where the cubes are. The colour field is zero farther than h from every particle, so only
-// ACTIVE cubes are visited: the grid's occupied cells (edge h) dilated by one cell contain every
-// point within h of a particle (a particle in cell C reaches less than h beyond C), and they are
-// subdivided into cubes of the lattice of edge s = cube_size. The lattice is global (cube k spans
-// [k s, (k + 1) s] on each axis), so two cells share the cubes, corners and edges on their
-// border: this is what the thesis' modified octree achieved (4.4.3) — no holes where a drop
-// crosses a cell border, and no holes at the rim of the active region, whose outer corners all
-// lie at least h from every particle (c = 0 < iso there, so no triangle reaches the rim).
+// Where the cubes are. The lattice of edge s = cube_size is global (cube k spans [k s, (k + 1) s]
+// on each axis). The colour field is zero farther than h from every particle, so a lattice
+// corner has c > 0 only inside some particle's support box (the corners within h of it), and
+// only a cube with such a corner can hold the surface. The lattice is cut into BLOCKS of
+// 4 x 4 x 4 cubes (kBlock in the source); the active blocks are those meeting a support box extended by one
+// corner downwards (so every cube with a corner c > 0 has its lowest corner in an active block).
+// Blocks are found through an open-addressing map of their integer coordinates, a few lookups
+// per particle; everything inside a block is a dense array.
 //
-// Watertight: a vertex is created once per lattice edge (edge-keyed map), so neighbouring cubes
-// share it, and the case table resolves ambiguous faces by the face's signs alone
-// (MarchingCubesTable.h). For a drop away from the rim every mesh edge has exactly two
+// Cost: one density pass (SurfaceMesherField), then each particle adds its weight to the dense
+// corner arrays of its blocks: value and gradient, four floats as one SSE register (Float4.h),
+// scaled to kernel units so single precision keeps ~7 digits for any h. The inside bits
+// (c >= iso) are packed per block as one 5-bit mask per (x, y) line along z (the fifth bit and
+// line from the +x, +y, +z neighbours), so a row of 4 cubes is skipped with one test when its four
+// lines agree, and the crossing edges are the set bits of XORs of masks. Buffers keep their
+// capacity between frames (nothing is allocated for a steady drop).
+//
+// Watertight: a vertex is created once per crossing lattice edge, stored in the block of the
+// edge's lower corner (block-local table, written before any cube reads it), so neighbouring
+// cubes and blocks share it, and the case table resolves ambiguous faces by the face's signs
+// alone (MarchingCubesTable.h). For a drop away from the rim every mesh edge has exactly two
 // triangles, wound counter-clockwise seen from outside.
 //
 // Vertices: linear interpolation on the crossing edge, p = p1 + (iso - c1) / (c2 - c1) (p2 - p1)
 // (thesis eq. 4.11). Normals: n = -g / |g| with g the analytic poly6 gradient of c at the two
 // corners, interpolated the same way (c decreases outwards). Against the exact gradient at the
 // vertex: 1.9 degrees mean, 8 worst at the default cube h / 2 on a 500-particle ball, for a
-// fraction of the cost of evaluating it there (a third of the mesher's time at 10,000
-// particles). Where the gradient vanishes: the area-weighted triangle normals.
+// fraction of the cost of evaluating it there. Where the gradient vanishes: the area-weighted
+// triangle normals.
 //
-// Cost: one density pass, a splat of every particle (value and gradient) onto the lattice
-// corners within h ((2h / s)^3 corners each), then the active cubes. The number of cubes is capped
-// (SurfaceMesherSettings::maxCubes): past the cap the cube size is enlarged until the cubes fit,
-// and stats().capped reports it — a coarser surface, never a truncated one with holes.
+// The work is capped (SurfaceMesherSettings::maxCubes, counted as the cubes of the active
+// blocks): past the cap the cube size is enlarged until they fit, and stats().capped reports it —
+// a coarser surface, never a truncated one with holes.
 #include <lacrima/tears/SurfaceMesherField.h>
 
 #include <Eigen/Core>
@@ -81,8 +89,9 @@ private:
 };
 
 struct SurfaceMesherStats {
-  std::size_t activeCells = 0;  // occupied cells dilated by one
-  std::size_t cubes = 0, corners = 0;
+  std::size_t activeCells = 0;  // grid cells (edge h) holding particles
+  std::size_t blocks = 0;       // active blocks of 4^3 cubes
+  std::size_t cubes = 0, corners = 0;  // in the active blocks (cubes whose lowest corner is in one)
   double cubeSize = 0;          // the size used (larger than asked when capped)
   bool capped = false;
   double milliseconds = 0;      // of the last build / update
@@ -112,36 +121,42 @@ public:
   long long cappedBuilds() const { return cappedBuilds_; }
 
 private:
-  bool collectCubes(double s, std::size_t maxCubes);
-  void collectCorners();
+  struct AxisPoint {
+    int block;     // relative to the support's lowest block
+    int local;     // block-local coordinate
+  };
+  using Lattice = Eigen::Matrix<std::int64_t, 3, 1>;
+
+  bool collectBlocks(double s, std::size_t maxBlocks);
+  void linkBlocks();
   void splat(double s);
-  void march(double s, double iso);
-  void computeNormals();
-  std::int32_t vertexOnEdge(const Eigen::Matrix<std::int64_t, 3, 1>& lower, std::int32_t lowerCorner,
-                            std::int32_t upperCorner, int axis, double s, double iso);
-  std::int64_t denseSlot(const Eigen::Matrix<std::int64_t, 3, 1>& p) const;
-  std::int32_t cornerId(const Eigen::Matrix<std::int64_t, 3, 1>& p) const;
+  void classify(float iso);
+  void createVertices(double s, float iso);
+  void march();
+  void fallbackNormals();
+  std::int32_t blockAt(const Lattice& block) const;
 
   SurfaceMesherField field_;
   TearSurface surface_;
   SurfaceMesherStats stats_;
   long long cappedBuilds_ = 0;
 
-  using Lattice = Eigen::Matrix<std::int64_t, 3, 1>;
-  std::unique_ptr<detail::SurfaceMesherKeyMap> cellMap_, cubeMap_, cornerMap_;
-  Lattice cellBase_, cubeBase_;                    // relative coordinates start here
-  std::vector<Lattice> dilated_, cube_, corner_;   // absolute integer coordinates
-  std::vector<std::array<std::int32_t, 8>> cubeCorner_;
-  std::vector<double> cornerValue_;
-  std::vector<Eigen::Vector3d> cornerGradient_, vertexGradient_;
-  // Dense lattice, used instead of cubeMap_ / cornerMap_ when the corners' bounding box is
-  // compact (a drop): an array lookup replaces a hash probe for every cube corner and splat.
-  bool dense_ = false;
-  Lattice denseLow_, denseDims_;
-  std::vector<std::int32_t> denseCube_, denseCorner_;  // id per box point, -1 = none
-  std::vector<std::int64_t> denseCubeSlots_, denseCornerSlots_;  // the slots set, to clear
-  std::vector<std::int32_t> edgeVertex_;               // 3 per corner (axis), -1 = none yet
+  std::unique_ptr<detail::SurfaceMesherKeyMap> blockMap_;
+  Lattice blockBase_;                            // block keys are packed relative to this
+  std::vector<Lattice> block_;                   // block coordinates (lattice point / 4)
+  std::vector<std::array<std::int32_t, 8>> neighbour_;  // block + (i & 1, (i >> 1) & 1, i >> 2), -1 = none
+  // Per block 4 x 64 floats, corner (x * 4 + y) * 4 + z: the sums of a d^3, then of a d^2 e_x,
+  // a d^2 e_y, a d^2 e_z (d = 1 - r^2/h^2, e = (corner - x) / h, a = V w h^6).
+  std::vector<float> sum_;
+  std::vector<std::uint8_t> inside_;             // 16 per block: bit z of line (x, y)
+  std::vector<std::uint16_t> line_;              // 25 per block: 5-bit masks of lines x, y = 0..4
+  std::vector<std::uint32_t> surfaceBlock_;      // blocks whose lines are neither all out nor all in
+  std::vector<std::int32_t> edgeVertex_;         // 3 per corner (axis); valid on crossing edges only
+  std::vector<std::int32_t> particleBlocks_;     // scratch: the blocks of one support box
+  std::vector<AxisPoint> axisTable_;             // scratch: the support box's points per axis
+  std::vector<float> offsetTable_;               // scratch: their offsets (lattice - x) / h
   std::vector<std::uint8_t> normalFallback_;
+  bool anyFallback_ = false;
 };
 
 }  // namespace lacrima::tears

@@ -122,6 +122,7 @@ struct TearCounters {
   long long recycled = 0;           // left the box, re-emitted at their source
   long long spawned = 0, removed = 0;
   long long neighbourSearches = 0;  // pair-list builds (reused between them, PairList.h)
+  long long straySubsteps = 0, strays = 0;  // sub-steps that kept the list with strays; their strays
   long long trimeshUpdates = 0, odeQueries = 0, sweptParticles = 0, contactsTracked = 0;
   long long bruteForceQueries = 0;  // nearest-skin queries ODE could not answer in full (scanned)
   long long surfaceRuns = 0;        // incremented by the surface mesher via countSurfaceRun()
@@ -268,7 +269,7 @@ private:
   TearCounters counters_;
   StageTimes times_;
   std::vector<Eigen::Vector3d> previous_, contactNormal_;
-  std::vector<std::uint8_t> keep_;
+  std::array<std::vector<int>, 2> escaped_;  // per eye, this sub-step (scratch)
 };
 
 }  // namespace lacrima::tears
