@@ -4,6 +4,7 @@
 #include "TearTestSupport.h"
 
 #include <lacrima/tears/CellIndex.h>
+#include <lacrima/tears/Emitter.h>
 #include <lacrima/tears/FluidForces.h>
 #include <lacrima/tears/Kernels.h>
 #include <lacrima/tears/Octree.h>
@@ -396,6 +397,47 @@ private slots:
     auto sim = makeSheetSimulation(sheet, settings);
     runAndCheck(*sim, sheet, 20, 20, 66);
     QVERIFY2(sim->counters().recycled > 0, "nothing fell off");
+  }
+
+  // Escaped particles are re-emitted in their own slots: the rest keep index and state, the
+  // re-emitted ones are new (larger ids, at rest, no contact, full mass) at the site, in front
+  // of the skin, and not on top of the particles already there.
+  void respawnReusesTheirSlots() {
+    const double spacing = 0.01;
+    Emitter emitter(spacing, 2.0);
+    ParticleSet p;
+    const EmissionSite site{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 0, 1)};
+    emitter.spawn(p, Eye::Left, 30, site);
+    emitter.spawn(p, Eye::Right, 10, EmissionSite{Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 0, 1)});
+    QCOMPARE(p.size(), 40);
+    const std::uint64_t newestBefore = *std::max_element(p.id.begin(), p.id.end());
+    const std::vector<int> fallen{3, 17, 35};  // two left, one right particle fell off
+    for (int s : fallen) {
+      p.position[static_cast<std::size_t>(s)] = Eigen::Vector3d(0, -5, 0);
+      p.velocity[static_cast<std::size_t>(s)] = Eigen::Vector3d(0, -1, 0);
+      p.mass[static_cast<std::size_t>(s)] = 0.5;
+      p.contact[static_cast<std::size_t>(s)].triangle = 4;
+    }
+    const ParticleSet before = p;
+    emitter.respawn(p, Eye::Left, fallen, site);
+    QCOMPARE(p.size(), 40);
+    for (int i = 0; i < p.size(); ++i) {
+      const auto s = static_cast<std::size_t>(i);
+      if (std::find(fallen.begin(), fallen.end(), i) == fallen.end()) {
+        QCOMPARE(p.id[s], before.id[s]);
+        QVERIFY(p.position[s] == before.position[s]);
+        continue;
+      }
+      QVERIFY(p.id[s] > newestBefore);
+      QVERIFY(p.eye[s] == Eye::Left);
+      QVERIFY(p.velocity[s].isZero());
+      QCOMPARE(p.mass[s], 2.0);
+      QCOMPARE(p.contact[s].triangle, -1);
+      QVERIFY(p.position[s].z() > -1e-9 * spacing);  // in front of the skin
+      QVERIFY(p.position[s].norm() < 10 * spacing);   // at the site
+      for (int j = 0; j < p.size(); ++j)
+        if (j != i) QVERIFY((p.position[s] - p.position[static_cast<std::size_t>(j)]).norm() > 0.5 * spacing);
+    }
   }
 
   void sameInputGivesBitwiseIdenticalState() {
