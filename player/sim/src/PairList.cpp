@@ -163,7 +163,7 @@ bool VerletPairs::refresh(const CellIndex& index, std::span<const Eigen::Vector3
     std::nth_element(medianScratch_.begin(), middle, medianScratch_.end());
     median[axis] = *middle;
   }
-  const std::size_t limit = std::max<std::size_t>(32, n / 32);
+  const std::size_t limit = n / 32;
   const double half2 = 0.25 * skin_ * skin_;
   strayList_.clear();
   for (std::size_t i = 0; i < n; ++i)

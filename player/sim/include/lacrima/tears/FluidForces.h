@@ -159,9 +159,11 @@ private:
   // (x, y, z, colour Laplacian) and colour gradient (x, y, z, 0). Groups of 4 floats are one
   // SSE register, so a scattered vector update is one load, one add and one store.
   std::vector<float> velocity_, m_, p_, invRho_, vol_;
+  std::vector<float> scalars_;  // m, p, 1 / rho, V of each particle as 4 floats: one load per pair
   std::vector<float> acc_, weighted4_, gradient4_;
-  // Per pair: (v_i - v_j).(x_i - x_j), reduced to the closing speed after the pair loop.
-  std::vector<float> approach_;
+  // Per-pair kernel factors, from r alone (one flat, vectorised loop over the pairs), and
+  // (v_i - v_j).(x_i - x_j), reduced to the closing speed after the pair loop.
+  std::vector<float> radial_, lapVisc_, gradColour_, lapColour_, approach_;
   float h_ = 0, h2_ = 0, spiky_ = 0, atZero_ = 0, visc_ = 0, poly6_ = 0;
 };
 

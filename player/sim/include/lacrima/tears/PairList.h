@@ -28,7 +28,7 @@
 // the build's cells around x_f - v (a partner within h of it now has its anchor within
 // h + skin / 2 < cell edge of that point, so the 27 cells around it hold every one). The
 // density pass skips listed pairs that involve a stray and adds the stray pairs instead.
-// Beyond max(32, n / 32) strays a rebuild is cheaper, and refresh() asks for one.
+// Beyond n / 32 strays a rebuild is cheaper, and refresh() asks for one.
 #include <lacrima/tears/CellIndex.h>
 #include <lacrima/tears/NeighbourSearch.h>
 
