@@ -6,16 +6,17 @@
 // Every term is evaluated over the half pair list of the sub-step (ActivePairs, PairList.h):
 // each pair i < j once, its contribution added to both particles (antisymmetric terms with
 // opposite signs). Per sub-step there are three passes over the pairs:
-//   A  DensitySolver        candidates -> pairs within h, with r; density;
+//   A  DensitySolver        candidates -> pairs within h, with offset and r^2; density;
 //   B  FluidForcePass       pressure, viscosity weights and weighted velocities and the Müller
 //                           colour field, from one load of the pair's state;
 //   C  (none)               the viscosity relaxation then needs per-particle work only.
 // The iteration order is fixed (particle order, then partner order), so sums are reproducible.
 //
-// Passes A and B run in single precision on copies of the particle state: scalars one array
-// each, 3-vectors as 4 floats (x, y, z, 0), so each scattered vector update is one SSE2 load,
-// add and store (positions relative to the first particle, so float keeps ~1e-5 h of
-// resolution anywhere on the head). Only baseline x86-64 instructions are used (no -march, no
+// Passes A and B run in single precision on copies of the particle state: 3-vectors as 4 floats
+// (x, y, z, 0), so each scattered vector update is one SSE2 load, add and store, and the force
+// pass's per-particle scalars (m, p, 1 / rho, V) as 4 floats too, one load per partner
+// (positions relative to the first particle, so float keeps ~1e-5 h of resolution anywhere on
+// the head). Only baseline x86-64 instructions are used (no -march, no
 // FMA contraction), so results are bitwise identical on every x86-64 machine. Per-particle
 // results are converted back to the double ParticleSet.
 #include <lacrima/tears/Kernels.h>
@@ -30,9 +31,9 @@ namespace lacrima::tears {
 class DensitySolver {
 public:
   explicit DensitySolver(double h) : h_(h), w_(h) {}
-  // Filters the candidates to the pairs closer than h (into `active`, with r^2 in `distance`;
-  // FluidForcePass replaces it by r, so the square root is taken for kept pairs only) and sums
-  // the density over them.
+  // Filters the candidates (with this sub-step's strays, PairList.h) to the pairs closer than h,
+  // into `active` with their offset and r^2 (the force pass takes square roots for kept pairs
+  // only), and sums the density over them.
   void compute(ParticleSet& particles, const VerletPairs& candidates, ActivePairs& active) const;
 
 private:
