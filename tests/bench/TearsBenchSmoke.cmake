@@ -1,0 +1,31 @@
+# Smoke test of `lacrima-bench tears --json`: the benchmark runs, prints one JSON object, and
+# what it reports is sane (the commanded particles alive, every value finite, sub-steps taken,
+# the stray counter present). Speed is not checked here: figures are read, never asserted.
+#   cmake -DBENCH=<path to lacrima-bench> -P TearsBenchSmoke.cmake
+execute_process(COMMAND "${BENCH}" tears --particles 100 --frames 12 --json
+                OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "lacrima-bench tears exited with ${status}: ${err}")
+endif()
+string(JSON alive ERROR_VARIABLE parseError GET "${out}" particles_alive)
+if(parseError)
+  message(FATAL_ERROR "lacrima-bench tears --json printed no JSON object: ${parseError}\n${out}")
+endif()
+string(JSON finite GET "${out}" all_finite)
+string(JSON frames GET "${out}" frames)
+string(JSON substeps GET "${out}" counters substeps)
+string(JSON strays GET "${out}" counters stray_substeps)
+string(JSON surfaceRuns GET "${out}" counters surface_runs)
+if(NOT alive EQUAL 100)
+  message(FATAL_ERROR "expected 100 particles alive, got ${alive}")
+endif()
+if(NOT finite)
+  message(FATAL_ERROR "the tear state went non-finite")
+endif()
+if(NOT frames EQUAL 12 OR NOT surfaceRuns EQUAL 12)
+  message(FATAL_ERROR "expected 12 frames and 12 surface runs, got ${frames} and ${surfaceRuns}")
+endif()
+if(NOT substeps GREATER_EQUAL 12 OR strays LESS 0)
+  message(FATAL_ERROR "implausible counters: ${substeps} sub-steps, ${strays} stray sub-steps")
+endif()
+message(STATUS "lacrima-bench tears: ${alive} particles, ${substeps} sub-steps in ${frames} frames")
