@@ -68,9 +68,7 @@ int parseOptions(int argc, char** argv, Options& options) {
       options.json = true;
     } else if (arg == "--size" && i + 1 < argc) {
       const std::string size = argv[++i];
-      const auto x = size.find('x');
-      if (x == std::string::npos || !parseWholeNumber(size.substr(0, x).c_str(), 640, 8000, options.width) ||
-          !parseWholeNumber(size.substr(x + 1).c_str(), 480, 8000, options.height)) {
+      if (!parseSize(size, 640, 480, 8000, options.width, options.height)) {
         std::fprintf(stderr, "lacrima-bench editor: --size takes WxH, e.g. 1440x900, not '%s'\n", size.c_str());
         return 2;
       }

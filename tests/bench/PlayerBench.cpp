@@ -62,10 +62,7 @@ int parse(int argc, char** argv, Options& o) {
         return 2;
       }
     } else if (arg == "--size" && hasValue) {
-      const std::string v = argv[++i];
-      const auto x = v.find('x');
-      if (x == std::string::npos || !parseWholeNumber(v.substr(0, x).c_str(), 16, 8192, o.width) ||
-          !parseWholeNumber(v.substr(x + 1).c_str(), 16, 8192, o.height)) {
+      if (!parseSize(argv[++i], 16, 16, 8192, o.width, o.height)) {
         std::fprintf(stderr, "lacrima-bench player: --size takes WIDTHxHEIGHT, e.g. 1280x720\n");
         return 2;
       }

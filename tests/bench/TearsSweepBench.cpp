@@ -19,6 +19,7 @@
 // reference's and its error is the surface discretisation alone; its ms per frame is that
 // simulation + trails + its own mesher. The reference is WCSPH: DFSPH rows include the model's
 // difference (an incompressible fluid against one with a 0.2 m/s speed of sound).
+#include "BenchSupport.h"
 #include "SweepPlot.h"
 #include "TearsPipeline.h"
 
@@ -75,14 +76,11 @@ int parse(int argc, char** argv, Options& o) {
       return 1;
     }
     if ((arg == "--particles" || arg == "--frames") && hasValue) {
-      char* end = nullptr;
-      const long v = std::strtol(argv[++i], &end, 10);
-      const long high = arg == "--particles" ? 2L * kMaxTearParticles : 100000L;
-      if (end == argv[i] || *end || v < 1 || v > high) {
-        std::fprintf(stderr, "lacrima-bench tears-sweep: %s takes 1..%ld\n", arg.c_str(), high);
+      const int high = arg == "--particles" ? 2 * kMaxTearParticles : 100000;
+      if (!parseWholeNumber(argv[++i], 1, high, arg == "--particles" ? o.particles : o.frames)) {
+        std::fprintf(stderr, "lacrima-bench tears-sweep: %s takes 1..%d\n", arg.c_str(), high);
         return 2;
       }
-      (arg == "--particles" ? o.particles : o.frames) = static_cast<int>(v);
     } else if (arg == "--head" && hasValue) {
       const std::string v = argv[++i];
       if (v != "sheet" && v != "default") {

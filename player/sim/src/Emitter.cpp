@@ -44,8 +44,8 @@ const std::vector<Eigen::Vector3d>& Emitter::latticeWithin(double radius) {
   return lattice_;
 }
 
-template <typename Put>
-void Emitter::place(const ParticleSet& p, int count, const EmissionSite& site, Put put) {
+std::vector<Emitter::Placement> Emitter::place(const ParticleSet& p, int count, const EmissionSite& site) {
+  std::vector<Placement> placements;
   const bool halfSpace = site.normal.squaredNorm() > 0;
   // Lattice points needed if the source region were empty, plus room for what is already there.
   const double occupiedMinimum = 0.75 * spacing_;
@@ -76,27 +76,24 @@ void Emitter::place(const ParticleSet& p, int count, const EmissionSite& site, P
       const std::uint64_t id = nextId_++;
       const Eigen::Vector3d jitter(unitFromHash(mix64(3 * id)), unitFromHash(mix64(3 * id + 1)),
                                    unitFromHash(mix64(3 * id + 2)));
-      put(x + 0.02 * spacing_ * jitter, id);
+      placements.push_back({x + 0.02 * spacing_ * jitter, id});
       nearby.push_back(x);
       ++placed;
     }
     searchRadius *= 1.5;  // the region was crowded: look further out
   }
+  return placements;
 }
 
 void Emitter::spawn(ParticleSet& p, Eye eye, int count, const EmissionSite& site) {
   if (count <= 0) return;
-  // Positions are chosen against the particles as they were: collect, then append.
-  std::vector<std::pair<Eigen::Vector3d, std::uint64_t>> placed;
-  place(p, count, site, [&](const Eigen::Vector3d& x, std::uint64_t id) { placed.emplace_back(x, id); });
-  for (const auto& [x, id] : placed) p.add(x, mass_, id, eye);
+  for (const Placement& a : place(p, count, site)) p.add(a.position, mass_, a.id, eye);
 }
 
 void Emitter::respawn(ParticleSet& p, Eye eye, std::span<const int> slots, const EmissionSite& site) {
   if (slots.empty()) return;
-  std::vector<std::pair<Eigen::Vector3d, std::uint64_t>> placed;
-  place(p, static_cast<int>(slots.size()), site, [&](const Eigen::Vector3d& x, std::uint64_t id) { placed.emplace_back(x, id); });
-  for (std::size_t k = 0; k < slots.size(); ++k) p.reset(slots[k], placed[k].first, mass_, placed[k].second, eye);
+  const std::vector<Placement> placements = place(p, static_cast<int>(slots.size()), site);
+  for (std::size_t k = 0; k < slots.size(); ++k) p.reset(slots[k], placements[k].position, mass_, placements[k].id, eye);
 }
 
 }  // namespace lacrima::tears

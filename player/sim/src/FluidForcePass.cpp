@@ -150,7 +150,6 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs, const PressureFor
   const bool colour = tension && tension->active();
   velocity_.resize(4 * un);
   scalars_.resize(4 * un);
-  for (auto* v : {&m_, &p_, &invRho_, &vol_}) v->resize(un);
   for (auto* v : {&acc_, &weighted4_, &gradient4_}) v->assign(4 * un, 0.0f);
   // Kernel coefficients, so the loops only multiply (Kernels.h):
   //   grad W_spiky = spiky (h - r)^2 / r r_vec,  lap W_visc = visc (h - r),
@@ -163,15 +162,17 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs, const PressureFor
   visc_ = static_cast<float>(viscosity.kernel().laplacianCoefficient());
   poly6_ = colour ? static_cast<float>(tension->kernel().gradientCoefficient()) : 0.0f;
   const float selfLaplacian = colour ? static_cast<float>(tension->kernel().laplacian(0.0)) : 0.0f;
+  // No pressure anywhere (DFSPH, whose solves replace it, or a fluid nowhere compressed): the
+  // pressure terms are left out of the loop rather than added as zeros.
+  bool anyPressure = false;
   for (std::size_t i = 0; i < un; ++i) {
     const Eigen::Vector3d& v = p.velocity[i];
     store4(&velocity_[4 * i], Float4{static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z()), 0.0f});
-    m_[i] = static_cast<float>(p.mass[i]);
-    p_[i] = static_cast<float>(p.pressure[i]);
-    invRho_[i] = 1.0f / static_cast<float>(p.density[i]);
-    vol_[i] = m_[i] * invRho_[i];
-    weighted4_[4 * i + 3] = vol_[i] * selfLaplacian;
-    store4(&scalars_[4 * i], Float4{m_[i], p_[i], invRho_[i], vol_[i]});
+    const float m = static_cast<float>(p.mass[i]), pi = static_cast<float>(p.pressure[i]);
+    const float invRho = 1.0f / static_cast<float>(p.density[i]), volume = m * invRho;
+    weighted4_[4 * i + 3] = volume * selfLaplacian;
+    store4(&scalars_[4 * i], Float4{m, pi, invRho, volume});
+    anyPressure = anyPressure || pi != 0.0f;
   }
   const std::size_t pairCount = n > 0 ? pairs.start[un] : 0;
   for (auto* v : {&approach_, &radial_, &lapVisc_, &gradColour_, &lapColour_})
@@ -179,9 +180,6 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs, const PressureFor
   pairFactors(pairs.r2.data(), pairCount, h_, h2_, spiky_, visc_, poly6_, radial_.data(), lapVisc_.data(),
               gradColour_.data(), lapColour_.data());
 
-  // No pressure anywhere (DFSPH, whose solves replace it, or a fluid nowhere compressed): the
-  // pressure terms are left out of the loop rather than added as zeros.
-  const bool anyPressure = std::any_of(p_.begin(), p_.end(), [](float v) { return v != 0.0f; });
   if (colour)
     anyPressure ? accumulate<true, true>(pairs, n, p.id.data()) : accumulate<true, false>(pairs, n, p.id.data());
   else
@@ -199,7 +197,7 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs, const PressureFor
     p.acceleration[i] += Eigen::Vector3d(a[0], a[1], a[2]);
     weightSum_[i] = a[3];
     weighted_[i] = Eigen::Vector3d(w[0], w[1], w[2]);
-    p.viscosityRate[i] = nu * weightSum_[i] * invRho_[i];
+    p.viscosityRate[i] = nu * weightSum_[i] * scalars_[4 * i + 2];
   }
   if (colour) {
     for (std::size_t i = 0; i < un; ++i) {

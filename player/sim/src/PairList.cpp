@@ -128,29 +128,27 @@ void VerletPairs::clearStrays() {
 bool VerletPairs::refresh(const CellIndex& index, std::span<const Eigen::Vector3d> x) {
   clearStrays();
   if (!valid_ || x.size() != anchor_.size() || index.particleCount() != x.size()) return false;
-  // The drift v (PairList.h): the middle of the displacements' bounding box.
-  const std::size_t n = x.size();
-  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), high = -low;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector3d d = x[i] - anchor_[i];
-    low = low.cwiseMin(d);
-    high = high.cwiseMax(d);
-  }
-  const Eigen::Vector3d drift = n > 0 && low.allFinite() && high.allFinite() ? Eigen::Vector3d(0.5 * (low + high)) : Eigen::Vector3d::Zero();
   // The two largest displacements: no pair can have closed by more than their sum. Measured
-  // both as they are and less the drift (one fast particle stretches the box and shifts its
-  // middle): either passing proves the list.
-  LargestTwo still, drifting;
+  // as they are first (one pass, the common case), then less the drift v (PairList.h), the
+  // middle of the displacements' bounding box: either passing proves the list.
+  const std::size_t n = x.size();
+  LargestTwo still;
   bool finite = true;
+  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), high = -low;
   for (std::size_t i = 0; i < n; ++i) {
     const Eigen::Vector3d d = x[i] - anchor_[i];
     const double d2 = d.squaredNorm();
     finite = finite && d2 <= std::numeric_limits<double>::max();  // false for NaN and inf
     still.add(d2);
-    drifting.add((d - drift).squaredNorm());
+    low = low.cwiseMin(d);
+    high = high.cwiseMax(d);
   }
   if (!finite) return false;
-  if (still.sum() < skin_ || drifting.sum() < skin_) return true;
+  if (still.sum() < skin_) return true;
+  const Eigen::Vector3d drift = 0.5 * (low + high);
+  LargestTwo drifting;
+  for (std::size_t i = 0; i < n; ++i) drifting.add((x[i] - anchor_[i] - drift).squaredNorm());
+  if (drifting.sum() < skin_) return true;
   if (!(skin_ > 0)) return false;
 
   // Some moved too far. Strays are measured from the median displacement (per axis) instead:

@@ -41,9 +41,12 @@ public:
 
 private:
   const std::vector<Eigen::Vector3d>& latticeWithin(double radius);
-  // Places `count` new particles (positions and ids) and hands each to `put`.
-  template <typename Put>
-  void place(const ParticleSet& particles, int count, const EmissionSite& site, Put put);
+  // Where `count` new particles go and their ids, chosen against the particles as they are.
+  struct Placement {
+    Eigen::Vector3d position;
+    std::uint64_t id;
+  };
+  std::vector<Placement> place(const ParticleSet& particles, int count, const EmissionSite& site);
 
   double spacing_, mass_;
   std::uint64_t nextId_ = 1;

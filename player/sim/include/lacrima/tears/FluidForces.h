@@ -155,12 +155,11 @@ private:
 
   std::vector<double> weightSum_, laplacian_;
   std::vector<Eigen::Vector3d> gradient_, weighted_;
-  // Float state per particle: velocity (x, y, z, 0 as 4 floats), mass, pressure, 1 / rho,
-  // volume; sums per particle: acceleration (x, y, z, viscosity weight sum), weighted velocity
+  // Float state per particle: velocity (x, y, z, 0 as 4 floats) and m, p, 1 / rho, V (4 floats:
+  // one load per partner); sums per particle: acceleration (x, y, z, viscosity weight sum), weighted velocity
   // (x, y, z, colour Laplacian) and colour gradient (x, y, z, 0). Groups of 4 floats are one
   // SSE register, so a scattered vector update is one load, one add and one store.
-  std::vector<float> velocity_, m_, p_, invRho_, vol_;
-  std::vector<float> scalars_;  // m, p, 1 / rho, V of each particle as 4 floats: one load per pair
+  std::vector<float> velocity_, scalars_;
   std::vector<float> acc_, weighted4_, gradient4_;
   // Per-pair kernel factors, from r alone (one flat, vectorised loop over the pairs), and
   // (v_i - v_j).(x_i - x_j), reduced to the closing speed after the pair loop.
