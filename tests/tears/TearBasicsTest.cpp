@@ -175,19 +175,38 @@ private slots:
     }
   }
 
-  // The pairs the density pass keeps from a Verlet list: each pair once, i < j.
-  static std::vector<std::set<int>> keptPairs(const ParticleSet& p, const VerletPairs& verlet, double h, bool& duplicate) {
+  // The pairs the density pass keeps from a Verlet list. `faulty` is set unless each pair is
+  // kept once with i < j and what the pass computed matches double precision over all pairs:
+  // every kept pair's offset and r^2, and every density (the particle itself included), so the
+  // SIMD candidate loop is held to the plain sums with and without strays.
+  static std::vector<std::set<int>> keptPairs(const ParticleSet& p, const VerletPairs& verlet, double h, bool& faulty) {
     ParticleSet copy = p;
     ActivePairs active;
     DensitySolver(h).compute(copy, verlet, active);
     std::vector<std::set<int>> sets(p.position.size());
-    duplicate = false;
+    faulty = false;
+    double worstOffset = 0;
     for (int i = 0; i < active.particleCount(); ++i)
       for (std::uint32_t k = active.start[static_cast<std::size_t>(i)]; k < active.start[static_cast<std::size_t>(i) + 1]; ++k) {
         const int j = static_cast<int>(active.partner[k]);
-        duplicate = duplicate || j <= i || !sets[static_cast<std::size_t>(i)].insert(j).second;
+        faulty = faulty || j <= i || !sets[static_cast<std::size_t>(i)].insert(j).second;
         sets[static_cast<std::size_t>(j)].insert(i);
+        const Eigen::Vector3d d = p.position[static_cast<std::size_t>(i)] - p.position[static_cast<std::size_t>(j)];
+        const Eigen::Vector3d stored(active.offset[4 * k], active.offset[4 * k + 1], active.offset[4 * k + 2]);
+        worstOffset = std::max({worstOffset, (stored - d).norm() / h, std::abs(active.r2[k] - d.squaredNorm()) / (h * h)});
+        if (active.offset[4 * k + 3] != 0.0f) faulty = true;  // lane 3 must stay 0 for the force pass
       }
+    Poly6Kernel w(h);
+    double worstDensity = 0;
+    for (std::size_t i = 0; i < p.position.size(); ++i) {
+      double rho = 0;
+      for (std::size_t j = 0; j < p.position.size(); ++j) rho += p.mass[j] * w.value((p.position[i] - p.position[j]).squaredNorm());
+      worstDensity = std::max(worstDensity, std::abs(copy.density[i] - rho) / rho);
+    }
+    if (worstOffset > 1e-4 || worstDensity > 1e-4) {
+      qWarning("density pass: offset error %g h, density error %g", worstOffset, worstDensity);
+      faulty = true;
+    }
     return sets;
   }
 
@@ -225,11 +244,11 @@ private slots:
             const double step = !oneFast ? 0.45 : (i == fast ? 0.75 : 0.24);
             p.add(sorted[i] + step * skin * dir, 1.0, i + 1, Eye::Left);
           }
-          bool duplicate = false;
+          bool faulty = false;
           QVERIFY(verlet.refresh(index, p.position));
           QVERIFY(!verlet.hasStrays());
-          QVERIFY(keptPairs(p, verlet, h, duplicate) == bruteForce(p.position, h));
-          QVERIFY(!duplicate);
+          QVERIFY(keptPairs(p, verlet, h, faulty) == bruteForce(p.position, h));
+          QVERIFY(!faulty);
 
           // The whole cloud carried along: no strays, no rebuild.
           ParticleSet carried = p;
@@ -237,7 +256,8 @@ private slots:
             carried.position[i] = sorted[i] + Eigen::Vector3d(3 * skin, -4 * skin, 0) + 0.3 * skin * (p.position[i] - sorted[i]).normalized();
           QVERIFY(verlet.refresh(index, carried.position));
           QVERIFY(!verlet.hasStrays());
-          QVERIFY(keptPairs(carried, verlet, h, duplicate) == bruteForce(carried.position, h));
+          QVERIFY(keptPairs(carried, verlet, h, faulty) == bruteForce(carried.position, h));
+          QVERIFY(!faulty);
 
           // Two displacements summing past the skin, and five particles teleported into the
           // cloud (the rest moved by 0.2 skin): strays, and still exactly the brute-force pairs.
@@ -249,8 +269,8 @@ private slots:
           QVERIFY(verlet.refresh(index, p.position));
           QVERIFY(verlet.hasStrays());
           QVERIFY(verlet.strayCount() >= 7);
-          QVERIFY(keptPairs(p, verlet, h, duplicate) == bruteForce(p.position, h));
-          QVERIFY(!duplicate);
+          QVERIFY(keptPairs(p, verlet, h, faulty) == bruteForce(p.position, h));
+          QVERIFY(!faulty);
 
           // Too many strays: a rebuild is cheaper, and the list says so.
           for (std::size_t i = 0; i < p.position.size(); i += 8) p.position[i] = sorted[i] + Eigen::Vector3d(0, 0, 2 * skin);

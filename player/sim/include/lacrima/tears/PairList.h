@@ -22,7 +22,8 @@
 //
 // Strays. One fast particle (a drop falling off the chin past still ones, or one re-emitted at
 // its source) would otherwise force a full rebuild every sub-step. When the test fails, v
-// becomes the median displacement (per axis: a few outliers do not move it) and the particles
+// becomes the median displacement (per axis, of a strided sample: a few outliers do not move
+// it; any v keeps the argument exact) and the particles
 // with |d_i - v| >= skin / 2 become strays. Any pair of two others still has d_i + d_j < skin,
 // so the list stays exact for them; each stray's pairs are searched afresh every sub-step in
 // the build's cells around x_f - v (a partner within h of it now has its anchor within
