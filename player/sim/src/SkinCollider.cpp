@@ -14,6 +14,8 @@ namespace {
 constexpr int kMaxContacts = 32;
 constexpr int kShrinkAttempts = 4;
 constexpr int kEnvelopeVertices = 8;
+// ODE queries a skin pose answers before the collider builds its grid to skip empty ones.
+constexpr int kQueriesBeforeGrid = 1024;
 
 bool finite(const dContactGeom& c) {
   return std::isfinite(c.depth) && std::isfinite(c.pos[0]) && std::isfinite(c.pos[1]) && std::isfinite(c.pos[2]);
@@ -34,16 +36,35 @@ SkinCollider::SkinCollider(const Eigen::Matrix3Xd& vertices, std::vector<Eigen::
   // triangles (collapsed by a pose, or modelled) never hold a contact.
   degenerateArea2_ = std::pow(1e-6 * radius_, 4);
   computeNormals(vertices_, normals_, degenerate_);
-  // Triangles around each vertex (CSR), for contacts that slide onto a neighbouring triangle.
-  vertexStart_.assign(n + 1, 0);
+  refreshFaces();
+  // Triangles around each vertex (CSR), then around each triangle without repeats: a
+  // neighbour across an edge shares two vertices and the triangle itself three, so walking
+  // the three vertex lists would test them twice and three times (18 tests for 13 triangles
+  // on a regular mesh). The nearest of a set does not depend on its order or repeats
+  // (consider() breaks ties by index), so the contact found is the same.
+  std::vector<int> vertexStart(n + 1, 0);
   for (const auto& t : triangles_)
-    for (int k = 0; k < 3; ++k) ++vertexStart_[static_cast<std::size_t>(t[k]) + 1];
-  for (std::size_t v = 0; v < n; ++v) vertexStart_[v + 1] += vertexStart_[v];
-  vertexTriangles_.resize(static_cast<std::size_t>(vertexStart_[n]));
-  std::vector<int> fill(vertexStart_.begin(), vertexStart_.end() - 1);
+    for (int k = 0; k < 3; ++k) ++vertexStart[static_cast<std::size_t>(t[k]) + 1];
+  for (std::size_t v = 0; v < n; ++v) vertexStart[v + 1] += vertexStart[v];
+  std::vector<int> vertexTriangles(static_cast<std::size_t>(vertexStart[n]));
+  std::vector<int> fill(vertexStart.begin(), vertexStart.end() - 1);
   for (std::size_t t = 0; t < triangles_.size(); ++t)
     for (int k = 0; k < 3; ++k)
-      vertexTriangles_[static_cast<std::size_t>(fill[static_cast<std::size_t>(triangles_[t][k])]++)] = static_cast<int>(t);
+      vertexTriangles[static_cast<std::size_t>(fill[static_cast<std::size_t>(triangles_[t][k])]++)] = static_cast<int>(t);
+  ringStart_.assign(triangles_.size() + 1, 0);
+  ringTriangles_.reserve(vertexTriangles.size() * 3);
+  std::vector<int> ring;
+  for (std::size_t t = 0; t < triangles_.size(); ++t) {
+    ring.clear();
+    for (int k = 0; k < 3; ++k) {
+      const auto v = static_cast<std::size_t>(triangles_[t][k]);
+      ring.insert(ring.end(), vertexTriangles.begin() + vertexStart[v], vertexTriangles.begin() + vertexStart[v + 1]);
+    }
+    std::sort(ring.begin(), ring.end());
+    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+    ringTriangles_.insert(ringTriangles_.end(), ring.begin(), ring.end());
+    ringStart_[t + 1] = static_cast<int>(ringTriangles_.size());
+  }
 
   odeVertices_.assign(3 * (n + kEnvelopeVertices), 0.0);
   for (int c = 0; c < kEnvelopeVertices; ++c) {
@@ -83,6 +104,28 @@ void SkinCollider::computeNormals(const Eigen::Matrix3Xd& v, std::vector<Eigen::
   }
 }
 
+void SkinCollider::refreshFaces() {
+  faces_.resize(triangles_.size());
+  for (std::size_t t = 0; t < triangles_.size(); ++t) {
+    const auto& tri = triangles_[t];
+    faces_[t] = makeSkinFace(vertices_.col(tri[0]), vertices_.col(tri[1]), vertices_.col(tri[2]), normals_[t],
+                             degenerate_[t] != 0);
+  }
+  gridBuilt_ = false;  // built on demand, for this pose
+  queriesThisPose_ = 0;
+}
+
+bool SkinCollider::gridReady() {
+  if (gridBuilt_) return true;
+  // A grid costs about as much as a thousand ODE queries to build: only worth it for a pose
+  // that sees many (thousands of particles), not for a drop or two on a moving face.
+  if (++queriesThisPose_ <= kQueriesBeforeGrid) return false;
+  // Cells about one free particle's query across (or a triangle, if larger).
+  grid_.build(faces_, radius_ + probe_);
+  gridBuilt_ = true;
+  return true;
+}
+
 void SkinCollider::writeOdeVertices(const Eigen::Matrix3Xd& v, CollisionCounters& counters) {
   for (Eigen::Index c = 0; c < v.cols(); ++c)
     for (int a = 0; a < 3; ++a) odeVertices_[3 * static_cast<std::size_t>(c) + static_cast<std::size_t>(a)] = v(a, c);
@@ -94,6 +137,7 @@ void SkinCollider::writeOdeVertices(const Eigen::Matrix3Xd& v, CollisionCounters
 void SkinCollider::resetSurface(const Eigen::Matrix3Xd& v, CollisionCounters& counters) {
   vertices_ = v;
   computeNormals(vertices_, normals_, degenerate_);
+  refreshFaces();
   writeOdeVertices(vertices_, counters);
 }
 
@@ -103,6 +147,7 @@ void SkinCollider::restoreSurface(const Surface& surface, CollisionCounters& cou
   vertices_ = surface.vertices;
   normals_ = surface.normals;
   degenerate_ = surface.degenerate;
+  refreshFaces();
   writeOdeVertices(vertices_, counters);
 }
 
@@ -112,10 +157,11 @@ Eigen::Vector3d SkinCollider::pointAt(int t, const Eigen::Vector3d& b, const Eig
 }
 
 bool SkinCollider::consider(const Eigen::Vector3d& x, int t, double radius, SkinHit& hit, bool found) const {
-  if (t < 0 || t >= triangleCount() || degenerate(t)) return false;
-  const auto& tri = triangles_[static_cast<std::size_t>(t)];
-  const TrianglePoint cp = closestPointOnTriangle(x, vertices_.col(tri[0]), vertices_.col(tri[1]), vertices_.col(tri[2]));
-  if ((x - cp.point).dot(normals_[static_cast<std::size_t>(t)]) < 0) return false;  // behind: not ours
+  if (t < 0 || t >= triangleCount()) return false;
+  const SkinFace& face = faces_[static_cast<std::size_t>(t)];
+  if (face.degenerate) return false;
+  const TrianglePoint cp = closestPointOnFace(x, face);
+  if ((x - cp.point).dot(face.normal) < 0) return false;  // behind: not ours
   const double distance = (x - cp.point).norm();
   if (!(distance <= radius)) return false;
   if (found && !(distance < hit.distance || (distance == hit.distance && t < hit.triangle))) return false;
@@ -123,20 +169,24 @@ bool SkinCollider::consider(const Eigen::Vector3d& x, int t, double radius, Skin
   return true;
 }
 
+bool SkinCollider::anyWithin(const Eigen::Vector3d& x, double radius) const {
+  SkinHit scratch;
+  return grid_.anyNear(x, radius, [&](int t) { return consider(x, t, radius, scratch, false); });
+}
+
 bool SkinCollider::contactAround(const Eigen::Vector3d& x, int from, SkinHit& hit) const {
   bool found = false;
-  const auto& tri = triangles_[static_cast<std::size_t>(from)];
-  for (int k = 0; k < 3; ++k) {
-    const auto v = static_cast<std::size_t>(tri[k]);
-    for (int a = vertexStart_[v]; a < vertexStart_[v + 1]; ++a)
-      if (consider(x, vertexTriangles_[static_cast<std::size_t>(a)], radius_ + band_, hit, found)) found = true;
-  }
+  const auto f = static_cast<std::size_t>(from);
+  for (int a = ringStart_[f]; a < ringStart_[f + 1]; ++a)
+    if (consider(x, ringTriangles_[static_cast<std::size_t>(a)], radius_ + band_, hit, found)) found = true;
   // Over a face, not at a rim of the ring: a contact as good as the global search's. At an edge
   // or vertex of the ring, a triangle further out might be closer: leave it to ODE.
   return found && hit.interior;
 }
 
 bool SkinCollider::nearest(const Eigen::Vector3d& x, double radius, SkinHit& hit, CollisionCounters& counters) {
+  // Nothing consider() accepts within the radius: ODE's list could not hold one either.
+  if (gridReady() && !anyWithin(x, radius)) return false;
   bool found = false;
   double r = radius;
   for (int attempt = 0; attempt < kShrinkAttempts; ++attempt) {
@@ -167,6 +217,8 @@ bool SkinCollider::rayFirstHit(const Eigen::Vector3d& from, const Eigen::Vector3
   const Eigen::Vector3d d = to - from;
   const double length = d.norm();
   if (!(length > 0)) return false;
+  // No triangle's box meets the segment's: no crossing for ODE to find.
+  if (gridReady() && !grid_.any(from.cwiseMin(to), from.cwiseMax(to), [](int) { return true; })) return false;
   const Eigen::Vector3d dir = d / length;
   dGeomRaySetLength(ray_.get(), length);
   dGeomRaySet(ray_.get(), from.x(), from.y(), from.z(), dir.x(), dir.y(), dir.z());
@@ -175,18 +227,19 @@ bool SkinCollider::rayFirstHit(const Eigen::Vector3d& from, const Eigen::Vector3
   if (n < 1) return false;
   const dContactGeom& c = contacts_[0];
   const int t = c.side2;
-  if (!finite(c) || t < 0 || t >= triangleCount() || degenerate(t)) return false;
-  if (dir.dot(normals_[static_cast<std::size_t>(t)]) >= 0) return false;  // leaving, not entering
+  if (!finite(c) || t < 0 || t >= triangleCount()) return false;
+  const SkinFace& face = faces_[static_cast<std::size_t>(t)];
+  if (face.degenerate) return false;
+  if (dir.dot(face.normal) >= 0) return false;  // leaving, not entering
   const Eigen::Vector3d p(c.pos[0], c.pos[1], c.pos[2]);
-  const auto& tri = triangles_[static_cast<std::size_t>(t)];
-  const TrianglePoint cp = closestPointOnTriangle(p, vertices_.col(tri[0]), vertices_.col(tri[1]), vertices_.col(tri[2]));
+  const TrianglePoint cp = closestPointOnFace(p, face);
   hit = {t, cp.point, cp.barycentric, cp.interior, c.depth};
   return true;
 }
 
 void SkinCollider::makeContact(int i, ParticleSet& p, const SkinHit& hit) {
   const auto s = static_cast<std::size_t>(i);
-  const Eigen::Vector3d n = normals_[static_cast<std::size_t>(hit.triangle)];
+  const Eigen::Vector3d n = faces_[static_cast<std::size_t>(hit.triangle)].normal;
   // Push out along the face normal inside the face; at an edge or vertex, away from it.
   const Eigen::Vector3d offset = p.position[s] - hit.point;
   const double along = offset.dot(n);
@@ -254,6 +307,7 @@ double SkinCollider::moveSurface(const Eigen::Matrix3Xd& next, ParticleSet& p, C
   vertices_ = next;
   normals_ = std::move(nextNormals);
   degenerate_ = std::move(nextDegenerate);
+  refreshFaces();
   writeOdeVertices(vertices_, counters);
 
   for (const Anchor& anchor : anchors) {
@@ -279,12 +333,12 @@ void SkinCollider::resolve(ParticleSet& p, std::span<const Eigen::Vector3d> prev
     const auto s = static_cast<std::size_t>(i);
     SkinContact& contact = p.contact[s];
     const Eigen::Vector3d moved = p.position[s] - previous[s];
-    if (contact.triangle >= 0 && !degenerate(contact.triangle)) {
-      const auto& tri = triangles_[static_cast<std::size_t>(contact.triangle)];
-      const TrianglePoint cp = closestPointOnTriangle(p.position[s], vertices_.col(tri[0]), vertices_.col(tri[1]), vertices_.col(tri[2]));
+    const SkinFace* face = contact.triangle >= 0 ? &faces_[static_cast<std::size_t>(contact.triangle)] : nullptr;
+    if (face && !face->degenerate) {
+      const TrianglePoint cp = closestPointOnFace(p.position[s], *face);
       if (cp.interior) {
         ++counters.contactsTracked;
-        const Eigen::Vector3d n = normals_[static_cast<std::size_t>(contact.triangle)];
+        const Eigen::Vector3d n = face->normal;
         const double height = (p.position[s] - cp.point).dot(n);
         // The tracked side is known, so even a particle pulled far below the plane (huge
         // adhesion, huge step) comes back out on the front: no tunnelling through its triangle.

@@ -27,13 +27,13 @@ void SkinContactForces::constrain(ParticleSet& p, const SkinView& skin, const Ei
     const auto s = static_cast<std::size_t>(i);
     const int t = p.contact[s].triangle;
     if (t < 0) continue;
-    const Eigen::Vector3d n = skin.normals[static_cast<std::size_t>(t)];
+    const SkinFace& face = skin.faces[static_cast<std::size_t>(t)];
+    const Eigen::Vector3d n = face.normal;
     if (n.squaredNorm() == 0) continue;  // degenerate triangle: the collider drops the contact
     const double adhesion = adhesionOf(p, i);
     Eigen::Vector3d v = p.velocity[s] - dt * adhesion * n;
     // Gap between the particle's surface and the triangle's plane.
-    const Eigen::Vector3d a0 = skin.vertices->col(skin.triangles[static_cast<std::size_t>(t)][0]);
-    const double gap = std::max(0.0, (p.position[s] - a0).dot(n) - radius_);
+    const double gap = std::max(0.0, (p.position[s] - face.a).dot(n) - radius_);
     const double vn = v.dot(n);
     const double minimum = -gap / dt;
     if (vn < minimum) v += (minimum - vn) * n;

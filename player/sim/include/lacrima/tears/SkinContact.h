@@ -24,11 +24,23 @@
 
 namespace lacrima::tears {
 
+// One skin triangle as every per-sub-step test reads it, made once per skin pose (the skin
+// only moves between frames): the corners copied out of the vertex array, the two edges from
+// a as closestPointOnTriangle computes them (b - a, c - a: the same bits), and the unit outward
+// normal. A contact test reads one record instead of an index triple, three vertex columns
+// and a normal from four arrays; the arithmetic done on it is unchanged, so results are
+// bitwise identical to working from the vertices.
+struct SkinFace {
+  Eigen::Vector3d normal;  // unit, outward; zero when degenerate
+  Eigen::Vector3d a;       // first corner: the plane's origin for gaps
+  Eigen::Vector3d ab, ac;  // b - a, c - a
+  Eigen::Vector3d b, c;
+  bool degenerate = true;  // too little area for a normal: never holds a contact
+};
+
 // Read-only view of the skin's current geometry.
 struct SkinView {
-  const Eigen::Matrix3Xd* vertices = nullptr;
-  std::span<const Eigen::Vector3i> triangles;
-  std::span<const Eigen::Vector3d> normals;  // unit, outward; zero for degenerate triangles
+  std::span<const SkinFace> faces;
 };
 
 class SkinContactForces {
