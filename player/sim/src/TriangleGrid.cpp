@@ -67,20 +67,20 @@ void TriangleGrid::build(std::span<const SkinFace> faces, double minimumCell) {
   for (int t : all_) {
     const auto s = static_cast<std::size_t>(t);
     cellRange(lo_[s], hi_[s], first_[s], last_[s]);
-    for (int z = first_[s].z(); z <= last_[s].z(); ++z)
-      for (int y = first_[s].y(); y <= last_[s].y(); ++y)
-        for (int x = first_[s].x(); x <= last_[s].x(); ++x) ++cellStart_[static_cast<std::size_t>((z * dims_.y() + y) * dims_.x() + x) + 1];
+    anyCell(first_[s], last_[s], [&](std::size_t cell) {
+      ++cellStart_[cell + 1];
+      return false;
+    });
   }
   for (std::size_t c = 0; c < cells; ++c) cellStart_[c + 1] += cellStart_[c];
   cellTriangles_.resize(static_cast<std::size_t>(cellStart_[cells]));
-  std::vector<int>& fill = fill_;
-  fill.assign(cellStart_.begin(), cellStart_.end() - 1);
+  fill_.assign(cellStart_.begin(), cellStart_.end() - 1);
   for (int t : all_) {
     const auto s = static_cast<std::size_t>(t);
-    for (int z = first_[s].z(); z <= last_[s].z(); ++z)
-      for (int y = first_[s].y(); y <= last_[s].y(); ++y)
-        for (int x = first_[s].x(); x <= last_[s].x(); ++x)
-          cellTriangles_[static_cast<std::size_t>(fill[static_cast<std::size_t>((z * dims_.y() + y) * dims_.x() + x)]++)] = t;
+    anyCell(first_[s], last_[s], [&](std::size_t cell) {
+      cellTriangles_[static_cast<std::size_t>(fill_[cell]++)] = t;
+      return false;
+    });
   }
 }
 

@@ -65,6 +65,16 @@ private:
     return c >= dims_[axis] ? dims_[axis] - 1 : static_cast<int>(c);
   }
   bool cellRange(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, Eigen::Array3i& first, Eigen::Array3i& last) const;
+  // Calls f(cell) for the cells of [first, last] in x-fastest order until f returns true;
+  // returns whether it did.
+  template <class F>
+  bool anyCell(const Eigen::Array3i& first, const Eigen::Array3i& last, F&& f) const {
+    for (int z = first.z(); z <= last.z(); ++z)
+      for (int y = first.y(); y <= last.y(); ++y)
+        for (int x = first.x(); x <= last.x(); ++x)
+          if (f(static_cast<std::size_t>((z * dims_.y() + y) * dims_.x() + x))) return true;
+    return false;
+  }
   template <class Overlaps, class Visit>
   bool walk(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, Overlaps&& overlaps, Visit&& visit) const;
 
@@ -104,16 +114,13 @@ bool TriangleGrid::walk(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, Ov
   }
   Eigen::Array3i first, last;
   if (!cellRange(lo, hi, first, last)) return false;
-  for (int z = first.z(); z <= last.z(); ++z)
-    for (int y = first.y(); y <= last.y(); ++y)
-      for (int x = first.x(); x <= last.x(); ++x) {
-        const auto cell = static_cast<std::size_t>((z * dims_.y() + y) * dims_.x() + x);
-        for (int a = cellStart_[cell]; a < cellStart_[cell + 1]; ++a) {
-          const int t = cellTriangles_[static_cast<std::size_t>(a)];
-          if (overlaps(static_cast<std::size_t>(t)) && visit(t)) return true;
-        }
-      }
-  return false;
+  return anyCell(first, last, [&](std::size_t cell) {
+    for (int a = cellStart_[cell]; a < cellStart_[cell + 1]; ++a) {
+      const int t = cellTriangles_[static_cast<std::size_t>(a)];
+      if (overlaps(static_cast<std::size_t>(t)) && visit(t)) return true;
+    }
+    return false;
+  });
 }
 
 }  // namespace lacrima::tears
