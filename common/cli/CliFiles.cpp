@@ -1,6 +1,6 @@
 #include "CliFiles.h"
 
-#include <lacrima/FapWriter.h>
+#include <lacrima/common/FapWriter.h>
 
 #include <cstdio>
 

@@ -1,8 +1,8 @@
 #pragma once
 // File handling shared by lacrima-fap's commands: one place decides whether a path is a
 // project or a .fap file, and every warning reaches stderr in the same form.
-#include <lacrima/FapReader.h>
-#include <lacrima/ProjectDocument.h>
+#include <lacrima/common/FapReader.h>
+#include <lacrima/common/ProjectDocument.h>
 
 #include <string>
 

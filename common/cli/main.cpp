@@ -3,8 +3,8 @@
 // 2 on wrong usage; results on stdout, diagnostics on stderr as "file:line:col: message".
 #include "CliFiles.h"
 
-#include <lacrima/FapTable.h>
-#include <lacrima/Keyframes.h>
+#include <lacrima/common/FapTable.h>
+#include <lacrima/common/Keyframes.h>
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

@@ -1,10 +1,10 @@
-#include <lacrima/AtomicSave.h>
-#include <lacrima/Diagnostics.h>
+#include <lacrima/common/AtomicSave.h>
+#include <lacrima/common/Diagnostics.h>
 
 #include <QSaveFile>
 #include <QString>
 
-namespace lacrima {
+namespace lacrima::inline common {
 
 void saveAtomically(const std::string& path, std::string_view bytes) {
   // QSaveFile writes "<path>.XXXXXX" beside the target and renames on commit(); on any error
@@ -23,4 +23,4 @@ void saveAtomically(const std::string& path, std::string_view bytes) {
   if (!file.commit()) fail(file.errorString());
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::common

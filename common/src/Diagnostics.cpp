@@ -1,6 +1,6 @@
-#include <lacrima/Diagnostics.h>
+#include <lacrima/common/Diagnostics.h>
 
-namespace lacrima {
+namespace lacrima::inline common {
 
 std::string SourceLocation::toString() const {
   std::string text = file;
@@ -18,4 +18,4 @@ FileError::FileError(SourceLocation where, const std::string& message)
       where_(std::move(where)),
       message_(message) {}
 
-}  // namespace lacrima
+}  // namespace lacrima::common

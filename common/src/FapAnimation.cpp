@@ -1,11 +1,11 @@
-#include <lacrima/FapAnimation.h>
+#include <lacrima/common/FapAnimation.h>
 
 #include "FapInterpolation.h"
 
 #include <array>
 #include <cmath>
 
-namespace lacrima {
+namespace lacrima::inline common {
 
 ChannelMask FapAnimation::usedChannels() const {
   // Row by row into bytes rather than bit by bit: the compiler vectorises this scan.
@@ -39,4 +39,4 @@ FapValues FapAnimation::sample(double seconds) const {
   return out;
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::common

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-namespace lacrima::fapio {
+namespace lacrima::inline common::fapio {
 
 namespace {
 
@@ -177,4 +177,4 @@ void FrameAssembler::fillGaps(FapAnimation& animation, const std::vector<int>& s
   }
 }
 
-}  // namespace lacrima::fapio
+}  // namespace lacrima::common::fapio

@@ -2,15 +2,15 @@
 // Turns the frames of a .fap file, in the order the file lists them, into a dense animation:
 // places them by number, lets a later duplicate win, fills gaps, extends past nframes.
 // Private to lacrima_common (used by FapReader).
-#include <lacrima/Diagnostics.h>
-#include <lacrima/FapAnimation.h>
+#include <lacrima/common/Diagnostics.h>
+#include <lacrima/common/FapAnimation.h>
 
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
 
-namespace lacrima::fapio {
+namespace lacrima::inline common::fapio {
 
 class FrameAssembler {
 public:
@@ -54,4 +54,4 @@ private:
   int firstBeyondHeader_ = -1;        // index in origins_ of the first number >= nframes
 };
 
-}  // namespace lacrima::fapio
+}  // namespace lacrima::common::fapio

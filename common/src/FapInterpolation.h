@@ -1,11 +1,11 @@
 #pragma once
 // How one frame blends into the next. Shared by FapAnimation::sample and the reader's gap
 // filling so that both treat the special channels alike. Private to lacrima_common.
-#include <lacrima/FapChannels.h>
+#include <lacrima/common/FapChannels.h>
 
 #include <cmath>
 
-namespace lacrima::fapio {
+namespace lacrima::inline common::fapio {
 
 // out = a + (b - a) * t per channel, t in [0, 1]. `out` may alias neither a nor b.
 inline void blendFrames(const FapValues& a, const FapValues& b, double t, FapValues& out) {
@@ -20,4 +20,4 @@ inline void blendFrames(const FapValues& a, const FapValues& b, double t, FapVal
   }
 }
 
-}  // namespace lacrima::fapio
+}  // namespace lacrima::common::fapio

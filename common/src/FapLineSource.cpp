@@ -1,12 +1,12 @@
 #include "FapLineSource.h"
 
-#include <lacrima/Diagnostics.h>
+#include <lacrima/common/Diagnostics.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
 
-namespace lacrima::fapio {
+namespace lacrima::inline common::fapio {
 
 LineSource::LineSource(std::string_view text, const std::string& displayName,
                        std::size_t maxLineLength)
@@ -72,4 +72,4 @@ bool LineSource::refill() {
   return true;
 }
 
-}  // namespace lacrima::fapio
+}  // namespace lacrima::common::fapio

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-namespace lacrima::fapio {
+namespace lacrima::inline common::fapio {
 
 class LineSource {
 public:
@@ -42,4 +42,4 @@ private:
   int lineNumber_ = 0;
 };
 
-}  // namespace lacrima::fapio
+}  // namespace lacrima::common::fapio

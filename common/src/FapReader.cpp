@@ -1,4 +1,4 @@
-#include <lacrima/FapReader.h>
+#include <lacrima/common/FapReader.h>
 
 #include "FapFrameAssembler.h"
 #include "FapLineSource.h"
@@ -13,7 +13,7 @@
 #include <cstring>
 #include <memory>
 
-namespace lacrima {
+namespace lacrima::inline common {
 
 namespace {
 
@@ -427,4 +427,4 @@ FapReadResult FapReader::parse(std::string_view text, const std::string& display
   return Parser(lines, displayName, text.size()).run();
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::common

@@ -1,11 +1,11 @@
-#include <lacrima/FapTable.h>
+#include <lacrima/common/FapTable.h>
 
 #include <array>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
-namespace lacrima {
+namespace lacrima::inline common {
 namespace {
 
 // Head rotations edit over +-30 degrees (AU = 1e-5 rad). Greta's sliders stop at +-1860 AU,
@@ -340,4 +340,4 @@ std::string_view toString(FapGroup group) {
   return "unknown";
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::common

@@ -1,5 +1,5 @@
-#include <lacrima/AtomicSave.h>
-#include <lacrima/FapWriter.h>
+#include <lacrima/common/AtomicSave.h>
+#include <lacrima/common/FapWriter.h>
 
 #include <algorithm>
 #include <charconv>
@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <vector>
 
-namespace lacrima {
+namespace lacrima::inline common {
 
 namespace {
 
@@ -170,4 +170,4 @@ void FapWriter::save(const FapAnimation& animation, const std::string& path,
   saveAtomically(path, text);
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::common

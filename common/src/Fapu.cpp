@@ -1,4 +1,4 @@
-#include <lacrima/Fapu.h>
+#include <lacrima/common/Fapu.h>
 
 #include <cmath>
 #include <locale>
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace lacrima {
+namespace lacrima::inline common {
 namespace {
 
 // Collects every bad distance so that one message tells the user all that is wrong with
@@ -85,4 +85,4 @@ double FapuSet::unitValue(FapUnit unit) const {
   return 0.0;
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::common

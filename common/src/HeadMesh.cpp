@@ -1,11 +1,11 @@
-#include <lacrima/HeadMesh.h>
+#include <lacrima/common/HeadMesh.h>
 
 #include <Eigen/Geometry>
 
 #include <map>
 #include <tuple>
 
-namespace lacrima {
+namespace lacrima::inline common {
 
 int HeadMesh::triangleCount() const {
   int count = 0;
@@ -81,4 +81,4 @@ Eigen::Vector3f HeadMesh::boundsMax() const {
   return positions.cols() ? Eigen::Vector3f(positions.rowwise().maxCoeff()) : Eigen::Vector3f::Zero();
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::common

@@ -1,8 +1,8 @@
-#include <lacrima/JsonSyntaxError.h>
+#include <lacrima/common/JsonSyntaxError.h>
 
 #include <algorithm>
 
-namespace lacrima {
+namespace lacrima::inline common {
 
 SourceLocation jsonSyntaxErrorLocation(std::string_view text, const QJsonParseError& error,
                                        const std::string& file) {
@@ -23,4 +23,4 @@ SourceLocation jsonSyntaxErrorLocation(std::string_view text, const QJsonParseEr
   return {file, line, column};
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::common

@@ -1,4 +1,4 @@
-#include <lacrima/JsonWriter.h>
+#include <lacrima/common/JsonWriter.h>
 
 #include <QString>
 
@@ -6,7 +6,7 @@
 #include <charconv>
 #include <cmath>
 
-namespace lacrima {
+namespace lacrima::inline common {
 
 std::string formatJsonNumber(double value) {
   std::array<char, 400> buffer{};
@@ -127,4 +127,4 @@ void JsonWriter::appendEscaped(char c) {
   text_ += c;
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::common

@@ -1,4 +1,4 @@
-#include <lacrima/Keyframes.h>
+#include <lacrima/common/Keyframes.h>
 
 #include <algorithm>
 #include <array>
@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace lacrima {
+namespace lacrima::inline common {
 namespace {
 
 // Keys closer than this are the same key: far below a frame at any sane rate, far above
@@ -341,4 +341,4 @@ KeyframeSequence KeyframeSequence::fromAnimation(const FapAnimation& animation,
   return KeyframeSequence(std::move(keys));
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::common

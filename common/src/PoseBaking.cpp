@@ -1,6 +1,6 @@
-#include <lacrima/PoseBaking.h>
+#include <lacrima/common/PoseBaking.h>
 
-#include <lacrima/FapTable.h>
+#include <lacrima/common/FapTable.h>
 
 #include <algorithm>
 #include <cctype>
@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <utility>
 
-namespace lacrima {
+namespace lacrima::inline common {
 namespace {
 
 // Sparse weights after validation, ascending by vertex.
@@ -426,4 +426,4 @@ PoseSet bakePoses(const RigInput& input, PoseBakeReport* report) {
   return set;
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::common

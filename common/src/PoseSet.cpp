@@ -1,7 +1,7 @@
-#include <lacrima/PoseSet.h>
+#include <lacrima/common/PoseSet.h>
 
-#include <lacrima/FapTable.h>
-#include <lacrima/Fapu.h>
+#include <lacrima/common/FapTable.h>
+#include <lacrima/common/Fapu.h>
 
 #include <Eigen/Geometry>
 
@@ -12,7 +12,7 @@
 #include <string>
 #include <utility>
 
-namespace lacrima {
+namespace lacrima::inline common {
 namespace {
 
 constexpr float kMaxValue = 16777216.0f;  // 2^24, see PoseSet.h
@@ -185,4 +185,4 @@ void PoseBlender::blend(const FapValues& values, Eigen::Matrix3Xf& positions,
   accumulateNormals(positions, triangles_, weld_, normals);
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::common

@@ -1,8 +1,8 @@
-#include <lacrima/AtomicSave.h>
-#include <lacrima/FapTable.h>
-#include <lacrima/JsonSyntaxError.h>
-#include <lacrima/JsonWriter.h>
-#include <lacrima/ProjectDocument.h>
+#include <lacrima/common/AtomicSave.h>
+#include <lacrima/common/FapTable.h>
+#include <lacrima/common/JsonSyntaxError.h>
+#include <lacrima/common/JsonWriter.h>
+#include <lacrima/common/ProjectDocument.h>
 
 #include <QFile>
 #include <QFileInfo>
@@ -20,7 +20,7 @@
 #include <numeric>
 #include <stdexcept>
 
-namespace lacrima {
+namespace lacrima::inline common {
 namespace {
 
 constexpr std::string_view kFormat = "lacrima-project";
@@ -500,4 +500,4 @@ ProjectDocument ProjectDocument::fromAnimation(const FapAnimation& animation) {
   return document;
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::common

@@ -1,10 +1,10 @@
-#include <lacrima/TearParameters.h>
+#include <lacrima/common/TearParameters.h>
 
 #include <array>
 #include <charconv>
 #include <stdexcept>
 
-namespace lacrima {
+namespace lacrima::inline common {
 namespace {
 
 // Defaults are the 2009 settings. Ranges are deliberately wide: the simulation must survive
@@ -83,4 +83,4 @@ void validateTearParameter(std::string_view name, double value) {
   }
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::common

@@ -4,7 +4,7 @@
 //   lacrima-editor FILE --screenshot PNG  render the window (with the preview) to PNG and exit
 // Exit status: 0 on success, 1 when FILE or the screenshot cannot be read or written, 2 on
 // wrong usage.
-#include <lacrima/editor/EditorModel.h>
+#include <lacrima/editing/EditorModel.h>
 #include <lacrima/editor/EditorTheme.h>
 #include <lacrima/editor/MainWindow.h>
 #include <lacrima/editor/PresetPanel.h>

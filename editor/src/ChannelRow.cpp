@@ -1,8 +1,8 @@
 #include <lacrima/editor/ChannelRow.h>
 
-#include <lacrima/FapTable.h>
-#include <lacrima/editor/ChannelLimits.h>
-#include <lacrima/editor/EditorModel.h>
+#include <lacrima/common/FapTable.h>
+#include <lacrima/editing/ChannelLimits.h>
+#include <lacrima/editing/EditorModel.h>
 #include <lacrima/editor/EditorTheme.h>
 #include <lacrima/editor/ZeroSlider.h>
 
@@ -24,7 +24,7 @@ QString fromView(std::string_view text) {
 }
 
 QString tooltipFor(const FapInfo& info) {
-  const ChannelLimits limits = editLimits(info.number);
+  const editing::ChannelLimits limits = editing::editLimits(info.number);
   QString unit = fromView(toString(info.unit));
   if (info.unit == FapUnit::AU) unit = QStringLiteral("AU (10⁻⁵ rad)");
   QString text = QStringLiteral("<b>%1 &nbsp;%2</b><br>%3<br><br>")
@@ -61,10 +61,10 @@ bool WheelGuard::eventFilter(QObject* watched, QEvent* event) {
   return QObject::eventFilter(watched, event);
 }
 
-ChannelRow::ChannelRow(EditorModel& model, int fap, QWidget* parent)
+ChannelRow::ChannelRow(editing::EditorModel& model, int fap, QWidget* parent)
     : QWidget(parent), model_(model), fap_(fap) {
   const FapInfo& info = fapInfo(fap);
-  const ChannelLimits limits = editLimits(fap);
+  const editing::ChannelLimits limits = editing::editLimits(fap);
   setObjectName(QStringLiteral("channel-%1").arg(fap));
 
   auto* layout = new QHBoxLayout(this);

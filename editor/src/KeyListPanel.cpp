@@ -1,6 +1,6 @@
 #include <lacrima/editor/KeyListPanel.h>
 
-#include <lacrima/editor/EditorModel.h>
+#include <lacrima/editing/EditorModel.h>
 #include <lacrima/editor/KeyTableModel.h>
 
 #include <QComboBox>
@@ -32,7 +32,7 @@ public:
 
 }  // namespace
 
-KeyListPanel::KeyListPanel(EditorModel& model, QWidget* parent) : QWidget(parent), model_(model) {
+KeyListPanel::KeyListPanel(editing::EditorModel& model, QWidget* parent) : QWidget(parent), model_(model) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   table_ = new KeyTableModel(model_, this);
@@ -55,7 +55,7 @@ KeyListPanel::KeyListPanel(EditorModel& model, QWidget* parent) : QWidget(parent
   layout->addWidget(view_);
 
   connect(view_->selectionModel(), &QItemSelectionModel::selectionChanged, this, &KeyListPanel::pushSelection);
-  connect(&model_, &EditorModel::selectionChanged, this, &KeyListPanel::pullSelection);
+  connect(&model_, &editing::EditorModel::selectionChanged, this, &KeyListPanel::pullSelection);
   connect(table_, &QAbstractItemModel::modelReset, this, &KeyListPanel::pullSelection);
   connect(view_, &QTableView::clicked, this, [this](const QModelIndex& index) {
     const auto& keys = model_.document().keys.keys();

@@ -1,7 +1,7 @@
 #include <lacrima/editor/KeyTableModel.h>
 
-#include <lacrima/FapTable.h>
-#include <lacrima/editor/EditorModel.h>
+#include <lacrima/common/FapTable.h>
+#include <lacrima/editing/EditorModel.h>
 #include <lacrima/editor/EditorTheme.h>
 
 #include <QColor>
@@ -10,16 +10,16 @@
 
 namespace lacrima::editor {
 
-KeyTableModel::KeyTableModel(EditorModel& model, QObject* parent) : QAbstractTableModel(parent), model_(model) {
+KeyTableModel::KeyTableModel(editing::EditorModel& model, QObject* parent) : QAbstractTableModel(parent), model_(model) {
   // Any key change may add, remove or reorder rows; the table is small enough to reset.
-  connect(&model_, &EditorModel::keysChanged, this, [this] {
+  connect(&model_, &editing::EditorModel::keysChanged, this, [this] {
     beginResetModel();
     endResetModel();
   });
-  connect(&model_, &EditorModel::settingsChanged, this, [this] {
+  connect(&model_, &editing::EditorModel::settingsChanged, this, [this] {
     if (rowCount() > 0) emit dataChanged(index(0, FrameColumn), index(rowCount() - 1, FrameColumn));
   });
-  connect(&model_, &EditorModel::timeChanged, this, [this] {
+  connect(&model_, &editing::EditorModel::timeChanged, this, [this] {
     if (rowCount() > 0) emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1), {Qt::ForegroundRole});
   });
 }

@@ -1,14 +1,14 @@
 #include <lacrima/editor/MainWindow.h>
 
-#include <lacrima/FapTable.h>
-#include <lacrima/editor/EditorModel.h>
-#include <lacrima/editor/KeyClipboard.h>
+#include <lacrima/common/FapTable.h>
+#include <lacrima/editing/EditorModel.h>
+#include <lacrima/editing/KeyClipboard.h>
 #include <lacrima/editor/KeyListPanel.h>
-#include <lacrima/editor/PlaybackClock.h>
+#include <lacrima/editing/FrameStepClock.h>
 #include <lacrima/editor/PresetPanel.h>
 #include <lacrima/editor/PreviewPanel.h>
 #include <lacrima/editor/RecoveryBanner.h>
-#include <lacrima/editor/RecoveryStore.h>
+#include <lacrima/editing/RecoveryStore.h>
 #include <lacrima/editor/SliderPanel.h>
 #include <lacrima/editor/TimelineWidget.h>
 #include <lacrima/editor/TransportBar.h>
@@ -40,10 +40,10 @@ namespace lacrima::editor {
 MainWindow::MainWindow(EditorOptions options, QWidget* parent)
     : QMainWindow(parent),
       options_(std::move(options)),
-      model_(std::make_unique<EditorModel>()),
-      clock_(std::make_unique<PlaybackClock>(*model_)),
-      recovery_(std::make_unique<RecoveryStore>(options_.recoveryDirectory.isEmpty()
-                                                    ? RecoveryStore::defaultDirectory()
+      model_(std::make_unique<editing::EditorModel>()),
+      clock_(std::make_unique<editing::FrameStepClock>(*model_)),
+      recovery_(std::make_unique<editing::RecoveryStore>(options_.recoveryDirectory.isEmpty()
+                                                    ? editing::RecoveryStore::defaultDirectory()
                                                     : options_.recoveryDirectory)) {
   setObjectName(QStringLiteral("lacrimaEditor"));
   setAcceptDrops(true);
@@ -67,12 +67,12 @@ MainWindow::MainWindow(EditorOptions options, QWidget* parent)
 
   connect(model_->undoStack(), &QUndoStack::indexChanged, this, &MainWindow::onDocumentChanged);
   connect(model_->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
-  connect(model_.get(), &EditorModel::documentReset, this, &MainWindow::updateTitle);
-  connect(model_.get(), &EditorModel::settingsChanged, this, &MainWindow::updateTitle);
-  connect(model_.get(), &EditorModel::keysChanged, this, &MainWindow::updateStatusFigures);
-  connect(model_.get(), &EditorModel::settingsChanged, this, &MainWindow::updateStatusFigures);
-  connect(model_.get(), &EditorModel::message, this, [this](const QString& text) { statusBar()->showMessage(text, 5000); });
-  connect(clock_.get(), &PlaybackClock::playingChanged, this, &MainWindow::updateStatusFigures);
+  connect(model_.get(), &editing::EditorModel::documentReset, this, &MainWindow::updateTitle);
+  connect(model_.get(), &editing::EditorModel::settingsChanged, this, &MainWindow::updateTitle);
+  connect(model_.get(), &editing::EditorModel::keysChanged, this, &MainWindow::updateStatusFigures);
+  connect(model_.get(), &editing::EditorModel::settingsChanged, this, &MainWindow::updateStatusFigures);
+  connect(model_.get(), &editing::EditorModel::message, this, [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+  connect(clock_.get(), &editing::FrameStepClock::playingChanged, this, &MainWindow::updateStatusFigures);
 
   QSettings settings;
   resize(1440, 900);
@@ -100,17 +100,17 @@ MainWindow::~MainWindow() {
 QAction* MainWindow::action(const QString& name) const { return findChild<QAction*>(name); }
 
 void MainWindow::createDocks() {
-  PresetLibrary library;
-  QString presetsSource = QString::fromUtf8(PresetLibrary::kBuiltInPath.data());
+  editing::PresetLibrary library;
+  QString presetsSource = QString::fromUtf8(editing::PresetLibrary::kBuiltInPath.data());
   try {
     if (!options_.presetsPath.isEmpty()) {
-      library = PresetLibrary::load(options_.presetsPath.toStdString());
+      library = editing::PresetLibrary::load(options_.presetsPath.toStdString());
       presetsSource = options_.presetsPath;
     }
   } catch (const FileError& e) {
     lastError_ = QString::fromUtf8(e.what());  // reported by the caller; the built-in set is used
   }
-  if (presetsSource.startsWith(QLatin1Char(':'))) library = PresetLibrary::builtIn();
+  if (presetsSource.startsWith(QLatin1Char(':'))) library = editing::PresetLibrary::builtIn();
 
   // Centre: the recovery offer above the preview.
   auto* centre = new QWidget(this);
@@ -171,10 +171,10 @@ void MainWindow::createDocks() {
 
   connect(timeline_, &TimelineWidget::copyRequested, this, &MainWindow::copyKeys);
   connect(timeline_, &TimelineWidget::pasteRequested, this, [this](double at) { pasteKeys(at); });
-  connect(timeline_, &TimelineWidget::mirrorRequested, model_.get(), &EditorModel::mirror);
+  connect(timeline_, &TimelineWidget::mirrorRequested, model_.get(), &editing::EditorModel::mirror);
   connect(presets_, &PresetPanel::loadRequested, this, &MainWindow::loadPresetsDialog);
   connect(sliders_, &SliderPanel::expressionPresetRequested, this, [this](int code) {
-    if (const Preset* preset = presets_->library().forExpression(code)) {
+    if (const editing::Preset* preset = presets_->library().forExpression(code)) {
       model_->applyPreset(*preset, presets_->intensity(), presets_->replacesPose());
     } else {
       statusBar()->showMessage(tr("The presets file has no pose for expression %1").arg(code), 5000);
@@ -196,7 +196,7 @@ QAction* MainWindow::addAction(QMenu* menu, const QString& name, const QString& 
 }
 
 void MainWindow::createMenus() {
-  EditorModel& m = *model_;
+  editing::EditorModel& m = *model_;
   QMenu* file = menuBar()->addMenu(tr("&File"));
   connect(addAction(file, QStringLiteral("file.new"), tr("&New"), QKeySequence::New), &QAction::triggered, this, [this] {
     if (maybeSave()) newDocument();
@@ -245,17 +245,17 @@ void MainWindow::createMenus() {
     else if (model_->currentKeyIndex() >= 0) model_->deleteKeys({model_->currentTime()});
   });
   connect(addAction(edit, QStringLiteral("edit.selectAll"), tr("Select &all keys"), QKeySequence::SelectAll),
-          &QAction::triggered, &m, &EditorModel::selectAll);
+          &QAction::triggered, &m, &editing::EditorModel::selectAll);
   edit->addSeparator();
   connect(addAction(edit, QStringLiteral("edit.mirror"), tr("&Mirror left ↔ right"), QKeySequence(QStringLiteral("Ctrl+M")),
                     tr("Mirror the selected keys, or the pose at the playhead")),
-          &QAction::triggered, &m, &EditorModel::mirror);
+          &QAction::triggered, &m, &editing::EditorModel::mirror);
   QAction* symmetric = addAction(edit, QStringLiteral("edit.symmetric"), tr("S&ymmetric editing"),
                                  QKeySequence(QStringLiteral("Ctrl+Shift+M")),
                                  tr("Moving a left or right channel moves its mirror channel too"));
   symmetric->setCheckable(true);
-  connect(symmetric, &QAction::toggled, &m, &EditorModel::setSymmetricEdit);
-  connect(&m, &EditorModel::symmetricEditChanged, symmetric, &QAction::setChecked);
+  connect(symmetric, &QAction::toggled, &m, &editing::EditorModel::setSymmetricEdit);
+  connect(&m, &editing::EditorModel::symmetricEditChanged, symmetric, &QAction::setChecked);
   edit->addSeparator();
   connect(addAction(edit, QStringLiteral("edit.settings"), tr("Project &settings…"), QKeySequence(QStringLiteral("Ctrl+,"))),
           &QAction::triggered, this, &MainWindow::settingsDialog);
@@ -263,7 +263,7 @@ void MainWindow::createMenus() {
   QMenu* key = menuBar()->addMenu(tr("&Key"));
   connect(addAction(key, QStringLiteral("key.add"), tr("&Add key (whole pose)"), QKeySequence(Qt::Key_K),
                     tr("Key every animated channel at the playhead")),
-          &QAction::triggered, &m, &EditorModel::addKey);
+          &QAction::triggered, &m, &editing::EditorModel::addKey);
   const auto targets = [this] {
     std::vector<double> t = model_->selectedTimes();
     if (t.empty() && model_->currentKeyIndex() >= 0) t.push_back(model_->currentTime());
@@ -281,7 +281,7 @@ void MainWindow::createMenus() {
 
   QMenu* play = menuBar()->addMenu(tr("&Playback"));
   connect(addAction(play, QStringLiteral("play.toggle"), tr("&Play / pause"), QKeySequence(Qt::Key_Space)),
-          &QAction::triggered, clock_.get(), &PlaybackClock::toggle);
+          &QAction::triggered, clock_.get(), &editing::FrameStepClock::toggle);
   connect(addAction(play, QStringLiteral("play.start"), tr("Go to &start"), QKeySequence(Qt::Key_Home)), &QAction::triggered,
           this, [this] { model_->setCurrentTime(model_->document().keys.startTime()); });
   connect(addAction(play, QStringLiteral("play.end"), tr("Go to &end"), QKeySequence(Qt::Key_End)), &QAction::triggered,
@@ -376,12 +376,12 @@ void MainWindow::copyKeys() {
     statusBar()->showMessage(tr("Select keys to copy (click them in the timeline)"), 4000);
     return;
   }
-  QApplication::clipboard()->setMimeData(keysToMimeData(editor::copyKeys(model_->document().keys, times)));
+  QApplication::clipboard()->setMimeData(editing::keysToMimeData(editing::copyKeys(model_->document().keys, times)));
   statusBar()->showMessage(tr("Copied %n key(s)", nullptr, static_cast<int>(times.size())), 3000);
 }
 
 void MainWindow::pasteKeys(std::optional<double> at) {
-  const auto clip = keysFromMimeData(QApplication::clipboard()->mimeData());
+  const auto clip = editing::keysFromMimeData(QApplication::clipboard()->mimeData());
   if (!clip) {
     statusBar()->showMessage(tr("The clipboard holds no keys"), 4000);
     return;

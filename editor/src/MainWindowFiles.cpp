@@ -1,11 +1,11 @@
 // MainWindow: files, recent files, autosave and recovery, closing.
 #include <lacrima/editor/MainWindow.h>
 
-#include <lacrima/editor/EditorModel.h>
-#include <lacrima/editor/PlaybackClock.h>
+#include <lacrima/editing/EditorModel.h>
+#include <lacrima/editing/FrameStepClock.h>
 #include <lacrima/editor/PresetPanel.h>
 #include <lacrima/editor/RecoveryBanner.h>
-#include <lacrima/editor/RecoveryStore.h>
+#include <lacrima/editing/RecoveryStore.h>
 
 #include <QCheckBox>
 #include <QCloseEvent>
@@ -123,7 +123,7 @@ bool MainWindow::saveTo(const QString& path) {
 
 bool MainWindow::importFap(const QString& path, std::optional<double> reductionTolerance) {
   try {
-    FapImportResult result = editor::importFap(path.toStdString(), FapImportOptions{reductionTolerance});
+    editing::FapImportResult result = editing::importFap(path.toStdString(), editing::FapImportOptions{reductionTolerance});
     clock_->pause();
     filePath_.clear();
     model_->resetDocument(std::move(result.document), false);
@@ -149,9 +149,9 @@ bool MainWindow::importFap(const QString& path, std::optional<double> reductionT
   }
 }
 
-bool MainWindow::exportFap(const QString& path, const FapExportOptions& options) {
+bool MainWindow::exportFap(const QString& path, const editing::FapExportOptions& options) {
   try {
-    const FapExportResult result = editor::exportFap(model_->document(), path.toStdString(), options);
+    const editing::FapExportResult result = editing::exportFap(model_->document(), path.toStdString(), options);
     QString message = tr("Exported %1 frames at %2 fps to %3 (%4)")
                           .arg(result.frames)
                           .arg(options.fps)
@@ -244,7 +244,7 @@ void MainWindow::exportDialog() {
   QString path = QFileDialog::getSaveFileName(this, tr("Export FAP"), suggestion, tr("FAP files (*.fap)"));
   if (path.isEmpty()) return;
   if (!path.endsWith(QLatin1String(".fap"), Qt::CaseInsensitive)) path += QStringLiteral(".fap");
-  exportFap(path, FapExportOptions{fps->value(), profile->currentIndex() == 1});
+  exportFap(path, editing::FapExportOptions{fps->value(), profile->currentIndex() == 1});
 }
 
 void MainWindow::loadPresetsDialog() {
@@ -252,7 +252,7 @@ void MainWindow::loadPresetsDialog() {
   const QString path = QFileDialog::getOpenFileName(this, tr("Load presets"), QString(), tr("Presets (*.json)"));
   if (path.isEmpty()) return;
   try {
-    presets_->setLibrary(PresetLibrary::load(path.toStdString()), path);
+    presets_->setLibrary(editing::PresetLibrary::load(path.toStdString()), path);
     statusBar()->showMessage(tr("Loaded %n preset(s) from %1", nullptr, static_cast<int>(presets_->library().presets().size())).arg(path), 5000);
   } catch (const FileError& e) {
     reportError(tr("Cannot load the presets"), QString::fromUtf8(e.what()));
@@ -312,7 +312,7 @@ void MainWindow::checkForRecovery() {
     pendingRecovery_.clear();
     return;
   }
-  const RecoveryStore::Orphan& newest = orphans.front();
+  const editing::RecoveryStore::Orphan& newest = orphans.front();
   pendingRecovery_ = newest.file;
   QString where = newest.sourcePath.isEmpty() ? tr("never saved") : newest.sourcePath;
   QString text = tr("<b>Unsaved work was found</b> from an editor that did not close cleanly: “%1” "
@@ -329,11 +329,11 @@ bool MainWindow::restoreRecovery() {
   bool restored = false;
   try {
     QString source;
-    ProjectDocument document = RecoveryStore::read(pendingRecovery_, &source);
+    ProjectDocument document = editing::RecoveryStore::read(pendingRecovery_, &source);
     clock_->pause();
     model_->resetDocument(std::move(document), false);
     filePath_ = source;
-    RecoveryStore::remove(pendingRecovery_);
+    editing::RecoveryStore::remove(pendingRecovery_);
     autosaveNow();  // the restored work is this session's to protect now
     updateTitle();
     updateStatusFigures();
@@ -347,7 +347,7 @@ bool MainWindow::restoreRecovery() {
 }
 
 void MainWindow::discardRecovery() {
-  if (!pendingRecovery_.isEmpty()) RecoveryStore::remove(pendingRecovery_);
+  if (!pendingRecovery_.isEmpty()) editing::RecoveryStore::remove(pendingRecovery_);
   checkForRecovery();
 }
 

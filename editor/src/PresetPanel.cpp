@@ -1,7 +1,7 @@
 #include <lacrima/editor/PresetPanel.h>
 
-#include <lacrima/FapTable.h>
-#include <lacrima/editor/EditorModel.h>
+#include <lacrima/common/FapTable.h>
+#include <lacrima/editing/EditorModel.h>
 #include <lacrima/editor/EditorTheme.h>
 
 #include <QCheckBox>
@@ -16,7 +16,7 @@
 
 namespace lacrima::editor {
 
-PresetPanel::PresetPanel(EditorModel& model, PresetLibrary library, QWidget* parent)
+PresetPanel::PresetPanel(editing::EditorModel& model, editing::PresetLibrary library, QWidget* parent)
     : QWidget(parent), model_(model), library_(std::move(library)) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(6, 6, 6, 6);
@@ -74,12 +74,12 @@ PresetPanel::PresetPanel(EditorModel& model, PresetLibrary library, QWidget* par
   connect(list_, &QTreeWidget::currentItemChanged, this, &PresetPanel::showDetails);
   connect(list_, &QTreeWidget::itemDoubleClicked, this, [this] { apply(selectedId()); });
   connect(apply_, &QPushButton::clicked, this, [this] { apply(selectedId()); });
-  connect(mirror, &QPushButton::clicked, &model_, &EditorModel::mirror);
+  connect(mirror, &QPushButton::clicked, &model_, &editing::EditorModel::mirror);
   connect(load, &QToolButton::clicked, this, &PresetPanel::loadRequested);
   rebuild();
 }
 
-void PresetPanel::setLibrary(PresetLibrary library, const QString& source) {
+void PresetPanel::setLibrary(editing::PresetLibrary library, const QString& source) {
   library_ = std::move(library);
   source_ = source;
   rebuild();
@@ -89,7 +89,7 @@ double PresetPanel::intensity() const { return intensity_->value() / 100.0; }
 bool PresetPanel::replacesPose() const { return replace_->isChecked(); }
 
 bool PresetPanel::apply(const QString& id) {
-  const Preset* preset = library_.find(id.toStdString());
+  const editing::Preset* preset = library_.find(id.toStdString());
   if (!preset) return false;
   model_.applyPreset(*preset, intensity(), replacesPose());
   return true;
@@ -108,7 +108,7 @@ void PresetPanel::rebuild() {
     auto* heading = new QTreeWidgetItem(list_, {QString::fromStdString(category)});
     heading->setFlags(Qt::ItemIsEnabled);
     heading->setFont(0, bold);
-    for (const Preset& preset : library_.presets()) {
+    for (const editing::Preset& preset : library_.presets()) {
       if (preset.category != category) continue;
       QString label = QString::fromStdString(preset.name);
       if (preset.isSequence()) label += tr("   (%1 keys, %2 s)").arg(preset.keys.size()).arg(preset.duration(), 0, 'f', 1);
@@ -127,7 +127,7 @@ void PresetPanel::rebuild() {
 }
 
 void PresetPanel::showDetails() {
-  const Preset* preset = library_.find(selectedId().toStdString());
+  const editing::Preset* preset = library_.find(selectedId().toStdString());
   apply_->setEnabled(preset != nullptr);
   if (!preset) {
     details_->setText(tr("Pick a preset, then Apply (or double-click it). It lands at the playhead."));

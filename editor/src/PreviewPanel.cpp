@@ -1,9 +1,9 @@
 #include <lacrima/editor/PreviewPanel.h>
 
-#include <lacrima/FapTable.h>
-#include <lacrima/editor/EditorModel.h>
+#include <lacrima/common/FapTable.h>
+#include <lacrima/editing/EditorModel.h>
 #include <lacrima/editor/EditorTheme.h>
-#include <lacrima/editor/PlaybackClock.h>
+#include <lacrima/editing/FrameStepClock.h>
 
 #include <lacrima/playback/FrameProducer.h>
 #include <lacrima/playback/HeadRig.h>
@@ -29,7 +29,7 @@ struct PreviewPanel::State {
   bool attempted = false;
 };
 
-PreviewPanel::PreviewPanel(EditorModel& model, PlaybackClock& clock, QWidget* parent)
+PreviewPanel::PreviewPanel(editing::EditorModel& model, editing::FrameStepClock& clock, QWidget* parent)
     : QWidget(parent), state_(std::make_unique<State>()), model_(model), clock_(clock) {
   setObjectName(QStringLiteral("preview"));
   auto* layout = new QVBoxLayout(this);
@@ -80,14 +80,14 @@ PreviewPanel::PreviewPanel(EditorModel& model, PlaybackClock& clock, QWidget* pa
       pose();
     }
   });
-  connect(&model_, &EditorModel::valuesChanged, this, &PreviewPanel::onValuesChanged);
-  connect(&clock_, &PlaybackClock::ticked, this, &PreviewPanel::step);
-  connect(&clock_, &PlaybackClock::playingChanged, this, &PreviewPanel::updateIdleTimer);
-  connect(&model_, &EditorModel::documentReset, this, [this] {
+  connect(&model_, &editing::EditorModel::valuesChanged, this, &PreviewPanel::onValuesChanged);
+  connect(&clock_, &editing::FrameStepClock::ticked, this, &PreviewPanel::step);
+  connect(&clock_, &editing::FrameStepClock::playingChanged, this, &PreviewPanel::updateIdleTimer);
+  connect(&model_, &editing::EditorModel::documentReset, this, [this] {
     if (state_->producer) state_->producer->reset();
     onValuesChanged();
   });
-  connect(&model_, &EditorModel::settingsChanged, this, [this] {
+  connect(&model_, &editing::EditorModel::settingsChanged, this, [this] {
     if (!state_->producer) return;
     if (!(state_->producer->scene() == model_.document().scene)) state_->producer->setScene(model_.document().scene);
     state_->producer->setTearSources(model_.document().tearSources);

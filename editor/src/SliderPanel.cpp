@@ -1,11 +1,11 @@
 #include <lacrima/editor/SliderPanel.h>
 
-#include <lacrima/FapTable.h>
-#include <lacrima/editor/ChannelFilter.h>
+#include <lacrima/common/FapTable.h>
+#include <lacrima/editing/ChannelFilter.h>
 #include <lacrima/editor/ChannelRow.h>
-#include <lacrima/editor/EditorModel.h>
+#include <lacrima/editing/EditorModel.h>
 #include <lacrima/editor/EditorTheme.h>
-#include <lacrima/editor/HighLevelCodes.h>
+#include <lacrima/editing/HighLevelCodes.h>
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -149,7 +149,7 @@ private:
   bool forced_ = false;
 };
 
-SliderPanel::SliderPanel(EditorModel& model, QWidget* parent) : QWidget(parent), model_(model) {
+SliderPanel::SliderPanel(editing::EditorModel& model, QWidget* parent) : QWidget(parent), model_(model) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(4, 4, 0, 0);
   layout->setSpacing(4);
@@ -180,10 +180,10 @@ SliderPanel::SliderPanel(EditorModel& model, QWidget* parent) : QWidget(parent),
   buildGroups();
 
   connect(filter_, &QLineEdit::textChanged, this, [this] { applyFilter(); });
-  connect(symmetric_, &QToolButton::toggled, &model_, &EditorModel::setSymmetricEdit);
-  connect(&model_, &EditorModel::symmetricEditChanged, symmetric_, &QToolButton::setChecked);
-  connect(&model_, &EditorModel::valuesChanged, this, &SliderPanel::refresh);
-  connect(&model_, &EditorModel::focusChannelChanged, this, [this](int fap) {
+  connect(symmetric_, &QToolButton::toggled, &model_, &editing::EditorModel::setSymmetricEdit);
+  connect(&model_, &editing::EditorModel::symmetricEditChanged, symmetric_, &QToolButton::setChecked);
+  connect(&model_, &editing::EditorModel::valuesChanged, this, &SliderPanel::refresh);
+  connect(&model_, &editing::EditorModel::focusChannelChanged, this, [this](int fap) {
     if (highlighted_ && rows_[static_cast<std::size_t>(highlighted_)])
       rows_[static_cast<std::size_t>(highlighted_)]->setHighlighted(false);
     highlighted_ = fap;
@@ -219,8 +219,8 @@ void SliderPanel::buildGroups() {
         auto* combo = new QComboBox(row);
         combo->installEventFilter(WheelGuard::instance());
         combo->setFocusPolicy(Qt::StrongFocus);
-        const auto codes = info.number == 1 ? visemeCodes() : expressionCodes();
-        for (const HighLevelCode& c : codes) {
+        const auto codes = info.number == 1 ? editing::visemeCodes() : editing::expressionCodes();
+        for (const editing::HighLevelCode& c : codes) {
           combo->addItem(QStringLiteral("%1 · %2").arg(c.code).arg(fromView(c.name)), c.code);
           combo->setItemData(combo->count() - 1, fromView(c.detail), Qt::ToolTipRole);
         }
@@ -295,7 +295,7 @@ void SliderPanel::refresh() {
 void SliderPanel::setFilterText(const QString& text) { filter_->setText(text); }
 
 void SliderPanel::applyFilter() {
-  const ChannelFilter filter(filter_->text().toStdString());
+  const editing::ChannelFilter filter(filter_->text().toStdString());
   int shown = 0;
   QWidget* first = nullptr;
   for (GroupSection* section : groups_) {

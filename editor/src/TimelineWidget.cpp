@@ -1,7 +1,7 @@
 #include <lacrima/editor/TimelineWidget.h>
 
-#include <lacrima/FapTable.h>
-#include <lacrima/editor/EditorModel.h>
+#include <lacrima/common/FapTable.h>
+#include <lacrima/editing/EditorModel.h>
 #include <lacrima/editor/EditorTheme.h>
 
 #include <QContextMenuEvent>
@@ -39,29 +39,29 @@ QString timeLabel(double seconds, double step) {
 
 }  // namespace
 
-TimelineWidget::TimelineWidget(EditorModel& model, QWidget* parent) : QWidget(parent), model_(model) {
+TimelineWidget::TimelineWidget(editing::EditorModel& model, QWidget* parent) : QWidget(parent), model_(model) {
   setObjectName(QStringLiteral("timeline"));
   setFocusPolicy(Qt::ClickFocus);
   setMouseTracking(false);
   setAttribute(Qt::WA_OpaquePaintEvent);
-  connect(&model_, &EditorModel::keysChanged, this, [this] {
+  connect(&model_, &editing::EditorModel::keysChanged, this, [this] {
     invalidateCurves();
     update();
   });
-  connect(&model_, &EditorModel::focusChannelChanged, this, [this] {
+  connect(&model_, &editing::EditorModel::focusChannelChanged, this, [this] {
     invalidateCurves();
     update();
   });
-  connect(&model_, &EditorModel::selectionChanged, this, qOverload<>(&QWidget::update));
-  connect(&model_, &EditorModel::settingsChanged, this, [this] {
+  connect(&model_, &editing::EditorModel::selectionChanged, this, qOverload<>(&QWidget::update));
+  connect(&model_, &editing::EditorModel::settingsChanged, this, [this] {
     invalidateCurves();
     update();
   });
-  connect(&model_, &EditorModel::timeChanged, this, [this] {
+  connect(&model_, &editing::EditorModel::timeChanged, this, [this] {
     followPlayhead();
     update();
   });
-  connect(&model_, &EditorModel::documentReset, this, &TimelineWidget::fitAll);
+  connect(&model_, &editing::EditorModel::documentReset, this, &TimelineWidget::fitAll);
 }
 
 void TimelineWidget::setView(double startSeconds, double pixelsPerSecond) {

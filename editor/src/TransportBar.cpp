@@ -1,8 +1,8 @@
 #include <lacrima/editor/TransportBar.h>
 
-#include <lacrima/editor/EditorModel.h>
+#include <lacrima/editing/EditorModel.h>
 #include <lacrima/editor/EditorTheme.h>
-#include <lacrima/editor/PlaybackClock.h>
+#include <lacrima/editing/FrameStepClock.h>
 
 #include <QHBoxLayout>
 #include <QIcon>
@@ -17,7 +17,7 @@
 
 namespace lacrima::editor {
 
-double previousKeyTime(const EditorModel& model) {
+double previousKeyTime(const editing::EditorModel& model) {
   const auto& keys = model.document().keys.keys();
   const double now = model.currentTime();
   double best = now;
@@ -26,7 +26,7 @@ double previousKeyTime(const EditorModel& model) {
   return best;
 }
 
-double nextKeyTime(const EditorModel& model) {
+double nextKeyTime(const editing::EditorModel& model) {
   const double now = model.currentTime();
   for (const Keyframe& k : model.document().keys.keys())
     if (k.time > now + 1e-9) return k.time;
@@ -104,7 +104,7 @@ QIcon TransportBar::icon(Glyph glyph, const QColor& colour) {
   return QIcon(pixmap);
 }
 
-TransportBar::TransportBar(EditorModel& model, PlaybackClock& clock, QWidget* parent)
+TransportBar::TransportBar(editing::EditorModel& model, editing::FrameStepClock& clock, QWidget* parent)
     : QWidget(parent), model_(model), clock_(clock) {
   auto* layout = new QHBoxLayout(this);
   layout->setContentsMargins(6, 2, 6, 2);
@@ -150,15 +150,15 @@ TransportBar::TransportBar(EditorModel& model, PlaybackClock& clock, QWidget* pa
   connect(end, &QToolButton::clicked, this, [this] { model_.setCurrentTime(model_.endTime()); });
   connect(previous, &QToolButton::clicked, this, [this] { model_.setCurrentTime(previousKeyTime(model_)); });
   connect(next, &QToolButton::clicked, this, [this] { model_.setCurrentTime(nextKeyTime(model_)); });
-  connect(play_, &QToolButton::clicked, &clock_, &PlaybackClock::toggle);
-  connect(loop, &QToolButton::toggled, &clock_, &PlaybackClock::setLoop);
+  connect(play_, &QToolButton::clicked, &clock_, &editing::FrameStepClock::toggle);
+  connect(loop, &QToolButton::toggled, &clock_, &editing::FrameStepClock::setLoop);
   connect(rate_, &QSpinBox::valueChanged, &clock_, [this](int v) { clock_.setRate(v); });
-  connect(&clock_, &PlaybackClock::playingChanged, this, [this, ink](bool playing) {
+  connect(&clock_, &editing::FrameStepClock::playingChanged, this, [this, ink](bool playing) {
     play_->setIcon(icon(playing ? Glyph::Pause : Glyph::Play, ink));
   });
-  connect(&model_, &EditorModel::timeChanged, this, &TransportBar::refreshTime);
-  connect(&model_, &EditorModel::keysChanged, this, &TransportBar::refreshTime);
-  connect(&model_, &EditorModel::settingsChanged, this, &TransportBar::refreshTime);
+  connect(&model_, &editing::EditorModel::timeChanged, this, &TransportBar::refreshTime);
+  connect(&model_, &editing::EditorModel::keysChanged, this, &TransportBar::refreshTime);
+  connect(&model_, &editing::EditorModel::settingsChanged, this, &TransportBar::refreshTime);
   refreshTime();
 }
 

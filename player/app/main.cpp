@@ -1,11 +1,11 @@
 // lacrima-player: plays MPEG-4 facial animation (FAP files and Lacrima projects) on a rigged
 // head with real-time tears, or renders it to images (--render). Exit codes as the other
 // tools: 0 success, 1 bad input or a failed write, 2 wrong usage.
-#include "BatchRender.h"
-#include "ErrorReport.h"
-#include "PlayerWindow.h"
+#include <lacrima/player/BatchRender.h>
+#include <lacrima/player/ErrorReport.h>
+#include <lacrima/player/PlayerWindow.h>
 
-#include <lacrima/Diagnostics.h>
+#include <lacrima/common/Diagnostics.h>
 #include <lacrima/playback/HeadRig.h>
 
 #include <QApplication>

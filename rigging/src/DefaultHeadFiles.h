@@ -4,7 +4,7 @@
 #include <array>
 #include <string_view>
 
-namespace lacrima {
+namespace lacrima::rigging {
 
 inline constexpr std::string_view kDefaultHeadBody = "public/data/models/human_full_size.json";
 inline constexpr std::string_view kDefaultHeadEyes =
@@ -46,4 +46,4 @@ inline constexpr std::array<std::string_view, 13> kDefaultHeadFiles = {
     "public/data/skins/young_caucasian_female/textures/young_lightskinned_female_diffuse.png",
 };
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

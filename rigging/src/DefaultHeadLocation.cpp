@@ -1,7 +1,7 @@
 // Where the default head's files live: the cache rule shared with packaging/fetch-default-head.sh.
 #include "DefaultHeadFiles.h"
 
-#include <lacrima/rig/DefaultHead.h>
+#include <lacrima/rigging/DefaultHead.h>
 
 #include <QDir>
 #include <QFileInfo>
@@ -9,7 +9,7 @@
 
 #include <cstdlib>
 
-namespace lacrima {
+namespace lacrima::rigging {
 
 namespace {
 
@@ -41,4 +41,4 @@ bool defaultHeadAvailable() {
   return true;
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

@@ -1,4 +1,4 @@
-#include <lacrima/rig/DijkstraGeodesics.h>
+#include <lacrima/rigging/DijkstraGeodesics.h>
 
 #include <cmath>
 #include <functional>
@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-namespace lacrima {
+namespace lacrima::rigging {
 
 Eigen::VectorXd dijkstraDistances(const SurfaceGraph& graph, const Eigen::VectorXi& sources,
                                   const Eigen::VectorXd& initial, double cutoff) {
@@ -61,4 +61,4 @@ Eigen::VectorXd dijkstraDistances(const SurfaceGraph& graph, const Eigen::Vector
                           kInfinity);
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

@@ -1,7 +1,7 @@
-#include <lacrima/rig/FeaturePointFile.h>
-#include <lacrima/JsonSyntaxError.h>
+#include <lacrima/rigging/FeaturePointFile.h>
+#include <lacrima/common/JsonSyntaxError.h>
 
-#include <lacrima/FapTable.h>
+#include <lacrima/common/FapTable.h>
 
 #include <QFile>
 #include <Eigen/Geometry>
@@ -13,7 +13,7 @@
 #include <cmath>
 #include <set>
 
-namespace lacrima {
+namespace lacrima::rigging {
 namespace {
 
 // {group, index} of a well-formed id, or nullopt.
@@ -406,4 +406,4 @@ Eigen::Vector3d surfacePosition(const SurfacePoint& point, const HeadMesh& mesh)
   return p;
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

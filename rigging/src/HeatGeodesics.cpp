@@ -1,4 +1,4 @@
-#include <lacrima/rig/HeatGeodesics.h>
+#include <lacrima/rigging/HeatGeodesics.h>
 
 #include <Eigen/Geometry>
 #include <Eigen/SparseCore>
@@ -10,7 +10,7 @@
 #include <string>
 #include <utility>
 
-namespace lacrima {
+namespace lacrima::rigging {
 
 namespace {
 
@@ -188,4 +188,4 @@ Eigen::VectorXd HeatGeodesics::distances(const Eigen::VectorXi& sources) const {
   return out;
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

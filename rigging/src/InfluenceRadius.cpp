@@ -1,11 +1,11 @@
-#include <lacrima/rig/InfluenceRadius.h>
+#include <lacrima/rigging/InfluenceRadius.h>
 
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-namespace lacrima {
+namespace lacrima::rigging {
 
 namespace {
 
@@ -51,4 +51,4 @@ double defaultInfluenceRadius(const FapuSet& fapu, std::string_view featurePoint
   }
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

@@ -1,12 +1,12 @@
-#include <lacrima/rig/InfluenceWeights.h>
+#include <lacrima/rigging/InfluenceWeights.h>
 
-#include <lacrima/rig/DijkstraGeodesics.h>
-#include <lacrima/rig/InfluenceFalloff.h>
+#include <lacrima/rigging/DijkstraGeodesics.h>
+#include <lacrima/rigging/InfluenceFalloff.h>
 
 #include <cmath>
 #include <stdexcept>
 
-namespace lacrima {
+namespace lacrima::rigging {
 
 namespace {
 
@@ -58,4 +58,4 @@ FeaturePointInfluence InfluenceWeights::fromDistances(const Eigen::VectorXd& dis
   return out;
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

@@ -1,6 +1,6 @@
-#include <lacrima/rig/MeshImport.h>
+#include <lacrima/rigging/MeshImport.h>
 
-#include <lacrima/Diagnostics.h>
+#include <lacrima/common/Diagnostics.h>
 
 #include <assimp/Importer.hpp>
 #include <assimp/material.h>
@@ -13,7 +13,7 @@
 #include <set>
 #include <vector>
 
-namespace lacrima {
+namespace lacrima::rigging {
 
 namespace {
 
@@ -168,4 +168,4 @@ HeadMesh importHeadMesh(const std::string& path) {
   return head;
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

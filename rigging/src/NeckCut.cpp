@@ -8,7 +8,7 @@
 #include <string>
 #include <utility>
 
-namespace lacrima {
+namespace lacrima::rigging {
 
 namespace {
 
@@ -171,4 +171,4 @@ std::vector<int> facesAboveEdgeLoop(const Eigen::Matrix3Xf& vertices,
   return kept;
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-namespace lacrima {
+namespace lacrima::rigging {
 
 // The faces (indices into `faces`, ascending) of the part of `surface` above a closed quad edge
 // loop: the loop starts at `loopVertex` along its most sideways (x) edge and goes straight on
@@ -19,4 +19,4 @@ std::vector<int> facesAboveEdgeLoop(const Eigen::Matrix3Xf& vertices,
                                     const std::vector<ThreeFace>& faces,
                                     const std::vector<int>& surface, int loopVertex);
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

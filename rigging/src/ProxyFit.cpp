@@ -1,8 +1,8 @@
 #include "ProxyFit.h"
 
-#include <lacrima/Diagnostics.h>
+#include <lacrima/common/Diagnostics.h>
 
-namespace lacrima {
+namespace lacrima::rigging {
 
 Eigen::Matrix3Xf fitProxy(const ThreeModel& proxy, const Eigen::Matrix3Xf& base) {
   if (!proxy.isProxy())
@@ -21,4 +21,4 @@ Eigen::Matrix3Xf fitProxy(const ThreeModel& proxy, const Eigen::Matrix3Xf& base)
   return fitted;
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

@@ -4,7 +4,7 @@
 
 #include <Eigen/Core>
 
-namespace lacrima {
+namespace lacrima::rigging {
 
 // The proxy's vertices fitted to `base`, the full base-mesh vertex array (helper vertices
 // included: the bindings point at them). A proxy's own "vertices" were written for other body
@@ -12,4 +12,4 @@ namespace lacrima {
 // Throws FileError naming the proxy when it is not bound or points past the end of `base`.
 Eigen::Matrix3Xf fitProxy(const ThreeModel& proxy, const Eigen::Matrix3Xf& base);
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

@@ -1,16 +1,16 @@
-#include <lacrima/rig/RigBuilder.h>
+#include <lacrima/rigging/RigBuilder.h>
 
-#include <lacrima/rig/InfluenceRadius.h>
-#include <lacrima/rig/SkinTopology.h>
-#include <lacrima/rig/SphereFit.h>
-#include <lacrima/rig/SurfaceGraph.h>
+#include <lacrima/rigging/InfluenceRadius.h>
+#include <lacrima/rigging/SkinTopology.h>
+#include <lacrima/rigging/SphereFit.h>
+#include <lacrima/rigging/SurfaceGraph.h>
 
 #include <algorithm>
 #include <limits>
 #include <memory>
 #include <stdexcept>
 
-namespace lacrima {
+namespace lacrima::rigging {
 namespace {
 
 std::vector<int> verticesOf(const HeadMesh& mesh, const std::vector<std::string>& names) {
@@ -283,4 +283,4 @@ BuiltRig buildRig(const HeadMesh& mesh, const FeaturePointFile& fdp, const RigOp
   return rig;
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

@@ -1,12 +1,12 @@
-#include <lacrima/rig/RigDescription.h>
+#include <lacrima/rigging/RigDescription.h>
 
-#include <lacrima/FapTable.h>
-#include <lacrima/JsonWriter.h>
+#include <lacrima/common/FapTable.h>
+#include <lacrima/common/JsonWriter.h>
 
 #include <array>
 #include <cmath>
 
-namespace lacrima {
+namespace lacrima::rigging {
 namespace {
 
 void row(JsonWriter& w, const Eigen::Vector3d& v) {
@@ -163,4 +163,4 @@ std::string rigReportJson(const HeadMesh& mesh, const BuiltRig& rig) {
   return std::move(w).finish();
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

@@ -1,6 +1,6 @@
-#include <lacrima/rig/SkinTopology.h>
+#include <lacrima/rigging/SkinTopology.h>
 
-#include <lacrima/rig/SurfaceGraph.h>
+#include <lacrima/rigging/SurfaceGraph.h>
 
 #include <algorithm>
 #include <Eigen/Geometry>
@@ -8,7 +8,7 @@
 #include <numeric>
 #include <utility>
 
-namespace lacrima {
+namespace lacrima::rigging {
 namespace {
 
 std::string joined(const std::vector<std::string>& names) {
@@ -111,4 +111,4 @@ std::optional<Eigen::Vector3d> lowestBoundaryLoopCentre(const HeadMesh& mesh, co
   return best;
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

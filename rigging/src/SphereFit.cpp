@@ -1,10 +1,10 @@
-#include <lacrima/rig/SphereFit.h>
+#include <lacrima/rigging/SphereFit.h>
 
 #include <Eigen/QR>
 
 #include <cmath>
 
-namespace lacrima {
+namespace lacrima::rigging {
 
 std::optional<Sphere> fitSphere(const Eigen::Matrix3Xd& points) {
   const Eigen::Index n = points.cols();
@@ -24,4 +24,4 @@ std::optional<Sphere> fitSphere(const Eigen::Matrix3Xd& points) {
   return Sphere{mean + x.head<3>(), std::sqrt(r2)};
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

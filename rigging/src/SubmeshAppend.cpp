@@ -1,12 +1,12 @@
 #include "SubmeshAppend.h"
 
-#include <lacrima/Diagnostics.h>
+#include <lacrima/common/Diagnostics.h>
 
 #include <cstdint>
 #include <stdexcept>
 #include <unordered_map>
 
-namespace lacrima {
+namespace lacrima::rigging {
 
 void appendSubmesh(HeadMesh& mesh, const std::string& name, int material, const ThreeModel& model,
                    const Eigen::Matrix3Xf& positions, const std::vector<int>& faceIndices) {
@@ -54,4 +54,4 @@ void appendSubmesh(HeadMesh& mesh, const std::string& name, int material, const 
   mesh.submeshes.push_back(std::move(sub));
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

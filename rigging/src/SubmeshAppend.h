@@ -2,14 +2,14 @@
 // Turning faces of a three.js model into a HeadMesh sub-mesh.
 #include "ThreeJsonModel.h"
 
-#include <lacrima/HeadMesh.h>
+#include <lacrima/common/HeadMesh.h>
 
 #include <Eigen/Core>
 
 #include <string>
 #include <vector>
 
-namespace lacrima {
+namespace lacrima::rigging {
 
 // Appends the faces `faceIndices` of `model`, placed at `positions` (the model's own vertices
 // or a proxy's fitted ones), to `mesh` as a new sub-mesh. Every distinct (vertex, uv) pair of a
@@ -21,4 +21,4 @@ namespace lacrima {
 void appendSubmesh(HeadMesh& mesh, const std::string& name, int material, const ThreeModel& model,
                    const Eigen::Matrix3Xf& positions, const std::vector<int>& faceIndices);
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

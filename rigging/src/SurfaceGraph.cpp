@@ -1,4 +1,4 @@
-#include <lacrima/rig/SurfaceGraph.h>
+#include <lacrima/rigging/SurfaceGraph.h>
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-namespace lacrima {
+namespace lacrima::rigging {
 
 namespace {
 
@@ -178,4 +178,4 @@ SurfaceGraph buildSurfaceGraph(const HeadMesh& mesh, const std::vector<std::stri
   return buildFromSubmeshes(mesh, named);
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

@@ -1,6 +1,6 @@
 #include "TextureAlphaSplit.h"
 
-#include <lacrima/Diagnostics.h>
+#include <lacrima/common/Diagnostics.h>
 
 #include <QImage>
 #include <QImageReader>
@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace lacrima {
+namespace lacrima::rigging {
 
 std::vector<bool> transparentAtUvCentre(const ThreeModel& model,
                                         const std::vector<int>& faceIndices,
@@ -48,4 +48,4 @@ std::vector<bool> transparentAtUvCentre(const ThreeModel& model,
   return transparent;
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace lacrima {
+namespace lacrima::rigging {
 
 // For each face in `faceIndices` of `model`: whether the texture at `texturePath` is mostly
 // transparent (alpha below one half) at the centre of the face's uvs. MakeHuman's eye texture
@@ -16,4 +16,4 @@ std::vector<bool> transparentAtUvCentre(const ThreeModel& model,
                                         const std::vector<int>& faceIndices,
                                         const std::string& texturePath);
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

@@ -1,7 +1,7 @@
 #include "ThreeJsonModel.h"
 
-#include <lacrima/Diagnostics.h>
-#include <lacrima/JsonSyntaxError.h>
+#include <lacrima/common/Diagnostics.h>
+#include <lacrima/common/JsonSyntaxError.h>
 
 #include <QFile>
 #include <QJsonArray>
@@ -14,7 +14,7 @@
 #include <limits>
 #include <type_traits>
 
-namespace lacrima {
+namespace lacrima::rigging {
 
 namespace {
 
@@ -234,4 +234,4 @@ int findThreeMaterial(const ThreeModel& model, std::string_view name) {
   return -1;
 }
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

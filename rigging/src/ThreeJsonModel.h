@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-namespace lacrima {
+namespace lacrima::rigging {
 
 // One polygon: 3 or 4 corners, each a vertex index and an index into the first uv layer
 // (-1 when the face has no per-corner uvs).
@@ -57,4 +57,4 @@ ThreeMaterial readThreeMaterialFile(const std::string& path);
 // Index of the material named `name`, or -1.
 int findThreeMaterial(const ThreeModel& model, std::string_view name);
 
-}  // namespace lacrima
+}  // namespace lacrima::rigging

@@ -6,10 +6,10 @@
 // long animation.
 #include "BenchSupport.h"
 
-#include <lacrima/FapTable.h>
-#include <lacrima/JsonWriter.h>
-#include <lacrima/editor/EditorModel.h>
-#include <lacrima/editor/FapTransfer.h>
+#include <lacrima/common/FapTable.h>
+#include <lacrima/common/JsonWriter.h>
+#include <lacrima/editing/EditorModel.h>
+#include <lacrima/editing/FapTransfer.h>
 #include <lacrima/editor/MainWindow.h>
 #include <lacrima/editor/PreviewPanel.h>
 #include <lacrima/editor/SliderPanel.h>
@@ -112,7 +112,7 @@ ProjectDocument longAnimation() {
       animation.frames[i][static_cast<std::size_t>(channelIndex(fap))] =
           static_cast<float>(std::lround(std::max(0.0, 200 * std::sin(0.05 * i + fap))));
   for (int fap = 3; fap <= kChannelCount; ++fap) animation.animated.set(static_cast<std::size_t>(channelIndex(fap)));
-  return editor::importAnimation(animation).document;
+  return editing::importAnimation(animation).document;
 }
 
 double median(std::vector<double> v) {
@@ -155,10 +155,10 @@ int runEditor(int argc, char** argv) {
   // Building: the whole window without the head, and the 70-slider panel alone.
   editorOptions.preview = false;
   const Timing windowBuild = timeRuns(5, [&] { editor::MainWindow window(editorOptions); });
-  editor::EditorModel panelModel;
+  editing::EditorModel panelModel;
   const Timing panelBuild = timeRuns(10, [&] { editor::SliderPanel panel(panelModel); });
 
-  editor::EditorModel model;
+  editing::EditorModel model;
   model.resetDocument(twoPoses(), true);
   editor::SliderPanel panel(model);
   panel.resize(460, 900);
@@ -172,7 +172,7 @@ int runEditor(int argc, char** argv) {
   const Timing dragStep = timeRuns(200, [&] { model.setChannel(3, (value++ % 500) + 10, session); });
 
   // The timeline of a two-minute, 68-channel animation (2,640 keys), whole and zoomed in.
-  editor::EditorModel longModel;
+  editing::EditorModel longModel;
   longModel.resetDocument(longAnimation(), true);
   editor::TimelineWidget timeline(longModel);
   timeline.resize(1400, 200);
@@ -212,7 +212,7 @@ int runEditor(int argc, char** argv) {
     } else if (!window.preview()->loadHead() || !window.preview()->viewportWidget()) {
       previewNote = QStringLiteral("no preview: ") + window.preview()->statusText();
     } else {
-      editor::EditorModel& m = window.model();
+      editing::EditorModel& m = window.model();
       m.setChannels({{kTearLeftFap, kTearsPerEye}, {kTearRightFap, kTearsPerEye}, {3, 200}, {31, 220}, {32, 220}},
                     QStringLiteral("bench"));
       window.preview()->setTearPreview(false);  // the benchmark steps the tears itself

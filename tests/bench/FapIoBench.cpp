@@ -2,10 +2,10 @@
 // targets beside the figures (< 50 ms to write, < 50 ms to read, read peak < 3x the file).
 #include "BenchSupport.h"
 
-#include <lacrima/JsonWriter.h>
+#include <lacrima/common/JsonWriter.h>
 
-#include <lacrima/FapReader.h>
-#include <lacrima/FapWriter.h>
+#include <lacrima/common/FapReader.h>
+#include <lacrima/common/FapWriter.h>
 
 #include <QTemporaryDir>
 

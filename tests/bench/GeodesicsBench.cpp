@@ -5,14 +5,14 @@
 #include "BenchSupport.h"
 #include "../rigging/GeodesicTestSurfaces.h"
 
-#include <lacrima/JsonWriter.h>
-#include <lacrima/rig/DefaultHead.h>
-#include <lacrima/rig/DijkstraGeodesics.h>
-#include <lacrima/rig/HeatGeodesics.h>
-#include <lacrima/rig/InfluenceFalloff.h>
-#include <lacrima/rig/InfluenceWeights.h>
-#include <lacrima/rig/MeshImport.h>
-#include <lacrima/rig/SurfaceGraph.h>
+#include <lacrima/common/JsonWriter.h>
+#include <lacrima/rigging/DefaultHead.h>
+#include <lacrima/rigging/DijkstraGeodesics.h>
+#include <lacrima/rigging/HeatGeodesics.h>
+#include <lacrima/rigging/InfluenceFalloff.h>
+#include <lacrima/rigging/InfluenceWeights.h>
+#include <lacrima/rigging/MeshImport.h>
+#include <lacrima/rigging/SurfaceGraph.h>
 
 #include <algorithm>
 #include <cmath>
@@ -169,8 +169,8 @@ struct Errors {
     for (Eigen::Index v = 0; v < distance.size(); ++v) {
       const double exact = c.exact(source, static_cast<int>(v));
       const double d = distance[v];
-      maxWeight = std::max(maxWeight, std::abs(influenceFalloff(d / kWeightRadius) -
-                                               influenceFalloff(exact / kWeightRadius)));
+      maxWeight = std::max(maxWeight, std::abs(rigging::influenceFalloff(d / kWeightRadius) -
+                                               rigging::influenceFalloff(exact / kWeightRadius)));
       if (exact < kBand) continue;
       const double rel = std::isfinite(d) ? std::abs(d - exact) / exact : 1.0;
       sumRel += rel;
@@ -189,8 +189,8 @@ Eigen::VectorXi one(int v) { return Eigen::VectorXi::Constant(1, v); }
 
 void measureCase(const Case& c, const Options& options, std::vector<Row>& rows) {
   const Eigen::Matrix3Xf& p = c.surface.positions;
-  std::optional<SurfaceGraph> graph;
-  const Timing graphTime = timeRuns(options.runs, [&] { graph = buildSurfaceGraph(p, c.surface.triangles); });
+  std::optional<rigging::SurfaceGraph> graph;
+  const Timing graphTime = timeRuns(options.runs, [&] { graph = rigging::buildSurfaceGraph(p, c.surface.triangles); });
   const auto perSource = [&](const Timing& t) { return t.medianMs / static_cast<double>(c.sources.size()); };
   Row base;
   base.surface = c.name;
@@ -202,10 +202,10 @@ void measureCase(const Case& c, const Options& options, std::vector<Row>& rows) 
     Row row = base;
     row.method = "dijkstra";
     Errors errors;
-    for (const int s : c.sources) errors.add(c, s, dijkstraDistances(*graph, one(s)));
+    for (const int s : c.sources) errors.add(c, s, rigging::dijkstraDistances(*graph, one(s)));
     errors.into(row);
     row.msPerSource = perSource(timeRuns(options.runs, [&] {
-      for (const int s : c.sources) dijkstraDistances(*graph, one(s));
+      for (const int s : c.sources) rigging::dijkstraDistances(*graph, one(s));
     }));
     rows.push_back(row);
 
@@ -214,7 +214,7 @@ void measureCase(const Case& c, const Options& options, std::vector<Row>& rows) 
     cut.method = "dijkstra cut-off";
     cut.meanRelError = cut.maxRelError = kNaN;
     cut.msPerSource = perSource(timeRuns(options.runs, [&] {
-      for (const int s : c.sources) dijkstraDistances(*graph, one(s), Eigen::VectorXd(), kWeightRadius);
+      for (const int s : c.sources) rigging::dijkstraDistances(*graph, one(s), Eigen::VectorXd(), kWeightRadius);
     }));
     rows.push_back(cut);
   }
@@ -228,9 +228,9 @@ void measureCase(const Case& c, const Options& options, std::vector<Row>& rows) 
     Row row = base;
     row.method = bound ? "heat+bound" : "heat";
     row.m = m;
-    std::unique_ptr<HeatGeodesics> heat;
+    std::unique_ptr<rigging::HeatGeodesics> heat;
     row.factorMs = timeRuns(options.runs, [&, m = m, bound = bound] {
-      heat = std::make_unique<HeatGeodesics>(*graph, m, bound);
+      heat = std::make_unique<rigging::HeatGeodesics>(*graph, m, bound);
     }).medianMs;
     Errors errors;
     for (const int s : c.sources) errors.add(c, s, heat->distances(one(s)));
@@ -247,9 +247,9 @@ void measureCase(const Case& c, const Options& options, std::vector<Row>& rows) 
 void measureHead(const std::string& name, const HeadMesh& head,
                  const std::vector<std::string>& submeshes, const Options& options,
                  std::vector<Row>& rows) {
-  std::optional<SurfaceGraph> graph;
+  std::optional<rigging::SurfaceGraph> graph;
   const Timing graphTime = timeRuns(options.runs, [&] {
-    graph = submeshes.empty() ? buildSurfaceGraph(head) : buildSurfaceGraph(head, submeshes);
+    graph = submeshes.empty() ? rigging::buildSurfaceGraph(head) : rigging::buildSurfaceGraph(head, submeshes);
   });
   const double radius = kHeadRadiusFraction * (head.boundsMax().y() - head.boundsMin().y());
   std::vector<int> points;
@@ -265,7 +265,7 @@ void measureHead(const std::string& name, const HeadMesh& head,
   base.radius = radius;
 
   std::vector<FeaturePointInfluence> heatWeights;
-  const auto runAll = [&](const InfluenceWeights& weights, std::vector<FeaturePointInfluence>& out) {
+  const auto runAll = [&](const rigging::InfluenceWeights& weights, std::vector<FeaturePointInfluence>& out) {
     out.clear();
     for (const int v : points) out.push_back(weights.atVertex(v, radius));
   };
@@ -295,14 +295,14 @@ void measureHead(const std::string& name, const HeadMesh& head,
   Row heat = base;
   heat.method = "heat+bound";  // as InfluenceWeights computes it
   heat.m = 1;
-  std::unique_ptr<InfluenceWeights> heatSolver;
+  std::unique_ptr<rigging::InfluenceWeights> heatSolver;
   heat.factorMs = timeRuns(options.runs, [&] {
-    heatSolver = std::make_unique<InfluenceWeights>(*graph, GeodesicMethod::Heat, 1.0);
+    heatSolver = std::make_unique<rigging::InfluenceWeights>(*graph, rigging::GeodesicMethod::Heat, 1.0);
   }).medianMs;
   heat.msPerSource = timeRuns(options.runs, [&] { runAll(*heatSolver, heatWeights); }).medianMs / kHeadPoints;
   heat.listedPerPoint = listed(heatWeights);
 
-  const InfluenceWeights dijkstra(*graph, GeodesicMethod::Dijkstra);
+  const rigging::InfluenceWeights dijkstra(*graph, rigging::GeodesicMethod::Dijkstra);
   Row cut = base;
   cut.method = "dijkstra cut-off";
   std::vector<FeaturePointInfluence> cutWeights;
@@ -314,7 +314,7 @@ void measureHead(const std::string& name, const HeadMesh& head,
   Row full = base;
   full.method = "dijkstra";
   full.msPerSource = timeRuns(options.runs, [&] {
-    for (const int v : points) InfluenceWeights::fromDistances(dijkstraDistances(*graph, one(v)), radius);
+    for (const int v : points) rigging::InfluenceWeights::fromDistances(rigging::dijkstraDistances(*graph, one(v)), radius);
   }).medianMs / kHeadPoints;
   full.listedPerPoint = cut.listedPerPoint;
   full.maxWeightDiffToHeat = cut.maxWeightDiffToHeat;
@@ -466,14 +466,14 @@ int runGeodesics(int argc, char** argv) {
       measureCase(plane, options, rows);
     }
 
-    if (defaultHeadAvailable()) {
-      const HeadMesh head = loadDefaultHead();
+    if (rigging::defaultHeadAvailable()) {
+      const HeadMesh head = rigging::loadDefaultHead();
       measureHead("default head (skin)", head, skinOf(head), options, rows);
     } else {
       notes.push_back("default head: not in the cache (run packaging/fetch-default-head.sh); skipped");
     }
     if (std::ifstream(options.ictPath).good()) {
-      const HeadMesh head = importHeadMesh(options.ictPath);
+      const HeadMesh head = rigging::importHeadMesh(options.ictPath);
       const std::vector<std::string> parts = skinOf(head);
       measureHead(parts.empty() ? "ICT head (all)" : "ICT head (face+back)", head, parts, options, rows);
     } else {

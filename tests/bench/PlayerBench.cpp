@@ -5,10 +5,10 @@
 // GLX only): run under xvfb-run.
 #include "BenchSupport.h"
 
-#include <lacrima/JsonWriter.h>
+#include <lacrima/common/JsonWriter.h>
 #include <lacrima/playback/MediaFiles.h>
 #include <lacrima/playback/Playback.h>
-#include <lacrima/rig/DefaultHead.h>
+#include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/scene/FaceRenderer.h>
 
 #include <QGuiApplication>
@@ -92,7 +92,7 @@ int runPlayer(int argc, char** argv) {
                          "  xvfb-run -a -s \"-screen 0 1280x1024x24\" lacrima-bench player\n");
     return 1;
   }
-  if (!defaultHeadAvailable()) {
+  if (!rigging::defaultHeadAvailable()) {
     std::fprintf(stderr, "lacrima-bench player: skipped: the default head is not fetched (packaging/fetch-default-head.sh)\n");
     return 0;
   }

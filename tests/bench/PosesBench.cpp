@@ -11,10 +11,10 @@
 
 #include "../common/SyntheticHead.h"
 
-#include <lacrima/JsonWriter.h>
-#include <lacrima/PoseBaking.h>
-#include <lacrima/PoseSet.h>
-#include <lacrima/rig/RigBuilder.h>
+#include <lacrima/common/JsonWriter.h>
+#include <lacrima/common/PoseBaking.h>
+#include <lacrima/common/PoseSet.h>
+#include <lacrima/rigging/RigBuilder.h>
 
 #include <cmath>
 #include <cstdio>
@@ -272,8 +272,8 @@ int runPoses(int argc, char** argv) {
       std::fprintf(stderr, "poses: skipping %s: %s\n", realCases[k].name.c_str(), why.c_str());
       continue;
     }
-    BuiltRig rig;
-    const Timing rigTiming = timeRuns(options.rigRuns, [&] { rig = buildRig(loaded->mesh, loaded->fdp); });
+    rigging::BuiltRig rig;
+    const Timing rigTiming = timeRuns(options.rigRuns, [&] { rig = rigging::buildRig(loaded->mesh, loaded->fdp); });
     measured.push_back({realCases[k], measureHead(loaded->mesh, rig.input, options), rigTiming});
   }
 

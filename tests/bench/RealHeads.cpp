@@ -1,7 +1,7 @@
 #include "RealHeads.h"
 
-#include <lacrima/rig/DefaultHead.h>
-#include <lacrima/rig/MeshImport.h>
+#include <lacrima/rigging/DefaultHead.h>
+#include <lacrima/rigging/MeshImport.h>
 
 #include <exception>
 #include <filesystem>
@@ -20,17 +20,17 @@ RealHeadSpec ictHeadSpec() {
 std::optional<HeadMesh> loadRealMesh(const RealHeadSpec& spec, std::string& why) {
   try {
     if (spec.defaultHead) {
-      if (!defaultHeadAvailable()) {
-        why = "not in the cache " + defaultHeadPackageDir() + " (run packaging/fetch-default-head.sh)";
+      if (!rigging::defaultHeadAvailable()) {
+        why = "not in the cache " + rigging::defaultHeadPackageDir() + " (run packaging/fetch-default-head.sh)";
         return std::nullopt;
       }
-      return loadDefaultHead();
+      return rigging::loadDefaultHead();
     }
     if (!std::filesystem::exists(spec.meshPath)) {
       why = spec.meshPath + " is absent";
       return std::nullopt;
     }
-    return importHeadMesh(spec.meshPath);
+    return rigging::importHeadMesh(spec.meshPath);
   } catch (const std::exception& e) {
     // A damaged cache or file is a skip with its reason, not a crashed benchmark run.
     why = e.what();
@@ -48,8 +48,8 @@ std::optional<LoadedHead> loadRealHead(const RealHeadSpec& spec, std::string& wh
   try {
     LoadedHead head{std::move(*mesh), {}};
     Warnings warnings;  // missing optional points only cost their FAPs; the bench still runs
-    head.fdp = readFeaturePointFile(spec.fdpPath, &warnings);
-    validateFeaturePoints(head.fdp, head.mesh, &warnings);
+    head.fdp = rigging::readFeaturePointFile(spec.fdpPath, &warnings);
+    rigging::validateFeaturePoints(head.fdp, head.mesh, &warnings);
     return head;
   } catch (const std::exception& e) {
     why = e.what();

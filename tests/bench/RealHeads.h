@@ -3,8 +3,8 @@
 // default head (packaging/fetch-default-head.sh) and the ICT-FaceKit head in the shared
 // reference folder, each with its feature-point file from the source tree. Absent heads are
 // reported with a reason so a benchmark can print a note and skip them instead of failing.
-#include <lacrima/HeadMesh.h>
-#include <lacrima/rig/FeaturePointFile.h>
+#include <lacrima/common/HeadMesh.h>
+#include <lacrima/rigging/FeaturePointFile.h>
 
 #include <optional>
 #include <string>
@@ -23,7 +23,7 @@ RealHeadSpec ictHeadSpec();
 
 struct LoadedHead {
   HeadMesh mesh;
-  FeaturePointFile fdp;  // read and validated against `mesh`
+  rigging::FeaturePointFile fdp;  // read and validated against `mesh`
 };
 
 // Loads the mesh alone; nullopt with `why` set when its files are absent or unreadable.

@@ -6,7 +6,7 @@
 #include "BenchSupport.h"
 #include "TearsPipeline.h"
 
-#include <lacrima/JsonWriter.h>
+#include <lacrima/common/JsonWriter.h>
 
 #include <algorithm>
 #include <chrono>

@@ -2,7 +2,7 @@
 
 #include "RealHeads.h"
 
-#include <lacrima/rig/RigBuilder.h>
+#include <lacrima/rigging/RigBuilder.h>
 #include <lacrima/tears/SyntheticSkin.h>
 
 #include <Eigen/Geometry>
@@ -66,7 +66,7 @@ std::optional<TearScene> defaultHeadScene(std::string& why) {
   TearScene scene;
   try {
     // The rig's tear sources (skin just below each lower-lid mid-point), as the player uses.
-    const BuiltRig rig = buildRig(loaded->mesh, loaded->fdp);
+    const rigging::BuiltRig rig = rigging::buildRig(loaded->mesh, loaded->fdp);
     scene.leftSource = rig.tearLeft.position;
     scene.rightSource = rig.tearRight.position;
   } catch (const std::exception& e) {

@@ -2,7 +2,7 @@
 // The full tear pipeline as the player runs it each frame (simulation step, surface mesher,
 // trail builder), on either the generated cheek sheet or the rigged default head, shared by
 // `lacrima-bench tears` and `lacrima-bench tears-sweep` so both time the same work.
-#include <lacrima/HeadMesh.h>
+#include <lacrima/common/HeadMesh.h>
 #include <lacrima/tears/SurfaceMesher.h>
 #include <lacrima/tears/TearSimulation.h>
 #include <lacrima/tears/TrailBuilder.h>

@@ -1,7 +1,7 @@
 // lacrima-fap as scripts use it: real processes, exit codes, stdout and stderr.
-#include <lacrima/FapReader.h>
-#include <lacrima/FapWriter.h>
-#include <lacrima/ProjectDocument.h>
+#include <lacrima/common/FapReader.h>
+#include <lacrima/common/FapWriter.h>
+#include <lacrima/common/ProjectDocument.h>
 
 #include <QProcess>
 #include <QTemporaryDir>

@@ -1,7 +1,7 @@
 // FapReader: the public samples, every tolerated variation, every rejected one, and inputs that
 // try to make the reader crash, hang or allocate.
-#include <lacrima/FapReader.h>
-#include <lacrima/FapWriter.h>
+#include <lacrima/common/FapReader.h>
+#include <lacrima/common/FapWriter.h>
 
 #include <QDir>
 #include <QElapsedTimer>

@@ -1,4 +1,4 @@
-#include <lacrima/FapTable.h>
+#include <lacrima/common/FapTable.h>
 
 #include <Eigen/Geometry>
 #include <algorithm>

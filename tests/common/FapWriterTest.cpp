@@ -1,6 +1,6 @@
 // FapWriter: the exact portable text, round trips through FapReader, and atomic saving.
-#include <lacrima/FapReader.h>
-#include <lacrima/FapWriter.h>
+#include <lacrima/common/FapReader.h>
+#include <lacrima/common/FapWriter.h>
 
 #include <QDir>
 #include <QFile>

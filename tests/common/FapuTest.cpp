@@ -1,4 +1,4 @@
-#include <lacrima/Fapu.h>
+#include <lacrima/common/Fapu.h>
 
 #include <QtTest>
 #include <limits>

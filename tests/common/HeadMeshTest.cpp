@@ -1,5 +1,5 @@
 // HeadMesh: sub-mesh lookup, welding of uv-seam copies, area-weighted normals.
-#include <lacrima/HeadMesh.h>
+#include <lacrima/common/HeadMesh.h>
 
 #include <QtTest>
 

@@ -1,5 +1,5 @@
 // JsonWriter: field order kept, exact numbers, escaping, both layouts.
-#include <lacrima/JsonWriter.h>
+#include <lacrima/common/JsonWriter.h>
 
 #include <QJsonDocument>
 #include <QJsonObject>

@@ -1,5 +1,5 @@
 // Keyframe interpolation and baking: the maths of Keyframes.h, checked by value.
-#include <lacrima/Keyframes.h>
+#include <lacrima/common/Keyframes.h>
 
 #include <QElapsedTimer>
 #include <QtTest>

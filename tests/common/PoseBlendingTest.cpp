@@ -1,8 +1,8 @@
 #include "SyntheticHead.h"
 
-#include <lacrima/FapTable.h>
-#include <lacrima/PoseBaking.h>
-#include <lacrima/PoseSet.h>
+#include <lacrima/common/FapTable.h>
+#include <lacrima/common/PoseBaking.h>
+#include <lacrima/common/PoseSet.h>
 
 #include <QtTest>
 

@@ -1,8 +1,8 @@
 // Project documents: exact JSON round trips, precise errors, atomic saves; and the tear
 // parameter table the documents validate against.
-#include <lacrima/FapTable.h>
-#include <lacrima/ProjectDocument.h>
-#include <lacrima/TearParameters.h>
+#include <lacrima/common/FapTable.h>
+#include <lacrima/common/ProjectDocument.h>
+#include <lacrima/common/TearParameters.h>
 
 #include <QDir>
 #include <QFile>

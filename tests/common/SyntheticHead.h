@@ -11,10 +11,10 @@
 // w = (1 - (d/r)^2)^2, with the radii the rigging library starts from (MW0 for the chin, MW0/4
 // for lips and tongue, ES0/4 for eyelids and ears, ES0/3 brows, ES0/2 cheeks, ENS0/4 nose).
 // 3.5/3.6 move their whole eyeball rigidly (weight 1), 6.3/6.4 each half of the tongue.
-#include <lacrima/FapTable.h>
-#include <lacrima/Fapu.h>
-#include <lacrima/HeadMesh.h>
-#include <lacrima/PoseBaking.h>
+#include <lacrima/common/FapTable.h>
+#include <lacrima/common/Fapu.h>
+#include <lacrima/common/HeadMesh.h>
+#include <lacrima/common/PoseBaking.h>
 
 #include <Eigen/Core>
 

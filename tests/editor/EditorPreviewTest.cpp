@@ -1,12 +1,12 @@
 // The live preview in the editor window: the shared viewport on the default head, posed by
 // the sliders, with tears simulated while paused (tear preview) and while playing. Runs under
 // xvfb-run (OGRE needs X); skips when the default head is not fetched.
-#include <lacrima/FapTable.h>
-#include <lacrima/editor/EditorModel.h>
+#include <lacrima/common/FapTable.h>
+#include <lacrima/editing/EditorModel.h>
 #include <lacrima/editor/MainWindow.h>
-#include <lacrima/editor/PlaybackClock.h>
+#include <lacrima/editing/FrameStepClock.h>
 #include <lacrima/editor/PreviewPanel.h>
-#include <lacrima/rig/DefaultHead.h>
+#include <lacrima/rigging/DefaultHead.h>
 
 #include <QImage>
 #include <QTemporaryDir>
@@ -52,7 +52,7 @@ private slots:
   void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
 
   void slidersPoseTheFace() {
-    if (!defaultHeadAvailable()) QSKIP("the default head is not fetched");
+    if (!rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
     MainWindow window(options());
     window.resize(1280, 800);
     window.show();
@@ -69,7 +69,7 @@ private slots:
   }
 
   void tearPreviewRunsWhilePausedAndPlaybackStepsTears() {
-    if (!defaultHeadAvailable()) QSKIP("the default head is not fetched");
+    if (!rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
     MainWindow window(options());
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));

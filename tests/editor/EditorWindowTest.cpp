@@ -1,16 +1,16 @@
 // The editor as people use it: real widgets on the offscreen platform, driven by mouse and
 // keyboard events and by the window's actions.
-#include <lacrima/FapReader.h>
-#include <lacrima/FapTable.h>
-#include <lacrima/FapWriter.h>
+#include <lacrima/common/FapReader.h>
+#include <lacrima/common/FapTable.h>
+#include <lacrima/common/FapWriter.h>
 #include <lacrima/editor/ChannelRow.h>
-#include <lacrima/editor/EditorModel.h>
+#include <lacrima/editing/EditorModel.h>
 #include <lacrima/editor/KeyListPanel.h>
 #include <lacrima/editor/MainWindow.h>
-#include <lacrima/editor/PlaybackClock.h>
+#include <lacrima/editing/FrameStepClock.h>
 #include <lacrima/editor/PresetPanel.h>
 #include <lacrima/editor/RecoveryBanner.h>
-#include <lacrima/editor/RecoveryStore.h>
+#include <lacrima/editing/RecoveryStore.h>
 #include <lacrima/editor/SliderPanel.h>
 #include <lacrima/editor/TimelineWidget.h>
 #include <lacrima/editor/ZeroSlider.h>
@@ -76,7 +76,7 @@ private:
   std::unique_ptr<MainWindow> window_;
 
   MainWindow& window() { return *window_; }
-  EditorModel& model() { return window_->model(); }
+  editing::EditorModel& model() { return window_->model(); }
 
 private slots:
   void initTestCase() {
@@ -151,7 +151,7 @@ private slots:
     setSpin(tears->spinBox(), 44);
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("jaw.fap"));
-    QVERIFY2(window().exportFap(path, FapExportOptions{}), qPrintable(window().lastError()));
+    QVERIFY2(window().exportFap(path, editing::FapExportOptions{}), qPrintable(window().lastError()));
     const FapAnimation animation = FapReader::readFile(path.toStdString()).animation;
     QCOMPARE(animation.frameCount(), 23);
     QCOMPARE(animation.fps, 22.0);
@@ -346,12 +346,12 @@ private slots:
     QCOMPARE(model().document().keys.keys().size(), std::size_t{120});
     QVERIFY(window().isWindowModified());  // an import is unsaved work
     const QString out = dir.filePath(QStringLiteral("out.fap"));
-    QVERIFY(window().exportFap(out, FapExportOptions{}));
+    QVERIFY(window().exportFap(out, editing::FapExportOptions{}));
     QVERIFY(FapReader::readFile(in.toStdString()).animation.frames == FapReader::readFile(out.toStdString()).animation.frames);
     // With reduction: fewer keys, same file within a unit.
     QVERIFY(window().importFap(in, 0.5));
     QVERIFY(model().document().keys.keys().size() < 120);
-    QVERIFY(window().exportFap(out, FapExportOptions{}));
+    QVERIFY(window().exportFap(out, editing::FapExportOptions{}));
     const FapAnimation back = FapReader::readFile(out.toStdString()).animation;
     for (int i = 0; i < 120; ++i)
       for (int c = 0; c < kChannelCount; ++c) QVERIFY(std::abs(back.frames[i][c] - original.frames[i][c]) <= 1.0f);
@@ -395,7 +395,7 @@ private slots:
     editor.show();
     editor.model().setChannel(31, 100);
     QTRY_VERIFY(editor.recovery().hasFile());
-    QVERIFY(RecoveryStore::read(editor.recovery().filePath()) == editor.model().document());
+    QVERIFY(editing::RecoveryStore::read(editor.recovery().filePath()) == editor.model().document());
     // Undoing back to the saved state leaves nothing to recover.
     editor.model().undoStack()->undo();
     QTRY_VERIFY(!editor.recovery().hasFile());
@@ -405,7 +405,7 @@ private slots:
   void discardingAnOfferRemovesIt() {
     QTemporaryDir dir;
     {
-      RecoveryStore crashed(dir.path());
+      editing::RecoveryStore crashed(dir.path());
       ProjectDocument doc;
       Keyframe key;
       key.set(3, 10);

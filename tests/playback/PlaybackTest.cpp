@@ -3,10 +3,10 @@
 // Skipped when the default head has not been fetched.
 #include "PlaybackTestSupport.h"
 
-#include <lacrima/FapWriter.h>
-#include <lacrima/HeadMesh.h>
+#include <lacrima/common/FapWriter.h>
+#include <lacrima/common/HeadMesh.h>
 #include <lacrima/playback/Playback.h>
-#include <lacrima/rig/DefaultHead.h>
+#include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/tears/TrailBuilder.h>
 #include <lacrima/tears/SurfaceMesher.h>
 
@@ -41,7 +41,7 @@ class PlaybackTest : public QObject {
 
 private slots:
   void initTestCase() {
-    if (!defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
     rig_ = loadDefaultHeadRig();
     QVERIFY(rig_ && rig_->blender);
     QVERIFY(dir_.isValid());

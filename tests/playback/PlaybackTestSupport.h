@@ -1,8 +1,8 @@
 #pragma once
 // Shared by the playback suites: the default head rigged once per suite, and small animations
 // built in memory so each test states exactly what it plays.
-#include <lacrima/FapAnimation.h>
-#include <lacrima/FapTable.h>
+#include <lacrima/common/FapAnimation.h>
+#include <lacrima/common/FapTable.h>
 #include <lacrima/tears/ParticleSet.h>
 
 #include <cmath>

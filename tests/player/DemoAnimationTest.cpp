@@ -2,8 +2,8 @@
 // (media/demo/crying.json) today, byte for byte, so the two never drift apart; and it tells
 // the story the README promises: a sad face building up, tears welling in both eyes, a sob,
 // tears drying.
-#include <lacrima/FapReader.h>
-#include <lacrima/FapTable.h>
+#include <lacrima/common/FapReader.h>
+#include <lacrima/common/FapTable.h>
 
 #include <QFile>
 #include <QProcess>

@@ -2,11 +2,11 @@
 // through the Open action's path, Play until frames advance, Reset to a neutral face with no
 // tears; a bad file gives an error dialog and keeps the animation; drops open files; toggles
 // and parameters reach the playback.
-#include "PlayerWindow.h"
-#include "EffectsPanel.h"
-#include "TearParametersPanel.h"
+#include <lacrima/player/PlayerWindow.h>
+#include <lacrima/player/EffectsPanel.h>
+#include <lacrima/player/TearParametersPanel.h>
 
-#include <lacrima/rig/DefaultHead.h>
+#include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/viewport/FaceViewport.h>
 
 #include <QCheckBox>
@@ -40,7 +40,7 @@ class PlayerWindowTest : public QObject {
 
 private slots:
   void initTestCase() {
-    if (!defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
     window_ = std::make_unique<PlayerWindow>(playback::loadDefaultHeadRig());
     window_->resize(1100, 700);
     window_->show();

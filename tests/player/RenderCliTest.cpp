@@ -1,9 +1,9 @@
 // lacrima-player --render run as a process (under xvfb-run): a short animation gives one PNG
 // per frame and a contact sheet, progress on stderr; a bad file and a missing display fail
 // with a clear message.
-#include <lacrima/FapWriter.h>
-#include <lacrima/FapTable.h>
-#include <lacrima/rig/DefaultHead.h>
+#include <lacrima/common/FapWriter.h>
+#include <lacrima/common/FapTable.h>
+#include <lacrima/rigging/DefaultHead.h>
 
 #include <QImage>
 #include <QProcess>
@@ -48,7 +48,7 @@ class RenderCliTest : public QObject {
 
 private slots:
   void initTestCase() {
-    if (!defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
     QVERIFY(dir_.isValid());
     // 14 frames: the jaw opens while tears appear at both eyes.
     FapAnimation a;

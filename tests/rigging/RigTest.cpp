@@ -1,16 +1,16 @@
 // Rig assembly end to end: feature-point files, RigBuilder on the default head and the ICT head,
 // the exported files and the lacrima-rig command.
-#include <lacrima/FapTable.h>
-#include <lacrima/PoseSet.h>
-#include <lacrima/rig/DefaultHead.h>
-#include <lacrima/rig/DijkstraGeodesics.h>
-#include <lacrima/rig/FeaturePointFile.h>
-#include <lacrima/rig/GlbExport.h>
-#include <lacrima/rig/MeshImport.h>
-#include <lacrima/rig/RigBuilder.h>
-#include <lacrima/rig/RigDescription.h>
-#include <lacrima/rig/RigExport.h>
-#include <lacrima/rig/SurfaceGraph.h>
+#include <lacrima/common/FapTable.h>
+#include <lacrima/common/PoseSet.h>
+#include <lacrima/rigging/DefaultHead.h>
+#include <lacrima/rigging/DijkstraGeodesics.h>
+#include <lacrima/rigging/FeaturePointFile.h>
+#include <lacrima/exporters/GlbExport.h>
+#include <lacrima/rigging/MeshImport.h>
+#include <lacrima/rigging/RigBuilder.h>
+#include <lacrima/rigging/RigDescription.h>
+#include <lacrima/exporters/RigExport.h>
+#include <lacrima/rigging/SurfaceGraph.h>
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
@@ -56,7 +56,7 @@ std::string fileErrorOf(F&& f) {
   return {};
 }
 
-const VertexPose& poseOf(const BuiltRig& rig, int fap) {
+const VertexPose& poseOf(const rigging::BuiltRig& rig, int fap) {
   return rig.poses.poses[static_cast<std::size_t>(channelIndex(fap))];
 }
 
@@ -82,28 +82,28 @@ class RigTest : public QObject {
   Q_OBJECT
 
   std::unique_ptr<HeadMesh> head_;
-  std::unique_ptr<FeaturePointFile> fdp_;
-  std::unique_ptr<BuiltRig> rig_;
+  std::unique_ptr<rigging::FeaturePointFile> fdp_;
+  std::unique_ptr<rigging::BuiltRig> rig_;
   QTemporaryDir tmp_;
 
   const HeadMesh& head() { return *head_; }
-  const BuiltRig& rig() { return *rig_; }
+  const rigging::BuiltRig& rig() { return *rig_; }
   Eigen::Vector3d point(const char* id) { return rig().featurePoints.at(id); }
 
 
 private slots:
   void initTestCase() {
     QVERIFY(tmp_.isValid());
-    if (!defaultHeadAvailable()) return;
-    head_ = std::make_unique<HeadMesh>(loadDefaultHead());
+    if (!rigging::defaultHeadAvailable()) return;
+    head_ = std::make_unique<HeadMesh>(rigging::loadDefaultHead());
     Warnings warnings;
-    fdp_ = std::make_unique<FeaturePointFile>(readFeaturePointFile(kDefaultFdp.toStdString(), &warnings));
-    validateFeaturePoints(*fdp_, *head_, &warnings);
+    fdp_ = std::make_unique<rigging::FeaturePointFile>(rigging::readFeaturePointFile(kDefaultFdp.toStdString(), &warnings));
+    rigging::validateFeaturePoints(*fdp_, *head_, &warnings);
     for (const Diagnostic& w : warnings) qWarning("%s", w.toString().c_str());
     QVERIFY2(warnings.empty(), "the default head's feature-point file is complete");
     QElapsedTimer timer;
     timer.start();
-    rig_ = std::make_unique<BuiltRig>(buildRig(*head_, *fdp_));
+    rig_ = std::make_unique<rigging::BuiltRig>(rigging::buildRig(*head_, *fdp_));
     qInfo("default head rigged in %lld ms (%d vertices)", static_cast<long long>(timer.elapsed()),
           head_->vertexCount());
     for (const std::string& w : rig_->warnings) qWarning("rig: %s", w.c_str());
@@ -119,7 +119,7 @@ private slots:
       const std::string id(info.featurePoint);
       QVERIFY2(!poseOf(rig(), fap).empty(), qPrintable(QString("FAP %1 has a pose").arg(fap)));
       const double x0 = rig().fapu.unitValue(info.unit) * 1024.0;
-      const Eigen::Vector3d moved = featurePointDisplacement(rig(), id, fap, 1024.0);
+      const Eigen::Vector3d moved = rigging::featurePointDisplacement(rig(), id, fap, 1024.0);
       const Eigen::Vector3d expected = x0 * info.positiveMotion.cast<double>();
       QVERIFY2((moved - expected).norm() < 1e-4 * x0,
                qPrintable(QString("FAP %1 (%2): moved %3, expected %4").arg(fap).arg(id.c_str())
@@ -132,7 +132,7 @@ private slots:
   // Weights lie in (0, 1], are 1 at the point's vertices and vanish beyond the radius.
   void weightsAreBoundedAndLocal() {
     REQUIRE_DEFAULT_HEAD();
-    const SurfaceGraph skin = buildSurfaceGraph(head(), fdp_->skin);
+    const rigging::SurfaceGraph skin = rigging::buildSurfaceGraph(head(), fdp_->skin);
     for (const auto& [id, radius] : rig().radii) {
       const FeaturePointInfluence& inf = rig().input.influences.at(id);
       std::map<int, float> weight;
@@ -147,7 +147,7 @@ private slots:
       if (fdp_->points.at(id).at.submesh != "skin") continue;  // tongue points: own surface
       std::vector<int> sources;
       for (const auto& [v, w] : rig().bindings.at(id)) sources.push_back(v);
-      const Eigen::VectorXd d = dijkstraDistances(
+      const Eigen::VectorXd d = rigging::dijkstraDistances(
           skin, Eigen::Map<const Eigen::VectorXi>(sources.data(), static_cast<Eigen::Index>(sources.size())));
       for (const auto& [v, w] : weight) {
         if (head().submeshOfVertex(v) != 0) continue;  // attachments and the jaw copy weights
@@ -264,8 +264,8 @@ private slots:
   void glbLoadsBackWithItsMorphTargets() {
     REQUIRE_DEFAULT_HEAD();
     const std::string path = QDir(tmp_.path()).filePath("head.glb").toStdString();
-    exportGlb(head(), rig().poses, path);
-    const std::size_t poses = prepareRigExport(head(), rig().poses, path).size();
+    exporters::exportGlb(head(), rig().poses, path);
+    const std::size_t poses = exporters::prepareRigExport(head(), rig().poses, path).size();
     Assimp::Importer importer;
     const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
     QVERIFY2(scene, importer.GetErrorString());
@@ -280,7 +280,7 @@ private slots:
 
   void rigJsonDescribesTheRig() {
     REQUIRE_DEFAULT_HEAD();
-    const QJsonObject doc = QJsonDocument::fromJson(QByteArray::fromStdString(rigDescriptionJson(head(), rig()))).object();
+    const QJsonObject doc = QJsonDocument::fromJson(QByteArray::fromStdString(rigging::rigDescriptionJson(head(), rig()))).object();
     QCOMPARE(doc.value("format").toString(), QString("lacrima-rig"));
     QVERIFY(doc.value("fapu").toObject().value("ES0").toDouble() > 0);
     QVERIFY(doc.value("feature_points").toObject().contains("3.3"));
@@ -298,13 +298,13 @@ private slots:
     if (!QFileInfo::exists(kIctMesh)) QSKIP("ICT-FaceKit head not present in the shared folder");
     QElapsedTimer timer;
     timer.start();
-    const HeadMesh mesh = importHeadMesh(kIctMesh.toStdString());
+    const HeadMesh mesh = rigging::importHeadMesh(kIctMesh.toStdString());
     Warnings warnings;
-    BuiltRig rig;
+    rigging::BuiltRig rig;
     const std::string error = fileErrorOf([&] {
-      const FeaturePointFile fdp = readFeaturePointFile(kIctFdp.toStdString(), &warnings);
-      validateFeaturePoints(fdp, mesh, &warnings);
-      rig = buildRig(mesh, fdp);
+      const rigging::FeaturePointFile fdp = rigging::readFeaturePointFile(kIctFdp.toStdString(), &warnings);
+      rigging::validateFeaturePoints(fdp, mesh, &warnings);
+      rig = rigging::buildRig(mesh, fdp);
     });
     QVERIFY2(error.empty(), error.c_str());
     qInfo("ICT head imported and rigged in %lld ms (%d vertices)", static_cast<long long>(timer.elapsed()),
@@ -314,7 +314,7 @@ private slots:
     for (int fap : {3, 4, 5, 19, 20, 31, 53}) {
       const FapInfo& info = fapInfo(fap);
       const double x0 = rig.fapu.unitValue(info.unit) * 1024.0;
-      const Eigen::Vector3d moved = featurePointDisplacement(rig, std::string(info.featurePoint), fap, 1024.0);
+      const Eigen::Vector3d moved = rigging::featurePointDisplacement(rig, std::string(info.featurePoint), fap, 1024.0);
       QVERIFY2((moved - x0 * info.positiveMotion.cast<double>()).norm() < 1e-4 * x0, qPrintable(QString("FAP %1").arg(fap)));
     }
     QVERIFY(!rig.input.eyeLeft.vertices.empty() && !rig.input.eyeRight.vertices.empty());
@@ -335,8 +335,8 @@ private slots:
     auto errorFor = [&](const QByteArray& points) {
       writeFile(path, head + points + "}}");
       return fileErrorOf([&] {
-        const FeaturePointFile f = readFeaturePointFile(path.toStdString());
-        validateFeaturePoints(f, mesh, nullptr);
+        const rigging::FeaturePointFile f = rigging::readFeaturePointFile(path.toStdString());
+        rigging::validateFeaturePoints(f, mesh, nullptr);
       });
     };
     const std::string missing = errorFor(required);
@@ -350,7 +350,7 @@ private slots:
     QVERIFY2(bary.find("\"9.15\".barycentric") != std::string::npos, bary.c_str());
     QVERIFY(errorFor(required + R"(, "9.15": {"submesh": "skin", "vertex": 2})").empty());
     writeFile(path, "{\"format\": \"lacrima-fdp\",\n  \"version\": 1,,}");
-    const std::string syntax = fileErrorOf([&] { readFeaturePointFile(path.toStdString()); });
+    const std::string syntax = fileErrorOf([&] { rigging::readFeaturePointFile(path.toStdString()); });
     QVERIFY2(syntax.find(path.toStdString() + ":2:") != std::string::npos, syntax.c_str());
   }
 

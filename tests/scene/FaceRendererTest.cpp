@@ -4,7 +4,7 @@
 #include "ImageCompare.h"
 #include "SyntheticTears.h"
 
-#include <lacrima/rig/DefaultHead.h>
+#include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/scene/FaceRenderer.h>
 #include <lacrima/scene/OgreRuntime.h>
 #include <lacrima/scene/OverlayMasks.h>
@@ -56,8 +56,8 @@ class FaceRendererTest : public QObject {
 
 private slots:
   void initTestCase() {
-    if (!defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
-    head_ = std::make_unique<HeadMesh>(loadDefaultHead());
+    if (!rigging::defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    head_ = std::make_unique<HeadMesh>(rigging::loadDefaultHead());
     for (int e = 0; e < 2; ++e) {
       const auto sphere = scene::eyeSphere(*head_, e == 0 ? "eye_l" : "eye_r");
       QVERIFY(sphere);

@@ -1,7 +1,7 @@
 // The engine-free parts of the scene on the real default head (skipped when it is not fetched):
 // where the overlays apply (masks painted in uv space), the overlay layers made from the head's
 // textures, the static occlusion, and the orbit camera's framing and mouse mapping.
-#include <lacrima/rig/DefaultHead.h>
+#include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/scene/HeadOcclusion.h>
 #include <lacrima/scene/OrbitView.h>
 #include <lacrima/scene/OverlayMasks.h>
@@ -38,8 +38,8 @@ class OverlayTest : public QObject {
 
 private slots:
   void initTestCase() {
-    if (!defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
-    head_ = std::make_unique<HeadMesh>(loadDefaultHead());
+    if (!rigging::defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    head_ = std::make_unique<HeadMesh>(rigging::loadDefaultHead());
     const auto l = eyeSphere(*head_, "eye_l"), r = eyeSphere(*head_, "eye_r");
     QVERIFY(l && r);
     left_ = *l;

@@ -10,7 +10,7 @@
 // (render and buffer swap) at 1280x720 and 640x480; --quick-timing only the renderer at 1280x720.
 #include "SyntheticTears.h"
 
-#include <lacrima/rig/DefaultHead.h>
+#include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/scene/FaceRenderer.h>
 #include <lacrima/scene/OgreRuntime.h>
 #include <lacrima/viewport/FaceViewport.h>
@@ -126,11 +126,11 @@ int main(int argc, char** argv) {
     else out = args[i];
   }
   QDir().mkpath(out);
-  if (!defaultHeadAvailable()) {
+  if (!rigging::defaultHeadAvailable()) {
     std::fprintf(stderr, "default head not fetched (packaging/fetch-default-head.sh)\n");
     return 1;
   }
-  const HeadMesh head = loadDefaultHead();
+  const HeadMesh head = rigging::loadDefaultHead();
   const scenetest::SyntheticTears synthetic(head);
   std::unique_ptr<SimulatedTears> simulated;
   playback::FrameView frame = synthetic.view();

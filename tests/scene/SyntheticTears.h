@@ -7,7 +7,7 @@
 //
 // Per eye: a small pool on the lower lid at the tear source, and a running drop further down a
 // slightly curved path over the cheek, with the trail it left from the lid down to it.
-#include <lacrima/HeadMesh.h>
+#include <lacrima/common/HeadMesh.h>
 #include <lacrima/playback/FrameView.h>
 #include <lacrima/tears/Parameters.h>
 #include <lacrima/tears/ParticleSet.h>

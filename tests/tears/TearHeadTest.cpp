@@ -2,9 +2,9 @@
 // not the generated sheet: tears emitted at the lower eyelids must run down the cheeks, stay on
 // the skin and survive a jaw-opening deformation arriving in a single frame. Skipped when the
 // head has not been fetched (packaging/fetch-default-head.sh).
-#include <lacrima/rig/DefaultHead.h>
-#include <lacrima/rig/FeaturePointFile.h>
-#include <lacrima/rig/RigBuilder.h>
+#include <lacrima/rigging/DefaultHead.h>
+#include <lacrima/rigging/FeaturePointFile.h>
+#include <lacrima/rigging/RigBuilder.h>
 #include <lacrima/tears/TearSimulation.h>
 
 #include <QtTest>
@@ -81,8 +81,8 @@ private:
 
 private slots:
   void initTestCase() {
-    if (!defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
-    head_ = std::make_unique<HeadMesh>(loadDefaultHead());
+    if (!rigging::defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    head_ = std::make_unique<HeadMesh>(rigging::loadDefaultHead());
     const HeadSubmesh* skin = head_->findSubmesh("skin");
     QVERIFY(skin && head_->findSubmesh("eye_l") && head_->findSubmesh("eye_r"));
     skinBox_ = boundsOf(*head_, *skin);
@@ -99,9 +99,9 @@ private slots:
     // IRISD0 / 4, nearest skin vertex): the same place to within 2 mm (0.02 dm), on the skin,
     // facing forward; and sources the caller gives are used as they are.
     Warnings warnings;
-    const FeaturePointFile fdp = readFeaturePointFile(LACRIMA_SOURCE_DIR "/media/default-head.fdp.json", &warnings);
-    validateFeaturePoints(fdp, *head_, &warnings);
-    const BuiltRig rig = buildRig(*head_, fdp);
+    const rigging::FeaturePointFile fdp = rigging::readFeaturePointFile(LACRIMA_SOURCE_DIR "/media/default-head.fdp.json", &warnings);
+    rigging::validateFeaturePoints(fdp, *head_, &warnings);
+    const rigging::BuiltRig rig = rigging::buildRig(*head_, fdp);
     for (auto [eye, rigSource] : {std::pair{Eye::Left, rig.tearLeft}, std::pair{Eye::Right, rig.tearRight}}) {
       const Eigen::Vector3d own = TearSimulation::defaultTearSource(*head_, eye);
       const double gap = (own - rigSource.position).norm();

@@ -1,5 +1,5 @@
 // Reading a FAP file or a project for playback (AnimationFile.h).
-#include <lacrima/FapReader.h>
+#include <lacrima/common/FapReader.h>
 #include <lacrima/playback/AnimationFile.h>
 
 #include <algorithm>

@@ -1,10 +1,10 @@
 // Loading and rigging a head in memory (HeadRig.h).
-#include <lacrima/Diagnostics.h>
+#include <lacrima/common/Diagnostics.h>
 #include <lacrima/playback/HeadRig.h>
 #include <lacrima/playback/MediaFiles.h>
-#include <lacrima/rig/DefaultHead.h>
-#include <lacrima/rig/FeaturePointFile.h>
-#include <lacrima/rig/MeshImport.h>
+#include <lacrima/rigging/DefaultHead.h>
+#include <lacrima/rigging/FeaturePointFile.h>
+#include <lacrima/rigging/MeshImport.h>
 
 #include <algorithm>
 #include <initializer_list>
@@ -18,9 +18,9 @@ namespace {
 // Binds the feature points, bakes the poses and builds the blender for `rig->head`.
 void rigHead(HeadRig& rig, const std::string& fdpPath) {
   Warnings warnings;
-  const FeaturePointFile fdp = readFeaturePointFile(fdpPath, &warnings);
-  validateFeaturePoints(fdp, rig.head, &warnings);
-  rig.rig = buildRig(rig.head, fdp);
+  const rigging::FeaturePointFile fdp = rigging::readFeaturePointFile(fdpPath, &warnings);
+  rigging::validateFeaturePoints(fdp, rig.head, &warnings);
+  rig.rig = rigging::buildRig(rig.head, fdp);
   for (const Diagnostic& d : warnings) rig.warnings.push_back(d.toString());
   for (const std::string& w : rig.rig.warnings) rig.warnings.push_back(fdpPath + ": " + w);
   try {
@@ -33,12 +33,12 @@ void rigHead(HeadRig& rig, const std::string& fdpPath) {
 }  // namespace
 
 std::unique_ptr<HeadRig> loadDefaultHeadRig() {
-  if (!defaultHeadAvailable())
-    throw FileError({defaultHeadPackageDir(), 0, 0},
+  if (!rigging::defaultHeadAvailable())
+    throw FileError({rigging::defaultHeadPackageDir(), 0, 0},
                     "the default head is not in the cache; fetch it with packaging/fetch-default-head.sh "
                     "(packaging/lacrima.sh does), or bring your own with --mesh FILE --fdp FILE");
   auto rig = std::make_unique<HeadRig>();
-  rig->head = loadDefaultHead();
+  rig->head = rigging::loadDefaultHead();
   rigHead(*rig, findMediaFile("default-head.fdp.json"));
   return rig;
 }
@@ -46,7 +46,7 @@ std::unique_ptr<HeadRig> loadDefaultHeadRig() {
 std::unique_ptr<HeadRig> loadHeadRig(const std::string& meshPath, const std::string& fdpPath) {
   auto rig = std::make_unique<HeadRig>();
   try {
-    rig->head = importHeadMesh(meshPath);
+    rig->head = rigging::importHeadMesh(meshPath);
   } catch (const FileError&) {
     throw;
   } catch (const std::runtime_error& e) {

@@ -1,5 +1,5 @@
 // Search order for media files (MediaFiles.h).
-#include <lacrima/Diagnostics.h>
+#include <lacrima/common/Diagnostics.h>
 #include <lacrima/playback/MediaFiles.h>
 
 #include <QCoreApplication>

@@ -12,7 +12,7 @@
 //   blush     the redness, when the scene asks for a blush; else 0.
 // With texture blending off every weight is 0, so a renderer that ignores the flag still draws
 // the plain skin.
-#include <lacrima/ProjectDocument.h>
+#include <lacrima/common/ProjectDocument.h>
 #include <lacrima/playback/FrameView.h>
 
 namespace lacrima::tears {

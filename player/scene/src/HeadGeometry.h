@@ -9,7 +9,7 @@
 // it (16-bit when they fit): each draw call then covers only its own vertices, which matters on
 // a software rasteriser, where vertex work runs on the calling thread. Bounds are the neutral
 // bounds grown by half their size on every side, so no expression gets culled.
-#include <lacrima/HeadMesh.h>
+#include <lacrima/common/HeadMesh.h>
 
 #include <OgreHardwareVertexBuffer.h>
 #include <OgreMesh.h>

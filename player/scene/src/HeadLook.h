@@ -8,7 +8,7 @@
 //   anything else   Lacrima/Lit with the material's colour, specular and shininess
 // The overlay weights reach the shaders as custom parameter 0 of each sub-entity
 // (x redness, y this eye's wetness, z blush), so changing them costs no material change.
-#include <lacrima/HeadMesh.h>
+#include <lacrima/common/HeadMesh.h>
 #include <lacrima/playback/FrameView.h>
 
 #include <OgreMaterial.h>

@@ -11,15 +11,18 @@ class QLabel;
 class QSpinBox;
 class QToolButton;
 
+namespace lacrima::editing {
+class EditorModel;
+}  // namespace lacrima::editing
+
 namespace lacrima::editor {
 
-class EditorModel;
 class ZeroSlider;
 
 class ChannelRow : public QWidget {
   Q_OBJECT
 public:
-  ChannelRow(EditorModel& model, int fap, QWidget* parent = nullptr);
+  ChannelRow(editing::EditorModel& model, int fap, QWidget* parent = nullptr);
 
   int fap() const { return fap_; }
   // Shows a value and key state; does nothing when both are already shown.
@@ -38,7 +41,7 @@ protected:
 private:
   void edit(int value);
 
-  EditorModel& model_;
+  editing::EditorModel& model_;
   int fap_;
   KeyToggle* key_;
   QLabel* number_;

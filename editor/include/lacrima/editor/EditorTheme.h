@@ -2,7 +2,7 @@
 // The editor's look: a dark Fusion palette (the face and the tears read best on dark grey, as
 // in other animation tools), one accent for keys, and a colour per FAP group so the eye finds
 // a group in the slider list and in the timeline's curve.
-#include <lacrima/FapTable.h>
+#include <lacrima/common/FapTable.h>
 
 #include <QColor>
 

@@ -4,22 +4,25 @@
 
 class QTableView;
 
+namespace lacrima::editing {
+class EditorModel;
+}  // namespace lacrima::editing
+
 namespace lacrima::editor {
 
-class EditorModel;
 class KeyTableModel;
 
 class KeyListPanel : public QWidget {
   Q_OBJECT
 public:
-  explicit KeyListPanel(EditorModel& model, QWidget* parent = nullptr);
+  explicit KeyListPanel(editing::EditorModel& model, QWidget* parent = nullptr);
   QTableView* view() const { return view_; }
 
 private:
   void pullSelection();  // model -> view
   void pushSelection();  // view -> model
 
-  EditorModel& model_;
+  editing::EditorModel& model_;
   KeyTableModel* table_;
   QTableView* view_;
   bool syncing_ = false;

@@ -4,16 +4,19 @@
 // undoable like every other edit (a time edit moves the key by whole frames).
 #include <QAbstractTableModel>
 
+namespace lacrima::editing {
+class EditorModel;
+}  // namespace lacrima::editing
+
 namespace lacrima::editor {
 
-class EditorModel;
 
 class KeyTableModel : public QAbstractTableModel {
   Q_OBJECT
 public:
   enum Column { TimeColumn, FrameColumn, InterpolationColumn, ChannelsColumn, ColumnCount };
 
-  explicit KeyTableModel(EditorModel& model, QObject* parent = nullptr);
+  explicit KeyTableModel(editing::EditorModel& model, QObject* parent = nullptr);
 
   int rowCount(const QModelIndex& parent = {}) const override;
   int columnCount(const QModelIndex& parent = {}) const override;
@@ -23,7 +26,7 @@ public:
   bool setData(const QModelIndex& index, const QVariant& value, int role) override;
 
 private:
-  EditorModel& model_;
+  editing::EditorModel& model_;
 };
 
 }  // namespace lacrima::editor

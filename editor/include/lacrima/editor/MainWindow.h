@@ -12,7 +12,7 @@
 // Every path-taking operation exists without dialogs (openFile, saveTo, importFap, exportFap),
 // for the command line and tests; with `interactive` off, nothing ever opens a modal dialog
 // (errors go to lastError() and the status bar, and unsaved changes are discarded).
-#include <lacrima/editor/FapTransfer.h>
+#include <lacrima/editing/FapTransfer.h>
 
 #include <QMainWindow>
 
@@ -24,15 +24,18 @@ class QMenu;
 class QTimer;
 class QUndoView;
 
+namespace lacrima::editing {
+class EditorModel;
+class FrameStepClock;
+class RecoveryStore;
+}  // namespace lacrima::editing
+
 namespace lacrima::editor {
 
-class EditorModel;
 class KeyListPanel;
-class PlaybackClock;
 class PresetPanel;
 class PreviewPanel;
 class RecoveryBanner;
-class RecoveryStore;
 class SliderPanel;
 class TimelineWidget;
 class TransportBar;
@@ -53,8 +56,8 @@ public:
   explicit MainWindow(EditorOptions options = {}, QWidget* parent = nullptr);
   ~MainWindow() override;
 
-  EditorModel& model() { return *model_; }
-  PlaybackClock& clock() { return *clock_; }
+  editing::EditorModel& model() { return *model_; }
+  editing::FrameStepClock& clock() { return *clock_; }
   SliderPanel* sliders() const { return sliders_; }
   TimelineWidget* timeline() const { return timeline_; }
   TransportBar* transport() const { return transport_; }
@@ -62,7 +65,7 @@ public:
   PreviewPanel* preview() const { return preview_; }
   KeyListPanel* keyList() const { return keyList_; }
   RecoveryBanner* recoveryBanner() const { return banner_; }
-  RecoveryStore& recovery() { return *recovery_; }
+  editing::RecoveryStore& recovery() { return *recovery_; }
   // Actions by object name ("file.save", "key.add", ...), for tests and the shortcut list.
   QAction* action(const QString& name) const;
 
@@ -71,7 +74,7 @@ public:
   bool openFile(const QString& path);  // a project, or a .fap to import
   bool saveTo(const QString& path);
   bool importFap(const QString& path, std::optional<double> reductionTolerance);
-  bool exportFap(const QString& path, const FapExportOptions& options);
+  bool exportFap(const QString& path, const editing::FapExportOptions& options);
   QString filePath() const { return filePath_; }
   QString lastError() const { return lastError_; }
 
@@ -115,9 +118,9 @@ private:
   void showShortcuts();
 
   EditorOptions options_;
-  std::unique_ptr<EditorModel> model_;
-  std::unique_ptr<PlaybackClock> clock_;
-  std::unique_ptr<RecoveryStore> recovery_;
+  std::unique_ptr<editing::EditorModel> model_;
+  std::unique_ptr<editing::FrameStepClock> clock_;
+  std::unique_ptr<editing::RecoveryStore> recovery_;
   SliderPanel* sliders_ = nullptr;
   TimelineWidget* timeline_ = nullptr;
   TransportBar* transport_ = nullptr;

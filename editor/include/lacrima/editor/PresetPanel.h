@@ -2,7 +2,7 @@
 // The presets: expressions and crying presets from the presets file, applied at the current
 // time with an intensity (0-150 %) and, by default, replacing the current pose. Mirror flips
 // the selected keys (or the current pose) left <-> right.
-#include <lacrima/editor/PresetLibrary.h>
+#include <lacrima/editing/PresetLibrary.h>
 
 #include <QWidget>
 
@@ -12,17 +12,20 @@ class QSlider;
 class QTreeWidget;
 class QPushButton;
 
+namespace lacrima::editing {
+class EditorModel;
+}  // namespace lacrima::editing
+
 namespace lacrima::editor {
 
-class EditorModel;
 
 class PresetPanel : public QWidget {
   Q_OBJECT
 public:
-  PresetPanel(EditorModel& model, PresetLibrary library, QWidget* parent = nullptr);
+  PresetPanel(editing::EditorModel& model, editing::PresetLibrary library, QWidget* parent = nullptr);
 
-  void setLibrary(PresetLibrary library, const QString& source);
-  const PresetLibrary& library() const { return library_; }
+  void setLibrary(editing::PresetLibrary library, const QString& source);
+  const editing::PresetLibrary& library() const { return library_; }
 
   double intensity() const;
   bool replacesPose() const;
@@ -38,8 +41,8 @@ private:
   void showDetails();
   QString selectedId() const;
 
-  EditorModel& model_;
-  PresetLibrary library_;
+  editing::EditorModel& model_;
+  editing::PresetLibrary library_;
   QString source_;
   QTreeWidget* list_;
   QLabel* details_;

@@ -20,15 +20,18 @@ class QLabel;
 class QToolButton;
 class QTimer;
 
+namespace lacrima::editing {
+class EditorModel;
+class FrameStepClock;
+}  // namespace lacrima::editing
+
 namespace lacrima::editor {
 
-class EditorModel;
-class PlaybackClock;
 
 class PreviewPanel : public QWidget {
   Q_OBJECT
 public:
-  PreviewPanel(EditorModel& model, PlaybackClock& clock, QWidget* parent = nullptr);
+  PreviewPanel(editing::EditorModel& model, editing::FrameStepClock& clock, QWidget* parent = nullptr);
   ~PreviewPanel() override;
 
   // Loads the default head now (also scheduled by the constructor). Returns whether a head is
@@ -62,8 +65,8 @@ private:
 
   struct State;
   std::unique_ptr<State> state_;
-  EditorModel& model_;
-  PlaybackClock& clock_;
+  editing::EditorModel& model_;
+  editing::FrameStepClock& clock_;
   QLabel* message_;
   QLabel* status_;
   QToolButton* tearToggle_;

@@ -18,16 +18,19 @@ class QLineEdit;
 class QScrollArea;
 class QToolButton;
 
+namespace lacrima::editing {
+class EditorModel;
+}  // namespace lacrima::editing
+
 namespace lacrima::editor {
 
 class ChannelRow;
-class EditorModel;
 class GroupSection;
 
 class SliderPanel : public QWidget {
   Q_OBJECT
 public:
-  explicit SliderPanel(EditorModel& model, QWidget* parent = nullptr);
+  explicit SliderPanel(editing::EditorModel& model, QWidget* parent = nullptr);
 
   void setFilterText(const QString& text);
   QLineEdit* filterBox() const { return filter_; }
@@ -49,7 +52,7 @@ private:
   void buildGroups();
   void applyFilter();
 
-  EditorModel& model_;
+  editing::EditorModel& model_;
   QLineEdit* filter_;
   QLabel* matchCount_;
   QScrollArea* scroll_;

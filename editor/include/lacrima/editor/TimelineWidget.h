@@ -12,7 +12,7 @@
 // Drawing cost does not grow with the view: keys outside it are skipped, keys falling on the
 // same pixel are drawn once, and the curves are baked once per edit (a single-channel bake at
 // >= 60 samples per second) and reused for every repaint while scrubbing or playing.
-#include <lacrima/FapChannels.h>
+#include <lacrima/common/FapChannels.h>
 
 #include <QWidget>
 
@@ -20,14 +20,17 @@
 
 class QPainter;
 
+namespace lacrima::editing {
+class EditorModel;
+}  // namespace lacrima::editing
+
 namespace lacrima::editor {
 
-class EditorModel;
 
 class TimelineWidget : public QWidget {
   Q_OBJECT
 public:
-  explicit TimelineWidget(EditorModel& model, QWidget* parent = nullptr);
+  explicit TimelineWidget(editing::EditorModel& model, QWidget* parent = nullptr);
 
   double viewStart() const { return start_; }
   double pixelsPerSecond() const { return scale_; }
@@ -76,7 +79,7 @@ private:
   void paintKeys(QPainter& p);
   double frameStepSeconds() const;
 
-  EditorModel& model_;
+  editing::EditorModel& model_;
   double start_ = -0.25;  // seconds at x = 0
   double scale_ = 120.0;  // pixels per second
   Drag drag_ = Drag::None;

@@ -8,15 +8,18 @@ class QLabel;
 class QSpinBox;
 class QToolButton;
 
+namespace lacrima::editing {
+class EditorModel;
+class FrameStepClock;
+}  // namespace lacrima::editing
+
 namespace lacrima::editor {
 
-class EditorModel;
-class PlaybackClock;
 
 class TransportBar : public QWidget {
   Q_OBJECT
 public:
-  TransportBar(EditorModel& model, PlaybackClock& clock, QWidget* parent = nullptr);
+  TransportBar(editing::EditorModel& model, editing::FrameStepClock& clock, QWidget* parent = nullptr);
 
   QToolButton* playButton() const { return play_; }
   QSpinBox* rateBox() const { return rate_; }
@@ -28,15 +31,15 @@ public:
 private:
   void refreshTime();
 
-  EditorModel& model_;
-  PlaybackClock& clock_;
+  editing::EditorModel& model_;
+  editing::FrameStepClock& clock_;
   QToolButton* play_;
   QLabel* time_;
   QSpinBox* rate_;
 };
 
 // Key navigation shared by the transport and the main window's shortcuts.
-double previousKeyTime(const EditorModel& model);  // current time when there is none
-double nextKeyTime(const EditorModel& model);
+double previousKeyTime(const editing::EditorModel& model);  // current time when there is none
+double nextKeyTime(const editing::EditorModel& model);
 
 }  // namespace lacrima::editor

@@ -3,9 +3,9 @@
 // (ProjectDocument, baked at its frame rate, with its scene settings and tear sources).
 // A path ending in .json or .lacrima (any case) is a project, anything else a FAP file, the
 // rule lacrima-fap uses.
-#include <lacrima/Diagnostics.h>
-#include <lacrima/FapAnimation.h>
-#include <lacrima/ProjectDocument.h>
+#include <lacrima/common/Diagnostics.h>
+#include <lacrima/common/FapAnimation.h>
+#include <lacrima/common/ProjectDocument.h>
 
 #include <string>
 

@@ -3,8 +3,8 @@
 // tears are still on the face -- the tear simulation, its surface and its trails, and the
 // texture-blend weights. Shared by the player (driven by Playback) and the editor's live preview
 // (driven by the sliders). Engine-free: no OGRE, no Qt Widgets.
-#include <lacrima/FapChannels.h>
-#include <lacrima/ProjectDocument.h>
+#include <lacrima/common/FapChannels.h>
+#include <lacrima/common/ProjectDocument.h>
 #include <lacrima/playback/FrameView.h>
 #include <lacrima/playback/HeadRig.h>
 #include <lacrima/tears/Parameters.h>

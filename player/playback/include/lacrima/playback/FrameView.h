@@ -4,7 +4,7 @@
 // (which draws it). Pointers stay valid until the producer's next frame; null means "nothing of
 // this kind this frame", which is how effects that are switched off or not needed cost nothing
 // downstream either.
-#include <lacrima/HeadMesh.h>
+#include <lacrima/common/HeadMesh.h>
 
 #include <Eigen/Core>
 

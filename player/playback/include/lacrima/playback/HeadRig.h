@@ -2,9 +2,9 @@
 // A rigged head ready to animate: the mesh, its rig (poses, FAPU, tear sources) and the blender.
 // Built in memory at start-up (about 25 ms for the default head), so the player and editor work
 // with any head the rigging layer accepts, not only pre-exported ones.
-#include <lacrima/HeadMesh.h>
-#include <lacrima/PoseSet.h>
-#include <lacrima/rig/RigBuilder.h>
+#include <lacrima/common/HeadMesh.h>
+#include <lacrima/common/PoseSet.h>
+#include <lacrima/rigging/RigBuilder.h>
 
 #include <Eigen/Core>
 
@@ -16,7 +16,7 @@ namespace lacrima::playback {
 
 struct HeadRig {
   HeadMesh head;
-  BuiltRig rig;  // rig.input.mesh points at `head`: a HeadRig is never copied or moved
+  rigging::BuiltRig rig;  // rig.input.mesh points at `head`: a HeadRig is never copied or moved
   std::unique_ptr<PoseBlender> blender;
   // Feature-point file and rig warnings ("file: message"), for a status line or stderr.
   std::vector<std::string> warnings;

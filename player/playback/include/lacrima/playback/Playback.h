@@ -6,9 +6,9 @@
 //
 // The tears advance once per animation frame (dt = 1 / fps). Between frames, the face is
 // interpolated (FapAnimation::sample) so a viewport rendering faster than the file stays smooth.
-#include <lacrima/Diagnostics.h>
-#include <lacrima/FapAnimation.h>
-#include <lacrima/ProjectDocument.h>
+#include <lacrima/common/Diagnostics.h>
+#include <lacrima/common/FapAnimation.h>
+#include <lacrima/common/ProjectDocument.h>
 #include <lacrima/playback/FrameProducer.h>
 
 #include <memory>

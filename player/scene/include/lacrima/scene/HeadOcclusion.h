@@ -15,7 +15,7 @@
 //   teeth, tongue  darker towards the back of the mouth: mix(0.25, 0.85, smoothstep(0.2, 1, t)),
 //            t the depth fraction over the mouth parts' z range.
 //   anything else 1.
-#include <lacrima/HeadMesh.h>
+#include <lacrima/common/HeadMesh.h>
 
 #include <vector>
 

@@ -12,7 +12,7 @@
 // the view; the target sits on the face's mid line at the eyes' depth between the eyes and the
 // mouth, a little to the side and above so the cheeks (where tears run) show their relief.
 // Heads without eye_l / eye_r sub-meshes are framed by their bounding box.
-#include <lacrima/HeadMesh.h>
+#include <lacrima/common/HeadMesh.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>

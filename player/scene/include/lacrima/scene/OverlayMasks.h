@@ -18,7 +18,7 @@
 //
 // Mask image: Format_RGBA8888, red = periocular, green = cheek, blue = 0, alpha = 255. Without
 // uvs, skin or eyes it is black (no overlay anywhere).
-#include <lacrima/HeadMesh.h>
+#include <lacrima/common/HeadMesh.h>
 
 #include <QImage>
 

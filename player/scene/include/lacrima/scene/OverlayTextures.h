@@ -17,7 +17,7 @@
 // along the seam, e.g. where the default head's face island meets the neck); then covered
 // colours are grown outwards `grow` texels (each uncovered texel takes the mean of its covered
 // neighbours, ring by ring). Texels farther out keep their colour.
-#include <lacrima/HeadMesh.h>
+#include <lacrima/common/HeadMesh.h>
 
 #include <QImage>
 

@@ -1,0 +1,71 @@
+#pragma once
+// A Lacrima project: the editor's document, saved as versioned JSON.
+//
+// {
+//   "format": "lacrima-project", "version": 1,
+//   "name": "sad crying", "fps": 22, "interpolation": "linear",
+//   "keys": [ { "time": 0.5, "interpolation": "smooth",
+//               "values": { "open_jaw": 120, "tears_l_eye": 12 } } ],
+//   "tearSources": { "left": [x, y, z], "right": null },          (head frame; null = rig default)
+//   "scene": { "particles": false, "surface": true, "trails": true, "textureBlending": true,
+//              "redness": "animation" | "tears", "blush": false,
+//              "simulation": { "adhesion": 20, ... } }           (overrides of TearParameters)
+// }
+// Unknown or invalid fields are errors naming the JSON path and, for syntax errors, the
+// line and column. A document written and read back compares equal.
+#include <lacrima/common/Diagnostics.h>
+#include <lacrima/common/Keyframes.h>
+#include <lacrima/common/TearParameters.h>
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace lacrima::inline common {
+
+struct TearSources {
+  std::optional<Eigen::Vector3d> left, right;  // nullopt: the rig's default, under each eye
+  bool operator==(const TearSources&) const = default;
+};
+
+// What the player should show. Tears are simulated only when a tear channel is non-zero;
+// these switch the effects built on top of them.
+struct SceneSettings {
+  enum class Redness { Animation, Tears };  // eye redness follows time (2009) or tears shed
+
+  bool particles = false;  // draw particle spheres (inspection)
+  bool surface = true;     // tear surface mesh
+  bool trails = true;      // wet trails
+  bool textureBlending = true;
+  Redness redness = Redness::Animation;
+  bool blush = false;
+  TearParameterValues simulation;  // overrides; absent names use the defaults
+
+  bool operator==(const SceneSettings&) const = default;
+};
+
+struct ProjectDocument {
+  static constexpr int kSchemaVersion = 1;
+
+  std::string name = "untitled";
+  double fps = 22.0;
+  Interpolation defaultInterpolation = Interpolation::Linear;  // for new keys
+  KeyframeSequence keys;
+  TearSources tearSources;
+  SceneSettings scene;
+
+  bool operator==(const ProjectDocument& other) const;
+
+  std::string toJson() const;
+  // Throws FileError with `displayName` and the line/column or JSON path of the problem.
+  static ProjectDocument fromJson(std::string_view json, const std::string& displayName);
+
+  static ProjectDocument load(const std::string& path);
+  void save(const std::string& path) const;  // atomic: temporary file, then rename
+
+  FapAnimation bake() const { return keys.bake(fps); }
+  static ProjectDocument fromAnimation(const FapAnimation& animation);  // a key per frame
+};
+
+}  // namespace lacrima::common

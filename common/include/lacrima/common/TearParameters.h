@@ -1,0 +1,31 @@
+#pragma once
+// The tear simulation's tunable parameters: names, defaults and valid ranges, shared by the
+// project document, the player's parameter panel and the simulation's JSON loader.
+// Defaults are the settings of the 2009 system (in its units; the simulation scales
+// lengths to the head).
+#include <map>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace lacrima::inline common {
+
+struct TearParameterInfo {
+  std::string_view name;  // JSON key, e.g. "adhesion"
+  double defaultValue;
+  double minValue, maxValue;  // inclusive
+  std::string_view description;
+};
+
+// pressure viscosity tension adhesion friction gravity kernel node_size cube_size iso
+std::span<const TearParameterInfo> tearParameterTable();
+const TearParameterInfo* findTearParameter(std::string_view name);
+
+// Values by name; only names from the table, each within its range.
+using TearParameterValues = std::map<std::string, double, std::less<>>;
+
+// Throws std::invalid_argument("<name>: <why>; expected ...") for an unknown name or a value
+// outside its range (NaN and infinities included).
+void validateTearParameter(std::string_view name, double value);
+
+}  // namespace lacrima::common

@@ -1,0 +1,141 @@
+#pragma once
+// The editor's document model: the project, the current time, the key selection and the undo
+// history. Widgets read from it and edit through it; every edit is one QUndoCommand.
+//
+// Editing follows the animator's "auto key" habit: the sliders always show the animation at
+// the current time, and moving one writes that channel into the key at the current time,
+// creating the key when there is none (it then holds only that channel, so the other channels
+// keep interpolating through it). K keys every animated channel at its current value.
+//
+// Time is snapped to the project's frame grid (1 / fps), except that a key within half a frame
+// is snapped to exactly, so keys written at off-grid times (hand-edited files) stay editable.
+// Playback sets exact times.
+//
+// Selection is by key time (times identify keys: at most one key per time). Commands that
+// move keys carry the selection with them, so undo and redo also restore what was selected.
+#include <lacrima/common/ProjectDocument.h>
+#include <lacrima/editing/KeyChange.h>
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+#include <optional>
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace lacrima::editing {
+
+struct Preset;
+
+// A channel and the value to write.
+using ChannelValue = std::pair<int, float>;
+
+class EditorModel : public QObject {
+  Q_OBJECT
+public:
+  explicit EditorModel(QObject* parent = nullptr);
+  ~EditorModel() override;
+
+  const ProjectDocument& document() const { return document_; }
+  QUndoStack* undoStack() { return &undo_; }
+  bool isModified() const { return !undo_.isClean(); }
+
+  // New, open, import, recover: replaces the document, clears the history and the selection,
+  // goes to the first key. `clean`: the document is what is on disk.
+  void resetDocument(ProjectDocument document, bool clean);
+  void markSaved() { undo_.setClean(); }
+
+  // --- time -------------------------------------------------------------------------------
+  double currentTime() const { return time_; }
+  void setCurrentTime(double seconds);       // snapped, clamped to >= 0
+  void setCurrentTimeExact(double seconds);  // playback
+  double snapTime(double seconds) const;
+  double frameDuration() const { return 1.0 / document_.fps; }
+  int frameAt(double seconds) const;          // nearest frame number
+  double endTime() const { return document_.keys.endTime(); }
+
+  // --- values at the current time -----------------------------------------------------
+  const FapValues& currentValues() const { return values_; }
+  float currentValue(int fap) const { return values_[channelIndex(fap)]; }
+  int currentKeyIndex() const;                  // key at the current time, or -1
+  ChannelMask keyedAtCurrentTime() const;       // channels of that key
+  const ChannelMask& animatedChannels() const { return animated_; }  // union over all keys
+
+  // --- selection ----------------------------------------------------------------------
+  const std::vector<double>& selectedTimes() const { return selection_; }
+  void setSelectedTimes(std::vector<double> times);  // unknown times are dropped
+  bool isSelected(double keyTime) const;
+  void selectAll();
+  void clearSelection() { setSelectedTimes({}); }
+
+  // --- options ------------------------------------------------------------------------
+  bool symmetricEdit() const { return symmetric_; }
+  void setSymmetricEdit(bool on);
+  // The channel the user touched last: the timeline draws its curve.
+  int focusChannel() const { return focus_; }
+  void setFocusChannel(int fap);
+
+  // --- edits (each pushes one undo step; an edit that changes nothing pushes nothing) ---
+  // A slider drag starts a session; changes within it merge into one undo step.
+  int beginDragSession() { return ++dragSessions_; }
+  void setChannel(int fap, double value, int dragSession = 0);
+  void setChannels(std::vector<ChannelValue> values, const QString& text, int dragSession = 0);
+  void resetChannels(std::span<const int> faps, const QString& text);  // to 0 where it matters
+  void unkeyChannel(int fap);  // removes the channel from the key at the current time
+  void addKey();               // every animated channel, at the current time
+  void deleteKeys(std::vector<double> times);
+  void deleteSelectedKeys() { deleteKeys(selection_); }
+  // Moves keys by whole frames. A key landing on a key that does not move merges into it
+  // (the moving key's channels win).
+  void moveKeys(std::vector<double> times, int frames);
+  // Keys with times relative to the first; they land at `at` and after, merging as above.
+  void pasteKeys(const std::vector<Keyframe>& clip, double at);
+  void setInterpolation(std::vector<double> times, Interpolation mode);
+  // Applies a pose at the current time (a sequence from the current time on). `intensity`
+  // scales the values (FAP 1/2 codes are not scaled). `replacePose`: channels the preset does
+  // not set but that are non-zero now are keyed to 0, so the pose is the preset's alone.
+  void applyPreset(const Preset& preset, double intensity, bool replacePose);
+  // Mirrors left <-> right: the selected keys, else the key at the current time, else the
+  // current pose as a new key.
+  void mirror();
+  // Name, fps, default interpolation, tear sources and scene (the keys of `settings` are ignored).
+  void setSettings(const ProjectDocument& settings, const QString& text);
+
+  // --- for the commands only ----------------------------------------------------------
+  void applyKeyChange(const KeyChange& change, bool redo);
+  void applySettings(const ProjectDocument& settings);
+
+signals:
+  void documentReset();
+  void keysChanged();
+  void settingsChanged();
+  void timeChanged(double seconds);
+  void valuesChanged();  // currentValues() changed (time or keys)
+  void selectionChanged();
+  void symmetricEditChanged(bool on);
+  void focusChannelChanged(int fap);
+  // A user-visible note about an edit that could not be done ("nothing to mirror").
+  void message(const QString& text);
+
+private:
+  void refreshValues();
+  void pushKeyEdit(const KeyChange& change, const QString& text,
+                   std::optional<std::vector<double>> selectionAfter);
+  Keyframe keyOrNewAt(double seconds) const;
+  double shiftedTime(double seconds, int frames) const;
+  float sanitised(int fap, double value) const;
+
+  ProjectDocument document_;
+  QUndoStack undo_;
+  double time_ = 0.0;
+  FapValues values_{};
+  ChannelMask animated_;
+  std::vector<double> selection_;
+  bool symmetric_ = false;
+  int focus_ = 3;
+  int dragSessions_ = 0;
+};
+
+}  // namespace lacrima::editing

@@ -1,0 +1,116 @@
+#pragma once
+// The player's main window: the face viewport in the middle, a transport bar under it
+// (Play/Pause, Reset, the timeline, time), the effects and tear parameters at the side, the
+// frame counter, frame rate and tear figures in the status bar.
+//
+// Timing. A wall clock (RealTimeClock) gives the animation time; a precise timer asks for it
+// every few milliseconds and seeks the playback there: the tears advance one step per file
+// frame, the face is interpolated at the exact time, and the viewport renders only when the
+// frame's revision changed. So the picture is as smooth as the renderer is fast, whatever the
+// file's rate. If the tears cannot keep up (a very heavy scene), the clock is held back to
+// what was produced instead of piling up work: playback slows down, it never stalls.
+//
+// Files come in through one path, openFile(): the Open dialog, drag and drop, the command
+// line and the "Open demo" action all use it. A file that cannot be read gives a dialog naming
+// the file, line and what was expected; the animation that was playing stays.
+#include <lacrima/player/RealTimeClock.h>
+
+#include <lacrima/playback/HeadRig.h>
+#include <lacrima/playback/Playback.h>
+
+#include <QImage>
+#include <QMainWindow>
+
+#include <deque>
+#include <memory>
+
+class QAction;
+class QLabel;
+class QMenu;
+class QSlider;
+class QTimer;
+
+namespace lacrima::viewport {
+class FaceViewport;
+}
+
+namespace lacrima::player {
+
+class EffectsPanel;
+class TearParametersPanel;
+
+class PlayerWindow : public QMainWindow {
+  Q_OBJECT
+public:
+  explicit PlayerWindow(std::unique_ptr<playback::HeadRig> rig, QWidget* parent = nullptr);
+  ~PlayerWindow() override;
+
+  // Loads a FAP file or project and shows its first frame, paused. False (after an error
+  // dialog) when the file cannot be used; the previous animation stays.
+  bool openFile(const QString& path);
+  void play();
+  void pause();
+  void togglePlay();
+  void resetPlayback();    // neutral face, no tears, time 0
+  void seek(double seconds);
+
+  bool playing() const { return clock_.running(); }
+  double renderedFramesPerSecond() const { return fps_; }
+  playback::Playback& playback() { return *playback_; }
+  const playback::HeadRig& rig() const { return *rig_; }
+  viewport::FaceViewport& viewport() { return *viewport_; }
+  QSlider& timeline() { return *timeline_; }
+  EffectsPanel& effects() { return *effects_; }
+  TearParametersPanel& parameters() { return *parameters_; }
+  QAction* openAction() const { return open_; }
+  QAction* playAction() const { return play_; }
+  QAction* resetAction() const { return reset_; }
+
+  // Error dialogs are window-modal and do not block; tests and scripts may turn them off
+  // (the error still goes to stderr and the status bar).
+  void setErrorDialogsEnabled(bool on) { errorDialogs_ = on; }
+
+  // The window as it looks, the OGRE viewport included (a plain widget grab shows it black).
+  QImage screenshot();
+
+signals:
+  void fileOpened(const QString& path);
+  void openFailed(const QString& message);
+
+protected:
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
+
+private:
+  void buildActions();
+  void buildLayout();
+  void chooseFile();
+  void openDemo();
+  void tick();
+  void display(const playback::FrameView& view);
+  void applyScene();
+  void updateTransport();
+  void updatePlayIcon();
+  void countRender();
+  void timelineMoved(int milliseconds);
+  void reportError(const std::exception& error, const QString& path);
+
+  std::unique_ptr<playback::HeadRig> rig_;
+  std::unique_ptr<playback::Playback> playback_;
+  RealTimeClock clock_;
+  QTimer* ticker_;
+  viewport::FaceViewport* viewport_;
+  QSlider* timeline_;
+  QLabel *timeLabel_, *frameLabel_, *fpsLabel_, *tearsLabel_;
+  EffectsPanel* effects_;
+  TearParametersPanel* parameters_;
+  QMenu* viewMenu_;
+  QAction *open_, *openDemo_, *play_, *reset_, *resetView_, *quit_, *stepBack_, *stepForward_;
+  TearParameterValues fileParameters_;
+  std::deque<qint64> renderTimes_;  // ms stamps of the last second's renders
+  QElapsedTimer sinceStart_;
+  double fps_ = 0;
+  bool playAfterScrub_ = false, errorDialogs_ = true;
+};
+
+}  // namespace lacrima::player

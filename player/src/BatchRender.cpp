@@ -1,0 +1,56 @@
+#include <lacrima/player/BatchRender.h>
+
+#include <lacrima/player/ContactSheet.h>
+#include <lacrima/player/PngWriter.h>
+
+#include <lacrima/common/Diagnostics.h>
+#include <lacrima/playback/Playback.h>
+#include <lacrima/scene/FaceRenderer.h>
+
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFileInfo>
+
+#include <algorithm>
+
+namespace lacrima::player {
+
+BatchRenderResult renderAnimation(const playback::HeadRig& rig, const BatchRenderOptions& options) {
+  QElapsedTimer wall;
+  wall.start();
+  playback::Playback playback(rig);
+  playback.open(options.input.toStdString());
+  const QDir out(options.outputDir);
+  if (!QDir().mkpath(options.outputDir))
+    throw FileError({options.outputDir.toStdString(), 0, 0}, "cannot create the output folder");
+
+  scene::FaceRenderer renderer(rig.head, options.size);
+  const int frames = playback.frameCount();
+  const std::vector<int> picked = evenlySpacedFrames(frames, options.sheetFrames);
+  std::vector<SheetFrame> sheet;
+  PngWriter writer(2);
+  for (int f = 0; f < frames; ++f) {
+    const double t = f / playback.frameRate();
+    renderer.show(playback.seek(t));
+    const QImage image = renderer.render();
+    if (std::binary_search(picked.begin(), picked.end(), f))
+      sheet.push_back({image.scaledToWidth(400, Qt::SmoothTransformation), f, t});
+    writer.write(image, out.filePath(QStringLiteral("frame_%1.png").arg(f, 4, 10, QLatin1Char('0'))));
+    if (options.progress) options.progress(f + 1, frames);
+  }
+  writer.finish();
+  BatchRenderResult result;
+  result.frames = frames;
+  result.contactSheet = out.filePath("contact_sheet.png");
+  const QString title = QStringLiteral("%1  ·  %2 frames at %3 fps  ·  %4 x %5")
+                            .arg(QFileInfo(options.input).fileName())
+                            .arg(frames)
+                            .arg(playback.frameRate())
+                            .arg(options.size.width())
+                            .arg(options.size.height());
+  savePng(contactSheet(sheet, title), result.contactSheet);
+  result.seconds = static_cast<double>(wall.elapsed()) / 1000.0;
+  return result;
+}
+
+}  // namespace lacrima::player

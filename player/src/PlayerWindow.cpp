@@ -1,0 +1,415 @@
+#include <lacrima/player/PlayerWindow.h>
+
+#include <lacrima/player/EffectsPanel.h>
+#include <lacrima/player/ErrorReport.h>
+#include <lacrima/player/TearParametersPanel.h>
+
+#include <lacrima/playback/MediaFiles.h>
+#include <lacrima/viewport/FaceViewport.h>
+
+#include <QAction>
+#include <QApplication>
+#include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QPainter>
+#include <QScrollArea>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QStatusBar>
+#include <QStyle>
+#include <QTimer>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include <cmath>
+#include <cstdio>
+
+namespace lacrima::player {
+
+namespace {
+
+// Most file frames the tears may advance per tick before the clock is held back.
+constexpr int kMaxFramesPerTick = 4;
+// A checkpoint every 22 frames (a second at the usual rate): scrubbing back replays at most
+// 21 frames, about 0.1 s on the demo, for some hundred kilobytes per checkpoint.
+constexpr int kCheckpointInterval = 22;
+
+QString clockText(double seconds) {
+  const int tenths = static_cast<int>(std::lround(seconds * 100));
+  return QStringLiteral("%1:%2.%3")
+      .arg(tenths / 6000)
+      .arg(tenths / 100 % 60, 2, 10, QLatin1Char('0'))
+      .arg(tenths % 100, 2, 10, QLatin1Char('0'));
+}
+
+}  // namespace
+
+PlayerWindow::PlayerWindow(std::unique_ptr<playback::HeadRig> rig, QWidget* parent)
+    : QMainWindow(parent), rig_(std::move(rig)), playback_(std::make_unique<playback::Playback>(*rig_, kCheckpointInterval)) {
+  setWindowTitle(tr("Lacrima Player"));
+  setAcceptDrops(true);
+  sinceStart_.start();
+  ticker_ = new QTimer(this);
+  ticker_->setTimerType(Qt::PreciseTimer);
+  ticker_->setInterval(8);
+  connect(ticker_, &QTimer::timeout, this, &PlayerWindow::tick);
+  buildActions();
+  buildLayout();
+  viewport_->setHead(rig_->head);
+  display(playback_->view());
+  updateTransport();
+  statusBar()->showMessage(tr("Open a FAP file or a project (Ctrl+O), or drop one here"));
+}
+
+PlayerWindow::~PlayerWindow() = default;
+
+void PlayerWindow::buildActions() {
+  QStyle* s = style();
+  open_ = new QAction(s->standardIcon(QStyle::SP_DialogOpenButton), tr("&Open..."), this);
+  open_->setShortcut(QKeySequence::Open);
+  open_->setToolTip(tr("Open a FAP file or a Lacrima project (Ctrl+O)"));
+  connect(open_, &QAction::triggered, this, &PlayerWindow::chooseFile);
+  openDemo_ = new QAction(tr("Open the &demo"), this);
+  openDemo_->setShortcut(Qt::CTRL | Qt::Key_D);
+  connect(openDemo_, &QAction::triggered, this, &PlayerWindow::openDemo);
+  quit_ = new QAction(tr("&Quit"), this);
+  quit_->setShortcut(QKeySequence::Quit);
+  connect(quit_, &QAction::triggered, this, &QWidget::close);
+
+  play_ = new QAction(this);
+  play_->setShortcut(Qt::Key_Space);
+  connect(play_, &QAction::triggered, this, &PlayerWindow::togglePlay);
+  reset_ = new QAction(s->standardIcon(QStyle::SP_MediaSkipBackward), tr("&Reset"), this);
+  reset_->setShortcut(Qt::Key_Home);
+  reset_->setToolTip(tr("Neutral face, all tears gone, back to the start (Home)"));
+  connect(reset_, &QAction::triggered, this, &PlayerWindow::resetPlayback);
+  stepBack_ = new QAction(tr("Previous frame"), this);
+  stepBack_->setShortcut(Qt::Key_Left);
+  connect(stepBack_, &QAction::triggered, this, [this] {
+    pause();
+    seek((playback_->currentFrame() - 1) / playback_->frameRate());
+  });
+  stepForward_ = new QAction(tr("Next frame"), this);
+  stepForward_->setShortcut(Qt::Key_Right);
+  connect(stepForward_, &QAction::triggered, this, [this] {
+    pause();
+    seek((playback_->currentFrame() + 1) / playback_->frameRate());
+  });
+  resetView_ = new QAction(tr("Reset &view"), this);
+  resetView_->setShortcut(Qt::Key_V);
+  resetView_->setToolTip(tr("Frame the face again (V, or double-click the face)"));
+  connect(resetView_, &QAction::triggered, this, [this] { viewport_->resetView(); });
+  updatePlayIcon();
+
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  file->addAction(open_);
+  file->addAction(openDemo_);
+  file->addSeparator();
+  file->addAction(quit_);
+  QMenu* playMenu = menuBar()->addMenu(tr("&Playback"));
+  for (QAction* a : {play_, reset_, stepBack_, stepForward_}) playMenu->addAction(a);
+  viewMenu_ = menuBar()->addMenu(tr("&View"));
+  viewMenu_->addAction(resetView_);
+  // Application-wide, so the keys also work while the floating Scene panel has the focus;
+  // modal dialogs still block them, and text fields keep Space and the arrows for typing.
+  for (QAction* a : {play_, reset_, stepBack_, stepForward_, resetView_}) a->setShortcutContext(Qt::ApplicationShortcut);
+  addActions({play_, reset_, stepBack_, stepForward_, resetView_});
+}
+
+void PlayerWindow::buildLayout() {
+  viewport_ = new viewport::FaceViewport(this);
+  viewport_->setMinimumSize(320, 240);
+  viewport_->setAcceptDrops(false);  // drops go to the window
+  connect(viewport_, &viewport::FaceViewport::rendered, this, &PlayerWindow::countRender);
+
+  auto* transport = new QWidget(this);
+  auto* bar = new QHBoxLayout(transport);
+  bar->setContentsMargins(6, 2, 6, 2);
+  for (QAction* a : {open_, play_, reset_}) {
+    auto* button = new QToolButton(transport);
+    button->setDefaultAction(a);
+    button->setFocusPolicy(Qt::NoFocus);
+    button->setIconSize(QSize(22, 22));
+    button->setObjectName(a == play_ ? "playButton" : a == reset_ ? "resetButton" : "openButton");
+    bar->addWidget(button);
+  }
+  timeline_ = new QSlider(Qt::Horizontal, transport);
+  timeline_->setFocusPolicy(Qt::NoFocus);
+  timeline_->setToolTip(tr("Drag to scrub; going back replays the tears from the nearest checkpoint"));
+  bar->addWidget(timeline_, 1);
+  timeLabel_ = new QLabel(transport);
+  timeLabel_->setMinimumWidth(timeLabel_->fontMetrics().horizontalAdvance("00:00.00 / 00:00.00") + 8);
+  bar->addWidget(timeLabel_);
+  connect(timeline_, &QSlider::sliderPressed, this, [this] {
+    playAfterScrub_ = playing();
+    pause();
+  });
+  connect(timeline_, &QSlider::sliderReleased, this, [this] {
+    if (playAfterScrub_) play();
+  });
+  connect(timeline_, &QSlider::valueChanged, this, &PlayerWindow::timelineMoved);
+
+  auto* centre = new QWidget(this);
+  auto* column = new QVBoxLayout(centre);
+  column->setContentsMargins(0, 0, 0, 0);
+  column->setSpacing(0);
+  column->addWidget(viewport_, 1);
+  column->addWidget(transport);
+  setCentralWidget(centre);
+
+  effects_ = new EffectsPanel(this);
+  parameters_ = new TearParametersPanel(this);
+  auto* side = new QWidget(this);
+  auto* sideLayout = new QVBoxLayout(side);
+  auto* effectsBox = new QGroupBox(tr("Effects"), side);
+  (new QVBoxLayout(effectsBox))->addWidget(effects_);
+  auto* parametersBox = new QGroupBox(tr("Tear parameters"), side);
+  (new QVBoxLayout(parametersBox))->addWidget(parameters_);
+  parametersBox->setToolTip(tr("Changing a parameter restarts the tears"));
+  sideLayout->addWidget(effectsBox);
+  sideLayout->addWidget(parametersBox);
+  sideLayout->addStretch(1);
+  auto* scroll = new QScrollArea(this);
+  scroll->setWidget(side);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  auto* dock = new QDockWidget(tr("Scene"), this);
+  dock->setObjectName("sceneDock");
+  dock->setWidget(scroll);
+  dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+  addDockWidget(Qt::RightDockWidgetArea, dock);
+  viewMenu_->addAction(dock->toggleViewAction());
+  effects_->display(playback_->scene());
+  parameters_->display({}, {});
+  connect(effects_, &EffectsPanel::edited, this, &PlayerWindow::applyScene);
+  connect(parameters_, &TearParametersPanel::edited, this, &PlayerWindow::applyScene);
+
+  frameLabel_ = new QLabel(this);
+  fpsLabel_ = new QLabel(this);
+  tearsLabel_ = new QLabel(this);
+  fpsLabel_->setMinimumWidth(fpsLabel_->fontMetrics().horizontalAdvance("000 fps") + 8);
+  for (QLabel* label : {tearsLabel_, frameLabel_, fpsLabel_}) {
+    label->setContentsMargins(10, 0, 10, 0);
+    statusBar()->addPermanentWidget(label);
+  }
+  try {
+    playback::findMediaFile("demo/crying.fap");
+  } catch (const FileError&) {
+    openDemo_->setEnabled(false);
+  }
+}
+
+bool PlayerWindow::openFile(const QString& path) {
+  pause();
+  QApplication::setOverrideCursor(Qt::WaitCursor);
+  try {
+    playback_->open(path.toStdString());
+  } catch (const std::exception& e) {
+    QApplication::restoreOverrideCursor();
+    reportError(e, path);
+    return false;
+  }
+  QApplication::restoreOverrideCursor();
+  clock_.setTime(0);
+  fileParameters_ = playback_->scene().simulation;
+  effects_->display(playback_->scene());
+  parameters_->display(playback_->scene().simulation, fileParameters_);
+  {
+    const QSignalBlocker block(timeline_);
+    timeline_->setRange(0, static_cast<int>(std::lround(playback_->duration() * 1000)));
+    timeline_->setPageStep(std::max(1, timeline_->maximum() / 20));
+    timeline_->setSingleStep(static_cast<int>(std::lround(1000 / playback_->frameRate())));
+  }
+  const QFileInfo info(path);
+  setWindowTitle(tr("%1 - Lacrima Player").arg(info.fileName()));
+  QString summary = tr("%1: %2 frames at %3 fps, %4 s%5")
+                        .arg(info.fileName())
+                        .arg(playback_->frameCount())
+                        .arg(playback_->frameRate())
+                        .arg(playback_->duration(), 0, 'f', 2)
+                        .arg(playback_->hasTears() ? tr(", with tears") : tr(", no tears (nothing simulated)"));
+  if (!playback_->warnings().empty())
+    summary += tr("; %n warning(s), the first: %1", nullptr, static_cast<int>(playback_->warnings().size()))
+                   .arg(QString::fromStdString(playback_->warnings().front().toString()));
+  statusBar()->showMessage(summary);
+  for (const Diagnostic& d : playback_->warnings()) std::fprintf(stderr, "warning: %s\n", d.toString().c_str());
+  display(playback_->view());
+  updateTransport();
+  emit fileOpened(path);
+  return true;
+}
+
+void PlayerWindow::reportError(const std::exception& error, const QString& path) {
+  const ErrorReport report = describeError(error, path);
+  std::fprintf(stderr, "lacrima-player: %s\n", report.oneLine.toLocal8Bit().constData());
+  statusBar()->showMessage(tr("Could not open %1 (the previous animation is still loaded)").arg(QFileInfo(path).fileName()));
+  emit openFailed(report.oneLine);
+  if (!errorDialogs_) return;
+  auto* box = new QMessageBox(QMessageBox::Critical, tr("Cannot open %1").arg(QFileInfo(path).fileName()),
+                              report.html(), QMessageBox::Ok, this);
+  box->setObjectName("openErrorDialog");
+  box->setDetailedText(report.oneLine);
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  box->open();
+}
+
+void PlayerWindow::chooseFile() {
+  const QString dir = playback_->path().empty()
+                          ? QString()
+                          : QFileInfo(QString::fromStdString(playback_->path())).absolutePath();
+  const QString path = QFileDialog::getOpenFileName(
+      this, tr("Open an animation"), dir,
+      tr("Animations (*.fap *.json *.lacrima);;FAP files (*.fap);;Lacrima projects (*.json *.lacrima);;All files (*)"));
+  if (!path.isEmpty()) openFile(path);
+}
+
+void PlayerWindow::openDemo() {
+  try {
+    openFile(QString::fromStdString(playback::findMediaFile("demo/crying.fap")));
+  } catch (const std::exception& e) {
+    reportError(e, "demo/crying.fap");
+  }
+}
+
+void PlayerWindow::play() {
+  if (playback_->frameCount() == 0 || playing()) return;
+  // At the end, Play starts over (the tears replay from the first checkpoint).
+  if (playback_->currentTime() >= playback_->duration()) seek(0);
+  clock_.setTime(playback_->currentTime());
+  clock_.play();
+  ticker_->start();
+  updatePlayIcon();
+}
+
+void PlayerWindow::pause() {
+  clock_.pause();
+  ticker_->stop();
+  updatePlayIcon();
+  fpsLabel_->setText(tr("paused"));
+}
+
+void PlayerWindow::togglePlay() { playing() ? pause() : play(); }
+
+void PlayerWindow::resetPlayback() {
+  pause();
+  playback_->reset();
+  clock_.setTime(0);
+  display(playback_->view());
+  updateTransport();
+}
+
+void PlayerWindow::seek(double seconds) {
+  if (playback_->frameCount() == 0) return;
+  display(playback_->seek(seconds));
+  clock_.setTime(playback_->currentTime());
+  updateTransport();
+}
+
+void PlayerWindow::tick() {
+  double t = clock_.time();
+  const double end = playback_->duration();
+  const double reachable = (playback_->currentFrame() + kMaxFramesPerTick) / playback_->frameRate();
+  if (t > reachable) {
+    t = reachable;
+    clock_.setTime(t);
+  }
+  display(playback_->seek(std::min(t, end)));
+  if (t >= end) pause();
+  updateTransport();
+}
+
+void PlayerWindow::display(const playback::FrameView& view) { viewport_->showFrame(view); }
+
+void PlayerWindow::applyScene() {
+  SceneSettings scene = playback_->scene();
+  effects_->applyTo(scene);
+  scene.simulation = parameters_->values();
+  const bool restart = scene.simulation != playback_->scene().simulation;
+  if (restart) QApplication::setOverrideCursor(Qt::WaitCursor);
+  try {
+    playback_->setScene(scene);
+  } catch (const std::exception& e) {
+    statusBar()->showMessage(tr("Parameters refused: %1").arg(QString::fromUtf8(e.what())));
+  }
+  if (restart) {
+    QApplication::restoreOverrideCursor();
+    statusBar()->showMessage(tr("Tear parameters changed: the tears restarted"), 4000);
+  }
+  clock_.setTime(playback_->currentTime());
+  display(playback_->view());
+  updateTransport();
+}
+
+// Dragging (paused meanwhile), a click on the groove or a key: the clock follows, so playing
+// goes on from there.
+void PlayerWindow::timelineMoved(int milliseconds) { seek(milliseconds / 1000.0); }
+
+void PlayerWindow::updateTransport() {
+  const bool loaded = playback_->frameCount() > 0;
+  {
+    const QSignalBlocker block(timeline_);
+    timeline_->setEnabled(loaded);
+    timeline_->setValue(static_cast<int>(std::lround(playback_->currentTime() * 1000)));
+  }
+  play_->setEnabled(loaded);
+  timeLabel_->setText(clockText(playback_->currentTime()) + " / " + clockText(playback_->duration()));
+  frameLabel_->setText(loaded ? tr("frame %1 / %2").arg(playback_->currentFrame()).arg(playback_->frameCount() - 1)
+                              : tr("no animation"));
+  const playback::ProducerTimes& t = playback_->producer().lastTimes();
+  const int particles = playback_->producer().particleCount();
+  tearsLabel_->setText(particles > 0 ? tr("%1 tear particles (%2 ms)").arg(particles).arg(t.simulation + t.surface + t.trails, 0, 'f', 1)
+                                     : (playback_->hasTears() ? tr("no tears now") : QString()));
+}
+
+void PlayerWindow::updatePlayIcon() {
+  const bool on = playing();
+  play_->setIcon(style()->standardIcon(on ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+  play_->setText(on ? tr("&Pause") : tr("&Play"));
+  play_->setToolTip(on ? tr("Pause (Space)") : tr("Play (Space)"));
+}
+
+void PlayerWindow::countRender() {
+  const qint64 now = sinceStart_.elapsed();
+  renderTimes_.push_back(now);
+  while (!renderTimes_.empty() && renderTimes_.front() < now - 1000) renderTimes_.pop_front();
+  // Over the last second, or since the first render of a burst when that is shorter.
+  const double span = renderTimes_.size() > 1 ? static_cast<double>(renderTimes_.back() - renderTimes_.front()) : 0;
+  fps_ = span > 0 ? (static_cast<double>(renderTimes_.size()) - 1) * 1000.0 / span : 0;
+  fpsLabel_->setText(playing() ? tr("%1 fps").arg(fps_, 0, 'f', 0) : tr("paused"));
+}
+
+QImage PlayerWindow::screenshot() {
+  QImage face = viewport_->grabFrame();
+  QImage shot = grab().toImage().convertToFormat(QImage::Format_RGB32);
+  QPainter painter(&shot);
+  painter.drawImage(QRectF(viewport_->mapTo(this, QPoint(0, 0)), viewport_->size()), face,
+                    QRectF(QPointF(0, 0), QSizeF(face.size())));
+  painter.end();
+  return shot;
+}
+
+void PlayerWindow::dragEnterEvent(QDragEnterEvent* event) {
+  const QList<QUrl> urls = event->mimeData()->urls();
+  if (urls.size() == 1 && urls.front().isLocalFile()) event->acceptProposedAction();
+}
+
+void PlayerWindow::dropEvent(QDropEvent* event) {
+  const QList<QUrl> urls = event->mimeData()->urls();
+  if (urls.size() != 1 || !urls.front().isLocalFile()) return;
+  event->acceptProposedAction();
+  // Open after the drop returns, so the drag source is not kept waiting by a dialog.
+  const QString path = urls.front().toLocalFile();
+  QTimer::singleShot(0, this, [this, path] { openFile(path); });
+}
+
+}  // namespace lacrima::player

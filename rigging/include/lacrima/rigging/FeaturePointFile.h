@@ -1,0 +1,125 @@
+#pragma once
+// Feature-point files (*.fdp.json): where the MPEG-4 feature points sit on one particular head,
+// plus what the rig needs besides them (which sub-meshes are skin, eyes, jaw; eye centres; the
+// neck pivot; tear sources). Indices only, no geometry, so a file is tied to its mesh file.
+//
+// Format, version 1 (UTF-8 JSON; unknown keys are warned about, never silently ignored):
+//
+//   {
+//     "format": "lacrima-fdp",            required, exactly this
+//     "version": 1,                       required; files of a later version are refused
+//     "mesh": "free text",                optional: which head file this was placed on
+//     "submeshes": {                      roles of the head's sub-meshes (names as loaded)
+//       "skin": ["skin"],                 required, >= 1: the deforming surface; several
+//                                         sub-meshes are joined where their vertices coincide
+//       "eye_left": ["eye_l", "cornea_l"],   optional: turn rigidly with FAPs 23/25 (27, 29)
+//       "eye_right": ["eye_r", "cornea_r"],  optional: FAPs 24/26 (28, 30)
+//       "jaw": ["teeth_lower"],           optional: follow jaw point 2.1 rigidly (weight 1)
+//       "tongue": ["tongue"],             optional: follow 2.1 rigidly; 6.x get own weights
+//       "attached": ["eyelashes"]         optional: copy the weights of their nearest skin vertex
+//     },                                  other sub-meshes only follow the head rotation
+//     "defaults": { "geodesics": "dijkstra" },   optional: "dijkstra" or "heat"
+//     "points": {                         by FDP id "group.index"
+//       "2.1": { "submesh": "skin", "vertex": 812 },
+//       "2.2": { "submesh": "skin", "triangle": 97, "barycentric": [0.2, 0.3, 0.5] },
+//       "4.3": { "submesh": "skin", "vertex": 17, "radius": 0.25, "geodesics": "heat" }
+//     },
+//     "eyes": {                           optional; a missing centre is fitted (see below)
+//       "left": { "centre": [0.308, 7.284, 1.236] }, "right": { ... }
+//     },
+//     "neck_pivot": [0, 6.2, -0.1],       feature point 7.1, in model units (inside the neck)
+//     "tear_sources": {                   optional; surface points like "points" entries
+//       "left": { "submesh": "skin", "vertex": 120 }, "right": { ... }
+//     }
+//   }
+//
+// A point is "vertex i of sub-mesh S" (global index S.firstVertex + i) or a point inside
+// triangle t of S (local triangle index) with barycentric weights of its three corners, each in
+// [0, 1] and summing to 1 within 1e-4. "radius" (model units, > 0) overrides the influence
+// radius from InfluenceRadius.h; "geodesics" overrides the file's default method.
+//
+// Required points: the FAPU-defining ones (3.1-3.6, 9.15, 2.2, 8.3, 8.4); a missing one is an
+// error. The other points moved by FAPs 3-68 are optional: a missing one is a named warning
+// (its FAPs get no pose). Eye centres default to the least-squares sphere through the eye's
+// vertices; a missing neck pivot defaults to the centre of the skin's lowest open boundary
+// loop, with a warning. Tear sources default to the skin below 3.3 / 3.4 (see RigBuilder.h).
+//
+// Local indices of an imported mesh are those MeshImport.h produces (after assimp's
+// JoinIdenticalVertices), deterministic for a given file and assimp version.
+#include <lacrima/common/Diagnostics.h>
+#include <lacrima/common/HeadMesh.h>
+#include <lacrima/rigging/InfluenceWeights.h>
+
+#include <Eigen/Core>
+
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lacrima::rigging {
+
+inline constexpr int kFeaturePointFileVersion = 1;
+
+// Orders FDP ids numerically by group, then index: "2.9" < "2.10" < "3.1".
+struct FdpIdLess {
+  bool operator()(std::string_view a, std::string_view b) const;
+  using is_transparent = void;
+};
+
+struct SurfacePoint {
+  std::string submesh;
+  int vertex = -1;    // local vertex index, or -1 for a triangle point
+  int triangle = -1;  // local triangle index, or -1 for a vertex point
+  Eigen::Vector3d barycentric = Eigen::Vector3d::Zero();
+};
+
+struct FeaturePointSpec {
+  SurfacePoint at;
+  std::optional<double> radius;
+  std::optional<GeodesicMethod> geodesics;
+};
+
+struct EyeSpec {
+  std::vector<std::string> submeshes;
+  std::optional<Eigen::Vector3d> centre;
+};
+
+struct FeaturePointFile {
+  std::string path;  // as given, for messages
+  int version = kFeaturePointFileVersion;
+  std::string meshNote;
+  std::vector<std::string> skin, jaw, tongue, attached;
+  EyeSpec eyeLeft, eyeRight;
+  GeodesicMethod geodesics = GeodesicMethod::Dijkstra;
+  std::map<std::string, FeaturePointSpec, FdpIdLess> points;
+  std::optional<Eigen::Vector3d> neckPivot;
+  std::optional<SurfacePoint> tearLeft, tearRight;
+};
+
+// The FDP ids that define the FAPUs (required in every file).
+const std::vector<std::string>& fapuFeaturePoints();
+// The FDP ids moved by FAPs 3-68 (each FAP's FapInfo::featurePoint), ascending.
+const std::vector<std::string>& animatedFeaturePoints();
+
+// Parses the file. Throws FileError naming `path` (with line and column for JSON syntax
+// errors) and the JSON path of the bad value, e.g. points."2.1".vertex, with what was
+// expected. Unknown keys become warnings when `warnings` is given.
+FeaturePointFile readFeaturePointFile(const std::string& path, Warnings* warnings = nullptr);
+
+// Checks the file against `mesh`: every named sub-mesh exists, indices are in range,
+// barycentrics are valid, the required points exist and no sub-mesh has two roles. Throws
+// FileError listing every error, each naming the feature point (or role) and what was expected;
+// appends named warnings for missing optional points.
+void validateFeaturePoints(const FeaturePointFile& file, const HeadMesh& mesh, Warnings* warnings);
+
+// Global vertex indices a point is bound to: one vertex, or the triangle's three corners.
+// Precondition: the point was validated against `mesh`.
+std::vector<int> surfaceVertices(const SurfacePoint& point, const HeadMesh& mesh);
+// Its position on the neutral mesh.
+Eigen::Vector3d surfacePosition(const SurfacePoint& point, const HeadMesh& mesh);
+
+std::string_view toString(GeodesicMethod method);
+
+}  // namespace lacrima::rigging

@@ -1,0 +1,76 @@
+#pragma once
+// Rig assembly: a head plus its feature-point file -> the RigInput that bakePoses turns into
+// one pose per FAP, and everything the player needs to know about the rig (rig.json).
+//
+//  - FAPU: computeFapu from 3.1-3.6, 9.15, 2.2, 8.3, 8.4.
+//  - Skin points: influenceFalloff(geodesic distance / r) over the skin sub-meshes joined at
+//    coincident vertices; r = the point's "radius", else defaultInfluenceRadius (FAPU scale).
+//    Method: the point's "geodesics", else RigOptions::geodesics, else the file's default.
+//  - Jaw and tongue sub-meshes follow the jaw point 2.1 rigidly (weight 1 in its influence),
+//    so opening, thrusting and shifting the jaw carries the lower teeth and the tongue.
+//  - Tongue points 6.x get their own falloff over the tongue sub-meshes.
+//  - Points on an eye sub-mesh (the pupils 3.5, 3.6) move their whole eye (weight 1), so the
+//    eyeball thrusts 27/28 move the eyeball and nothing else.
+//  - Attached sub-meshes (eyelashes, eyebrows) take, for every skin point's influence, the
+//    weight of their vertex's nearest skin vertex (straight-line distance), so lashes ride on
+//    their lid and brows on the brow skin.
+//  - Eyes: RotationGroups of each eye's vertices about the given centre, else the least-squares
+//    sphere through them. Head: every vertex about the neck pivot (7.1).
+//  - Tear sources (unless the file gives them): the skin vertex nearest to the lower-lid
+//    mid-point 3.3 / 3.4 moved down by IRISD0 / 4, just under the lid margin where tears well up.
+#include <lacrima/common/Diagnostics.h>
+#include <lacrima/common/Fapu.h>
+#include <lacrima/common/HeadMesh.h>
+#include <lacrima/common/PoseBaking.h>
+#include <lacrima/common/PoseSet.h>
+#include <lacrima/rigging/FeaturePointFile.h>
+#include <lacrima/rigging/InfluenceWeights.h>
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lacrima::rigging {
+
+struct RigOptions {
+  // Replaces the file's default method (points with their own "geodesics" keep theirs).
+  std::optional<GeodesicMethod> geodesics;
+  // Called with the fraction done (0..1) and the current stage, e.g. for a progress bar.
+  std::function<void(double fraction, std::string_view stage)> progress;
+};
+
+struct TearSource {
+  int vertex = -1;  // global skin vertex
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+};
+
+struct BuiltRig {
+  FapuSet fapu;
+  std::map<std::string, Eigen::Vector3d, FdpIdLess> featurePoints;  // neutral positions
+  // Global vertices each point is bound to, with their barycentric weights (1 for a vertex).
+  std::map<std::string, std::vector<std::pair<int, double>>, FdpIdLess> bindings;
+  std::map<std::string, double, FdpIdLess> radii;                   // influence radius used
+  std::map<std::string, GeodesicMethod, FdpIdLess> methods;         // geodesic method used
+  std::optional<Eigen::Vector3d> eyeCentreLeft, eyeCentreRight;
+  std::optional<double> eyeRadiusLeft, eyeRadiusRight;              // when fitted
+  Eigen::Vector3d neckPivot = Eigen::Vector3d::Zero();
+  TearSource tearLeft, tearRight;
+  std::map<std::string, std::string> roles;  // sub-mesh name -> skin/eye_left/.../rigid
+  RigInput input;                            // input.mesh points at the mesh given to buildRig
+  PoseSet poses;
+  std::vector<std::string> warnings;         // rig and bake warnings, each naming its subject
+};
+
+// Builds and bakes the rig. `fdp` must have passed validateFeaturePoints for `mesh`; `mesh`
+// must outlive the result (input.mesh points at it). Throws FileError naming fdp.path when the
+// FAPU points give a non-positive distance (computeFapu's message) or an eye has no vertices
+// to fit a centre to.
+BuiltRig buildRig(const HeadMesh& mesh, const FeaturePointFile& fdp, const RigOptions& options = {});
+
+}  // namespace lacrima::rigging
