@@ -20,9 +20,10 @@ if(NOT TARGET Eigen3::Eigen)
   lacrima_missing("Eigen 3.4" "libeigen3-dev")
 endif()
 
-find_package(OGRE 1.12 QUIET COMPONENTS Bites RTShaderSystem)
-if(NOT OGRE_FOUND OR NOT TARGET OgreMain OR NOT TARGET OgreRTShaderSystem)
-  lacrima_missing("OGRE 1.12 (with RTShaderSystem and Bites)" "libogre-1.12-dev")
+# Only OgreMain: the scene uses GLSL programs of its own, not the RT Shader System or Bites.
+find_package(OGRE 1.12 QUIET)
+if(NOT OGRE_FOUND OR NOT TARGET OgreMain)
+  lacrima_missing("OGRE 1.12" "libogre-1.12-dev")
 endif()
 
 find_package(assimp QUIET)
