@@ -37,6 +37,13 @@ if(NOT ZLIB_FOUND)
   lacrima_missing("zlib's development files (linked by assimp's CMake package)" "zlib1g-dev")
 endif()
 
+# Debian builds tinygltf as a shared library with its JSON and image code inside, so neither
+# nlohmann-json3-dev nor libstb-dev is needed here.
+find_package(TinyGLTF 2.7 QUIET CONFIG)
+if(NOT TARGET TinyGLTF::TinyGLTF)
+  lacrima_missing("tinygltf 2.7 (the .glb writer)" "libtinygltf-dev")
+endif()
+
 find_package(PkgConfig QUIET)
 if(NOT PKG_CONFIG_FOUND)
   lacrima_missing("pkg-config (to find ODE)" "pkg-config")

@@ -1,25 +1,19 @@
-// Binary glTF writer, written by hand rather than with Debian's tinygltf (libtinygltf-dev 2.7).
-// The work of this exporter is laying out the binary buffer (per-primitive windows on shared
-// vertex arrays, dense morph deltas, shared zero targets, min/max, alignment), which tinygltf
-// leaves to the caller just the same. What it would take over is the 12-byte GLB header, two
-// chunk headers and the JSON text: about 40 lines here with lacrima::JsonWriter, which also
-// writes the fields in a fixed, readable order. In exchange tinygltf would add two packages
-// (Debian ships it as a shared library: libtinygltf-dev + libtinygltf2d), a model struct to
-// fill field by field, and a bool-plus-string error channel to translate into FileError.
-// It does build and write a .glb with -std=c++20 -Wall -Wextra and GCC 12 (checked), so
-// compatibility was not the deciding factor; less, clearer code and no new dependency were.
+// The .glb goes through Debian's tinygltf, which writes the JSON and the GLB container. The buffer
+// layout stays here (per-primitive windows on shared vertex arrays, dense morph deltas, shared
+// zero targets, min/max, alignment): tinygltf takes the buffer as given.
 #include <lacrima/exporters/GlbExport.h>
 
 #include "StagedFiles.h"
 
 #include <lacrima/common/AtomicSave.h>
 #include <lacrima/common/Diagnostics.h>
-#include <lacrima/common/JsonWriter.h>
 #include <lacrima/exporters/RigExport.h>
 
 #include <QBuffer>
 #include <QByteArray>
 #include <QImage>
+
+#include <tiny_gltf.h>
 
 #include <algorithm>
 #include <bit>
@@ -28,125 +22,13 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <sstream>
 
 namespace lacrima::exporters {
 namespace {
 
-constexpr std::uint32_t kGlbMagic = 0x46546C67;   // "glTF" read as a little-endian uint32
-constexpr std::uint32_t kGlbVersion = 2;
-constexpr std::uint32_t kChunkJson = 0x4E4F534A;  // "JSON"
-constexpr std::uint32_t kChunkBin = 0x004E4942;   // "BIN\0"
-constexpr int kUnsignedShort = 5123;
-constexpr int kUnsignedInt = 5125;
-constexpr int kFloat = 5126;
-constexpr int kArrayBuffer = 34962;
-constexpr int kElementArrayBuffer = 34963;
-constexpr int kTriangles = 4;
 // A cornea must read as wet glass, whatever shininess the loader guessed.
 constexpr float kCorneaRoughness = 0.05f;
-
-struct BufferView {
-  std::size_t offset = 0;
-  std::size_t length = 0;
-  int stride = 0;  // 0: not written (tightly packed, one accessor)
-  int target = 0;  // 0: not written (images)
-};
-
-struct Accessor {
-  int view = 0;
-  std::size_t offset = 0;
-  int componentType = kFloat;
-  std::size_t count = 0;
-  const char* type = "SCALAR";
-  std::vector<double> min, max;  // empty: not written
-};
-
-// The BIN chunk, and the buffer views and accessors that describe it.
-class BinaryLayout {
-public:
-  // Appends `length` bytes as a new buffer view. Views start on 4-byte boundaries, so every
-  // float or index inside is aligned to its size, as glTF requires.
-  int addView(const void* data, std::size_t length, int stride, int target) {
-    bytes_.resize((bytes_.size() + 3) & ~std::size_t{3}, '\0');
-    views_.push_back({bytes_.size(), length, stride, target});
-    bytes_.append(static_cast<const char*>(data), length);
-    return static_cast<int>(views_.size()) - 1;
-  }
-
-  // An accessor of `count` float vectors with `components` components, whose values are
-  // `values` (used only for min/max, which glTF requires for POSITION and we give for all).
-  int addFloats(int view, std::size_t offset, const float* values, std::size_t count, int components) {
-    static constexpr const char* kTypes[] = {"SCALAR", "VEC2", "VEC3", "VEC4"};
-    Accessor a{view, offset, kFloat, count, kTypes[components - 1], {}, {}};
-    a.min.assign(static_cast<std::size_t>(components), count ? INFINITY : 0.0);
-    a.max.assign(static_cast<std::size_t>(components), count ? -INFINITY : 0.0);
-    for (std::size_t i = 0; i < count; ++i) {
-      for (int c = 0; c < components; ++c) {
-        const double v = values[i * static_cast<std::size_t>(components) + static_cast<std::size_t>(c)];
-        a.min[static_cast<std::size_t>(c)] = std::min(a.min[static_cast<std::size_t>(c)], v);
-        a.max[static_cast<std::size_t>(c)] = std::max(a.max[static_cast<std::size_t>(c)], v);
-      }
-    }
-    accessors_.push_back(std::move(a));
-    return static_cast<int>(accessors_.size()) - 1;
-  }
-
-  int addIndices(int view, int componentType, std::size_t count) {
-    accessors_.push_back({view, 0, componentType, count, "SCALAR", {}, {}});
-    return static_cast<int>(accessors_.size()) - 1;
-  }
-
-  // The BIN chunk's content, padded to a multiple of 4 bytes.
-  std::string finish() {
-    bytes_.resize((bytes_.size() + 3) & ~std::size_t{3}, '\0');
-    return std::move(bytes_);
-  }
-  std::size_t size() const { return (bytes_.size() + 3) & ~std::size_t{3}; }
-
-  void writeJson(JsonWriter& json) const {
-    json.key("accessors");
-    json.beginArray();
-    for (const Accessor& a : accessors_) {
-      json.beginObject();
-      json.field("bufferView", a.view);
-      if (a.offset != 0) json.field("byteOffset", static_cast<long long>(a.offset));
-      json.field("componentType", a.componentType);
-      json.field("count", static_cast<long long>(a.count));
-      json.field("type", a.type);
-      if (!a.min.empty()) {
-        json.key("min");
-        json.numberRow(a.min);
-        json.key("max");
-        json.numberRow(a.max);
-      }
-      json.endObject();
-    }
-    json.endArray();
-    json.key("bufferViews");
-    json.beginArray();
-    for (const BufferView& v : views_) {
-      json.beginObject();
-      json.field("buffer", 0);
-      json.field("byteOffset", static_cast<long long>(v.offset));
-      json.field("byteLength", static_cast<long long>(v.length));
-      if (v.stride != 0) json.field("byteStride", v.stride);
-      if (v.target != 0) json.field("target", v.target);
-      json.endObject();
-    }
-    json.endArray();
-    json.key("buffers");
-    json.beginArray();
-    json.beginObject();
-    json.field("byteLength", static_cast<long long>(size()));
-    json.endObject();
-    json.endArray();
-  }
-
-private:
-  std::string bytes_;
-  std::vector<BufferView> views_;
-  std::vector<Accessor> accessors_;
-};
 
 // PNG bytes of the image at `path`: PNG files as they are, anything Qt reads converted.
 std::string pngBytes(const std::string& path) {
@@ -189,47 +71,63 @@ public:
     }
   }
 
-  std::string build() {
+  tinygltf::Model build() {
+    model_.asset.version = "2.0";
+    model_.asset.generator = "Lacrima";
+    model_.buffers.emplace_back();
+    model_.meshes.emplace_back().name = "head";
+    tinygltf::Node& node = model_.nodes.emplace_back();
+    node.name = "head";
+    node.mesh = 0;
+    model_.scenes.emplace_back().nodes = {0};
+    model_.defaultScene = 0;
     addTextures();
     addGeometry();
     addTargets();
-    JsonWriter json(JsonWriter::Layout::Compact);
-    json.beginObject();
-    json.key("asset");
-    json.beginObject();
-    json.field("version", "2.0");
-    json.field("generator", "Lacrima");
-    json.endObject();
-    json.field("scene", 0);
-    json.key("scenes");
-    json.beginArray();
-    json.beginObject();
-    json.key("nodes");
-    json.beginArray();
-    json.integer(0);
-    json.endArray();
-    json.endObject();
-    json.endArray();
-    json.key("nodes");
-    json.beginArray();
-    json.beginObject();
-    json.field("name", "head");
-    json.field("mesh", 0);
-    json.endObject();
-    json.endArray();
-    writeMesh(json);
-    writeMaterials(json);
-    writeTextures(json);
-    layout_.writeJson(json);
-    json.endObject();
-    return container(std::move(json).finish(), layout_.finish());
+    addMaterials();
+    return std::move(model_);
   }
 
 private:
-  struct PrimitiveAccessors {
-    int position = -1, normal = -1, uv = -1, indices = -1;
-    std::vector<int> targets;  // one per exported pose
-  };
+  std::vector<unsigned char>& bytes() { return model_.buffers[0].data; }
+
+  // Appends `length` bytes as a new buffer view. Views start on 4-byte boundaries, so every
+  // float or index inside is aligned to its size, as glTF requires. The bytes are copied as they
+  // are in memory, and glTF's are little-endian.
+  int addView(const void* data, std::size_t length, int stride, int target) {
+    static_assert(std::endian::native == std::endian::little, "glTF buffers are little-endian");
+    bytes().resize((bytes().size() + 3) & ~std::size_t{3}, 0);
+    tinygltf::BufferView& view = model_.bufferViews.emplace_back();
+    view.buffer = 0;
+    view.byteOffset = bytes().size();
+    view.byteLength = length;
+    view.byteStride = static_cast<std::size_t>(stride);
+    view.target = target;
+    const auto* begin = static_cast<const unsigned char*>(data);
+    bytes().insert(bytes().end(), begin, begin + length);
+    return static_cast<int>(model_.bufferViews.size()) - 1;
+  }
+
+  // An accessor of `count` float vectors with `components` components, whose values are
+  // `values` (used only for min/max, which glTF requires for POSITION and we give for all).
+  int addFloats(int view, std::size_t offset, const float* values, std::size_t count, int components) {
+    tinygltf::Accessor& a = model_.accessors.emplace_back();
+    a.bufferView = view;
+    a.byteOffset = offset;
+    a.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
+    a.count = count;
+    a.type = components == 2 ? TINYGLTF_TYPE_VEC2 : TINYGLTF_TYPE_VEC3;
+    a.minValues.assign(static_cast<std::size_t>(components), count ? INFINITY : 0.0);
+    a.maxValues.assign(static_cast<std::size_t>(components), count ? -INFINITY : 0.0);
+    for (std::size_t i = 0; i < count; ++i) {
+      for (std::size_t c = 0; c < static_cast<std::size_t>(components); ++c) {
+        const double v = values[i * static_cast<std::size_t>(components) + c];
+        a.minValues[c] = std::min(a.minValues[c], v);
+        a.maxValues[c] = std::max(a.maxValues[c], v);
+      }
+    }
+    return static_cast<int>(model_.accessors.size()) - 1;
+  }
 
   void addTextures() {
     // Without uvs a texture cannot be placed, and glTF validators reject baseColorTexture
@@ -239,10 +137,14 @@ private:
     for (const HeadMaterial& m : head_.materials) {
       int image = -1;
       if (!m.diffuseTexture.empty()) {
-        auto [it, isNew] = imageOfPath.try_emplace(m.diffuseTexture, static_cast<int>(imageViews_.size()));
+        auto [it, isNew] = imageOfPath.try_emplace(m.diffuseTexture, static_cast<int>(model_.images.size()));
         if (isNew) {
           const std::string png = pngBytes(m.diffuseTexture);
-          imageViews_.push_back(layout_.addView(png.data(), png.size(), 0, 0));
+          // Texture i shows image i; no sampler means repeat wrapping and automatic filtering.
+          tinygltf::Image& embedded = model_.images.emplace_back();
+          embedded.bufferView = addView(png.data(), png.size(), 0, 0);
+          embedded.mimeType = "image/png";
+          model_.textures.emplace_back().source = it->second;
         }
         image = it->second;
       }
@@ -254,17 +156,19 @@ private:
     const auto n = static_cast<std::size_t>(head_.vertexCount());
     // One view per attribute over all vertices; each primitive's accessor is a window on it.
     // Several accessors share a view, so glTF requires byteStride.
-    const int positions = layout_.addView(head_.positions.data(), n * 12, 12, kArrayBuffer);
-    const int normals = layout_.addView(normals_.data(), n * 12, 12, kArrayBuffer);
+    const int positions = addView(head_.positions.data(), n * 12, 12, TINYGLTF_TARGET_ARRAY_BUFFER);
+    const int normals = addView(normals_.data(), n * 12, 12, TINYGLTF_TARGET_ARRAY_BUFFER);
     const bool hasUvs = head_.uvs.cols() != 0;
-    const int uvs = hasUvs ? layout_.addView(head_.uvs.data(), n * 8, 8, kArrayBuffer) : -1;
+    const int uvs = hasUvs ? addView(head_.uvs.data(), n * 8, 8, TINYGLTF_TARGET_ARRAY_BUFFER) : -1;
     for (const Part& part : parts_) {
-      PrimitiveAccessors a;
-      a.position = layout_.addFloats(positions, part.first * 12, head_.positions.data() + 3 * part.first, part.count, 3);
-      a.normal = layout_.addFloats(normals, part.first * 12, normals_.data() + 3 * part.first, part.count, 3);
-      if (hasUvs) a.uv = layout_.addFloats(uvs, part.first * 8, head_.uvs.data() + 2 * part.first, part.count, 2);
-      a.indices = addIndices(part);
-      primitives_.push_back(std::move(a));
+      tinygltf::Primitive& p = model_.meshes[0].primitives.emplace_back();
+      p.attributes["POSITION"] = addFloats(positions, part.first * 12, head_.positions.data() + 3 * part.first, part.count, 3);
+      p.attributes["NORMAL"] = addFloats(normals, part.first * 12, normals_.data() + 3 * part.first, part.count, 3);
+      if (hasUvs)
+        p.attributes["TEXCOORD_0"] = addFloats(uvs, part.first * 8, head_.uvs.data() + 2 * part.first, part.count, 2);
+      p.indices = addIndices(part);
+      p.material = part.submesh->material;
+      p.mode = TINYGLTF_MODE_TRIANGLES;
     }
   }
 
@@ -275,14 +179,18 @@ private:
     std::vector<std::uint32_t> indices;
     for (const Eigen::Vector3i& t : part.submesh->triangles)
       for (int k = 0; k < 3; ++k) indices.push_back(static_cast<std::uint32_t>(t[k]) - static_cast<std::uint32_t>(part.first));
-    int view;
+    tinygltf::Accessor a;
     if (wide) {
-      view = layout_.addView(indices.data(), indices.size() * 4, 0, kElementArrayBuffer);
+      a.bufferView = addView(indices.data(), indices.size() * 4, 0, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
     } else {
       const std::vector<std::uint16_t> narrow(indices.begin(), indices.end());
-      view = layout_.addView(narrow.data(), narrow.size() * 2, 0, kElementArrayBuffer);
+      a.bufferView = addView(narrow.data(), narrow.size() * 2, 0, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
     }
-    return layout_.addIndices(view, wide ? kUnsignedInt : kUnsignedShort, indices.size());
+    a.componentType = wide ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+    a.count = indices.size();
+    a.type = TINYGLTF_TYPE_SCALAR;
+    model_.accessors.push_back(std::move(a));
+    return static_cast<int>(model_.accessors.size()) - 1;
   }
 
   void addTargets() {
@@ -315,152 +223,50 @@ private:
     }
     const std::size_t zeroOffset = deltas.size();
     deltas.resize(zeroOffset + 3 * zeroVertices, 0.0f);
-    const int view = layout_.addView(deltas.data(), deltas.size() * sizeof(float), 12, kArrayBuffer);
+    const int view = addView(deltas.data(), deltas.size() * sizeof(float), 12, TINYGLTF_TARGET_ARRAY_BUFFER);
     std::vector<int> zeroAccessor(parts_.size(), -1);
+    tinygltf::Mesh& mesh = model_.meshes[0];
     for (std::size_t p = 0; p < poses_.size(); ++p) {
       for (std::size_t i = 0; i < parts_.size(); ++i) {
         const std::size_t count = parts_[i].count;
-        int& target = primitives_[i].targets.emplace_back();
+        int& target = mesh.primitives[i].targets.emplace_back()["POSITION"];
         if (const std::optional<std::size_t>& offset = placed[p][i]) {
-          target = layout_.addFloats(view, *offset * sizeof(float), deltas.data() + *offset, count, 3);
+          target = addFloats(view, *offset * sizeof(float), deltas.data() + *offset, count, 3);
         } else {
           if (zeroAccessor[i] < 0)
-            zeroAccessor[i] = layout_.addFloats(view, zeroOffset * sizeof(float), deltas.data() + zeroOffset, count, 3);
+            zeroAccessor[i] = addFloats(view, zeroOffset * sizeof(float), deltas.data() + zeroOffset, count, 3);
           target = zeroAccessor[i];
         }
       }
     }
+    mesh.weights.assign(poses_.size(), 0.0);
+    tinygltf::Value::Array names;
+    for (const ExportedPose& pose : poses_) names.emplace_back(pose.name);
+    mesh.extras = tinygltf::Value(tinygltf::Value::Object{{"targetNames", tinygltf::Value(std::move(names))}});
   }
 
-  void writeMesh(JsonWriter& json) const {
-    json.key("meshes");
-    json.beginArray();
-    json.beginObject();
-    json.field("name", "head");
-    json.key("primitives");
-    json.beginArray();
-    for (std::size_t i = 0; i < parts_.size(); ++i) {
-      const PrimitiveAccessors& a = primitives_[i];
-      json.beginObject();
-      json.key("attributes");
-      json.beginObject();
-      json.field("POSITION", a.position);
-      json.field("NORMAL", a.normal);
-      if (a.uv >= 0) json.field("TEXCOORD_0", a.uv);
-      json.endObject();
-      json.field("indices", a.indices);
-      if (parts_[i].submesh->material >= 0) json.field("material", parts_[i].submesh->material);
-      json.field("mode", kTriangles);
-      if (!a.targets.empty()) {
-        json.key("targets");
-        json.beginArray();
-        for (int t : a.targets) {
-          json.beginObject();
-          json.field("POSITION", t);
-          json.endObject();
-        }
-        json.endArray();
-      }
-      json.endObject();
-    }
-    json.endArray();
-    if (!poses_.empty()) {
-      json.key("weights");
-      json.beginArray();
-      for (std::size_t p = 0; p < poses_.size(); ++p) json.number(0.0);
-      json.endArray();
-      json.key("extras");
-      json.beginObject();
-      json.key("targetNames");
-      json.beginArray();
-      for (const ExportedPose& pose : poses_) json.string(pose.name);
-      json.endArray();
-      json.endObject();
-    }
-    json.endObject();
-    json.endArray();
-  }
-
-  void writeMaterials(JsonWriter& json) const {
-    if (head_.materials.empty()) return;
-    json.key("materials");
-    json.beginArray();
+  void addMaterials() {
     for (std::size_t i = 0; i < head_.materials.size(); ++i) {
       const HeadMaterial& m = head_.materials[i];
       const bool cornea = isCorneaMaterial(head_, static_cast<int>(i));
-      json.beginObject();
-      json.field("name", m.name);
-      json.key("pbrMetallicRoughness");
-      json.beginObject();
-      json.key("baseColorFactor");
-      const double colour[] = {m.diffuse.x(), m.diffuse.y(), m.diffuse.z(), m.diffuse.w()};
-      json.numberRow(colour);
-      if (i < textureOfMaterial_.size() && textureOfMaterial_[i] >= 0) {
-        json.key("baseColorTexture");
-        json.beginObject();
-        json.field("index", textureOfMaterial_[i]);
-        json.endObject();
-      }
-      json.field("metallicFactor", 0.0);
+      tinygltf::Material& material = model_.materials.emplace_back();
+      material.name = m.name;
+      tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
+      pbr.baseColorFactor = {m.diffuse.x(), m.diffuse.y(), m.diffuse.z(), m.diffuse.w()};
+      if (i < textureOfMaterial_.size()) pbr.baseColorTexture.index = textureOfMaterial_[i];
+      pbr.metallicFactor = 0.0;
       const double roughness = roughnessOf(m.shininess);
-      json.field("roughnessFactor", cornea ? std::min(roughness, double{kCorneaRoughness}) : roughness);
-      json.endObject();
+      pbr.roughnessFactor = cornea ? std::min(roughness, double{kCorneaRoughness}) : roughness;
       // OPAQUE would ignore alpha altogether: lashes would show their card outlines.
-      if (m.transparent || cornea || m.diffuse.w() < 1.0f) json.field("alphaMode", "BLEND");
-      json.endObject();
+      if (m.transparent || cornea || m.diffuse.w() < 1.0f) material.alphaMode = "BLEND";
     }
-    json.endArray();
-  }
-
-  void writeTextures(JsonWriter& json) const {
-    if (imageViews_.empty()) return;
-    // Texture i shows image i; no sampler means repeat wrapping and automatic filtering.
-    json.key("textures");
-    json.beginArray();
-    for (std::size_t i = 0; i < imageViews_.size(); ++i) {
-      json.beginObject();
-      json.field("source", static_cast<int>(i));
-      json.endObject();
-    }
-    json.endArray();
-    json.key("images");
-    json.beginArray();
-    for (int view : imageViews_) {
-      json.beginObject();
-      json.field("bufferView", view);
-      json.field("mimeType", "image/png");
-      json.endObject();
-    }
-    json.endArray();
-  }
-
-  // GLB: 12-byte header (magic, version, total length), then the JSON chunk padded with
-  // spaces and the BIN chunk padded with zeros, each to a multiple of 4 bytes and preceded by
-  // its length and type. All numbers are little-endian uint32, as on the machines we build for.
-  static std::string container(std::string json, const std::string& bin) {
-    static_assert(std::endian::native == std::endian::little, "GLB numbers are little-endian");
-    json.resize((json.size() + 3) & ~std::size_t{3}, ' ');
-    std::string glb;
-    auto put = [&glb](std::uint32_t value) { glb.append(reinterpret_cast<const char*>(&value), 4); };
-    put(kGlbMagic);
-    put(kGlbVersion);
-    put(static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + bin.size()));
-    put(static_cast<std::uint32_t>(json.size()));
-    put(kChunkJson);
-    glb += json;
-    put(static_cast<std::uint32_t>(bin.size()));
-    put(kChunkBin);
-    glb += bin;
-    return glb;
   }
 
   const HeadMesh& head_;
   const std::vector<ExportedPose>& poses_;
   Eigen::Matrix3Xf normals_;  // head_.normals made unit length
   std::vector<Part> parts_;
-  BinaryLayout layout_;
-  std::vector<PrimitiveAccessors> primitives_;
-  std::vector<int> imageViews_;         // buffer view of each image
+  tinygltf::Model model_;
   std::vector<int> textureOfMaterial_;  // texture (= image) index per material, -1 for none
 };
 
@@ -468,11 +274,18 @@ private:
 
 void exportGlb(const HeadMesh& head, const PoseSet& poses, const std::string& path) {
   const std::vector<ExportedPose> exported = prepareRigExport(head, poses, path);
-  const std::string glb = GlbBuilder(head, exported).build();
-  // The header's length field is 32 bits.
-  if (glb.size() > std::numeric_limits<std::uint32_t>::max())
-    throw FileError({path, 0, 0}, "cannot export: " + std::to_string(glb.size()) + " bytes exceed GLB's 4 GiB limit");
-  saveAtomically(path, glb);
+  const tinygltf::Model model = GlbBuilder(head, exported).build();
+  // GLB's lengths are 32 bits, and tinygltf 2.7 writes accessor offsets as int without checking
+  // either: past 2 GiB it would write a broken file instead of failing.
+  const std::size_t binBytes = model.buffers[0].data.size();
+  if (binBytes > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+    throw FileError({path, 0, 0}, "cannot export: " + std::to_string(binBytes) + " bytes exceed the 2 GiB tinygltf can write");
+  // tinygltf's file writer neither checks its writes nor uses a temporary, so it writes to
+  // memory and saveAtomically writes the file, as for every other file.
+  std::ostringstream glb;
+  if (!tinygltf::TinyGLTF().WriteGltfSceneToStream(&model, glb, false, true))
+    throw FileError({path, 0, 0}, "cannot export: tinygltf could not write the model");
+  saveAtomically(path, std::move(glb).str());
 }
 
 }  // namespace lacrima::exporters
