@@ -1,4 +1,5 @@
-#include <lacrima/tears/Kernels.h>
+#include "Kernels.h"
+
 #include <lacrima/tears/Parameters.h>
 #include <lacrima/common/JsonSyntaxError.h>
 
