@@ -12,33 +12,33 @@ namespace {
 // so the stress cases (sticky, stiff, inviscid, huge or tiny kernels) stay expressible.
 // Lower bounds of the lengths and of iso stay above 0 because they divide or size a grid.
 constexpr std::array kTable{
-    TearParameterInfo{"pressure", 0.004, 0.0, 10.0,
+    TearParameterInfo{"pressure", &TearParameterSet::pressure, 0.004, 0.0, 10.0,
                       "Stiffness of the SPH equation of state: how hard the fluid pushes back "
                       "when compressed."},
-    TearParameterInfo{"viscosity", 0.9, 0.0, 100.0,
+    TearParameterInfo{"viscosity", &TearParameterSet::viscosity, 0.9, 0.0, 100.0,
                       "How strongly neighbouring particles damp their relative velocity "
                       "(0 = inviscid)."},
-    TearParameterInfo{"tension", 0.2, 0.0, 100.0,
+    TearParameterInfo{"tension", &TearParameterSet::tension, 0.2, 0.0, 100.0,
                       "Surface tension: pull along the colour-field normal that keeps drops "
                       "round and trails thin."},
-    TearParameterInfo{"adhesion", 20.0, 0.0, 10000.0,
+    TearParameterInfo{"adhesion", &TearParameterSet::adhesion, 20.0, 0.0, 10000.0,
                       "Attraction of particles to the skin, which lets tears cling to the "
                       "cheek instead of dropping."},
-    TearParameterInfo{"friction", 3.8, 0.0, 1000.0,
+    TearParameterInfo{"friction", &TearParameterSet::friction, 3.8, 0.0, 1000.0,
                       "Tangential drag of the skin on particles touching it; slows tears "
                       "rolling down the face."},
-    TearParameterInfo{"gravity", 9.81, 0.0, 100.0,
+    TearParameterInfo{"gravity", &TearParameterSet::gravity, 9.81, 0.0, 100.0,
                       "Downward acceleration of every particle; 9.81 is Earth's in the "
                       "2009 units."},
-    TearParameterInfo{"kernel", 0.5, 0.01, 50.0,
+    TearParameterInfo{"kernel", &TearParameterSet::kernel, 0.5, 0.01, 50.0,
                       "SPH smoothing length h: the radius within which particles interact."},
-    TearParameterInfo{"node_size", 0.5, 0.005, 50.0,
+    TearParameterInfo{"node_size", &TearParameterSet::nodeSize, 0.5, 0.005, 50.0,
                       "Edge of an octree leaf used for neighbour search; matches the kernel "
                       "by default."},
-    TearParameterInfo{"cube_size", 0.25, 0.005, 50.0,
+    TearParameterInfo{"cube_size", &TearParameterSet::cubeSize, 0.25, 0.005, 50.0,
                       "Edge of a marching-cubes cell of the tear surface; half a node by "
                       "default."},
-    TearParameterInfo{"iso", 0.5, 1e-6, 100.0,
+    TearParameterInfo{"iso", &TearParameterSet::iso, 0.5, 1e-6, 100.0,
                       "Colour-field level at which the tear surface is extracted; must be "
                       "positive."},
 };

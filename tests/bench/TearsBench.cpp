@@ -4,6 +4,7 @@
 // (22 fps), neighbour search >= 1 M particles per second. The frame time is the whole pipeline,
 // since the player pays for all three stages every frame.
 #include "BenchSupport.h"
+#include "Octree.h"  // internal to lacrima_tears: the 2009 octree, measured against the grid
 #include "TearsPipeline.h"
 
 #include <lacrima/common/JsonWriter.h>
@@ -36,7 +37,7 @@ struct Options {
   double skin = SimulationOptions{}.neighbourSkin;
   NeighbourMethod neighbours = NeighbourMethod::Grid;
   SurfaceTensionModel tension = SurfaceTensionModel::Mueller;
-  PressureSolver solver = SimulationOptions{}.pressureSolver;
+  PressureMethod solver = SimulationOptions{}.pressureSolver;
   double maxStepMs = 0;
   double substepFactor = 1;  // scales the CFL and acceleration safety factors
   TearSettings settings;
@@ -130,7 +131,7 @@ int parse(int argc, char** argv, Options& o) {
         std::fprintf(stderr, "lacrima-bench tears: --solver takes wcsph or dfsph\n");
         return 2;
       }
-      o.solver = v == "wcsph" ? PressureSolver::Wcsph : PressureSolver::Dfsph;
+      o.solver = v == "wcsph" ? PressureMethod::Wcsph : PressureMethod::Dfsph;
     } else if (arg == "--max-step" && hasValue) {
       o.maxStepMs = std::atof(argv[++i]);
       if (!(o.maxStepMs >= 0 && o.maxStepMs <= 1000)) {
@@ -280,7 +281,7 @@ int runTears(int argc, char** argv) {
     json.field("fps", o.fps);
     json.field("neighbours", o.neighbours == NeighbourMethod::Grid ? "grid" : "octree");
     json.field("tension_model", o.tension == SurfaceTensionModel::Mueller ? "mueller" : "akinci");
-    json.field("solver", o.solver == PressureSolver::Wcsph ? "wcsph" : "dfsph");
+    json.field("solver", o.solver == PressureMethod::Wcsph ? "wcsph" : "dfsph");
     json.field("max_substep_ms", o.maxStepMs);
     json.field("substep_factor", o.substepFactor);
     json.field("scene", o.head ? "default_head" : "cheek_sheet");
@@ -345,7 +346,7 @@ int runTears(int argc, char** argv) {
   }
 
   std::printf("tears on the %s: %d particles requested, %d alive, %d frames at %g fps, %s, %s neighbours, %s tension%s\n",
-              scene->name.c_str(), o.particles, p.size(), o.frames, o.fps, o.solver == PressureSolver::Wcsph ? "WCSPH" : "DFSPH",
+              scene->name.c_str(), o.particles, p.size(), o.frames, o.fps, o.solver == PressureMethod::Wcsph ? "WCSPH" : "DFSPH",
               o.neighbours == NeighbourMethod::Grid ? "grid" : "octree",
               o.tension == SurfaceTensionModel::Mueller ? "Mueller" : "Akinci", o.sway ? ", swaying" : "");
   std::printf("  frame time     median %8.3f ms  (mean %.3f, max %.3f; simulation alone %.3f)", median, mean,
@@ -362,7 +363,7 @@ int runTears(int argc, char** argv) {
               c.cflLimited, c.accelerationLimited, c.viscosityLimited,
               c.substeps - c.cflLimited - c.accelerationLimited - c.viscosityLimited, c.neighbourSearches,
               c.neighbourSearches / n);
-  if (o.solver == PressureSolver::Dfsph)
+  if (o.solver == PressureMethod::Dfsph)
     std::printf("  DFSPH: %.2f divergence and %.2f density sweeps per sub-step, %lld solves capped\n",
                 c.substeps ? static_cast<double>(c.divergenceIterations) / c.substeps : 0.0,
                 c.substeps ? static_cast<double>(c.densityIterations) / c.substeps : 0.0, c.solverCapped);

@@ -104,7 +104,7 @@ struct Variant {
   std::string series, label;
   double lambdaScale = 1, kernelScale = 1, cubeScale = 1;
   NeighbourMethod neighbours = NeighbourMethod::Grid;
-  PressureSolver solver = PressureSolver::Wcsph;
+  PressureMethod solver = PressureMethod::Wcsph;
 };
 
 // What a run leaves behind for the comparison.
@@ -288,7 +288,7 @@ int runTearsSweep(int argc, char** argv) {
 
   // The reference: the smallest sub-step and cube of the sweep, default kernel, grid.
   const double kFineLambda = 0.25, kFineCube = 0.25;
-  const Variant reference{"reference", "fine", kFineLambda, 1, kFineCube, NeighbourMethod::Grid, PressureSolver::Wcsph};
+  const Variant reference{"reference", "fine", kFineLambda, 1, kFineCube, NeighbourMethod::Grid, PressureMethod::Wcsph};
   std::printf("tears-sweep: %d particles, %d frames at %g fps on the %s; reference: sub-step x%g, cube x%g ...\n",
               o.particles, o.frames, o.fps, scene.name.c_str(), kFineLambda, kFineCube);
   std::fflush(stdout);
@@ -306,7 +306,7 @@ int runTearsSweep(int argc, char** argv) {
   }
   for (double s : {0.5, 1.0, 1.5, 2.0}) {
     const Variant v{"DFSPH, sub-step factor", "x" + std::to_string(s).substr(0, 4), s, 1, 1, NeighbourMethod::Grid,
-                    PressureSolver::Dfsph};
+                    PressureMethod::Dfsph};
     rows.push_back(compare(v, run(scene, v, o), ref, radius, cell));
   }
   for (double s : {0.5, 0.75, 1.0, 1.5}) {
@@ -340,7 +340,7 @@ int runTearsSweep(int argc, char** argv) {
     for (const Row& r : rows) {
       const Variant& v = r.variant;
       csv << (o.head ? "default_head" : "cheek_sheet") << ',' << v.series << ',' << v.label << ','
-          << (v.solver == PressureSolver::Wcsph ? "wcsph" : "dfsph") << ',' << v.lambdaScale << ',' << v.kernelScale
+          << (v.solver == PressureMethod::Wcsph ? "wcsph" : "dfsph") << ',' << v.lambdaScale << ',' << v.kernelScale
           << ',' << v.cubeScale << ',' << (v.neighbours == NeighbourMethod::Grid ? "grid" : "octree") << ','
           << r.msPerFrame << ',' << r.substepsPerFrame << ',' << r.particleRms << ',' << r.centroidError << ','
           << r.surfaceError << ',' << r.areaDifference << ',' << r.matched << '\n';

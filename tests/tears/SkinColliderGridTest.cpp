@@ -5,7 +5,7 @@
 // threshold). Checked on the cheek sheet with a collapsed row and scattered zero-area
 // triangles, for nearest() at the radii the simulation uses and for resolve() with particles
 // crossing the sheet fast (the ray path), and that the grid did skip queries.
-#include "../../player/tears/src/SkinCollider.h"  // private to lacrima_tears
+#include "SkinCollider.h"  // internal to lacrima_tears (player/tears/src is on this test's include path)
 
 #include <lacrima/tears/SyntheticSkin.h>
 

@@ -12,9 +12,9 @@ using namespace lacrima::tears::testing;
 
 namespace {
 
-constexpr PressureSolver kSolvers[] = {PressureSolver::Wcsph, PressureSolver::Dfsph};
+constexpr PressureMethod kSolvers[] = {PressureMethod::Wcsph, PressureMethod::Dfsph};
 
-const char* nameOf(PressureSolver s) { return s == PressureSolver::Wcsph ? "WCSPH" : "DFSPH"; }
+const char* nameOf(PressureMethod s) { return s == PressureMethod::Wcsph ? "WCSPH" : "DFSPH"; }
 
 TearSettings with(std::initializer_list<std::pair<const char*, double>> values) {
   TearSettings s;
@@ -30,7 +30,7 @@ class TearHardCasesTest : public QObject {
 private:
   void runCase(const TearSettings& settings, int left, int right, int frames, SimulationOptions options = {}) {
     const SyntheticSkin sheet = makeCheekSheet();
-    for (PressureSolver solver : kSolvers) {
+    for (PressureMethod solver : kSolvers) {
       options.pressureSolver = solver;
       auto sim = makeSheetSimulation(sheet, settings, options);
       runAndCheck(*sim, sheet, left, right, frames);
@@ -43,11 +43,11 @@ private:
 
   static void solverRows() {
     QTest::addColumn<int>("solver");
-    for (PressureSolver s : kSolvers) QTest::newRow(nameOf(s)) << static_cast<int>(s);
+    for (PressureMethod s : kSolvers) QTest::newRow(nameOf(s)) << static_cast<int>(s);
   }
   static SimulationOptions optionsFor(int solver) {
     SimulationOptions o;
-    o.pressureSolver = static_cast<PressureSolver>(solver);
+    o.pressureSolver = static_cast<PressureMethod>(solver);
     return o;
   }
 

@@ -5,7 +5,10 @@
 // the colour field, and the accuracy-against-time table.
 #include "TearTestSupport.h"
 
-#include <lacrima/tears/MarchingCubesTable.h>
+// Internals of lacrima_tears (player/tears/src is on this test's include path).
+#include "MarchingCubesTable.h"
+#include "SurfaceMesherField.h"
+
 #include <lacrima/tears/SurfaceMesher.h>
 
 #include <QtTest>

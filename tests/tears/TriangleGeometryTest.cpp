@@ -5,7 +5,7 @@
 // faces existed) on random triangles at several scales and on degenerate ones (zero area,
 // collinear, coincident corners, needles), and for sane triangles against a brute-force
 // distance in long double.
-#include "../../player/tears/src/TriangleGeometry.h"  // private to lacrima_tears, header-only
+#include "TriangleGeometry.h"  // internal to lacrima_tears, header-only (player/tears/src is on this test's include path)
 
 #include <QtTest>
 

@@ -1,4 +1,4 @@
-#include <lacrima/tears/AdaptiveTimeStep.h>
+#include "AdaptiveTimeStep.h"
 
 #include <cmath>
 

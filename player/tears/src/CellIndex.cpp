@@ -1,4 +1,4 @@
-#include <lacrima/tears/CellIndex.h>
+#include "CellIndex.h"
 
 #include <algorithm>
 #include <bit>

@@ -1,3 +1,5 @@
+#include "CellIndex.h"
+
 #include <lacrima/tears/DropFinder.h>
 
 namespace lacrima::tears {

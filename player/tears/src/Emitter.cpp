@@ -1,6 +1,5 @@
+#include "Emitter.h"
 #include "PairDirection.h"
-
-#include <lacrima/tears/Emitter.h>
 
 #include <algorithm>
 #include <cmath>

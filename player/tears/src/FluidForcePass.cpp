@@ -1,7 +1,6 @@
 #include "Float4.h"
+#include "FluidForcePass.h"
 #include "PairDirection.h"
-
-#include <lacrima/tears/FluidForces.h>
 
 #include <algorithm>
 #include <cmath>
@@ -143,25 +142,23 @@ void FluidForcePass::accumulate(const ActivePairs& pairs, int n, std::uint64_t c
   }
 }
 
-double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs, const PressureForce& pressure,
-                           const ViscosityForce& viscosity, const MuellerSurfaceTension* tension) {
+double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs, const Viscosity_Mueller2003& viscosity, bool colour) {
   const int n = p.size();
   const auto un = static_cast<std::size_t>(n);
-  const bool colour = tension && tension->active();
   velocity_.resize(4 * un);
   scalars_.resize(4 * un);
   for (auto* v : {&acc_, &weighted4_, &gradient4_}) v->assign(4 * un, 0.0f);
   // Kernel coefficients, so the loops only multiply (Kernels.h):
   //   grad W_spiky = spiky (h - r)^2 / r r_vec,  lap W_visc = visc (h - r),
   //   grad W_poly6 = poly6 (h^2 - r^2)^2 r_vec,  lap W_poly6 = poly6 (h^2 - r^2)(3 h^2 - 7 r^2).
-  const double hd = pressure.kernel().radius();
+  const double hd = spikyKernel_.radius();
   h_ = static_cast<float>(hd);
   h2_ = static_cast<float>(hd * hd);
-  spiky_ = static_cast<float>(pressure.kernel().gradientCoefficient());
-  atZero_ = static_cast<float>(pressure.kernel().gradientMagnitudeAtZero());
-  visc_ = static_cast<float>(viscosity.kernel().laplacianCoefficient());
-  poly6_ = colour ? static_cast<float>(tension->kernel().gradientCoefficient()) : 0.0f;
-  const float selfLaplacian = colour ? static_cast<float>(tension->kernel().laplacian(0.0)) : 0.0f;
+  spiky_ = static_cast<float>(spikyKernel_.gradientCoefficient());
+  atZero_ = static_cast<float>(spikyKernel_.gradientMagnitudeAtZero());
+  visc_ = static_cast<float>(viscosityKernel_.laplacianCoefficient());
+  poly6_ = colour ? static_cast<float>(poly6Kernel_.gradientCoefficient()) : 0.0f;
+  const float selfLaplacian = colour ? static_cast<float>(poly6Kernel_.laplacian(0.0)) : 0.0f;
   // No pressure anywhere (DFSPH, whose solves replace it, or a fluid nowhere compressed): the
   // pressure terms are left out of the loop rather than added as zeros.
   bool anyPressure = false;
@@ -205,7 +202,6 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs, const PressureFor
       gradient_[i] = Eigen::Vector3d(g[0], g[1], g[2]);
       laplacian_[i] = weighted4_[4 * i + 3];
     }
-    tension->addAccelerations(p, gradient_, laplacian_);
   }
   return std::sqrt(static_cast<double>(closing2));
 }

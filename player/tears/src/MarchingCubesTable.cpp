@@ -1,4 +1,4 @@
-#include <lacrima/tears/MarchingCubesTable.h>
+#include "MarchingCubesTable.h"
 
 #include <stdexcept>
 #include <vector>

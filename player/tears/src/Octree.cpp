@@ -1,4 +1,4 @@
-#include <lacrima/tears/Octree.h>
+#include "Octree.h"
 
 #include <algorithm>
 #include <cmath>

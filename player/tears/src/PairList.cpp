@@ -1,6 +1,5 @@
 #include "Float4.h"
-
-#include <lacrima/tears/PairList.h>
+#include "PairList.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,5 @@
-#include <lacrima/tears/Kernels.h>
+#include "Kernels.h"
+
 #include <lacrima/tears/Parameters.h>
 #include <lacrima/common/JsonSyntaxError.h>
 
@@ -29,20 +30,6 @@ constexpr double kDrop100Radius2009 = 0.72;
 constexpr double kAkinciFraction = 0.05;
 constexpr double kFrictionReferenceSpeed = 0.3;  // m/s
 
-double* field(TearSettings& s, std::string_view name) {
-  if (name == "pressure") return &s.pressure;
-  if (name == "viscosity") return &s.viscosity;
-  if (name == "tension") return &s.tension;
-  if (name == "adhesion") return &s.adhesion;
-  if (name == "friction") return &s.friction;
-  if (name == "gravity") return &s.gravity;
-  if (name == "kernel") return &s.kernel;
-  if (name == "node_size") return &s.nodeSize;
-  if (name == "cube_size") return &s.cubeSize;
-  if (name == "iso") return &s.iso;
-  return nullptr;
-}
-
 // Sum of poly6 over a simple cubic lattice of the given spacing around the origin (origin
 // included): the density a particle of unit mass sees in a fluid at rest.
 double latticeKernelSum(double h, double spacing) {
@@ -61,18 +48,18 @@ double latticeKernelSum(double h, double spacing) {
 }  // namespace
 
 TearSettings::TearSettings() {
-  for (const auto& info : tearParameterTable()) *field(*this, info.name) = info.defaultValue;
+  for (const auto& info : tearParameterTable()) this->*info.field = info.defaultValue;
 }
 
 void TearSettings::set(std::string_view name, double value) {
   validateTearParameter(name, value);  // throws with the table's wording
-  *field(*this, name) = value;
+  this->*findTearParameter(name)->field = value;
 }
 
 double TearSettings::get(std::string_view name) const {
-  double* f = field(const_cast<TearSettings&>(*this), name);
-  if (!f) throw std::invalid_argument("unknown parameter '" + std::string(name) + "'");
-  return *f;
+  const TearParameterInfo* info = findTearParameter(name);
+  if (!info) throw std::invalid_argument("unknown parameter '" + std::string(name) + "'");
+  return this->*info->field;
 }
 
 TearSettings TearSettings::fromJson(std::string_view json) {

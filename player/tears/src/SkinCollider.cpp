@@ -1,5 +1,4 @@
 #include "SkinCollider.h"
-
 #include "TriangleGeometry.h"
 
 #include <algorithm>

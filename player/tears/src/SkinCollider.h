@@ -32,10 +32,10 @@
 // The skin is one-sided: outside is the side the counter-clockwise triangles face (HeadMesh's
 // convention), which is also how ODE's sphere-trimesh test behaves.
 #include "OdeHandles.h"
+#include "SkinContact.h"
 #include "TriangleGrid.h"
 
 #include <lacrima/tears/ParticleSet.h>
-#include <lacrima/tears/SkinContact.h>
 
 #include <Eigen/Geometry>
 

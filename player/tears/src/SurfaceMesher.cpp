@@ -1,8 +1,10 @@
+#include "CellIndex.h"
 #include "Float4.h"
+#include "MarchingCubesTable.h"
+#include "SurfaceMesherField.h"
 #include "SurfaceMesherKeyMap.h"
 #include "VectorState.h"
 
-#include <lacrima/tears/MarchingCubesTable.h>
 #include <lacrima/tears/SurfaceMesher.h>
 #include <lacrima/tears/TearSimulation.h>
 
@@ -84,7 +86,8 @@ std::array<EdgeStep, 12> edgeSteps() {
 
 }  // namespace
 
-SurfaceMesher::SurfaceMesher() : blockMap_(std::make_unique<detail::SurfaceMesherKeyMap>()) {}
+SurfaceMesher::SurfaceMesher()
+    : field_(std::make_unique<SurfaceMesherField>()), blockMap_(std::make_unique<detail::SurfaceMesherKeyMap>()) {}
 
 SurfaceMesher::~SurfaceMesher() = default;
 
@@ -115,12 +118,12 @@ const TearSurface& SurfaceMesher::build(std::span<const Eigen::Vector3d> positio
   surface_.clear();
   stats_ = {};
   if (positions.empty()) return surface_;
-  field_.bind(positions, masses, grid, h);
+  field_->bind(positions, masses, grid, h);
   const CellIndex& index = grid.index();
   stats_.activeCells = index.cellCount();
 
   // The box of the particles that carry volume.
-  const auto weight = field_.sortedVolumes();
+  const auto weight = field_->sortedVolumes();
   Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), high = -low;
   for (std::size_t t = 0; t < index.particleCount(); ++t) {
     if (weight[t] == 0) continue;
@@ -184,9 +187,9 @@ std::int32_t SurfaceMesher::blockAt(const Lattice& block) const { return blockMa
 // The blocks of every particle's support box, extended by one corner downwards, in particle
 // order (deterministic). Returns false once more than maxBlocks are found.
 bool SurfaceMesher::collectBlocks(double s, std::size_t maxBlocks) {
-  const double h = field_.kernelRadius();
-  const CellIndex& index = field_.index();
-  const auto weight = field_.sortedVolumes();
+  const double h = field_->kernelRadius();
+  const CellIndex& index = field_->index();
+  const auto weight = field_->sortedVolumes();
   blockMap_->reset(std::min(maxBlocks, 4 * block_.size() + 64));
   block_.clear();
   Lattice lastLow = Lattice::Constant(1), lastHigh = Lattice::Zero();  // an empty range
@@ -228,10 +231,10 @@ void SurfaceMesher::linkBlocks() {
 // The box's per-axis offsets, blocks and block-local coordinates are tabulated once per particle,
 // so the corner loop is a handful of single-precision operations and one four-float add.
 void SurfaceMesher::splat(double s) {
-  const double h = field_.kernelRadius(), inverse = 1.0 / h;
+  const double h = field_->kernelRadius(), inverse = 1.0 / h;
   const auto step = static_cast<float>(s * inverse);
-  const CellIndex& index = field_.index();
-  const auto weight = field_.sortedSplatWeights();
+  const CellIndex& index = field_->index();
+  const auto weight = field_->sortedSplatWeights();
   sum_.resize(block_.size() * kBlockFloats + 4);  // +4: the last four-wide add may overhang
   std::memset(sum_.data(), 0, sum_.size() * sizeof(float));
   Lattice lastLow = Lattice::Constant(1), lastHigh = Lattice::Zero(), dims = Lattice::Zero();

@@ -1,7 +1,6 @@
 #include "Float4.h"
-
-#include <lacrima/tears/Kernels.h>
-#include <lacrima/tears/SurfaceMesherField.h>
+#include "Kernels.h"
+#include "SurfaceMesherField.h"
 
 #include <algorithm>
 #include <array>

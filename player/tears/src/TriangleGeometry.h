@@ -5,7 +5,7 @@
 // Two entry points share one body: from the corners (edges formed here), and from a SkinFace
 // whose edges were formed once per skin pose. The edges are the same differences either way,
 // so both give bitwise-identical answers (tests/tears/TriangleGeometryTest.cpp checks it).
-#include <lacrima/tears/SkinContact.h>
+#include "SkinContact.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>

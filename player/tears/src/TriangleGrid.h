@@ -18,7 +18,7 @@
 // radius), whichever is larger, grown if needed so the grid has at most ~4 cells per triangle.
 // Degenerate triangles are left out: they never hold a contact and ODE's hits on them are
 // discarded.
-#include <lacrima/tears/SkinContact.h>
+#include "SkinContact.h"
 
 #include <Eigen/Core>
 

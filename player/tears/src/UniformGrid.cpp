@@ -1,3 +1,5 @@
+#include "CellIndex.h"
+
 #include <lacrima/tears/UniformGrid.h>
 
 #include <algorithm>
@@ -5,16 +7,32 @@
 
 namespace lacrima::tears {
 
-void UniformGrid::build(std::span<const Eigen::Vector3d> x, double h) { index_.build(x, h); }
+UniformGrid::UniformGrid() : index_(std::make_unique<CellIndex>()) {}
+UniformGrid::~UniformGrid() = default;
+UniformGrid::UniformGrid(const UniformGrid& other)
+    : index_(std::make_unique<CellIndex>(*other.index_)), found_(other.found_), start_(other.start_), rank_(other.rank_) {}
+
+UniformGrid& UniformGrid::operator=(const UniformGrid& other) {
+  *index_ = *other.index_;
+  found_ = other.found_;
+  start_ = other.start_;
+  rank_ = other.rank_;
+  return *this;
+}
+
+void UniformGrid::build(std::span<const Eigen::Vector3d> x, double h) { index_->build(x, h); }
+
+double UniformGrid::cellSize() const { return index_->edge(); }
+Eigen::Vector3i UniformGrid::cellOf(const Eigen::Vector3d& x) const { return index_->cellOf(x); }
 
 void UniformGrid::find(std::span<const Eigen::Vector3d> x, double h, NeighbourList& out) {
   build(x, h);
   const std::size_t n = x.size();
   const double h2 = h * h;
-  const auto order = index_.order();
-  const double* sx = index_.sortedX().data();
-  const double* sy = index_.sortedY().data();
-  const double* sz = index_.sortedZ().data();
+  const auto order = index_->order();
+  const double* sx = index_->sortedX().data();
+  const double* sy = index_->sortedY().data();
+  const double* sz = index_->sortedZ().data();
   start_.resize(n + 1);
   start_[0] = 0;
   if (found_.size() < 64) found_.resize(64);
@@ -22,15 +40,15 @@ void UniformGrid::find(std::span<const Eigen::Vector3d> x, double h, NeighbourLi
 
   // Cell by cell: the nine row ranges (CellIndex::row) are shared by all particles of a cell.
   std::array<CellIndex::Range, 9> rows;
-  for (std::size_t c = 0; c < index_.cellCount(); ++c) {
-    const Eigen::Vector3i cell = index_.cellCoordinates(c);
+  for (std::size_t c = 0; c < index_->cellCount(); ++c) {
+    const Eigen::Vector3i cell = index_->cellCoordinates(c);
     int rowCount = 0;
     for (int dx = -1; dx <= 1; ++dx)
       for (int dy = -1; dy <= 1; ++dy) {
-        const CellIndex::Range r = index_.row(cell.x() + dx, cell.y() + dy, cell.z());
+        const CellIndex::Range r = index_->row(cell.x() + dx, cell.y() + dy, cell.z());
         if (r.end > r.begin) rows[static_cast<std::size_t>(rowCount++)] = r;
       }
-    for (std::uint32_t s = index_.cellStart(c); s < index_.cellStart(c + 1); ++s) {
+    for (std::uint32_t s = index_->cellStart(c); s < index_->cellStart(c + 1); ++s) {
       const double xi = sx[s], yi = sy[s], zi = sz[s];
       for (int r = 0; r < rowCount; ++r) {
         const auto [begin, end] = rows[static_cast<std::size_t>(r)];
@@ -63,18 +81,18 @@ void UniformGrid::find(std::span<const Eigen::Vector3d> x, double h, NeighbourLi
 
 std::vector<Eigen::Vector3i> UniformGrid::occupiedCells() const {
   std::vector<Eigen::Vector3i> cells;
-  cells.reserve(index_.cellCount());
+  cells.reserve(index_->cellCount());
   // Key order is (x, y, z) lexicographic order of the integer coordinates.
-  for (std::size_t c = 0; c < index_.cellCount(); ++c) cells.push_back(index_.cellCoordinates(c));
+  for (std::size_t c = 0; c < index_->cellCount(); ++c) cells.push_back(index_->cellCoordinates(c));
   return cells;
 }
 
 std::vector<int> UniformGrid::particlesInCell(const Eigen::Vector3i& cell) const {
   std::vector<int> result;
-  const std::int64_t c = index_.findCell(cell);
+  const std::int64_t c = index_->findCell(cell);
   if (c < 0) return result;
-  const auto order = index_.order();
-  for (std::uint32_t s = index_.cellStart(static_cast<std::size_t>(c)); s < index_.cellStart(static_cast<std::size_t>(c) + 1); ++s)
+  const auto order = index_->order();
+  for (std::uint32_t s = index_->cellStart(static_cast<std::size_t>(c)); s < index_->cellStart(static_cast<std::size_t>(c) + 1); ++s)
     result.push_back(order[s]);
   return result;  // the radix sort is stable: particle order within a cell
 }

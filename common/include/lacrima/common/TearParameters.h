@@ -10,8 +10,17 @@
 
 namespace lacrima::inline common {
 
+// One value per parameter of the table, in the 2009 units: adding a parameter is one field here
+// and one row of the table, which points at the field (the simulation's TearSettings builds on
+// this, and reads and writes its values by name through the table alone).
+struct TearParameterSet {
+  double pressure = 0, viscosity = 0, tension = 0, adhesion = 0, friction = 0, gravity = 0, kernel = 0, nodeSize = 0,
+         cubeSize = 0, iso = 0;
+};
+
 struct TearParameterInfo {
   std::string_view name;  // JSON key, e.g. "adhesion"
+  double TearParameterSet::*field;
   double defaultValue;
   double minValue, maxValue;  // inclusive
   std::string_view description;

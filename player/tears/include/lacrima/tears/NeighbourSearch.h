@@ -1,6 +1,8 @@
 #pragma once
-// Fixed-radius neighbour search. Both structures produce the same neighbour sets (every j != i
-// with |x_i - x_j| < h); the solver only sees the compressed lists below.
+// Fixed-radius neighbour search: full neighbour lists (every j != i with |x_i - x_j| < h) from
+// the uniform grid (UniformGrid.h) or, inside the library, the 2009 octree; both give the same
+// sets. The solver's own half pair lists come from the grid's cell sort or, for comparison,
+// from the octree's lists (SimulationOptions::neighbours).
 #include <Eigen/Core>
 
 #include <span>
@@ -21,8 +23,6 @@ struct NeighbourList {
                                      offsets[static_cast<std::size_t>(i)])};
   }
 };
-
-enum class NeighbourMethod { Grid, Octree };
 
 class NeighbourSearch {
 public:

@@ -1,6 +1,7 @@
 #pragma once
-// Tear parameters: the ten values of the 2009 system (common/TearParameters.h: names, defaults,
-// ranges), loaded from JSON, and their translation into the head's units.
+// Tear parameters: the values of the 2009 system (common/TearParameters.h: names, defaults,
+// ranges, the field each is kept in), loaded from JSON, and their translation into the head's
+// units.
 //
 // Unit scaling (documented once, used everywhere):
 //  * The head is in its own length unit (the default head: decimetres, ~2.7 tall). Its height
@@ -35,10 +36,9 @@
 
 namespace lacrima::tears {
 
-// The ten table parameters, in the 2009 units. Defaults from the table.
-struct TearSettings {
-  double pressure, viscosity, tension, adhesion, friction, gravity, kernel, nodeSize, cubeSize, iso;
-
+// The table's parameters (common/TearParameters.h), in the 2009 units: one field each, named
+// and ranged by the table alone. Defaults from the table.
+struct TearSettings : TearParameterSet {
   TearSettings();  // the table's defaults
 
   // Sets one value by its table name; throws std::invalid_argument (unknown name / out of range).

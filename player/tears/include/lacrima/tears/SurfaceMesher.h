@@ -35,7 +35,7 @@
 // The work is capped (SurfaceMesherSettings::maxCubes, counted as the cubes of the active
 // blocks): past the cap the cube size is enlarged until they fit, and stats().capped reports it —
 // a coarser surface, never a truncated one with holes.
-#include <lacrima/tears/SurfaceMesherField.h>
+#include <lacrima/tears/UniformGrid.h>
 
 #include <Eigen/Core>
 
@@ -47,6 +47,7 @@
 
 namespace lacrima::tears {
 
+class SurfaceMesherField;
 class TearSimulation;
 namespace detail {
 class SurfaceMesherKeyMap;
@@ -117,7 +118,7 @@ public:
   const TearSurface& surface() const { return surface_; }
   const SurfaceMesherStats& stats() const { return stats_; }
   // The colour field of the last build (valid while its particles and grid are unchanged).
-  const SurfaceMesherField& field() const { return field_; }
+  const SurfaceMesherField& field() const { return *field_; }
   long long cappedBuilds() const { return cappedBuilds_; }
 
 private:
@@ -136,7 +137,7 @@ private:
   void fallbackNormals();
   std::int32_t blockAt(const Lattice& block) const;
 
-  SurfaceMesherField field_;
+  std::unique_ptr<SurfaceMesherField> field_;
   TearSurface surface_;
   SurfaceMesherStats stats_;
   long long cappedBuilds_ = 0;

@@ -1,17 +1,16 @@
 #include "Float4.h"
 #include "PairDirection.h"
-
-#include <lacrima/tears/DivergenceFreeSolver.h>
+#include "PressureSolver_DFSPH.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace lacrima::tears {
 
-DivergenceFreeSolver::DivergenceFreeSolver(double h, const DivergenceFreeSettings& settings)
+PressureSolver_DFSPH::PressureSolver_DFSPH(double h, const DivergenceFreeSettings& settings)
     : w_(h), settings_(settings) {}
 
-void DivergenceFreeSolver::prepare(const ParticleSet& p, const ActivePairs& pairs) {
+void PressureSolver_DFSPH::prepare(const ParticleSet& p, const ActivePairs& pairs) {
   const int n = p.size();
   const auto un = static_cast<std::size_t>(n);
   const std::size_t pairCount = n > 0 ? pairs.start[un] : 0;
@@ -72,7 +71,7 @@ void DivergenceFreeSolver::prepare(const ParticleSet& p, const ActivePairs& pair
   }
 }
 
-void DivergenceFreeSolver::loadVelocities(const ParticleSet& p) {
+void PressureSolver_DFSPH::loadVelocities(const ParticleSet& p) {
   const std::size_t un = p.velocity.size();
   velocity_.resize(4 * un);
   for (std::size_t i = 0; i < un; ++i) {
@@ -82,7 +81,7 @@ void DivergenceFreeSolver::loadVelocities(const ParticleSet& p) {
   start_ = velocity_;
 }
 
-void DivergenceFreeSolver::storeVelocities(ParticleSet& p) const {
+void PressureSolver_DFSPH::storeVelocities(ParticleSet& p) const {
   // Only the change is in float: the velocities themselves keep double precision.
   for (std::size_t i = 0; i < p.velocity.size(); ++i) {
     const Float4 d = load4(&velocity_[4 * i]) - load4(&start_[4 * i]);
@@ -90,7 +89,7 @@ void DivergenceFreeSolver::storeVelocities(ParticleSet& p) const {
   }
 }
 
-void DivergenceFreeSolver::densityRates(const ActivePairs& pairs, int n) {
+void PressureSolver_DFSPH::densityRates(const ActivePairs& pairs, int n) {
   const auto un = static_cast<std::size_t>(n);
   rate_.assign(un, 0.0f);
   const float* g = gradient_.data();
@@ -111,7 +110,7 @@ void DivergenceFreeSolver::densityRates(const ActivePairs& pairs, int n) {
   }
 }
 
-void DivergenceFreeSolver::correctVelocities(const ActivePairs& pairs, int n) {
+void PressureSolver_DFSPH::applyKappa(const ActivePairs& pairs, int n) {
   const auto un = static_cast<std::size_t>(n);
   const float* g = gradient_.data();
   const float* m = m_.data();
@@ -133,7 +132,7 @@ void DivergenceFreeSolver::correctVelocities(const ActivePairs& pairs, int n) {
   }
 }
 
-int DivergenceFreeSolver::solveDivergence(ParticleSet& p, const ActivePairs& pairs, double dt) {
+int PressureSolver_DFSPH::solveDivergence(ParticleSet& p, const ActivePairs& pairs, double dt) {
   const int n = p.size();
   const auto un = static_cast<std::size_t>(n);
   stats_.divergenceIterations = 0;
@@ -155,14 +154,14 @@ int DivergenceFreeSolver::solveDivergence(ParticleSet& p, const ActivePairs& pai
       stats_.divergenceCapped = iteration >= settings_.maxIterations && total > tolerance * n;
       break;
     }
-    correctVelocities(pairs, n);
+    applyKappa(pairs, n);
   }
   storeVelocities(p);
   stats_.divergenceIterations = iteration;
   return iteration;
 }
 
-int DivergenceFreeSolver::solveDensity(ParticleSet& p, const ActivePairs& pairs, double dt,
+int PressureSolver_DFSPH::solveDensity(ParticleSet& p, const ActivePairs& pairs, double dt,
                                        std::span<const Eigen::Vector3d> contactNormal) {
   const int n = p.size();
   const auto un = static_cast<std::size_t>(n);
@@ -187,7 +186,7 @@ int DivergenceFreeSolver::solveDensity(ParticleSet& p, const ActivePairs& pairs,
       stats_.densityCapped = iteration >= settings_.maxIterations && total > settings_.densityTolerance * n;
       break;
     }
-    correctVelocities(pairs, n);
+    applyKappa(pairs, n);
   }
   storeVelocities(p);
   double maxNet2 = 0;
@@ -203,6 +202,32 @@ int DivergenceFreeSolver::solveDensity(ParticleSet& p, const ActivePairs& pairs,
   stats_.maxNetAcceleration = std::sqrt(maxNet2);
   stats_.densityIterations = iteration;
   return iteration;
+}
+
+void PressureSolver_DFSPH::computePressures(ParticleSet& p, const ActivePairs& pairs, double remaining,
+                                           TearCounters& counters) {
+  std::fill(p.pressure.begin(), p.pressure.end(), 0.0);
+  prepare(p, pairs);
+  const double expected = history_.lastSubstep > 0 ? std::min(history_.lastSubstep, remaining) : remaining;
+  counters.divergenceIterations += solveDivergence(p, pairs, expected);
+  counters.solverCapped += stats_.divergenceCapped;
+}
+
+double PressureSolver_DFSPH::accelerationBound(double largestFluidAcceleration) const {
+  return history_.lastNetAcceleration >= 0 ? history_.lastNetAcceleration : largestFluidAcceleration;
+}
+
+void PressureSolver_DFSPH::correctVelocities(ParticleSet& p, const ActivePairs& pairs, double dt, const SkinView& skin,
+                                            TearCounters& counters) {
+  contactNormal_.resize(p.velocity.size());
+  for (std::size_t i = 0; i < contactNormal_.size(); ++i) {
+    const int t = p.contact[i].triangle;
+    contactNormal_[i] = t >= 0 ? skin.faces[static_cast<std::size_t>(t)].normal : Eigen::Vector3d::Zero();
+  }
+  counters.densityIterations += solveDensity(p, pairs, dt, contactNormal_);
+  counters.solverCapped += stats_.densityCapped;
+  history_.lastSubstep = dt;
+  history_.lastNetAcceleration = stats_.maxNetAcceleration;
 }
 
 }  // namespace lacrima::tears

@@ -30,7 +30,8 @@
 // h + skin / 2 < cell edge of that point, so the 27 cells around it hold every one). The
 // density pass skips listed pairs that involve a stray and adds the stray pairs instead.
 // Beyond n / 32 strays a rebuild is cheaper, and refresh() asks for one.
-#include <lacrima/tears/CellIndex.h>
+#include "CellIndex.h"
+
 #include <lacrima/tears/NeighbourSearch.h>
 
 #include <cstdint>

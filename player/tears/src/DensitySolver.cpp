@@ -1,6 +1,5 @@
+#include "DensitySolver.h"
 #include "Float4.h"
-
-#include <lacrima/tears/FluidForces.h>
 
 #include <xmmintrin.h>
 

@@ -1,10 +1,11 @@
-#include <lacrima/tears/FluidForces.h>
+#include "SurfaceTension_Mueller2003.h"
 
 namespace lacrima::tears {
 
-void MuellerSurfaceTension::addAccelerations(ParticleSet& p, std::span<const Eigen::Vector3d> gradient,
-                                             std::span<const double> laplacian) const {
+void SurfaceTension_Mueller2003::addAccelerations(ParticleSet& p, const ActivePairs&, const FluidForcePass& pass) {
   if (sigma_ <= 0) return;
+  const auto gradient = pass.colourGradient();
+  const auto laplacian = pass.colourLaplacian();
   const double threshold = 0.25 / h_;
   for (int i = 0; i < p.size(); ++i) {
     const auto si = static_cast<std::size_t>(i);

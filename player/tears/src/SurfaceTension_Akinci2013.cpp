@@ -1,8 +1,8 @@
-#include <lacrima/tears/FluidForces.h>
+#include "SurfaceTension_Akinci2013.h"
 
 namespace lacrima::tears {
 
-void AkinciSurfaceTension::addAccelerations(ParticleSet& p, const ActivePairs& pairs) {
+void SurfaceTension_Akinci2013::addAccelerations(ParticleSet& p, const ActivePairs& pairs, const FluidForcePass&) {
   if (gamma_ <= 0) return;
   const auto n = static_cast<std::size_t>(p.size());
   normal_.assign(n, Eigen::Vector3d::Zero());

@@ -1,11 +1,11 @@
-#include <lacrima/tears/FluidForces.h>
+#include "Viscosity_Mueller2003.h"
 
 #include <cmath>
 
 namespace lacrima::tears {
 
-void ViscosityForce::apply(ParticleSet& p, std::span<const Eigen::Vector3d> weighted, std::span<const double> weightSum,
-                           double dt) const {
+void Viscosity_Mueller2003::apply(ParticleSet& p, std::span<const Eigen::Vector3d> weighted,
+                                  std::span<const double> weightSum, double dt) const {
   if (nu_ <= 0 || dt <= 0) return;
   for (std::size_t i = 0; i < p.velocity.size(); ++i) {
     const double k = p.viscosityRate[i];

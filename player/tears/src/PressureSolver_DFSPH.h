@@ -1,8 +1,10 @@
 #pragma once
-// Divergence-free SPH (DFSPH, Bender & Koschier 2015 / 2017): pressure as the solution of two
-// constraints instead of the stiff equation of state p = k (rho - rho0), so the time step is no
-// longer bound by the speed of sound (CFL h / c, 3 ms at c = 0.2 m/s) but only by how far the
-// particles move relative to each other (h / u_rel) and by the other forces.
+// Divergence-free SPH (DFSPH) of Bender & Koschier 2015 ("Divergence-free smoothed particle
+// hydrodynamics") and 2017 ("Divergence-free SPH for incompressible and viscous fluids"):
+// pressure as the solution of two constraints instead of the stiff equation of state
+// p = k (rho - rho0), so the time step is no longer bound by the speed of sound (CFL h / c,
+// 3 ms at c = 0.2 m/s) but only by how far the particles move relative to each other (h / u_rel)
+// and by the other forces.
 //
 // Per sub-step, over the half pair list of DensitySolver (pairs within h, rho0 = 1):
 //   g_ij = grad_i W_spiky(x_i - x_j)                                   (per pair, once)
@@ -20,16 +22,15 @@
 // tear) the density deficit is not an error, and cohesion is surface tension's job, as with the
 // clamped pressure of the weakly compressible solver.
 //
-// The stiffness parameter of the 2009 table has no meaning here; TearSimulation maps it to the
-// tolerance instead (stiffer = tighter), see SimulationOptions.
+// The stiffness parameter of the 2009 table has no meaning here; PressureSolver::create maps it
+// to the tolerance instead (stiffer = tighter), see SimulationOptions.
 //
-// Passes run in single precision over Float4 copies (as FluidForcePass); the velocity changes
+// Passes run in single precision over Float4 copies (as FluidForcePass.h); the velocity changes
 // are summed in float and added to the double velocities once, in particle order, so results are
 // bitwise reproducible. Coincident particles get a gradient along the pair's id direction
 // (PairDirection.h), as in the pressure force, so they are pushed apart too.
-#include <lacrima/tears/Kernels.h>
-#include <lacrima/tears/PairList.h>
-#include <lacrima/tears/ParticleSet.h>
+#include "Kernels.h"
+#include "PressureSolver.h"
 
 #include <span>
 #include <vector>
@@ -52,9 +53,25 @@ struct DivergenceFreeStats {
   double maxNetAcceleration = 0;
 };
 
-class DivergenceFreeSolver {
+class PressureSolver_DFSPH final : public PressureSolver {
 public:
-  DivergenceFreeSolver(double h, const DivergenceFreeSettings& settings);
+  PressureSolver_DFSPH(double h, const DivergenceFreeSettings& settings);
+
+  // No equation of state: no sound speed in the CFL condition.
+  double soundSpeed() const override { return 0; }
+  // Zero pressures (the solves replace them), the pair gradients and factors alpha, then the
+  // divergence solve for the expected step (the last sub-step's, at most `remaining`).
+  void computePressures(ParticleSet& particles, const ActivePairs& pairs, double remaining,
+                        TearCounters& counters) override;
+  // Pressure is not in the accelerations yet, and surface tension alone is several g on surface
+  // particles; what moves them is the balance, known after the solve. The last sub-step's net
+  // acceleration stands in for it (the force pass's before there is any).
+  double accelerationBound(double largestFluidAcceleration) const override;
+  // The density solve, with the skin normals under touching particles.
+  void correctVelocities(ParticleSet& particles, const ActivePairs& pairs, double dt, const SkinView& skin,
+                         TearCounters& counters) override;
+  PressureHistory history() const override { return history_; }
+  void restoreHistory(const PressureHistory& history) override { history_ = history; }
 
   // After DensitySolver::compute: the pair gradients and the factors alpha.
   void prepare(const ParticleSet& particles, const ActivePairs& pairs);
@@ -75,13 +92,15 @@ private:
   // One Jacobi sweep: error[i] from the current float velocities (rate of density change).
   void densityRates(const ActivePairs& pairs, int n);
   // v_i -= sum_j m_j (kappa_i + kappa_j) g_ij over the pairs.
-  void correctVelocities(const ActivePairs& pairs, int n);
+  void applyKappa(const ActivePairs& pairs, int n);
   void loadVelocities(const ParticleSet& particles);
   void storeVelocities(ParticleSet& particles) const;
 
   SpikyKernel w_;
   DivergenceFreeSettings settings_;
   DivergenceFreeStats stats_;
+  PressureHistory history_;
+  std::vector<Eigen::Vector3d> contactNormal_;
   std::vector<float> gradient_;  // 4 per pair: g_ij (x, y, z, 0)
   std::vector<float> m_, alpha_, rate_, kappa_;
   std::vector<float> velocity_, start_;  // 4 per particle; start_: velocity before the solve

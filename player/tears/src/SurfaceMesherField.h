@@ -21,6 +21,8 @@
 // (Float4.h) on positions in kernel units relative to the particles' bounding box, where
 // rho_j / (w h^6) = sum_k m_k (1 - r_jk^2 / h^2)^3 is a sum of O(m) terms: float keeps ~7
 // digits of the volumes, far below what the linear interpolation of marching cubes resolves.
+#include "CellIndex.h"
+
 #include <lacrima/tears/UniformGrid.h>
 
 #include <Eigen/Core>

@@ -1,0 +1,55 @@
+#pragma once
+// How a TearSimulation computes, as opposed to what it simulates (the tear parameters,
+// Parameters.h): the neighbour structure, the pressure and surface-tension methods, the
+// sub-step limits and the bookkeeping scales. The defaults are the measured best
+// (lacrima-bench tears and tears-sweep).
+
+namespace lacrima::tears {
+
+// Where pair candidates come from: the cell-sorted Verlet list (UniformGrid.h's cells), or the
+// 2009 thesis's octree, kept for comparison (a full search every sub-step).
+enum class NeighbourMethod { Grid, Octree };
+
+// How pressure keeps the fluid from compressing: a stiff equation of state (weakly compressible
+// SPH, WCSPH: Müller et al. 2003's p = k (rho - rho0) in Monaghan's 1994 regime; sub-steps
+// bound by the speed of sound), or divergence-free
+// SPH (DFSPH, Bender & Koschier 2015/2017: two iterative solves per sub-step, sub-steps bound
+// by relative motion and by the net fluid acceleration of the previous sub-step).
+enum class PressureMethod { Wcsph, Dfsph };
+
+// Surface tension: the colour-field curvature force of Müller et al. 2003, or the cohesion and
+// curvature forces of Akinci et al. 2013.
+enum class SurfaceTensionModel { Mueller, Akinci };
+
+struct SimulationOptions {
+  // Height of the head in its own units, which fixes the unit scale (Parameters.h); 0 = the
+  // height of the skin mesh. Set it when the skin is not a whole head (test sheets).
+  double headHeight = 0;
+  NeighbourMethod neighbours = NeighbourMethod::Grid;  // measured faster (lacrima-bench tears)
+  // Verlet skin in kernel radii: pair candidates are listed within h (1 + skin) and reused
+  // until the two largest displacements sum to skin h. 0 = search every sub-step.
+  double neighbourSkin = 0.3;
+  SurfaceTensionModel surfaceTension = SurfaceTensionModel::Mueller;
+  bool clampNegativePressure = true;
+  double lambdaCfl = 0.4, lambdaAcceleration = 0.4, lambdaViscosity = 1.0;
+  PressureMethod pressureSolver = PressureMethod::Wcsph;
+  // DFSPH: mean compression left after a step at the table's default pressure (0.004); the
+  // pressure parameter scales it inversely (pressure x10 = ten times tighter), within
+  // [1e-4, 0.1]. The divergence solve uses the same tolerance per step.
+  double dfsphTolerance = 0.01;
+  int dfsphMaxIterations = 50;
+  // Longest sub-step allowed, seconds (0 = only the stability limits bound it). DFSPH has no
+  // sound-speed limit, so this caps how far the fluid moves between collision passes.
+  double maxSubstepSeconds = 0;
+  // Sub-steps per frame before the last resort (clamping, counted in TearCounters::clamped).
+  int maxSubsteps = 500;
+  // Free particles look for the skin this far (kernel radii) and then skip the query until
+  // they have travelled the clearance found: farther means fewer, dearer queries.
+  double collisionProbeKernels = 1;
+  double trailDecayMetres = 0.1;     // mass e-folds every 10 cm slid over the skin
+  double massFloor = 0.2;            // of the emitted mass
+  double boxMarginMetres = 0.03;     // simulation box = skin bounds grown by this
+  double wetnessReferenceParticles = 100;  // volume/count at which wetness approaches 1
+};
+
+}  // namespace lacrima::tears

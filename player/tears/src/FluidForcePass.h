@@ -1,0 +1,77 @@
+#pragma once
+// The second pass over the pairs of a sub-step (DensitySolver.h has the first): for every pair
+// within h, from one load of the pair's state,
+//   * the symmetric pressure force of Müller et al. 2003, from particles.pressure
+//     (PressureSolver.h fills it):
+//       a_i = - sum_j m_j (p_i + p_j) / (2 rho_i rho_j) grad W_spiky(x_i - x_j),
+//     antisymmetric in (i, j), so momentum is conserved;
+//   * the viscosity weight sums of Viscosity_Mueller2003.h (the relaxation itself then needs
+//     per-particle work only);
+//   * when the surface-tension model asks for it (SurfaceTension_Mueller2003.h), the colour
+//     field's gradient and Laplacian, c_i = sum_j m_j / rho_j W_poly6.
+// All terms are accelerations (force density over the particle's density); density is
+// normalised (rho0 = 1).
+//
+// Every term is evaluated over the half pair list (ActivePairs, PairList.h): each pair i < j
+// once, its contribution added to both particles (antisymmetric terms with opposite signs). The
+// iteration order is fixed (particle order, then partner order), so sums are reproducible.
+//
+// Both pair passes run in single precision on copies of the particle state: 3-vectors as 4
+// floats (x, y, z, 0), so each scattered vector update is one SSE2 load, add and store, and the
+// per-particle scalars (m, p, 1 / rho, V) as 4 floats too, one load per partner (positions
+// relative to the first particle, so float keeps ~1e-5 h of resolution anywhere on the head).
+// Only baseline x86-64 instructions are used (no -march, no FMA contraction), so results are
+// bitwise identical on every x86-64 machine. Per-particle results are converted back to the
+// double ParticleSet.
+#include "Kernels.h"
+#include "PairList.h"
+#include "Viscosity_Mueller2003.h"
+
+#include <lacrima/tears/ParticleSet.h>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace lacrima::tears {
+
+class FluidForcePass {
+public:
+  explicit FluidForcePass(double h) : spikyKernel_(h), viscosityKernel_(h), poly6Kernel_(h) {}
+
+  // Adds pressure to particles.acceleration, fills particles.viscosityRate, weightSum() and
+  // weightedVelocity(), and with `colourField` colourGradient() and colourLaplacian(). Returns
+  // the largest closing speed -(v_i - v_j).(x_i - x_j) / r over pairs within h, the velocity
+  // part of Monaghan's signal velocity in the CFL condition: SPH is Galilean invariant (a drop
+  // sliding as a whole at any speed is as stable as one at rest), and pairs that slide past or
+  // separate compress nothing.
+  // Reads the velocities: call it before they change in this sub-step.
+  double run(ParticleSet& particles, ActivePairs& pairs, const Viscosity_Mueller2003& viscosity, bool colourField);
+  std::span<const double> weightSum() const { return weightSum_; }
+  std::span<const Eigen::Vector3d> weightedVelocity() const { return weighted_; }
+  // grad c_i and lap c_i of the last run with colourField (empty otherwise).
+  std::span<const Eigen::Vector3d> colourGradient() const { return gradient_; }
+  std::span<const double> colourLaplacian() const { return laplacian_; }
+
+private:
+  template <bool Colour, bool Pressure>
+  void accumulate(const ActivePairs& pairs, int n, std::uint64_t const* ids);
+
+  SpikyKernel spikyKernel_;        // pressure
+  ViscosityKernel viscosityKernel_;
+  Poly6Kernel poly6Kernel_;        // colour field
+  std::vector<double> weightSum_, laplacian_;
+  std::vector<Eigen::Vector3d> gradient_, weighted_;
+  // Float state per particle: velocity (x, y, z, 0 as 4 floats) and m, p, 1 / rho, V (4 floats:
+  // one load per partner); sums per particle: acceleration (x, y, z, viscosity weight sum), weighted velocity
+  // (x, y, z, colour Laplacian) and colour gradient (x, y, z, 0). Groups of 4 floats are one
+  // SSE register, so a scattered vector update is one load, one add and one store.
+  std::vector<float> velocity_, scalars_;
+  std::vector<float> acc_, weighted4_, gradient4_;
+  // Per-pair kernel factors, from r alone (one flat, vectorised loop over the pairs), and
+  // (v_i - v_j).(x_i - x_j), reduced to the closing speed after the pair loop.
+  std::vector<float> radial_, lapVisc_, gradColour_, lapColour_, approach_;
+  float h_ = 0, h2_ = 0, spiky_ = 0, atZero_ = 0, visc_ = 0, poly6_ = 0;
+};
+
+}  // namespace lacrima::tears

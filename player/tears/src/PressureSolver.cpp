@@ -1,0 +1,23 @@
+#include "PressureSolver.h"
+#include "PressureSolver_DFSPH.h"
+#include "PressureSolver_WCSPH.h"
+
+#include <algorithm>
+
+namespace lacrima::tears {
+
+std::unique_ptr<PressureSolver> PressureSolver::create(PressureMethod method, const ScaledParameters& p,
+                                                       const TearSettings& settings, const SimulationOptions& options) {
+  if (method == PressureMethod::Wcsph)
+    return std::make_unique<PressureSolver_WCSPH>(p.stiffness, p.restDensity, p.soundSpeed, options.clampNegativePressure);
+  // The pressure parameter sets how tight the solves are: ten times the default pressure, ten
+  // times tighter (SimulationOptions::dfsphTolerance).
+  DivergenceFreeSettings dfsph;
+  const double stiffness = settings.pressure > 0 ? TearSettings{}.pressure / settings.pressure : 1e3;
+  dfsph.densityTolerance = std::clamp(options.dfsphTolerance * stiffness, 1e-4, 0.1);
+  dfsph.divergenceTolerance = dfsph.densityTolerance;
+  dfsph.maxIterations = std::max(2, options.dfsphMaxIterations);
+  return std::make_unique<PressureSolver_DFSPH>(p.h, dfsph);
+}
+
+}  // namespace lacrima::tears

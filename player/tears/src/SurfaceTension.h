@@ -1,0 +1,32 @@
+#pragma once
+// Surface tension, chosen by SimulationOptions::surfaceTension (SurfaceTensionModel): a force
+// that pulls the fluid's surface together, so drops stay round and trails thin instead of
+// spreading into a film. Two models, each in its own class named after its paper:
+//   SurfaceTension_Mueller2003.h  the colour-field curvature force (the default);
+//   SurfaceTension_Akinci2013.h   cohesion plus curvature minimisation.
+// A sub-step calls addAccelerations() right after the force pass (FluidForcePass.h), which sums
+// the colour field's gradient and Laplacian along the way for a model that asks for them.
+#include "FluidForcePass.h"
+#include "PairList.h"
+
+#include <lacrima/tears/Parameters.h>
+#include <lacrima/tears/ParticleSet.h>
+#include <lacrima/tears/SimulationOptions.h>
+
+#include <memory>
+
+namespace lacrima::tears {
+
+class SurfaceTension {
+public:
+  virtual ~SurfaceTension() = default;
+  // The model the options name, with the strength the tear parameters give it.
+  static std::unique_ptr<SurfaceTension> create(SurfaceTensionModel model, const ScaledParameters& parameters);
+
+  // Whether the force pass is to sum the colour field's gradient and Laplacian.
+  virtual bool needsColourField() const = 0;
+  // Adds the tension's accelerations for the sub-step's pairs; `pass` is the sub-step's force pass.
+  virtual void addAccelerations(ParticleSet& particles, const ActivePairs& pairs, const FluidForcePass& pass) = 0;
+};
+
+}  // namespace lacrima::tears

@@ -1,0 +1,74 @@
+#pragma once
+// The parts of a TearSimulation that its header names only through a pointer: the neighbour
+// search, the SPH terms, the pressure and surface-tension methods the options chose, skin
+// contact and collision, emission and the adaptive time step.
+#include "AdaptiveTimeStep.h"
+#include "CellIndex.h"
+#include "DensitySolver.h"
+#include "Emitter.h"
+#include "FluidForcePass.h"
+#include "Octree.h"
+#include "PairList.h"
+#include "PressureSolver.h"
+#include "SkinCollider.h"
+#include "SkinContact.h"
+#include "SurfaceTension.h"
+#include "TrailMassLoss.h"
+#include "Viscosity_Mueller2003.h"
+
+#include <lacrima/tears/TearSimulation.h>
+
+#include <array>
+#include <chrono>
+#include <memory>
+#include <vector>
+
+namespace lacrima::tears {
+
+struct TearSimulation::Internals {
+  Internals(const ScaledParameters& parameters, const TearSettings& settings, const SimulationOptions& options,
+            const UnitScale& scale);
+  // (Re)creates the pressure solver and the surface tension the options name.
+  void chooseMethods(const ScaledParameters& parameters, const TearSettings& settings, const SimulationOptions& options);
+
+  std::unique_ptr<SkinCollider> collider;  // made once the simulation box is known
+  CellIndex cellIndex;     // cell edge h (1 + skin), orders the particles
+  VerletPairs candidates;
+  ActivePairs pairs;
+  NeighbourList fullList;  // octree comparison path only
+  Octree octree;
+
+  DensitySolver density;
+  std::unique_ptr<PressureSolver> pressure;
+  Viscosity_Mueller2003 viscosity;
+  std::unique_ptr<SurfaceTension> tension;
+  FluidForcePass forcePass;
+  SkinContactForces contact;
+  TrailMassLoss massLoss;
+  Emitter emitter;
+  AdaptiveTimeStep stepper;
+
+  std::vector<Eigen::Vector3d> previous;    // positions before the sub-step's move (scratch)
+  std::array<std::vector<int>, 2> escaped;  // per eye, this sub-step (scratch)
+};
+
+struct TearSimulation::EmissionSites {
+  std::array<EmissionSite, 2> site;
+  std::array<bool, 2> known{false, false};
+};
+
+using StageClock = std::chrono::steady_clock;
+
+inline double millisecondsSince(StageClock::time_point start) {
+  return std::chrono::duration<double, std::milli>(StageClock::now() - start).count();
+}
+
+inline void addCollisionCounters(TearCounters& total, const CollisionCounters& c) {
+  total.odeQueries += c.odeQueries;
+  total.trimeshUpdates += c.trimeshUpdates;
+  total.sweptParticles += c.sweptParticles;
+  total.contactsTracked += c.contactsTracked;
+  total.bruteForceQueries += c.bruteForceQueries;
+}
+
+}  // namespace lacrima::tears
