@@ -1,5 +1,7 @@
 #include "BenchSupport.h"
 
+#include <lacrima/common/Milliseconds.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -10,14 +12,13 @@
 namespace lacrima::bench {
 
 Timing timeRuns(int runs, const std::function<void()>& body) {
-  using Clock = std::chrono::steady_clock;
   body();  // warm caches and allocators so the first run is not an outlier
   std::vector<double> ms;
   ms.reserve(static_cast<size_t>(runs));
   for (int i = 0; i < runs; ++i) {
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     body();
-    ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    ms.push_back(millisecondsSince(start));
   }
   std::sort(ms.begin(), ms.end());
   Timing t;

@@ -2,7 +2,6 @@
 // Small helpers shared by lacrima-bench subcommands: wall-clock timing with medians, the
 // process's peak resident memory, so each benchmark can put cost beside what it measures, and
 // command-line number and size parsing.
-#include <chrono>
 #include <functional>
 #include <string>
 

@@ -6,6 +6,7 @@
 #include "BenchSupport.h"
 
 #include <lacrima/common/JsonWriter.h>
+#include <lacrima/common/Milliseconds.h>
 #include <lacrima/playback/MediaFiles.h>
 #include <lacrima/playback/Playback.h>
 #include <lacrima/rigging/DefaultHead.h>
@@ -15,7 +16,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -26,7 +26,6 @@ namespace lacrima::bench {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 constexpr double kTargetFps = 30;
 
 struct Options {
@@ -75,8 +74,6 @@ int parse(int argc, char** argv, Options& o) {
   return 0;
 }
 
-double msSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
-
 struct Stage {
   const char* name;
   double total = 0;  // ms over all frames
@@ -102,9 +99,9 @@ int runPlayer(int argc, char** argv) {
   QGuiApplication app(qtArgc, qtArgv);
 
   try {
-    const auto rigStart = Clock::now();
+    const auto rigStart = SteadyClock::now();
     const auto rig = playback::loadDefaultHeadRig();
-    const double rigMs = msSince(rigStart);
+    const double rigMs = millisecondsSince(rigStart);
     playback::Playback playback(*rig);
     const std::string demo = playback::findMediaFile("demo/crying.fap");
     playback.open(demo);
@@ -120,15 +117,15 @@ int runPlayer(int argc, char** argv) {
     frameMs.reserve(static_cast<std::size_t>(frames));
     int peakParticles = 0;
     playback.reset();
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     for (int i = 0; i < frames; ++i) {
       const int f = i % demoFrames;
-      const auto t0 = Clock::now();
+      const auto t0 = SteadyClock::now();
       if (f == 0 && i > 0) playback.reset();
       const playback::FrameView& view = playback.seek(f / playback.frameRate());
       renderer.show(view);
       const QImage image = renderer.render();
-      frameMs.push_back(msSince(t0));
+      frameMs.push_back(millisecondsSince(t0));
       const playback::ProducerTimes& p = playback.producer().lastTimes();
       const scene::RenderTimes& r = renderer.lastTimes();
       const std::array<double, 7> ms{p.blend, p.simulation, p.surface, p.trails, r.upload, r.render, r.readback};
@@ -136,7 +133,7 @@ int runPlayer(int argc, char** argv) {
       peakParticles = std::max(peakParticles, playback.producer().particleCount());
       if (image.isNull()) throw std::runtime_error("the renderer returned no image");
     }
-    const double wallMs = msSince(start);
+    const double wallMs = millisecondsSince(start);
     const double fps = frames * 1000.0 / wallMs;
     std::vector<double> sorted = frameMs;
     std::sort(sorted.begin(), sorted.end());

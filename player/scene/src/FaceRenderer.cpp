@@ -1,5 +1,6 @@
 #include <lacrima/scene/FaceRenderer.h>
 
+#include <lacrima/common/Milliseconds.h>
 #include <lacrima/scene/FaceScene.h>
 #include <lacrima/scene/OgreRuntime.h>
 
@@ -9,16 +10,10 @@
 #include <OgreTextureManager.h>
 #include <OgreViewport.h>
 
-#include <chrono>
 #include <stdexcept>
 
 namespace lacrima::scene {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double millisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 constexpr int kMaxSide = 8192;
 
@@ -88,7 +83,7 @@ void FaceRenderer::setSamples(int samples) {
 int FaceRenderer::samples() const { return state_->samples; }
 
 void FaceRenderer::show(const playback::FrameView& view) {
-  const auto start = Clock::now();
+  const auto start = SteadyClock::now();
   state_->scene->show(view);
   state_->times.upload = millisecondsSince(start);
 }
@@ -96,10 +91,10 @@ void FaceRenderer::show(const playback::FrameView& view) {
 QImage FaceRenderer::render() {
   State& s = *state_;
   Ogre::RenderTarget* rt = s.target->getBuffer()->getRenderTarget();
-  auto start = Clock::now();
+  auto start = SteadyClock::now();
   rt->update(true);  // with multisampling, the "swap" resolves the samples into the texture
   s.times.render = millisecondsSince(start);
-  start = Clock::now();
+  start = SteadyClock::now();
   QImage image(s.size, QImage::Format_RGBA8888);
   const Ogre::PixelBox box(static_cast<Ogre::uint32>(s.size.width()), static_cast<Ogre::uint32>(s.size.height()), 1,
                            Ogre::PF_BYTE_RGBA, image.bits());
