@@ -64,15 +64,4 @@ bool parseWholeNumber(const char* text, int low, int high, int& out) {
   return true;
 }
 
-bool parseSize(const std::string& text, int minWidth, int minHeight, int max, int& width, int& height) {
-  const auto x = text.find('x');
-  int w = 0, h = 0;
-  if (x == std::string::npos || !parseWholeNumber(text.substr(0, x).c_str(), minWidth, max, w) ||
-      !parseWholeNumber(text.substr(x + 1).c_str(), minHeight, max, h))
-    return false;
-  width = w;
-  height = h;
-  return true;
-}
-
 }  // namespace lacrima::bench

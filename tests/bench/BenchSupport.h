@@ -1,7 +1,7 @@
 #pragma once
 // Small helpers shared by lacrima-bench subcommands: wall-clock timing with medians, the
 // process's peak resident memory, so each benchmark can put cost beside what it measures, and
-// command-line number and size parsing.
+// command-line number parsing.
 #include <functional>
 #include <string>
 
@@ -24,8 +24,5 @@ bool resetPeakMemory();
 
 // A command-line whole number in [low, high]; false (out untouched) for anything else.
 bool parseWholeNumber(const char* text, int low, int high, int& out);
-// A command-line image or window size "WxH" with minWidth <= W <= max and minHeight <= H <= max;
-// false (both untouched) for anything else.
-bool parseSize(const std::string& text, int minWidth, int minHeight, int max, int& width, int& height);
 
 }  // namespace lacrima::bench

@@ -7,6 +7,7 @@
 #include "BenchSupport.h"
 
 #include <lacrima/common/FapTable.h>
+#include <lacrima/common/ImageSize.h>
 #include <lacrima/common/JsonWriter.h>
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editing/FapTransfer.h>
@@ -67,11 +68,13 @@ int parseOptions(int argc, char** argv, Options& options) {
     if (arg == "--json") {
       options.json = true;
     } else if (arg == "--size" && i + 1 < argc) {
-      const std::string size = argv[++i];
-      if (!parseSize(size, 640, 480, 8000, options.width, options.height)) {
-        std::fprintf(stderr, "lacrima-bench editor: --size takes WxH, e.g. 1440x900, not '%s'\n", size.c_str());
+      const ParsedImageSize size = parseImageSize(argv[++i]);
+      if (!size.error.empty()) {
+        std::fprintf(stderr, "lacrima-bench editor: --size: %s\n", size.error.c_str());
         return 2;
       }
+      options.width = size.size.width();
+      options.height = size.size.height();
     } else if ((arg == "--frames" || arg == "--warm-up") && i + 1 < argc) {
       int& target = arg == "--frames" ? options.frames : options.warmUp;
       if (!parseWholeNumber(argv[++i], arg == "--frames" ? 1 : 0, 100000, target)) {

@@ -5,6 +5,7 @@
 // GLX only): run under xvfb-run.
 #include "BenchSupport.h"
 
+#include <lacrima/common/ImageSize.h>
 #include <lacrima/common/JsonWriter.h>
 #include <lacrima/common/Milliseconds.h>
 #include <lacrima/playback/MediaFiles.h>
@@ -61,10 +62,13 @@ int parse(int argc, char** argv, Options& o) {
         return 2;
       }
     } else if (arg == "--size" && hasValue) {
-      if (!parseSize(argv[++i], 16, 16, 8192, o.width, o.height)) {
-        std::fprintf(stderr, "lacrima-bench player: --size takes WIDTHxHEIGHT, e.g. 1280x720\n");
+      const ParsedImageSize size = parseImageSize(argv[++i]);
+      if (!size.error.empty()) {
+        std::fprintf(stderr, "lacrima-bench player: --size: %s\n", size.error.c_str());
         return 2;
       }
+      o.width = size.size.width();
+      o.height = size.size.height();
     } else {
       std::fprintf(stderr, "lacrima-bench player: unknown or incomplete option '%s'\n\n", arg.c_str());
       printHelp(stderr);

@@ -1,5 +1,6 @@
 #include <lacrima/scene/FaceRenderer.h>
 
+#include <lacrima/common/ImageSize.h>
 #include <lacrima/common/Milliseconds.h>
 #include <lacrima/scene/FaceScene.h>
 #include <lacrima/scene/OgreRuntime.h>
@@ -15,7 +16,11 @@
 namespace lacrima::scene {
 namespace {
 
-constexpr int kMaxSide = 8192;
+void checkSize(QSize size) {
+  if (!isImageSizeInBounds(size))
+    throw std::invalid_argument("FaceRenderer: image size must be " + std::to_string(kMinImageSide) + ".." +
+                                std::to_string(kMaxImageSide) + " pixels per side");
+}
 
 }  // namespace
 
@@ -49,8 +54,7 @@ struct FaceRenderer::State {
 };
 
 FaceRenderer::FaceRenderer(const HeadMesh& neutral, QSize size) : state_(std::make_unique<State>()) {
-  if (size.width() < 1 || size.height() < 1 || size.width() > kMaxSide || size.height() > kMaxSide)
-    throw std::invalid_argument("FaceRenderer: image size must be 1..8192 pixels per side");
+  checkSize(size);
   state_->runtime = OgreRuntime::acquire();
   state_->scene = std::make_unique<FaceScene>(state_->runtime, neutral);
   state_->size = size;
@@ -65,8 +69,7 @@ FaceRenderer::~FaceRenderer() {
 
 void FaceRenderer::resize(QSize size) {
   if (size == state_->size) return;
-  if (size.width() < 1 || size.height() < 1 || size.width() > kMaxSide || size.height() > kMaxSide)
-    throw std::invalid_argument("FaceRenderer: image size must be 1..8192 pixels per side");
+  checkSize(size);
   state_->size = size;
   state_->createTarget();
 }
