@@ -4,7 +4,7 @@
 #include <lacrima/player/ErrorReport.h>
 #include <lacrima/player/TearParametersPanel.h>
 
-#include <lacrima/playback/MediaFiles.h>
+#include <lacrima/common/MediaFiles.h>
 #include <lacrima/viewport/FaceViewport.h>
 
 #include <QAction>
@@ -203,7 +203,7 @@ void PlayerWindow::buildLayout() {
     statusBar()->addPermanentWidget(label);
   }
   try {
-    playback::findMediaFile("demo/crying.fap");
+    findMediaFile("demo/crying.fap");
   } catch (const FileError&) {
     openDemo_->setEnabled(false);
   }
@@ -275,7 +275,7 @@ void PlayerWindow::chooseFile() {
 
 void PlayerWindow::openDemo() {
   try {
-    openFile(QString::fromStdString(playback::findMediaFile("demo/crying.fap")));
+    openFile(QString::fromStdString(findMediaFile("demo/crying.fap")));
   } catch (const std::exception& e) {
     reportError(e, "demo/crying.fap");
   }

@@ -7,8 +7,8 @@
 
 #include <lacrima/common/ImageSize.h>
 #include <lacrima/common/JsonWriter.h>
+#include <lacrima/common/MediaFiles.h>
 #include <lacrima/common/Milliseconds.h>
-#include <lacrima/playback/MediaFiles.h>
 #include <lacrima/playback/Playback.h>
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/scene/FaceRenderer.h>
@@ -107,7 +107,7 @@ int runPlayer(int argc, char** argv) {
     const auto rig = playback::loadDefaultHeadRig();
     const double rigMs = millisecondsSince(rigStart);
     playback::Playback playback(*rig);
-    const std::string demo = playback::findMediaFile("demo/crying.fap");
+    const std::string demo = findMediaFile("demo/crying.fap");
     playback.open(demo);
     scene::FaceRenderer renderer(rig->head, QSize(o.width, o.height));
     // Warm-up: the first render compiles the shaders.
