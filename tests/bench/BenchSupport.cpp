@@ -3,11 +3,10 @@
 #include <lacrima/common/Milliseconds.h>
 
 #include <algorithm>
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace lacrima::bench {
 
@@ -29,6 +28,20 @@ Timing timeRuns(int runs, const std::function<void()>& body) {
     t.maxMs = ms.back();
   }
   return t;
+}
+
+void writeTiming(JsonWriter& json, std::string_view name, const Timing& t, std::optional<double> targetBelow) {
+  json.key(name);
+  json.beginObject();
+  json.field("median", t.medianMs);
+  json.field("min", t.minMs);
+  json.field("max", t.maxMs);
+  json.field("runs", t.runs);
+  if (targetBelow) {
+    json.field("target_below", *targetBelow);
+    json.field("pass", t.medianMs < *targetBelow);
+  }
+  json.endObject();
 }
 
 static long long statusField(const char* field) {
@@ -54,14 +67,6 @@ bool resetPeakMemory() {
   refs << "5";
   refs.flush();
   return static_cast<bool>(refs);
-}
-
-bool parseWholeNumber(const char* text, int low, int high, int& out) {
-  char* end = nullptr;
-  const long value = std::strtol(text, &end, 10);
-  if (end == text || *end != '\0' || value < low || value > high) return false;
-  out = static_cast<int>(value);
-  return true;
 }
 
 }  // namespace lacrima::bench

@@ -3,9 +3,8 @@
 // blend, tear simulation, surface, trails) and FaceRenderer draws it (upload, render, read
 // back). Target: >= 30 fps at 1280x720 with software rendering. Needs an X display (OGRE is
 // GLX only): run under xvfb-run.
-#include "BenchSupport.h"
+#include "BenchCommandLine.h"
 
-#include <lacrima/common/ImageSize.h>
 #include <lacrima/common/JsonWriter.h>
 #include <lacrima/common/MediaFiles.h>
 #include <lacrima/common/Milliseconds.h>
@@ -35,47 +34,16 @@ struct Options {
   bool json = false;
 };
 
-void printHelp(FILE* out) {
-  std::fprintf(out,
-               "usage: lacrima-bench player [--size WxH] [--frames N] [--json]\n\n"
-               "Plays the demo (media/demo/crying.fap) on the default head through the player's\n"
-               "playback and renderer, one render per animation frame, and reports frames per second\n"
-               "of the whole loop with each stage's share. Needs an X display: run under xvfb-run.\n\n"
-               "  --size WxH   image size (default 1280x720)\n"
-               "  --frames N   frames to play (default: the whole demo; longer runs replay it)\n"
-               "  --json       one JSON object instead of the table\n");
-}
-
-// 0 = run, 1 = help printed, 2 = usage error.
-int parse(int argc, char** argv, Options& o) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const bool hasValue = i + 1 < argc;
-    if (arg == "--help" || arg == "-h") {
-      printHelp(stdout);
-      return 1;
-    } else if (arg == "--json") {
-      o.json = true;
-    } else if (arg == "--frames" && hasValue) {
-      if (!parseWholeNumber(argv[++i], 1, 1000000, o.frames)) {
-        std::fprintf(stderr, "lacrima-bench player: --frames takes 1..1000000\n");
-        return 2;
-      }
-    } else if (arg == "--size" && hasValue) {
-      const ParsedImageSize size = parseImageSize(argv[++i]);
-      if (!size.error.empty()) {
-        std::fprintf(stderr, "lacrima-bench player: --size: %s\n", size.error.c_str());
-        return 2;
-      }
-      o.width = size.size.width();
-      o.height = size.size.height();
-    } else {
-      std::fprintf(stderr, "lacrima-bench player: unknown or incomplete option '%s'\n\n", arg.c_str());
-      printHelp(stderr);
-      return 2;
-    }
-  }
-  return 0;
+std::optional<int> parseOptions(int argc, char** argv, Options& o) {
+  BenchCommandLine line("player",
+                        "Plays the demo (media/demo/crying.fap) on the default head through the player's\n"
+                        "playback and renderer, one render per animation frame, and reports frames per second\n"
+                        "of the whole loop with each stage's share. Needs an X display: run under xvfb-run.");
+  line.imageSize("size", "Image size (default 1280x720).", o.width, o.height);
+  line.wholeNumber("frames", "N", "Frames to play (default: the whole demo; longer runs replay it).", 1, 1000000,
+                   o.frames);
+  line.flag("json", "One JSON object instead of the table.", o.json);
+  return line.parse(argc, argv);
 }
 
 struct Stage {
@@ -87,7 +55,7 @@ struct Stage {
 
 int runPlayer(int argc, char** argv) {
   Options o;
-  if (const int status = parse(argc, argv, o)) return status == 1 ? 0 : status;
+  if (const std::optional<int> status = parseOptions(argc, argv, o)) return *status;
   if (std::getenv("DISPLAY") == nullptr || !*std::getenv("DISPLAY")) {
     std::fprintf(stderr, "lacrima-bench player: needs an X display (OGRE renders through GLX); run it as\n"
                          "  xvfb-run -a -s \"-screen 0 1280x1024x24\" lacrima-bench player\n");
