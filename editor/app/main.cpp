@@ -4,6 +4,7 @@
 //   lacrima-editor FILE --screenshot PNG  render the window (with the preview) to PNG and exit
 // Exit status: 0 on success, 1 when FILE or the screenshot cannot be read or written, 2 on
 // wrong usage.
+#include <lacrima/common/ImageSize.h>
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editor/EditorTheme.h>
 #include <lacrima/editor/MainWindow.h>
@@ -75,12 +76,12 @@ int main(int argc, char** argv) {
     return app.exec();
   }
 
-  const QStringList wh = parser.value(size).split(QLatin1Char('x'));
-  if (wh.size() != 2 || wh[0].toInt() < 320 || wh[1].toInt() < 240) {
-    std::fprintf(stderr, "lacrima-editor: --size expects WxH, e.g. 1440x900\n");
+  const lacrima::ParsedImageSize windowSize = lacrima::parseImageSize(parser.value(size).toStdString());
+  if (!windowSize.error.empty()) {
+    std::fprintf(stderr, "lacrima-editor: --size: %s\n", windowSize.error.c_str());
     return 2;
   }
-  window.resize(wh[0].toInt(), wh[1].toInt());
+  window.resize(windowSize.size);
   window.show();
   // Let the window lay out and the head load before grabbing.
   QElapsedTimer settle;

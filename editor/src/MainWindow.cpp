@@ -12,9 +12,9 @@
 #include <lacrima/editor/SliderPanel.h>
 #include <lacrima/editor/TimelineWidget.h>
 #include <lacrima/editor/TransportBar.h>
+#include <lacrima/viewport/EffectsPanel.h>
 
 #include <QApplication>
-#include <QCheckBox>
 #include <QClipboard>
 #include <QComboBox>
 #include <QDialog>
@@ -403,28 +403,12 @@ void MainWindow::settingsDialog() {
   auto* mode = new QComboBox(&dialog);
   mode->addItems({tr("linear"), tr("smooth")});
   mode->setCurrentIndex(doc.defaultInterpolation == Interpolation::Smooth ? 1 : 0);
-  auto* particles = new QCheckBox(tr("Particle spheres (inspection)"), &dialog);
-  particles->setChecked(doc.scene.particles);
-  auto* surface = new QCheckBox(tr("Tear surface"), &dialog);
-  surface->setChecked(doc.scene.surface);
-  auto* trails = new QCheckBox(tr("Wet trails"), &dialog);
-  trails->setChecked(doc.scene.trails);
-  auto* blending = new QCheckBox(tr("Texture blending (redness, wet eyes)"), &dialog);
-  blending->setChecked(doc.scene.textureBlending);
-  auto* blush = new QCheckBox(tr("Blush"), &dialog);
-  blush->setChecked(doc.scene.blush);
-  auto* redness = new QComboBox(&dialog);
-  redness->addItems({tr("follows the animation's time (2009)"), tr("follows the tears shed")});
-  redness->setCurrentIndex(doc.scene.redness == SceneSettings::Redness::Tears ? 1 : 0);
+  auto* effects = new viewport::EffectsPanel(&dialog);
+  effects->display(doc.scene);
   form->addRow(tr("Name"), name);
   form->addRow(tr("Frame rate (export)"), fps);
   form->addRow(tr("New keys"), mode);
-  form->addRow(tr("Effects"), surface);
-  form->addRow(QString(), trails);
-  form->addRow(QString(), blending);
-  form->addRow(QString(), blush);
-  form->addRow(QString(), particles);
-  form->addRow(tr("Eye redness"), redness);
+  form->addRow(tr("Effects"), effects);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
   form->addRow(buttons);
   connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
@@ -434,12 +418,7 @@ void MainWindow::settingsDialog() {
   settings.name = name->text().trimmed().isEmpty() ? "untitled" : name->text().trimmed().toStdString();
   settings.fps = fps->value();
   settings.defaultInterpolation = mode->currentIndex() == 1 ? Interpolation::Smooth : Interpolation::Linear;
-  settings.scene.particles = particles->isChecked();
-  settings.scene.surface = surface->isChecked();
-  settings.scene.trails = trails->isChecked();
-  settings.scene.textureBlending = blending->isChecked();
-  settings.scene.blush = blush->isChecked();
-  settings.scene.redness = redness->currentIndex() == 1 ? SceneSettings::Redness::Tears : SceneSettings::Redness::Animation;
+  effects->applyTo(settings.scene);
   model_->setSettings(settings, tr("Project settings"));
 }
 

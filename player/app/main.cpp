@@ -6,6 +6,7 @@
 #include <lacrima/player/PlayerWindow.h>
 
 #include <lacrima/common/Diagnostics.h>
+#include <lacrima/common/ImageSize.h>
 #include <lacrima/playback/HeadRig.h>
 
 #include <QApplication>
@@ -30,16 +31,6 @@ bool hasOption(int argc, char** argv, const char* name) {
   for (int i = 1; i < argc; ++i)
     if (std::strcmp(argv[i], name) == 0 || std::strncmp(argv[i], name, std::strlen(name)) == 0) return true;
   return false;
-}
-
-bool parseSize(const QString& text, QSize& size) {
-  const QStringList parts = text.toLower().split('x');
-  bool okW = false, okH = false;
-  if (parts.size() != 2) return false;
-  const int w = parts[0].toInt(&okW), h = parts[1].toInt(&okH);
-  if (!okW || !okH || w < 16 || h < 16 || w > 8192 || h > 8192) return false;
-  size = QSize(w, h);
-  return true;
 }
 
 std::unique_ptr<playback::HeadRig> loadRig(const QCommandLineParser& parser) {
@@ -172,9 +163,13 @@ int main(int argc, char** argv) {
     return kExitUsage;
   }
   QSize size(1280, 720);
-  if (parser.isSet("size") && !parseSize(parser.value("size"), size)) {
-    std::fprintf(stderr, "lacrima-player: --size: expected WIDTHxHEIGHT, e.g. 1280x720 (16 to 8192 each)\n");
-    return kExitUsage;
+  if (parser.isSet("size")) {
+    const ParsedImageSize parsed = parseImageSize(parser.value("size").toStdString());
+    if (!parsed.error.empty()) {
+      std::fprintf(stderr, "lacrima-player: --size: %s\n", parsed.error.c_str());
+      return kExitUsage;
+    }
+    size = parsed.size;
   }
   try {
     if (parser.isSet("render")) return renderMode(parser, size);

@@ -1,10 +1,10 @@
 #include <lacrima/player/PlayerWindow.h>
 
-#include <lacrima/player/EffectsPanel.h>
 #include <lacrima/player/ErrorReport.h>
 #include <lacrima/player/TearParametersPanel.h>
 
-#include <lacrima/playback/MediaFiles.h>
+#include <lacrima/common/MediaFiles.h>
+#include <lacrima/viewport/EffectsPanel.h>
 #include <lacrima/viewport/FaceViewport.h>
 
 #include <QAction>
@@ -166,7 +166,7 @@ void PlayerWindow::buildLayout() {
   column->addWidget(transport);
   setCentralWidget(centre);
 
-  effects_ = new EffectsPanel(this);
+  effects_ = new viewport::EffectsPanel(this);
   parameters_ = new TearParametersPanel(this);
   auto* side = new QWidget(this);
   auto* sideLayout = new QVBoxLayout(side);
@@ -191,7 +191,7 @@ void PlayerWindow::buildLayout() {
   viewMenu_->addAction(dock->toggleViewAction());
   effects_->display(playback_->scene());
   parameters_->display({}, {});
-  connect(effects_, &EffectsPanel::edited, this, &PlayerWindow::applyScene);
+  connect(effects_, &viewport::EffectsPanel::edited, this, &PlayerWindow::applyScene);
   connect(parameters_, &TearParametersPanel::edited, this, &PlayerWindow::applyScene);
 
   frameLabel_ = new QLabel(this);
@@ -203,7 +203,7 @@ void PlayerWindow::buildLayout() {
     statusBar()->addPermanentWidget(label);
   }
   try {
-    playback::findMediaFile("demo/crying.fap");
+    findMediaFile("demo/crying.fap");
   } catch (const FileError&) {
     openDemo_->setEnabled(false);
   }
@@ -275,7 +275,7 @@ void PlayerWindow::chooseFile() {
 
 void PlayerWindow::openDemo() {
   try {
-    openFile(QString::fromStdString(playback::findMediaFile("demo/crying.fap")));
+    openFile(QString::fromStdString(findMediaFile("demo/crying.fap")));
   } catch (const std::exception& e) {
     reportError(e, "demo/crying.fap");
   }

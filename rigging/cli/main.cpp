@@ -7,6 +7,7 @@
 
 #include <lacrima/common/AtomicSave.h>
 #include <lacrima/common/FapTable.h>
+#include <lacrima/common/MediaFiles.h>
 #include <lacrima/common/PoseSet.h>
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/rigging/FeaturePointFile.h>
@@ -21,7 +22,6 @@
 #include <QCommandLineParser>
 #include <QDir>
 #include <QElapsedTimer>
-#include <QFileInfo>
 #include <QGuiApplication>
 
 #include <charconv>
@@ -40,14 +40,6 @@ constexpr int kExitUsage = 2;
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
-
-// The default head's placement: installed beside the binary's share folder, or the source tree's
-// media folder when run from a build directory.
-std::string defaultFdpPath() {
-  const QString installed = QCoreApplication::applicationDirPath() + "/../share/lacrima/default-head.fdp.json";
-  if (QFileInfo::exists(installed)) return QFileInfo(installed).absoluteFilePath().toStdString();
-  return LACRIMA_SOURCE_MEDIA_DIR "/default-head.fdp.json";
-}
 
 // "3=400", "open_jaw=-200" -> channel values.
 FapValues parseFapValues(const QStringList& items) {
@@ -122,7 +114,7 @@ int run(QCommandLineParser& parser) {
       throw FileError({rigging::defaultHeadPackageDir(), 0, 0},
                       "the default head is not in the cache; run packaging/fetch-default-head.sh first");
     mesh = rigging::loadDefaultHead();
-    if (fdpPath.empty()) fdpPath = defaultFdpPath();
+    if (fdpPath.empty()) fdpPath = findMediaFile("default-head.fdp.json");
   } else {
     mesh = rigging::importHeadMesh(parser.value("mesh").toStdString());
   }

@@ -1,23 +1,23 @@
 #include "BenchSupport.h"
 
+#include <lacrima/common/Milliseconds.h>
+
 #include <algorithm>
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace lacrima::bench {
 
 Timing timeRuns(int runs, const std::function<void()>& body) {
-  using Clock = std::chrono::steady_clock;
   body();  // warm caches and allocators so the first run is not an outlier
   std::vector<double> ms;
   ms.reserve(static_cast<size_t>(runs));
   for (int i = 0; i < runs; ++i) {
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     body();
-    ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    ms.push_back(millisecondsSince(start));
   }
   std::sort(ms.begin(), ms.end());
   Timing t;
@@ -28,6 +28,20 @@ Timing timeRuns(int runs, const std::function<void()>& body) {
     t.maxMs = ms.back();
   }
   return t;
+}
+
+void writeTiming(JsonWriter& json, std::string_view name, const Timing& t, std::optional<double> targetBelow) {
+  json.key(name);
+  json.beginObject();
+  json.field("median", t.medianMs);
+  json.field("min", t.minMs);
+  json.field("max", t.maxMs);
+  json.field("runs", t.runs);
+  if (targetBelow) {
+    json.field("target_below", *targetBelow);
+    json.field("pass", t.medianMs < *targetBelow);
+  }
+  json.endObject();
 }
 
 static long long statusField(const char* field) {
@@ -53,25 +67,6 @@ bool resetPeakMemory() {
   refs << "5";
   refs.flush();
   return static_cast<bool>(refs);
-}
-
-bool parseWholeNumber(const char* text, int low, int high, int& out) {
-  char* end = nullptr;
-  const long value = std::strtol(text, &end, 10);
-  if (end == text || *end != '\0' || value < low || value > high) return false;
-  out = static_cast<int>(value);
-  return true;
-}
-
-bool parseSize(const std::string& text, int minWidth, int minHeight, int max, int& width, int& height) {
-  const auto x = text.find('x');
-  int w = 0, h = 0;
-  if (x == std::string::npos || !parseWholeNumber(text.substr(0, x).c_str(), minWidth, max, w) ||
-      !parseWholeNumber(text.substr(x + 1).c_str(), minHeight, max, h))
-    return false;
-  width = w;
-  height = h;
-  return true;
 }
 
 }  // namespace lacrima::bench

@@ -1,10 +1,11 @@
 #pragma once
 // Small helpers shared by lacrima-bench subcommands: wall-clock timing with medians, the
-// process's peak resident memory, so each benchmark can put cost beside what it measures, and
-// command-line number and size parsing.
-#include <chrono>
+// process's peak resident memory, so each benchmark can put cost beside what it measures.
+#include <lacrima/common/JsonWriter.h>
+
 #include <functional>
-#include <string>
+#include <optional>
+#include <string_view>
 
 namespace lacrima::bench {
 
@@ -16,17 +17,15 @@ struct Timing {
 // Runs `body` `runs` times (after one warm-up run) and reports the spread in milliseconds.
 Timing timeRuns(int runs, const std::function<void()>& body);
 
+// `name`: {median, min, max, runs}, with target_below and pass when there is a target.
+void writeTiming(JsonWriter& json, std::string_view name, const Timing& t,
+                 std::optional<double> targetBelow = std::nullopt);
+
 // Resident memory in bytes (VmRSS) and the peak since the last resetPeakMemory() (VmHWM).
 // resetPeakMemory() uses /proc/self/clear_refs; returns false where the kernel refuses it,
 // and the peak then covers the whole process lifetime.
 long long residentBytes();
 long long peakResidentBytes();
 bool resetPeakMemory();
-
-// A command-line whole number in [low, high]; false (out untouched) for anything else.
-bool parseWholeNumber(const char* text, int low, int high, int& out);
-// A command-line image or window size "WxH" with minWidth <= W <= max and minHeight <= H <= max;
-// false (both untouched) for anything else.
-bool parseSize(const std::string& text, int minWidth, int minHeight, int max, int& width, int& height);
 
 }  // namespace lacrima::bench

@@ -4,6 +4,7 @@
 // "instant": building the window and the 70 sliders, refreshing all sliders on a time change,
 // one slider drag step (an undo command merged into the drag), and painting the timeline of a
 // long animation.
+#include "BenchCommandLine.h"
 #include "BenchSupport.h"
 
 #include <lacrima/common/FapTable.h>
@@ -43,48 +44,18 @@ struct Options {
   bool json = false;
 };
 
-void printHelp(FILE* out) {
-  std::fprintf(out,
-               "usage: lacrima-bench editor [--frames N] [--warm-up N] [--size WxH] [--json]\n\n"
-               "Times the editor's widgets and its live preview with %d tear particles.\n"
-               "The preview needs an X display (OGRE is GLX only): run under\n"
-               "  xvfb-run -a -s \"-screen 0 1280x1024x24\" lacrima-bench editor\n"
-               "Without a display or without the default head, only the widget figures are printed.\n\n"
-               "  --frames N    timed preview frames (default 110)\n"
-               "  --warm-up N   preview frames before timing (default 44)\n"
-               "  --size WxH    editor window size (default 1440x900: a 628x598 viewport)\n"
-               "  --json        one JSON object instead of the table\n",
-               2 * kTearsPerEye);
-}
-
-int parseOptions(int argc, char** argv, Options& options) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") {
-      printHelp(stdout);
-      return 1;
-    }
-    if (arg == "--json") {
-      options.json = true;
-    } else if (arg == "--size" && i + 1 < argc) {
-      const std::string size = argv[++i];
-      if (!parseSize(size, 640, 480, 8000, options.width, options.height)) {
-        std::fprintf(stderr, "lacrima-bench editor: --size takes WxH, e.g. 1440x900, not '%s'\n", size.c_str());
-        return 2;
-      }
-    } else if ((arg == "--frames" || arg == "--warm-up") && i + 1 < argc) {
-      int& target = arg == "--frames" ? options.frames : options.warmUp;
-      if (!parseWholeNumber(argv[++i], arg == "--frames" ? 1 : 0, 100000, target)) {
-        std::fprintf(stderr, "lacrima-bench editor: %s takes a whole number, not '%s'\n", arg.c_str(), argv[i]);
-        return 2;
-      }
-    } else {
-      std::fprintf(stderr, "lacrima-bench editor: unknown or incomplete option '%s'\n\n", arg.c_str());
-      printHelp(stderr);
-      return 2;
-    }
-  }
-  return 0;
+std::optional<int> parseOptions(int argc, char** argv, Options& options) {
+  BenchCommandLine line("editor",
+                        QString("Times the editor's widgets and its live preview with %1 tear particles.\n"
+                                "The preview needs an X display (OGRE is GLX only): run under\n"
+                                "  xvfb-run -a -s \"-screen 0 1280x1024x24\" lacrima-bench editor\n"
+                                "Without a display or without the default head, only the widget figures are printed.")
+                            .arg(2 * kTearsPerEye));
+  line.wholeNumber("frames", "N", "Timed preview frames (default 110).", 1, 100000, options.frames);
+  line.wholeNumber("warm-up", "N", "Preview frames before timing (default 44).", 0, 100000, options.warmUp);
+  line.imageSize("size", "Editor window size (default 1440x900: a 628x598 viewport).", options.width, options.height);
+  line.flag("json", "One JSON object instead of the table.", options.json);
+  return line.parse(argc, argv);
 }
 
 // Two full poses a second apart: every slider changes between them.
@@ -121,21 +92,11 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-void timingJson(JsonWriter& json, std::string_view name, const Timing& t) {
-  json.key(name);
-  json.beginObject();
-  json.field("median", t.medianMs);
-  json.field("min", t.minMs);
-  json.field("max", t.maxMs);
-  json.field("runs", t.runs);
-  json.endObject();
-}
-
 }  // namespace
 
 int runEditor(int argc, char** argv) {
   Options options;
-  if (const int status = parseOptions(argc, argv, options)) return status == 1 ? 0 : status;
+  if (const std::optional<int> status = parseOptions(argc, argv, options)) return *status;
 
   // No display: the widget figures still mean something on the offscreen platform.
   const bool display = std::getenv("DISPLAY") && *std::getenv("DISPLAY");
@@ -252,13 +213,13 @@ int runEditor(int argc, char** argv) {
     JsonWriter json(JsonWriter::Layout::Compact);
     json.beginObject();
     json.field("benchmark", "editor");
-    timingJson(json, "window_build_ms", windowBuild);
-    timingJson(json, "slider_panel_build_ms", panelBuild);
-    timingJson(json, "slider_refresh_ms", sliderRefresh);
-    timingJson(json, "slider_drag_step_ms", dragStep);
-    timingJson(json, "timeline_paint_all_ms", paintAll);
-    timingJson(json, "timeline_paint_zoomed_ms", paintZoomed);
-    timingJson(json, "timeline_scrub_ms", scrub);
+    writeTiming(json, "window_build_ms", windowBuild);
+    writeTiming(json, "slider_panel_build_ms", panelBuild);
+    writeTiming(json, "slider_refresh_ms", sliderRefresh);
+    writeTiming(json, "slider_drag_step_ms", dragStep);
+    writeTiming(json, "timeline_paint_all_ms", paintAll);
+    writeTiming(json, "timeline_paint_zoomed_ms", paintZoomed);
+    writeTiming(json, "timeline_scrub_ms", scrub);
     json.field("timeline_keys", static_cast<int>(longModel.document().keys.keys().size()));
     json.key("preview");
     json.beginObject();

@@ -1,5 +1,6 @@
 // lacrima-bench fapio: write and read a long 70-channel FAP animation, with the project's
 // targets beside the figures (< 50 ms to write, < 50 ms to read, read peak < 3x the file).
+#include "BenchCommandLine.h"
 #include "BenchSupport.h"
 
 #include <lacrima/common/JsonWriter.h>
@@ -34,46 +35,15 @@ struct Options {
   bool json = false;
 };
 
-void printHelp(FILE* out) {
-  std::fprintf(
-      out,
-      "usage: lacrima-bench fapio [--frames N] [--runs N] [--json]\n\n"
-      "Writes a deterministic pseudo-random 70-channel FAP animation to a temporary file,\n"
-      "then times FapWriter::save and FapReader::readFile and measures the read's peak memory.\n\n"
-      "  --frames N   frames at %g fps (default 13200: 10 minutes)\n"
-      "  --runs N     timed runs of each operation, after one warm-up (default 15)\n"
-      "  --json       print one JSON object instead of the table\n"
-      "  --help       this text\n",
-      kFps);
-}
-
-// 0 = options fine, 1 = --help was printed, 2 = usage error (printed).
-int parseOptions(int argc, char** argv, Options& options) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") {
-      printHelp(stdout);
-      return 1;
-    }
-    if (arg == "--json") {
-      options.json = true;
-    } else if ((arg == "--frames" || arg == "--runs") && i + 1 < argc) {
-      const bool frames = arg == "--frames";
-      if (!parseWholeNumber(argv[++i], 1, frames ? 1'000'000 : 1000,
-                      frames ? options.frames : options.runs)) {
-        std::fprintf(stderr,
-                     "lacrima-bench fapio: %s takes a whole number from 1 to %d, not '%s'\n",
-                     arg.c_str(), frames ? 1'000'000 : 1000, argv[i]);
-        return 2;
-      }
-    } else {
-      std::fprintf(stderr, "lacrima-bench fapio: unknown or incomplete option '%s'\n\n",
-                   arg.c_str());
-      printHelp(stderr);
-      return 2;
-    }
-  }
-  return 0;
+std::optional<int> parseOptions(int argc, char** argv, Options& options) {
+  BenchCommandLine line("fapio",
+                        "Writes a deterministic pseudo-random 70-channel FAP animation to a temporary file,\n"
+                        "then times FapWriter::save and FapReader::readFile and measures the read's peak memory.");
+  line.wholeNumber("frames", "N", QString("Frames at %1 fps (default 13200: 10 minutes).").arg(kFps), 1, 1'000'000,
+                   options.frames);
+  line.wholeNumber("runs", "N", "Timed runs of each operation, after one warm-up (default 15).", 1, 1000, options.runs);
+  line.flag("json", "Print one JSON object instead of the table.", options.json);
+  return line.parse(argc, argv);
 }
 
 // Typical amplitude per channel, in FAPU counts: small for lips and brows, large for the
@@ -120,7 +90,8 @@ long long fileSize(const std::string& path) {
 
 const char* mark(bool pass) { return pass ? "PASS" : "MISS"; }
 
-void writeTiming(JsonWriter& json, std::string_view name, const Timing& t, double targetMs) {
+// Unlike writeTiming (BenchSupport.h) without runs: fapio states them once, at the top level.
+void writeTimingAgainst(JsonWriter& json, std::string_view name, const Timing& t, double targetMs) {
   json.key(name);
   json.beginObject();
   json.field("median", t.medianMs);
@@ -135,7 +106,7 @@ void writeTiming(JsonWriter& json, std::string_view name, const Timing& t, doubl
 
 int runFapIo(int argc, char** argv) {
   Options options;
-  if (const int status = parseOptions(argc, argv, options)) return status == 1 ? 0 : status;
+  if (const std::optional<int> status = parseOptions(argc, argv, options)) return *status;
 
   QTemporaryDir folder;
   if (!folder.isValid()) {
@@ -183,8 +154,8 @@ int runFapIo(int argc, char** argv) {
       json.field("fps", kFps);
       json.field("runs", options.runs);
       json.field("file_bytes", bytes);
-      writeTiming(json, "write_ms", write, kWriteTargetMs);
-      writeTiming(json, "read_ms", read, kReadTargetMs);
+      writeTimingAgainst(json, "write_ms", write, kWriteTargetMs);
+      writeTimingAgainst(json, "read_ms", read, kReadTargetMs);
       json.field("read_peak_bytes", peakBytes);
       json.field("read_peak_ratio", peakRatio);
       json.field("read_peak_target_below", kPeakTargetRatio);

@@ -2,6 +2,7 @@
 // method (several time factors m) on refinements of a unit icosphere and a flat equilateral
 // lattice, the error against the exact distance (great circle, Euclidean) beside the set-up
 // and per-source milliseconds; then milliseconds per feature point on the real heads.
+#include "BenchCommandLine.h"
 #include "BenchSupport.h"
 #include "../rigging/GeodesicTestSurfaces.h"
 
@@ -70,54 +71,22 @@ struct Row {
   double radius = kNaN, listedPerPoint = kNaN, maxWeightDiffToHeat = kNaN;
 };
 
-void printHelp(FILE* out) {
-  std::fprintf(
-      out,
-      "usage: lacrima-bench geodesics [--runs N] [--sources N] [--quick] [--ict FILE]\n"
-      "                               [--json] [--csv FILE]\n\n"
-      "Geodesic distance: error against exact distances beside time, for Dijkstra and the heat\n"
-      "method (m = 0.25, 1, 4; and m = 1 with the straight-line bound InfluenceWeights uses) on\n"
-      "an icosphere and a flat lattice at four refinements, then milliseconds per feature point\n"
-      "(%d points) on the default head and the ICT head.\n\n"
-      "  --runs N      timed runs of each measurement, after one warm-up (default 3)\n"
-      "  --sources N   sources per synthetic surface, errors averaged over them (default 8)\n"
-      "  --quick       skip the finest refinement\n"
-      "  --ict FILE    the ICT-FaceKit head (default: the shared folder's copy)\n"
-      "  --json        print one JSON object instead of the tables\n"
-      "  --csv FILE    also write every row as CSV\n"
-      "  --help        this text\n",
-      kHeadPoints);
-}
-
-// 0 = options fine, 1 = --help was printed, 2 = usage error (printed).
-int parseOptions(int argc, char** argv, Options& options) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") {
-      printHelp(stdout);
-      return 1;
-    }
-    if (arg == "--json") {
-      options.json = true;
-    } else if (arg == "--quick") {
-      options.quick = true;
-    } else if ((arg == "--csv" || arg == "--ict") && i + 1 < argc) {
-      (arg == "--csv" ? options.csv : options.ictPath) = argv[++i];
-    } else if ((arg == "--runs" || arg == "--sources") && i + 1 < argc) {
-      const bool runs = arg == "--runs";
-      if (!parseWholeNumber(argv[++i], 1, runs ? 1000 : 64, runs ? options.runs : options.sources)) {
-        std::fprintf(stderr, "lacrima-bench geodesics: %s takes a whole number from 1 to %d, not '%s'\n",
-                     arg.c_str(), runs ? 1000 : 64, argv[i]);
-        return 2;
-      }
-    } else {
-      std::fprintf(stderr, "lacrima-bench geodesics: unknown or incomplete option '%s'\n\n",
-                   arg.c_str());
-      printHelp(stderr);
-      return 2;
-    }
-  }
-  return 0;
+std::optional<int> parseOptions(int argc, char** argv, Options& options) {
+  BenchCommandLine line(
+      "geodesics",
+      QString("Geodesic distance: error against exact distances beside time, for Dijkstra and the heat\n"
+              "method (m = 0.25, 1, 4; and m = 1 with the straight-line bound InfluenceWeights uses) on\n"
+              "an icosphere and a flat lattice at four refinements, then milliseconds per feature point\n"
+              "(%1 points) on the default head and the ICT head.")
+          .arg(kHeadPoints));
+  line.wholeNumber("runs", "N", "Timed runs of each measurement, after one warm-up (default 3).", 1, 1000, options.runs);
+  line.wholeNumber("sources", "N", "Sources per synthetic surface, errors averaged over them (default 8).", 1, 64,
+                   options.sources);
+  line.flag("quick", "Skip the finest refinement.", options.quick);
+  line.text("ict", "FILE", "The ICT-FaceKit head (default: the shared folder's copy).", options.ictPath);
+  line.flag("json", "Print one JSON object instead of the tables.", options.json);
+  line.text("csv", "FILE", "Also write every row as CSV.", options.csv);
+  return line.parse(argc, argv);
 }
 
 struct Case {
@@ -451,7 +420,7 @@ std::vector<std::string> skinOf(const HeadMesh& head) {
 
 int runGeodesics(int argc, char** argv) {
   Options options;
-  if (const int status = parseOptions(argc, argv, options)) return status == 1 ? 0 : status;
+  if (const std::optional<int> status = parseOptions(argc, argv, options)) return *status;
 
   std::vector<Row> rows;
   std::vector<std::string> notes;

@@ -3,10 +3,11 @@
 // blend, tear simulation, surface, trails) and FaceRenderer draws it (upload, render, read
 // back). Target: >= 30 fps at 1280x720 with software rendering. Needs an X display (OGRE is
 // GLX only): run under xvfb-run.
-#include "BenchSupport.h"
+#include "BenchCommandLine.h"
 
 #include <lacrima/common/JsonWriter.h>
-#include <lacrima/playback/MediaFiles.h>
+#include <lacrima/common/MediaFiles.h>
+#include <lacrima/common/Milliseconds.h>
 #include <lacrima/playback/Playback.h>
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/scene/FaceRenderer.h>
@@ -15,7 +16,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -26,7 +26,6 @@ namespace lacrima::bench {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 constexpr double kTargetFps = 30;
 
 struct Options {
@@ -35,47 +34,17 @@ struct Options {
   bool json = false;
 };
 
-void printHelp(FILE* out) {
-  std::fprintf(out,
-               "usage: lacrima-bench player [--size WxH] [--frames N] [--json]\n\n"
-               "Plays the demo (media/demo/crying.fap) on the default head through the player's\n"
-               "playback and renderer, one render per animation frame, and reports frames per second\n"
-               "of the whole loop with each stage's share. Needs an X display: run under xvfb-run.\n\n"
-               "  --size WxH   image size (default 1280x720)\n"
-               "  --frames N   frames to play (default: the whole demo; longer runs replay it)\n"
-               "  --json       one JSON object instead of the table\n");
+std::optional<int> parseOptions(int argc, char** argv, Options& o) {
+  BenchCommandLine line("player",
+                        "Plays the demo (media/demo/crying.fap) on the default head through the player's\n"
+                        "playback and renderer, one render per animation frame, and reports frames per second\n"
+                        "of the whole loop with each stage's share. Needs an X display: run under xvfb-run.");
+  line.imageSize("size", "Image size (default 1280x720).", o.width, o.height);
+  line.wholeNumber("frames", "N", "Frames to play (default: the whole demo; longer runs replay it).", 1, 1000000,
+                   o.frames);
+  line.flag("json", "One JSON object instead of the table.", o.json);
+  return line.parse(argc, argv);
 }
-
-// 0 = run, 1 = help printed, 2 = usage error.
-int parse(int argc, char** argv, Options& o) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const bool hasValue = i + 1 < argc;
-    if (arg == "--help" || arg == "-h") {
-      printHelp(stdout);
-      return 1;
-    } else if (arg == "--json") {
-      o.json = true;
-    } else if (arg == "--frames" && hasValue) {
-      if (!parseWholeNumber(argv[++i], 1, 1000000, o.frames)) {
-        std::fprintf(stderr, "lacrima-bench player: --frames takes 1..1000000\n");
-        return 2;
-      }
-    } else if (arg == "--size" && hasValue) {
-      if (!parseSize(argv[++i], 16, 16, 8192, o.width, o.height)) {
-        std::fprintf(stderr, "lacrima-bench player: --size takes WIDTHxHEIGHT, e.g. 1280x720\n");
-        return 2;
-      }
-    } else {
-      std::fprintf(stderr, "lacrima-bench player: unknown or incomplete option '%s'\n\n", arg.c_str());
-      printHelp(stderr);
-      return 2;
-    }
-  }
-  return 0;
-}
-
-double msSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
 
 struct Stage {
   const char* name;
@@ -86,7 +55,7 @@ struct Stage {
 
 int runPlayer(int argc, char** argv) {
   Options o;
-  if (const int status = parse(argc, argv, o)) return status == 1 ? 0 : status;
+  if (const std::optional<int> status = parseOptions(argc, argv, o)) return *status;
   if (std::getenv("DISPLAY") == nullptr || !*std::getenv("DISPLAY")) {
     std::fprintf(stderr, "lacrima-bench player: needs an X display (OGRE renders through GLX); run it as\n"
                          "  xvfb-run -a -s \"-screen 0 1280x1024x24\" lacrima-bench player\n");
@@ -102,11 +71,11 @@ int runPlayer(int argc, char** argv) {
   QGuiApplication app(qtArgc, qtArgv);
 
   try {
-    const auto rigStart = Clock::now();
+    const auto rigStart = SteadyClock::now();
     const auto rig = playback::loadDefaultHeadRig();
-    const double rigMs = msSince(rigStart);
+    const double rigMs = millisecondsSince(rigStart);
     playback::Playback playback(*rig);
-    const std::string demo = playback::findMediaFile("demo/crying.fap");
+    const std::string demo = findMediaFile("demo/crying.fap");
     playback.open(demo);
     scene::FaceRenderer renderer(rig->head, QSize(o.width, o.height));
     // Warm-up: the first render compiles the shaders.
@@ -120,15 +89,15 @@ int runPlayer(int argc, char** argv) {
     frameMs.reserve(static_cast<std::size_t>(frames));
     int peakParticles = 0;
     playback.reset();
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     for (int i = 0; i < frames; ++i) {
       const int f = i % demoFrames;
-      const auto t0 = Clock::now();
+      const auto t0 = SteadyClock::now();
       if (f == 0 && i > 0) playback.reset();
       const playback::FrameView& view = playback.seek(f / playback.frameRate());
       renderer.show(view);
       const QImage image = renderer.render();
-      frameMs.push_back(msSince(t0));
+      frameMs.push_back(millisecondsSince(t0));
       const playback::ProducerTimes& p = playback.producer().lastTimes();
       const scene::RenderTimes& r = renderer.lastTimes();
       const std::array<double, 7> ms{p.blend, p.simulation, p.surface, p.trails, r.upload, r.render, r.readback};
@@ -136,7 +105,7 @@ int runPlayer(int argc, char** argv) {
       peakParticles = std::max(peakParticles, playback.producer().particleCount());
       if (image.isNull()) throw std::runtime_error("the renderer returned no image");
     }
-    const double wallMs = msSince(start);
+    const double wallMs = millisecondsSince(start);
     const double fps = frames * 1000.0 / wallMs;
     std::vector<double> sorted = frameMs;
     std::sort(sorted.begin(), sorted.end());

@@ -6,6 +6,7 @@
 // default head and ICT head are rigged through buildRig with their feature-point files
 // (RealHeads.h); for those the rig build (geodesic weights + bake) is timed too, since that is
 // what a user waits for when a head is loaded.
+#include "BenchCommandLine.h"
 #include "BenchSupport.h"
 #include "RealHeads.h"
 
@@ -50,45 +51,18 @@ struct Figures {
   Timing bake, blend;
 };
 
-void printHelp(FILE* out) {
-  std::fprintf(out,
-               "usage: lacrima-bench poses [--frames N] [--runs N] [--json]\n\n"
-               "Bakes all FAP poses of synthetic heads with the default head's and the ICT head's\n"
-               "vertex counts, and of the real default and ICT heads rigged by buildRig (skipped\n"
-               "with a note when absent), then blends every pose at once per frame.\n\n"
-               "  --frames N   timed blends per head, after one warm-up (default 2000)\n"
-               "  --runs N     timed bakes per head, after one warm-up (default 5)\n"
-               "  --rig-runs N timed buildRig calls per real head, after one warm-up (default 1)\n"
-               "  --json       print one JSON object instead of the table\n"
-               "  --help       this text\n");
-}
-
-// 0 = options fine, 1 = --help was printed, 2 = usage error (printed).
-int parseOptions(int argc, char** argv, Options& options) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") {
-      printHelp(stdout);
-      return 1;
-    }
-    if (arg == "--json") {
-      options.json = true;
-    } else if ((arg == "--frames" || arg == "--runs" || arg == "--rig-runs") && i + 1 < argc) {
-      const bool frames = arg == "--frames";
-      const int high = frames ? 1'000'000 : 1000;
-      int& target = frames ? options.frames : (arg == "--runs" ? options.runs : options.rigRuns);
-      if (!parseWholeNumber(argv[++i], 1, high, target)) {
-        std::fprintf(stderr, "lacrima-bench poses: %s takes a whole number from 1 to %d, not '%s'\n",
-                     arg.c_str(), high, argv[i]);
-        return 2;
-      }
-    } else {
-      std::fprintf(stderr, "lacrima-bench poses: unknown or incomplete option '%s'\n\n", arg.c_str());
-      printHelp(stderr);
-      return 2;
-    }
-  }
-  return 0;
+std::optional<int> parseOptions(int argc, char** argv, Options& options) {
+  BenchCommandLine line("poses",
+                        "Bakes all FAP poses of synthetic heads with the default head's and the ICT head's\n"
+                        "vertex counts, and of the real default and ICT heads rigged by buildRig (skipped\n"
+                        "with a note when absent), then blends every pose at once per frame.");
+  line.wholeNumber("frames", "N", "Timed blends per head, after one warm-up (default 2000).", 1, 1'000'000,
+                   options.frames);
+  line.wholeNumber("runs", "N", "Timed bakes per head, after one warm-up (default 5).", 1, 1000, options.runs);
+  line.wholeNumber("rig-runs", "N", "Timed buildRig calls per real head, after one warm-up (default 1).", 1, 1000,
+                   options.rigRuns);
+  line.flag("json", "Print one JSON object instead of the table.", options.json);
+  return line.parse(argc, argv);
 }
 
 // Frames that keep every driven channel non-zero (so every pose costs its full price) and
@@ -159,20 +133,6 @@ synthetic::HeadSpec ictSizedSpec() {
 }
 
 const char* mark(bool pass) { return pass ? "PASS" : "MISS"; }
-
-void writeTiming(JsonWriter& json, std::string_view name, const Timing& t, std::optional<double> target) {
-  json.key(name);
-  json.beginObject();
-  json.field("median", t.medianMs);
-  json.field("min", t.minMs);
-  json.field("max", t.maxMs);
-  json.field("runs", t.runs);
-  if (target) {
-    json.field("target_below", *target);
-    json.field("pass", t.medianMs < *target);
-  }
-  json.endObject();
-}
 
 struct Measured {
   HeadCase head;
@@ -246,7 +206,7 @@ void printTable(const std::vector<Measured>& measured) {
 
 int runPoses(int argc, char** argv) {
   Options options;
-  if (const int status = parseOptions(argc, argv, options)) return status == 1 ? 0 : status;
+  if (const std::optional<int> status = parseOptions(argc, argv, options)) return *status;
 
   // Each head is measured by measureHead(mesh, rig, ...); a loaded head with its own weights
   // is one more push_back here, with the target of the head it stands for.

@@ -3,6 +3,7 @@
 // beside the figures: 100 particles <= 1 ms per frame, 10,000 particles <= 45 ms per frame
 // (22 fps), neighbour search >= 1 M particles per second. The frame time is the whole pipeline,
 // since the player pays for all three stages every frame.
+#include "BenchCommandLine.h"
 #include "BenchSupport.h"
 #include "Octree.h"  // internal to lacrima_tears: the 2009 octree, measured against the grid
 #include "TearsPipeline.h"
@@ -43,128 +44,44 @@ struct Options {
   TearSettings settings;
 };
 
-void printHelp(FILE* out) {
-  std::fprintf(out,
-               "usage: lacrima-bench tears [--particles N] [--frames F] [--fps R] [--param NAME=VALUE ...]\n"
-               "                           [--neighbours grid|octree] [--tension mueller|akinci] [--skin S]\n"
-               "                           [--solver wcsph|dfsph] [--max-step MS] [--substep-factor F]\n"
-               "                           [--head sheet|default]\n"
-               "                           [--sway] [--json]\n\n"
-               "Runs the tear pipeline (simulation + surface mesher + trails) on a generated, tilted\n"
-               "cheek-sized sheet (decimetres) or the default head, with N/2 particles commanded per\n"
-               "eye from the first frame, and reports the median frame time of the whole pipeline.\n\n"
-               "  --particles N   particles in all (default 100)\n"
-               "  --frames F      frames to simulate (default 110: 5 s at 22 fps)\n"
-               "  --fps R         animation frame rate (default 22)\n"
-               "  --param N=V     a tear parameter (pressure viscosity tension adhesion friction gravity\n"
-               "                  kernel node_size cube_size iso), validated against its range\n"
-               "  --neighbours    neighbour structure (default grid)\n"
-               "  --tension       surface tension model (default mueller)\n"
-               "  --solver S      pressure solver: wcsph (equation of state) or dfsph (divergence-free)\n"
-               "  --max-step MS   longest sub-step in milliseconds (default: no cap)\n"
-               "  --substep-factor F  scales the CFL and acceleration safety factors (default 1)\n"
-               "  --skin S        Verlet skin of the pair list, in kernel radii (default 0.3; 0 = no reuse)\n"
-               "  --head H        sheet (default) or default: the cached default head (skipped when absent)\n"
-               "  --sway          the sheet (or head) sways (rotates and translates) every frame\n"
-               "  --json          one JSON object instead of the table\n");
-}
-
-// 0 = run, 1 = help printed, 2 = usage error.
-int parse(int argc, char** argv, Options& o) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const bool hasValue = i + 1 < argc;
-    if (arg == "--help" || arg == "-h") {
-      printHelp(stdout);
-      return 1;
-    } else if (arg == "--json") {
-      o.json = true;
-    } else if (arg == "--sway") {
-      o.sway = true;
-    } else if (arg == "--head" && hasValue) {
-      const std::string v = argv[++i];
-      if (v != "sheet" && v != "default") {
-        std::fprintf(stderr, "lacrima-bench tears: --head takes sheet or default\n");
-        return 2;
-      }
-      o.head = v == "default";
-    } else if (arg == "--particles" && hasValue) {
-      if (!parseWholeNumber(argv[++i], 0, 2 * kMaxTearParticles, o.particles)) {
-        std::fprintf(stderr, "lacrima-bench tears: --particles takes 0..%d\n", 2 * kMaxTearParticles);
-        return 2;
-      }
-    } else if (arg == "--frames" && hasValue) {
-      if (!parseWholeNumber(argv[++i], 1, 1000000, o.frames)) {
-        std::fprintf(stderr, "lacrima-bench tears: --frames takes 1..1000000\n");
-        return 2;
-      }
-    } else if (arg == "--fps" && hasValue) {
-      o.fps = std::atof(argv[++i]);
-      if (!(o.fps > 0 && o.fps <= 1000)) {
-        std::fprintf(stderr, "lacrima-bench tears: --fps takes a rate in (0, 1000]\n");
-        return 2;
-      }
-    } else if (arg == "--param" && hasValue) {
-      const std::string pair = argv[++i];
-      const auto eq = pair.find('=');
-      char* end = nullptr;
-      const double value = eq == std::string::npos ? 0 : std::strtod(pair.c_str() + eq + 1, &end);
-      if (eq == std::string::npos || end == pair.c_str() + eq + 1 || *end) {
-        std::fprintf(stderr, "lacrima-bench tears: --param takes NAME=VALUE, not '%s'\n", pair.c_str());
-        return 2;
-      }
-      try {
-        o.settings.set(pair.substr(0, eq), value);
-      } catch (const std::invalid_argument& e) {
-        std::fprintf(stderr, "lacrima-bench tears: %s\n", e.what());
-        return 2;
-      }
-    } else if (arg == "--skin" && hasValue) {
-      o.skin = std::atof(argv[++i]);
-      if (!(o.skin >= 0 && o.skin <= 2)) {
-        std::fprintf(stderr, "lacrima-bench tears: --skin takes 0..2 kernel radii\n");
-        return 2;
-      }
-    } else if (arg == "--solver" && hasValue) {
-      const std::string v = argv[++i];
-      if (v != "wcsph" && v != "dfsph") {
-        std::fprintf(stderr, "lacrima-bench tears: --solver takes wcsph or dfsph\n");
-        return 2;
-      }
-      o.solver = v == "wcsph" ? PressureMethod::Wcsph : PressureMethod::Dfsph;
-    } else if (arg == "--max-step" && hasValue) {
-      o.maxStepMs = std::atof(argv[++i]);
-      if (!(o.maxStepMs >= 0 && o.maxStepMs <= 1000)) {
-        std::fprintf(stderr, "lacrima-bench tears: --max-step takes 0..1000 ms\n");
-        return 2;
-      }
-    } else if (arg == "--substep-factor" && hasValue) {
-      o.substepFactor = std::atof(argv[++i]);
-      if (!(o.substepFactor > 0 && o.substepFactor <= 10)) {
-        std::fprintf(stderr, "lacrima-bench tears: --substep-factor takes (0, 10]\n");
-        return 2;
-      }
-    } else if (arg == "--neighbours" && hasValue) {
-      const std::string v = argv[++i];
-      if (v != "grid" && v != "octree") {
-        std::fprintf(stderr, "lacrima-bench tears: --neighbours takes grid or octree\n");
-        return 2;
-      }
-      o.neighbours = v == "grid" ? NeighbourMethod::Grid : NeighbourMethod::Octree;
-    } else if (arg == "--tension" && hasValue) {
-      const std::string v = argv[++i];
-      if (v != "mueller" && v != "akinci") {
-        std::fprintf(stderr, "lacrima-bench tears: --tension takes mueller or akinci\n");
-        return 2;
-      }
-      o.tension = v == "mueller" ? SurfaceTensionModel::Mueller : SurfaceTensionModel::Akinci;
-    } else {
-      std::fprintf(stderr, "lacrima-bench tears: unknown or incomplete option '%s'\n\n", arg.c_str());
-      printHelp(stderr);
-      return 2;
-    }
-  }
-  return 0;
+std::optional<int> parseOptions(int argc, char** argv, Options& o) {
+  BenchCommandLine line("tears",
+                        "Runs the tear pipeline (simulation + surface mesher + trails) on a generated, tilted\n"
+                        "cheek-sized sheet (decimetres) or the default head, with N/2 particles commanded per\n"
+                        "eye from the first frame, and reports the median frame time of the whole pipeline.");
+  line.wholeNumber("particles", "N", "Particles in all (default 100).", 0, 2 * kMaxTearParticles, o.particles);
+  line.wholeNumber("frames", "F", "Frames to simulate (default 110: 5 s at 22 fps).", 1, 1000000, o.frames);
+  line.number("fps", "R", "Animation frame rate (default 22).", 0, 1000, o.fps, BenchCommandLine::Low::Excluded);
+  line.option("param", "NAME=VALUE",
+              "A tear parameter (pressure viscosity tension adhesion friction gravity kernel node_size cube_size "
+              "iso), validated against its range; repeatable.",
+              [&o](const QString& pair) {
+                const qsizetype eq = pair.indexOf('=');
+                bool ok = false;
+                const double value = eq < 0 ? 0 : pair.mid(eq + 1).toDouble(&ok);
+                if (!ok) return "expected NAME=VALUE, not '" + pair.toStdString() + "'";
+                try {
+                  o.settings.set(pair.left(eq).toStdString(), value);
+                } catch (const std::invalid_argument& e) {
+                  return std::string(e.what());
+                }
+                return std::string();
+              });
+  line.choice("neighbours", "Neighbour structure (default grid).",
+              {{"grid", NeighbourMethod::Grid}, {"octree", NeighbourMethod::Octree}}, o.neighbours);
+  line.choice("tension", "Surface tension model (default mueller).",
+              {{"mueller", SurfaceTensionModel::Mueller}, {"akinci", SurfaceTensionModel::Akinci}}, o.tension);
+  line.choice("solver", "Pressure solver: wcsph (equation of state) or dfsph (divergence-free).",
+              {{"wcsph", PressureMethod::Wcsph}, {"dfsph", PressureMethod::Dfsph}}, o.solver);
+  line.number("max-step", "MS", "Longest sub-step in milliseconds (default: no cap).", 0, 1000, o.maxStepMs);
+  line.number("substep-factor", "F", "Scales the CFL and acceleration safety factors (default 1).", 0, 10,
+              o.substepFactor, BenchCommandLine::Low::Excluded);
+  line.number("skin", "S", "Verlet skin of the pair list, in kernel radii (default 0.3; 0 = no reuse).", 0, 2, o.skin);
+  line.choice("head", "The cheek sheet (default) or the cached default head (skipped when absent).",
+              {{"sheet", false}, {"default", true}}, o.head);
+  line.flag("sway", "The sheet (or head) sways (rotates and translates) every frame.", o.sway);
+  line.flag("json", "One JSON object instead of the table.", o.json);
+  return line.parse(argc, argv);
 }
 
 // Millions of particles per second through one neighbour search (structure + lists).
@@ -206,7 +123,7 @@ const char* mark(bool pass) { return pass ? "PASS" : "MISS"; }
 
 int runTears(int argc, char** argv) {
   Options o;
-  if (const int status = parse(argc, argv, o)) return status == 1 ? 0 : status;
+  if (const std::optional<int> status = parseOptions(argc, argv, o)) return *status;
 
   std::optional<TearScene> scene = benchScene(o.head, "tears");
   if (!scene) return 0;

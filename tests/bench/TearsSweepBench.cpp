@@ -19,7 +19,7 @@
 // reference's and its error is the surface discretisation alone; its ms per frame is that
 // simulation + trails + its own mesher. The reference is WCSPH: DFSPH rows include the model's
 // difference (an incompressible fluid against one with a 0.2 m/s speed of sound).
-#include "BenchSupport.h"
+#include "BenchCommandLine.h"
 #include "SweepPlot.h"
 #include "TearsPipeline.h"
 
@@ -52,51 +52,19 @@ struct Options {
   std::string csv, png;
 };
 
-void printHelp(FILE* out) {
-  std::fprintf(out,
-               "usage: lacrima-bench tears-sweep [--particles N] [--frames F] [--head sheet|default]\n"
-               "                                 [--csv FILE] [--png FILE]\n\n"
-               "Error against a fine reference run beside ms per frame of the full tear pipeline\n"
-               "(simulation + surface + trails) on the cheek sheet or the default head, sweeping the\n"
-               "sub-step safety factor, the kernel size, the cube size, the neighbour structure and\n"
-               "the pressure solver (WCSPH, DFSPH).\n\n"
-               "  --particles N  particles in all (default 200)\n"
-               "  --frames F     frames at 22 fps (default 66)\n"
-               "  --head H       sheet (default) or default: the cached default head with the rig's sources\n"
-               "  --csv FILE     also write the table as CSV\n"
-               "  --png FILE     also draw error against ms per frame (log axes) as a PNG\n");
-}
-
-int parse(int argc, char** argv, Options& o) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const bool hasValue = i + 1 < argc;
-    if (arg == "--help" || arg == "-h") {
-      printHelp(stdout);
-      return 1;
-    }
-    if ((arg == "--particles" || arg == "--frames") && hasValue) {
-      const int high = arg == "--particles" ? 2 * kMaxTearParticles : 100000;
-      if (!parseWholeNumber(argv[++i], 1, high, arg == "--particles" ? o.particles : o.frames)) {
-        std::fprintf(stderr, "lacrima-bench tears-sweep: %s takes 1..%d\n", arg.c_str(), high);
-        return 2;
-      }
-    } else if (arg == "--head" && hasValue) {
-      const std::string v = argv[++i];
-      if (v != "sheet" && v != "default") {
-        std::fprintf(stderr, "lacrima-bench tears-sweep: --head takes sheet or default\n");
-        return 2;
-      }
-      o.head = v == "default";
-    } else if ((arg == "--csv" || arg == "--png") && hasValue) {
-      (arg == "--csv" ? o.csv : o.png) = argv[++i];
-    } else {
-      std::fprintf(stderr, "lacrima-bench tears-sweep: unknown or incomplete option '%s'\n\n", arg.c_str());
-      printHelp(stderr);
-      return 2;
-    }
-  }
-  return 0;
+std::optional<int> parseOptions(int argc, char** argv, Options& o) {
+  BenchCommandLine line("tears-sweep",
+                        "Error against a fine reference run beside ms per frame of the full tear pipeline\n"
+                        "(simulation + surface + trails) on the cheek sheet or the default head, sweeping the\n"
+                        "sub-step safety factor, the kernel size, the cube size, the neighbour structure and\n"
+                        "the pressure solver (WCSPH, DFSPH).");
+  line.wholeNumber("particles", "N", "Particles in all (default 200).", 1, 2 * kMaxTearParticles, o.particles);
+  line.wholeNumber("frames", "F", "Frames at 22 fps (default 66).", 1, 100000, o.frames);
+  line.choice("head", "The cheek sheet (default) or the cached default head with the rig's sources.",
+              {{"sheet", false}, {"default", true}}, o.head);
+  line.text("csv", "FILE", "Also write the table as CSV.", o.csv);
+  line.text("png", "FILE", "Also draw error against ms per frame (log axes) as a PNG.", o.png);
+  return line.parse(argc, argv);
 }
 
 // One run's settings: the quantity it sweeps (series), its value label and what it changes.
@@ -281,7 +249,7 @@ Row compare(const Variant& v, const RunResult& r, const RunResult& ref, double r
 
 int runTearsSweep(int argc, char** argv) {
   Options o;
-  if (const int status = parse(argc, argv, o)) return status == 1 ? 0 : status;
+  if (const std::optional<int> status = parseOptions(argc, argv, o)) return *status;
   const std::optional<TearScene> loaded = benchScene(o.head, "tears-sweep");
   if (!loaded) return 0;
   const TearScene& scene = *loaded;

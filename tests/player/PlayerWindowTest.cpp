@@ -3,7 +3,7 @@
 // tears; a bad file gives an error dialog and keeps the animation; drops open files; toggles
 // and parameters reach the playback.
 #include <lacrima/player/PlayerWindow.h>
-#include <lacrima/player/EffectsPanel.h>
+#include <lacrima/viewport/EffectsPanel.h>
 #include <lacrima/player/TearParametersPanel.h>
 
 #include <lacrima/rigging/DefaultHead.h>

@@ -2,12 +2,12 @@
 // and trails only when the channels and the scene call for them.
 #include "Overlays.h"
 
+#include <lacrima/common/Milliseconds.h>
 #include <lacrima/playback/FrameProducer.h>
 #include <lacrima/tears/SurfaceMesher.h>
 #include <lacrima/tears/TearSimulation.h>
 #include <lacrima/tears/TrailBuilder.h>
 
-#include <chrono>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -15,12 +15,6 @@
 namespace lacrima::playback {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double millisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 tears::TearSettings settingsFor(const SceneSettings& scene) {
   tears::TearSettings settings;
@@ -126,7 +120,7 @@ struct FrameProducer::State {
   // Returns true when the face changed.
   bool blend(const FapValues& v) {
     if (v == values && counters.blends > 0) return false;
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     rig.blender->blend(v, positions, normals);
     times.blend = millisecondsSince(start);
     values = v;
@@ -137,7 +131,7 @@ struct FrameProducer::State {
   void meshSurface() {
     surfaceCurrent = false;
     if (!scene.surface || particles() == 0) return;
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     mesher.update(*simulation);
     times.surface = millisecondsSince(start);
     surfaceCurrent = true;
@@ -154,7 +148,7 @@ struct FrameProducer::State {
       trailsCurrent = true;
     }
     if (!simulation || (particles() == 0 && trails.mesh().empty())) return;
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     trails.update(*simulation, positions, dt);
     times.trails = millisecondsSince(start);
     ++counters.trailRuns;
@@ -222,7 +216,7 @@ const FrameView& FrameProducer::produce(const FapValues& values, double dt, doub
   const bool tearsWanted = commandsTears(values) || s.particles() > 0;
   if (tearsWanted) {
     tears::TearSimulation& simulation = s.ensureSimulation();
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     simulation.step(s.positions, values, dt);
     s.times.simulation = millisecondsSince(start);
     ++s.counters.simulationSteps;

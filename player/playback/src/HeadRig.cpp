@@ -1,7 +1,7 @@
 // Loading and rigging a head in memory (HeadRig.h).
 #include <lacrima/common/Diagnostics.h>
 #include <lacrima/playback/HeadRig.h>
-#include <lacrima/playback/MediaFiles.h>
+#include <lacrima/common/MediaFiles.h>
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/rigging/FeaturePointFile.h>
 #include <lacrima/rigging/MeshImport.h>

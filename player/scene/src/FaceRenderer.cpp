@@ -1,5 +1,7 @@
 #include <lacrima/scene/FaceRenderer.h>
 
+#include <lacrima/common/ImageSize.h>
+#include <lacrima/common/Milliseconds.h>
 #include <lacrima/scene/FaceScene.h>
 #include <lacrima/scene/OgreRuntime.h>
 
@@ -9,18 +11,16 @@
 #include <OgreTextureManager.h>
 #include <OgreViewport.h>
 
-#include <chrono>
 #include <stdexcept>
 
 namespace lacrima::scene {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double millisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+void checkSize(QSize size) {
+  if (!isImageSizeInBounds(size))
+    throw std::invalid_argument("FaceRenderer: image size must be " + std::to_string(kMinImageSide) + ".." +
+                                std::to_string(kMaxImageSide) + " pixels per side");
 }
-
-constexpr int kMaxSide = 8192;
 
 }  // namespace
 
@@ -54,8 +54,7 @@ struct FaceRenderer::State {
 };
 
 FaceRenderer::FaceRenderer(const HeadMesh& neutral, QSize size) : state_(std::make_unique<State>()) {
-  if (size.width() < 1 || size.height() < 1 || size.width() > kMaxSide || size.height() > kMaxSide)
-    throw std::invalid_argument("FaceRenderer: image size must be 1..8192 pixels per side");
+  checkSize(size);
   state_->runtime = OgreRuntime::acquire();
   state_->scene = std::make_unique<FaceScene>(state_->runtime, neutral);
   state_->size = size;
@@ -70,8 +69,7 @@ FaceRenderer::~FaceRenderer() {
 
 void FaceRenderer::resize(QSize size) {
   if (size == state_->size) return;
-  if (size.width() < 1 || size.height() < 1 || size.width() > kMaxSide || size.height() > kMaxSide)
-    throw std::invalid_argument("FaceRenderer: image size must be 1..8192 pixels per side");
+  checkSize(size);
   state_->size = size;
   state_->createTarget();
 }
@@ -88,7 +86,7 @@ void FaceRenderer::setSamples(int samples) {
 int FaceRenderer::samples() const { return state_->samples; }
 
 void FaceRenderer::show(const playback::FrameView& view) {
-  const auto start = Clock::now();
+  const auto start = SteadyClock::now();
   state_->scene->show(view);
   state_->times.upload = millisecondsSince(start);
 }
@@ -96,10 +94,10 @@ void FaceRenderer::show(const playback::FrameView& view) {
 QImage FaceRenderer::render() {
   State& s = *state_;
   Ogre::RenderTarget* rt = s.target->getBuffer()->getRenderTarget();
-  auto start = Clock::now();
+  auto start = SteadyClock::now();
   rt->update(true);  // with multisampling, the "swap" resolves the samples into the texture
   s.times.render = millisecondsSince(start);
-  start = Clock::now();
+  start = SteadyClock::now();
   QImage image(s.size, QImage::Format_RGBA8888);
   const Ogre::PixelBox box(static_cast<Ogre::uint32>(s.size.width()), static_cast<Ogre::uint32>(s.size.height()), 1,
                            Ogre::PF_BYTE_RGBA, image.bits());

@@ -1,5 +1,6 @@
 #include <lacrima/viewport/FaceViewport.h>
 
+#include <lacrima/common/Milliseconds.h>
 #include <lacrima/scene/FaceScene.h>
 #include <lacrima/scene/OgreRuntime.h>
 
@@ -14,7 +15,6 @@
 #include <QWheelEvent>
 #include <QWindow>
 
-#include <chrono>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -194,9 +194,9 @@ bool FaceViewport::eventFilter(QObject* watched, QEvent* event) {
 bool FaceViewport::renderNow(bool swap) {
   State& s = *state_;
   if (!ensureWindow()) return false;
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = SteadyClock::now();
   s.window->update(swap);
-  s.lastMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  s.lastMilliseconds = millisecondsSince(start);
   s.dirty = false;
   s.exposed = false;
   ++s.renders;

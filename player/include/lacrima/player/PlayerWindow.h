@@ -31,12 +31,12 @@ class QSlider;
 class QTimer;
 
 namespace lacrima::viewport {
+class EffectsPanel;
 class FaceViewport;
 }
 
 namespace lacrima::player {
 
-class EffectsPanel;
 class TearParametersPanel;
 
 class PlayerWindow : public QMainWindow {
@@ -60,7 +60,7 @@ public:
   const playback::HeadRig& rig() const { return *rig_; }
   viewport::FaceViewport& viewport() { return *viewport_; }
   QSlider& timeline() { return *timeline_; }
-  EffectsPanel& effects() { return *effects_; }
+  viewport::EffectsPanel& effects() { return *effects_; }
   TearParametersPanel& parameters() { return *parameters_; }
   QAction* openAction() const { return open_; }
   QAction* playAction() const { return play_; }
@@ -102,7 +102,7 @@ private:
   viewport::FaceViewport* viewport_;
   QSlider* timeline_;
   QLabel *timeLabel_, *frameLabel_, *fpsLabel_, *tearsLabel_;
-  EffectsPanel* effects_;
+  viewport::EffectsPanel* effects_;
   TearParametersPanel* parameters_;
   QMenu* viewMenu_;
   QAction *open_, *openDemo_, *play_, *reset_, *resetView_, *quit_, *stepBack_, *stepForward_;

@@ -27,7 +27,8 @@ struct RenderTimes {
 
 class FaceRenderer {
 public:
-  // `neutral` must outlive the renderer.
+  // `neutral` must outlive the renderer. Sizes outside isImageSizeInBounds (ImageSize.h) throw
+  // std::invalid_argument, here and in resize().
   FaceRenderer(const HeadMesh& neutral, QSize size);
   ~FaceRenderer();
   FaceRenderer(const FaceRenderer&) = delete;

@@ -1,6 +1,7 @@
 #pragma once
 // Finding Lacrima's own media (media/ in the source tree, share/lacrima/ once installed):
-// the default head's feature-point file, the demo animation.
+// the default head's feature-point file, the demo animation. The player, the editor's preview,
+// lacrima-rig and the benchmarks all look here, so each finds what the others find.
 //
 // A file media/X is looked for, in this order, at
 //   1. <folder of the running executable>/../share/lacrima/X   (an installed or relocated tree)
@@ -12,7 +13,7 @@
 #include <string_view>
 #include <vector>
 
-namespace lacrima::playback {
+namespace lacrima::inline common {
 
 // Every place media/`relative` is looked for, in search order.
 std::vector<std::string> mediaCandidates(std::string_view relative);
@@ -20,4 +21,4 @@ std::vector<std::string> mediaCandidates(std::string_view relative);
 // The first candidate that exists. Throws FileError naming `relative` and every place looked.
 std::string findMediaFile(std::string_view relative);
 
-}  // namespace lacrima::playback
+}  // namespace lacrima::common

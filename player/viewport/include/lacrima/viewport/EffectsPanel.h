@@ -1,7 +1,8 @@
 #pragma once
-// The effect toggles of the player: particle spheres, tear surface, wet trails, texture
-// blending, blush, and what the eye redness follows. Shows and edits the non-simulation part of
-// a SceneSettings; none of these restarts the tears.
+// The effect toggles: particle spheres, tear surface, wet trails, texture blending, blush, and
+// what the eye redness follows. Shows and edits the non-simulation part of a SceneSettings;
+// none of these restarts the tears. The player shows it beside the face, the editor in its
+// project settings, so both name and explain the effects the same way.
 #include <lacrima/common/ProjectDocument.h>
 
 #include <QWidget>
@@ -9,7 +10,7 @@
 class QCheckBox;
 class QComboBox;
 
-namespace lacrima::player {
+namespace lacrima::viewport {
 
 class EffectsPanel : public QWidget {
   Q_OBJECT
@@ -34,4 +35,4 @@ private:
   QComboBox* redness_;
 };
 
-}  // namespace lacrima::player
+}  // namespace lacrima::viewport

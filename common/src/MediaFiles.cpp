@@ -1,12 +1,12 @@
 // Search order for media files (MediaFiles.h).
 #include <lacrima/common/Diagnostics.h>
-#include <lacrima/playback/MediaFiles.h>
+#include <lacrima/common/MediaFiles.h>
 
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
 
-namespace lacrima::playback {
+namespace lacrima::inline common {
 
 std::vector<std::string> mediaCandidates(std::string_view relative) {
   const QString name = QString::fromUtf8(relative.data(), static_cast<qsizetype>(relative.size()));
@@ -29,4 +29,4 @@ std::string findMediaFile(std::string_view relative) {
   throw FileError({std::string(relative), 0, 0}, "Lacrima's media file is missing; looked in " + looked);
 }
 
-}  // namespace lacrima::playback
+}  // namespace lacrima::common

@@ -1,4 +1,4 @@
-#include <lacrima/player/EffectsPanel.h>
+#include <lacrima/viewport/EffectsPanel.h>
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -6,7 +6,7 @@
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
-namespace lacrima::player {
+namespace lacrima::viewport {
 
 namespace {
 
@@ -69,4 +69,4 @@ void EffectsPanel::applyTo(SceneSettings& scene) const {
   scene.redness = redness_->currentIndex() == 0 ? SceneSettings::Redness::Animation : SceneSettings::Redness::Tears;
 }
 
-}  // namespace lacrima::player
+}  // namespace lacrima::viewport
