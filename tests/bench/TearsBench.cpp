@@ -9,6 +9,7 @@
 #include "TearsPipeline.h"
 
 #include <lacrima/common/JsonWriter.h>
+#include <lacrima/common/Milliseconds.h>
 
 #include <algorithm>
 #include <chrono>
@@ -26,7 +27,6 @@ namespace lacrima::bench {
 namespace {
 
 using namespace lacrima::tears;
-using Clock = std::chrono::steady_clock;
 
 struct Options {
   int particles = 100;
@@ -90,12 +90,12 @@ double searchRate(NeighbourSearch& search, const std::vector<Eigen::Vector3d>& x
   NeighbourList list;
   search.find(x, h, list);  // warm
   int runs = 0;
-  const auto start = Clock::now();
+  const auto start = SteadyClock::now();
   double seconds = 0;
   do {
     search.find(x, h, list);
     ++runs;
-    seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    seconds = std::chrono::duration<double>(SteadyClock::now() - start).count();
   } while (seconds < 0.2);
   return static_cast<double>(x.size()) * runs / seconds / 1e6;
 }
@@ -105,12 +105,12 @@ double searchRate(NeighbourSearch& search, const std::vector<Eigen::Vector3d>& x
 std::pair<double, double> checkpointCost(TearSimulation& sim) {
   std::vector<double> save, load;
   for (int run = 0; run < 21; ++run) {
-    auto start = Clock::now();
+    auto start = SteadyClock::now();
     const TearCheckpoint c = sim.checkpoint();
-    save.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-    start = Clock::now();
+    save.push_back(millisecondsSince(start));
+    start = SteadyClock::now();
     sim.restore(c);
-    load.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    load.push_back(millisecondsSince(start));
   }
   std::sort(save.begin(), save.end());
   std::sort(load.begin(), load.end());

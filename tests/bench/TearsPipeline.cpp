@@ -2,12 +2,12 @@
 
 #include "RealHeads.h"
 
+#include <lacrima/common/Milliseconds.h>
 #include <lacrima/rigging/RigBuilder.h>
 #include <lacrima/tears/SyntheticSkin.h>
 
 #include <Eigen/Geometry>
 
-#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <numbers>
@@ -89,11 +89,10 @@ TearPipeline::TearPipeline(const TearScene& scene, const TearSettings& settings,
     : sim_(scene.simulate(settings, options)), trails_(scene.skinTriangles) {}
 
 FrameTimes TearPipeline::step(const Eigen::Matrix3Xf& positions, int left, int right, double dt) {
-  using Clock = std::chrono::steady_clock;
   FrameTimes t;
-  const auto start = Clock::now();
+  const auto start = SteadyClock::now();
   sim_->step(positions, left, right, dt);
-  t.simulation = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  t.simulation = millisecondsSince(start);
   mesher_.update(*sim_);
   t.surface = mesher_.stats().milliseconds;
   trails_.update(*sim_, positions, dt);

@@ -44,6 +44,9 @@ namespace {
 
 using namespace lacrima::tears;
 
+// "x1.5" for a scale of 1.5: four characters of the number at most.
+std::string scaleLabel(double scale) { return std::string("x").append(std::to_string(scale), 0, 4); }
+
 struct Options {
   int particles = 200;
   int frames = 66;  // 3 s at 22 fps: long enough for drops to run down the sheet
@@ -269,20 +272,20 @@ int runTearsSweep(int argc, char** argv) {
   std::vector<Row> rows;
   rows.push_back(compare(reference, ref, ref, radius, cell));
   for (double s : {0.5, 1.0, 1.5, 2.0}) {
-    const Variant v{"sub-step factor (lambda)", "x" + std::to_string(s).substr(0, 4), s, 1, 1, NeighbourMethod::Grid};
+    const Variant v{"sub-step factor (lambda)", scaleLabel(s), s, 1, 1, NeighbourMethod::Grid};
     rows.push_back(compare(v, run(scene, v, o), ref, radius, cell));
   }
   for (double s : {0.5, 1.0, 1.5, 2.0}) {
-    const Variant v{"DFSPH, sub-step factor", "x" + std::to_string(s).substr(0, 4), s, 1, 1, NeighbourMethod::Grid,
+    const Variant v{"DFSPH, sub-step factor", scaleLabel(s), s, 1, 1, NeighbourMethod::Grid,
                     PressureMethod::Dfsph};
     rows.push_back(compare(v, run(scene, v, o), ref, radius, cell));
   }
   for (double s : {0.5, 0.75, 1.0, 1.5}) {
-    const Variant v{"kernel size", "x" + std::to_string(s).substr(0, 4), 1, s, 1, NeighbourMethod::Grid};
+    const Variant v{"kernel size", scaleLabel(s), 1, s, 1, NeighbourMethod::Grid};
     rows.push_back(compare(v, run(scene, v, o), ref, radius, cell));
   }
   for (std::size_t k = 0; k < cubeScales.size(); ++k) {
-    const Variant v{"cube size (surface)", "x" + std::to_string(cubeScales[k]).substr(0, 4), kFineLambda, 1,
+    const Variant v{"cube size (surface)", scaleLabel(cubeScales[k]), kFineLambda, 1,
                     cubeScales[k], NeighbourMethod::Grid};
     Row row = compare(v, cubeRuns[k], ref, radius, cell);
     row.surfaceSeries = true;

@@ -6,11 +6,11 @@
 #include "VectorState.h"
 
 #include <lacrima/tears/SurfaceMesher.h>
+#include <lacrima/common/Milliseconds.h>
 #include <lacrima/tears/TearSimulation.h>
 
 #include <algorithm>
 #include <bit>
-#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -19,7 +19,6 @@
 namespace lacrima::tears {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 using Int4 = int __attribute__((vector_size(16)));  // lane masks of Float4 comparisons
 using Lattice = Eigen::Matrix<std::int64_t, 3, 1>;
 
@@ -98,19 +97,19 @@ const TearSurface& SurfaceMesher::update(TearSimulation& simulation, std::size_t
     stats_ = {};
     return surface_;
   }
-  const auto start = Clock::now();
+  const auto start = SteadyClock::now();
   const ScaledParameters& p = simulation.parameters();
   SurfaceMesherSettings settings{p.h, p.cubeSize, p.iso, maxCubes};
   build(particles.position, particles.mass, simulation.grid(), settings);
   simulation.countSurfaceRun();
-  stats_.milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  stats_.milliseconds = millisecondsSince(start);
   return surface_;
 }
 
 const TearSurface& SurfaceMesher::build(std::span<const Eigen::Vector3d> positions, std::span<const double> masses,
                                         const UniformGrid& grid, const SurfaceMesherSettings& settings) {
   clearUpperVectorState();
-  const auto start = Clock::now();
+  const auto start = SteadyClock::now();
   const double h = settings.kernelRadius;
   if (!(h > 0) || !std::isfinite(h) || !(settings.cubeSize > 0) || !std::isfinite(settings.cubeSize) ||
       !(settings.iso > 0) || !std::isfinite(settings.iso) || settings.maxCubes == 0)
@@ -178,7 +177,7 @@ const TearSurface& SurfaceMesher::build(std::span<const Eigen::Vector3d> positio
   createVertices(s, iso);
   march();
   if (anyFallback_) fallbackNormals();
-  stats_.milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  stats_.milliseconds = millisecondsSince(start);
   return surface_;
 }
 

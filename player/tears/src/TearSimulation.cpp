@@ -235,7 +235,7 @@ void TearSimulation::step(const Eigen::Matrix3Xf& positions, int leftCount, int 
     skinStale_ = true;  // on resume, take the skin as it is then, without carrying anything
     return;             // effects on demand: no skin update, no ODE, no grid
   }
-  const auto emissionStart = StageClock::now();
+  const auto emissionStart = SteadyClock::now();
   // Count down first: it needs no geometry, and may leave nothing to simulate.
   for (int e = 0; e < 2; ++e) {
     const Eye eye = static_cast<Eye>(e);
@@ -259,11 +259,11 @@ void TearSimulation::step(const Eigen::Matrix3Xf& positions, int leftCount, int 
   }
   times_.emission = millisecondsSince(emissionStart);
 
-  const auto skinStart = StageClock::now();
+  const auto skinStart = SteadyClock::now();
   updateSkin(positions);
   times_.collision += millisecondsSince(skinStart);
 
-  const auto spawnStart = StageClock::now();
+  const auto spawnStart = SteadyClock::now();
   for (int e = 0; e < 2; ++e) {
     const Eye eye = static_cast<Eye>(e);
     const int missing = target[static_cast<std::size_t>(e)] - count(eye);

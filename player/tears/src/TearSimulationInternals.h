@@ -16,10 +16,10 @@
 #include "TrailMassLoss.h"
 #include "Viscosity_Mueller2003.h"
 
+#include <lacrima/common/Milliseconds.h>
 #include <lacrima/tears/TearSimulation.h>
 
 #include <array>
-#include <chrono>
 #include <memory>
 #include <vector>
 
@@ -56,12 +56,6 @@ struct TearSimulation::EmissionSites {
   std::array<EmissionSite, 2> site;
   std::array<bool, 2> known{false, false};
 };
-
-using StageClock = std::chrono::steady_clock;
-
-inline double millisecondsSince(StageClock::time_point start) {
-  return std::chrono::duration<double, std::milli>(StageClock::now() - start).count();
-}
 
 inline void addCollisionCounters(TearCounters& total, const CollisionCounters& c) {
   total.odeQueries += c.odeQueries;

@@ -69,16 +69,16 @@ void TearSimulation::simulate(double frameDt) {
   CollisionCounters collision;
 
   while (remaining > 0 && !particles_.empty()) {
-    auto start = StageClock::now();
+    auto start = SteadyClock::now();
     updatePairs();
     times_.neighbours += millisecondsSince(start);
 
-    start = StageClock::now();
+    start = SteadyClock::now();
     in.density.compute(particles_, in.candidates, in.pairs);
     pressure.computePressures(particles_, in.pairs, remaining, counters_);
     times_.density += millisecondsSince(start);
 
-    start = StageClock::now();
+    start = SteadyClock::now();
     std::fill(particles_.acceleration.begin(), particles_.acceleration.end(), Eigen::Vector3d::Zero());
     const double relativeSpeed = in.forcePass.run(particles_, in.pairs, in.viscosity, in.tension->needsColourField());
     in.tension->addAccelerations(particles_, in.pairs, in.forcePass);
@@ -134,7 +134,7 @@ void TearSimulation::simulate(double frameDt) {
       particles_.position[static_cast<std::size_t>(i)] += dt * particles_.velocity[static_cast<std::size_t>(i)];
     times_.forces += millisecondsSince(start);
 
-    start = StageClock::now();
+    start = SteadyClock::now();
     in.collider->resolve(particles_, in.previous, collision);
     double lost[2] = {0, 0};
     in.massLoss.apply(particles_, params_.restDensity, lost);

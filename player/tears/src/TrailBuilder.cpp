@@ -1,17 +1,16 @@
 #include "VectorState.h"
 
+#include <lacrima/common/Milliseconds.h>
 #include <lacrima/tears/TearSimulation.h>
 #include <lacrima/tears/TrailBuilder.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 namespace lacrima::tears {
 namespace {
-using Clock = std::chrono::steady_clock;
 constexpr std::size_t kMaxSeeds = 32;  // contact triangles of a drop used to start skin walks
 }  // namespace
 
@@ -36,7 +35,7 @@ const TrailMesh& TrailBuilder::update(const ParticleSet& particles, const Unifor
     return mesh_;
   }
   clearUpperVectorState();
-  const auto start = Clock::now();
+  const auto start = SteadyClock::now();
   if (headPositions.cols() <= skin_.maxVertex()) throw std::invalid_argument("trails: fewer head positions than the skin uses");
   if (!(h > 0) || !std::isfinite(h)) throw std::invalid_argument("trails: kernel radius must be positive");
   if (!(dt >= 0) || !std::isfinite(dt)) dt = 0;  // a bad frame time neither dries nor un-dries
@@ -51,7 +50,7 @@ const TrailMesh& TrailBuilder::update(const ParticleSet& particles, const Unifor
   dryAndCap();
   rebuildMesh();
   skin_.unbind();  // the positions belong to the caller
-  milliseconds_ = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  milliseconds_ = millisecondsSince(start);
   return mesh_;
 }
 
