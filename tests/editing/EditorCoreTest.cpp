@@ -7,7 +7,6 @@
 #include <lacrima/editing/ChannelFilter.h>
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editing/FapTransfer.h>
-#include <lacrima/editing/JsonPathLocator.h>
 #include <lacrima/editing/KeyClipboard.h>
 #include <lacrima/editing/KeyReduction.h>
 #include <lacrima/editing/Mirror.h>
@@ -355,16 +354,6 @@ private slots:
     } catch (const FileError& e) {
       QVERIFY2(QString::fromUtf8(e.what()).startsWith(QStringLiteral("/nonexistent/presets.json: cannot open")), e.what());
     }
-  }
-
-  void jsonPathLocatorFindsMembersAndElements() {
-    const std::string json = "{\n \"a\": [1, {\"b\": 2},\n  {\"c\": {\"d\\\"x\": 3}}],\n \"e\": 4, \"a\": []\n}";
-    const editing::JsonPath a = editing::JsonPath() / "a";
-    QCOMPARE(editing::locateJsonPath(json, editing::JsonPath() / "e", "f").toString(), std::string("f:4:2"));
-    // Duplicate keys resolve to the last one, as QJsonDocument does.
-    QCOMPARE(editing::locateJsonPath(json, a, "f").toString(), std::string("f:4:10"));
-    QCOMPARE(editing::locateJsonPath(json, editing::JsonPath() / "zz", "f").toString(), std::string("f"));
-    QCOMPARE((a / 2 / "c" / "d\"x").toString(), std::string("a[2].c.\"d\"x\""));
   }
 
   // --- key reduction -------------------------------------------------------------------------

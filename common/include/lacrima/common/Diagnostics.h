@@ -2,6 +2,7 @@
 // Errors and warnings that point at a place in a file: "file:line:column: message".
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace lacrima::inline common {
@@ -37,5 +38,9 @@ private:
 };
 
 using Warnings = std::vector<Diagnostic>;
+
+// Where byte `offset` of `text` is, named `file`: 1-based line and column, the column counted in
+// characters, as editors count it (UTF-8 continuation bytes belong to the character before them).
+SourceLocation locationInText(std::string_view text, std::size_t offset, const std::string& file);
 
 }  // namespace lacrima::common
