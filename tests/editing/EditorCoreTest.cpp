@@ -601,6 +601,24 @@ private slots:
     QCOMPARE(model.currentTime(), 1.0);
   }
 
+  void recoveryFileErrorsNameLineColumnAndPath() {
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("session-1.json"));
+    QFile out(file);
+    QVERIFY(out.open(QIODevice::WriteOnly));
+    out.write("{\"format\": \"lacrima-recovery\", \"version\": 1, \"sourcePath\": \"\", \"savedAt\": \"\",\n"
+              " \"project\": {\"format\": \"lacrima-project\", \"version\": 1,\n"
+              "  \"keys\": [{\"time\": 0, \"values\": {\"opn_jaw\": 1}}]}}\n");
+    out.close();
+    try {
+      editing::RecoveryStore::read(file);
+      QFAIL("a recovery file with an unknown FAP name was read");
+    } catch (const FileError& e) {
+      QCOMPARE(QString::fromUtf8(e.what()),
+               file + QStringLiteral(":3:35: project.keys[0].values.opn_jaw: unknown FAP name; did you mean open_jaw?"));
+    }
+  }
+
   void recoveryFilesRoundTripAndOrphansNeedTheirEditorGone() {
     QTemporaryDir dir;
     ProjectDocument document = ProjectDocument::load(LACRIMA_SOURCE_DIR "/media/demo/crying.json");
