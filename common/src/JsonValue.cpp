@@ -216,16 +216,11 @@ Diagnostic JsonValue::problem(const std::string& message) const {
   return problem;
 }
 
-void JsonValue::fail(const std::string& message) const {
-  const Diagnostic problem = this->problem(message);
-  throw FileError(problem.where, problem.message);
-}
+void JsonValue::fail(const std::string& message) const { throw FileError(problem(message)); }
 
 void JsonValue::expected(const std::string& what) const {
-  if (missing()) {
-    const Diagnostic problem = source_->problem(path_.parent(), "missing field \"" + name() + "\"");
-    throw FileError(problem.where, problem.message);
-  }
+  if (missing())
+    throw FileError(source_->problem(path_.parent(), "missing field \"" + name() + "\""));
   fail("expected " + what + ", got " + describe());
 }
 
