@@ -242,17 +242,6 @@ TearSources readTearSources(const JsonValue& value) {
   return sources;
 }
 
-TearParameterValues readSimulation(const JsonValue& value) {
-  TearParameterValues parameters;
-  for (const JsonValue& parameter : value.members()) {
-    if (!parameter.isNumber()) parameter.fail("expected a number, got " + parameter.describe());
-    const std::string problem = tearParameterProblem(parameter.name(), parameter.number());
-    if (!problem.empty()) parameter.fail(problem);
-    parameters[parameter.name()] = parameter.number();
-  }
-  return parameters;
-}
-
 SceneSettings readScene(const JsonValue& value) {
   value.rejectUnknownMembers(
       {"particles", "surface", "trails", "textureBlending", "redness", "blush", "simulation"});
@@ -270,7 +259,7 @@ SceneSettings readScene(const JsonValue& value) {
                         ? SceneSettings::Redness::Animation
                         : SceneSettings::Redness::Tears;
   }
-  if (value.has("simulation")) scene.simulation = readSimulation(value["simulation"]);
+  if (value.has("simulation")) scene.simulation = readTearParameters(value["simulation"]);
   return scene;
 }
 

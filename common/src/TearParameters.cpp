@@ -1,3 +1,4 @@
+#include <lacrima/common/JsonValue.h>
 #include <lacrima/common/TearParameters.h>
 
 #include <array>
@@ -84,6 +85,17 @@ void validateTearParameter(std::string_view name, double value) {
   if (problem.empty()) return;
   throw std::invalid_argument(findTearParameter(name) ? std::string(name) + ": " + problem
                                                       : problem);
+}
+
+TearParameterValues readTearParameters(const JsonValue& object) {
+  TearParameterValues values;
+  for (const JsonValue& parameter : object.members()) {
+    if (!parameter.isNumber()) parameter.fail("expected a number, got " + parameter.describe());
+    const std::string problem = tearParameterProblem(parameter.name(), parameter.number());
+    if (!problem.empty()) parameter.fail(problem);
+    values[parameter.name()] = parameter.number();
+  }
+  return values;
 }
 
 }  // namespace lacrima::inline common

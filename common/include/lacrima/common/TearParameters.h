@@ -31,4 +31,9 @@ std::string tearParameterProblem(std::string_view name, double value);
 // Throws std::invalid_argument with the problem, prefixed "<name>: " for a value out of range.
 void validateTearParameter(std::string_view name, double value);
 
+class JsonValue;
+// An object of name: number, each valid. Throws FileError at the first member that is not, as
+// "file:line:column: path.name: <tearParameterProblem>" (JsonValue.h).
+TearParameterValues readTearParameters(const JsonValue& object);
+
 }  // namespace lacrima::common
