@@ -18,4 +18,18 @@ FileError::FileError(SourceLocation where, const std::string& message)
       where_(std::move(where)),
       message_(message) {}
 
-}  // namespace lacrima::common
+SourceLocation locationInText(std::string_view text, std::size_t offset, const std::string& file) {
+  int line = 1;
+  int column = 1;
+  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) {
+      ++column;
+    }
+  }
+  return {file, line, column};
+}
+
+}  // namespace lacrima::inline common

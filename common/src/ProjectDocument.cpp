@@ -1,24 +1,14 @@
 #include <lacrima/common/AtomicSave.h>
 #include <lacrima/common/FapTable.h>
-#include <lacrima/common/JsonSyntaxError.h>
+#include <lacrima/common/JsonInput.h>
 #include <lacrima/common/JsonWriter.h>
 #include <lacrima/common/ProjectDocument.h>
-
-#include <QFile>
-#include <QFileInfo>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
-#include <QJsonParseError>
-#include <QString>
 
 #include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <initializer_list>
 #include <numeric>
-#include <stdexcept>
 
 namespace lacrima::inline common {
 namespace {
@@ -27,8 +17,9 @@ constexpr std::string_view kFormat = "lacrima-project";
 constexpr double kMaxFps = 1000.0;
 constexpr double kMaxChannelMagnitude = 1e7;  // far beyond any face; catches unit mix-ups
 constexpr qint64 kMaxFileBytes = qint64{64} << 20;
+// A key a frame of an hour at 240 fps; a 64 MiB file could spell out a few million empty ones.
+constexpr std::size_t kMaxKeys = 1'000'000;
 constexpr double kSameKeyTime = 1e-9;  // as KeyframeSequence: closer keys would merge
-
 
 // The double to write for a float value: the shortest decimal that reads back as the float
 // ("0.1", not "0.10000000149011612"), provided text -> double -> float returns exactly the
@@ -112,40 +103,8 @@ void writeScene(JsonWriter& out, const SceneSettings& scene) {
 }
 
 // ---------------------------------------------------------------------------------------
-// Reading. Every problem is reported with its JSON path ("keys[2].values.open_jaw") so a
-// user editing the file by hand can find it; line and column exist only for syntax errors,
-// because QJsonDocument keeps no positions for values.
-
-std::string join(std::initializer_list<std::string_view> names) {
-  std::string text;
-  for (std::string_view name : names) {
-    if (!text.empty()) text += ", ";
-    text += name;
-  }
-  return text;
-}
-
-std::string describe(const QJsonValue& value) {
-  switch (value.type()) {
-    case QJsonValue::Null: return "null";
-    case QJsonValue::Bool: return value.toBool() ? "true" : "false";
-    case QJsonValue::Double: return formatJsonNumber(value.toDouble());
-    case QJsonValue::String: return "the string \"" + value.toString().toStdString() + "\"";
-    case QJsonValue::Array:
-      return "an array of " + std::to_string(value.toArray().size()) + " values";
-    case QJsonValue::Object: return "an object";
-    case QJsonValue::Undefined: break;
-  }
-  return "nothing";
-}
-
-std::string child(const std::string& path, std::string_view field) {
-  return path.empty() ? std::string(field) : path + "." + std::string(field);
-}
-
-std::string element(const std::string& path, qsizetype index) {
-  return path + "[" + std::to_string(index) + "]";
-}
+// Reading. Every problem names its JSON path ("keys[2].values.open_jaw") so that a user
+// editing the file by hand can find it.
 
 // Edit distance, to suggest the FAP name a typo was probably meant to be.
 std::size_t editDistance(std::string_view a, std::string_view b) {
@@ -176,254 +135,150 @@ std::string fapNameHint(std::string_view name) {
   return best.empty() ? std::string() : "; did you mean " + std::string(best) + "?";
 }
 
-class DocumentReader {
-public:
-  explicit DocumentReader(const std::string& displayName) : file_(displayName) {}
+// Checked before anything else: another program's JSON or a newer schema should be reported
+// as such, not as a list of fields this build happens not to know.
+void checkFormatAndVersion(const JsonValue& root) {
+  const JsonValue format = root["format"];
+  if (format.missing()) format.fail("missing; this is not a Lacrima project");
+  if (!format.isString() || format.string() != kFormat) {
+    format.fail("expected \"" + std::string(kFormat) + "\", got " +
+                (format.isString() ? "the string " : "") + format.describe());
+  }
+  const JsonValue version = root["version"];
+  if (version.missing()) version.fail("missing");
+  const double number = version.isNumber() ? version.number() : 0.0;
+  if (number != std::floor(number) || number < 1.0)
+    version.fail("expected a whole number >= 1, got " + version.describe());
+  if (number > ProjectDocument::kSchemaVersion) {
+    version.fail("written by a newer Lacrima (schema " + formatJsonNumber(number) +
+                 "); this build reads up to " + std::to_string(ProjectDocument::kSchemaVersion));
+  }
+}
 
-  ProjectDocument read(const QJsonObject& root) const {
-    checkFormatAndVersion(root);
-    rejectUnknown(root, "",
-                  {"format", "version", "name", "fps", "interpolation", "keys", "tearSources",
-                   "scene"});
-    ProjectDocument document;
-    if (root.contains("name")) document.name = string(root["name"], "name");
-    if (root.contains("fps")) document.fps = fps(root["fps"]);
-    if (root.contains("interpolation")) {
-      document.defaultInterpolation = interpolation(root["interpolation"], "interpolation");
+double readFps(const JsonValue& value) {
+  const double fps = value.isNumber() ? value.number() : std::nan("");
+  if (!(fps > 0.0 && fps <= kMaxFps))
+    value.fail("expected a number in (0, " + formatJsonNumber(kMaxFps) + "], got " +
+               value.describe());
+  return fps;
+}
+
+Interpolation readInterpolation(const JsonValue& value) {
+  return value.oneOf({"linear", "smooth"}) == 0 ? Interpolation::Linear : Interpolation::Smooth;
+}
+
+float readChannelValue(int fap, const JsonValue& value) {
+  const double v = value.isNumber() ? value.number() : std::nan("");
+  if (isTearChannel(fap)) {
+    if (!(v >= 0.0 && v <= kMaxTearParticles && v == std::floor(v))) {
+      value.fail("expected a whole number of particles in [0, " +
+                 std::to_string(kMaxTearParticles) + "], got " + value.describe());
     }
-    if (!root.contains("keys")) fail("keys", "missing; every project lists its keys");
-    document.keys = keys(root["keys"], document.defaultInterpolation);
-    if (root.contains("tearSources")) document.tearSources = tearSources(root["tearSources"]);
-    if (root.contains("scene")) document.scene = scene(root["scene"]);
-    return document;
+  } else if (!(std::abs(v) <= kMaxChannelMagnitude)) {
+    value.fail("expected a number in [-1e7, 1e7], got " + value.describe());
   }
+  return static_cast<float>(v);
+}
 
-  [[noreturn]] void fail(const std::string& path, const std::string& message) const {
-    throw FileError({file_, 0, 0}, path.empty() ? message : path + ": " + message);
+Keyframe readKey(const JsonValue& value, Interpolation defaultMode) {
+  value.rejectUnknownMembers({"time", "interpolation", "values"});
+  Keyframe key;
+  const JsonValue time = value["time"];
+  if (time.missing()) time.fail("missing");
+  key.time = time.number();
+  if (key.time < 0.0) time.fail("expected a time >= 0 s, got " + formatJsonNumber(key.time));
+  key.interpolation =
+      value.has("interpolation") ? readInterpolation(value["interpolation"]) : defaultMode;
+  const JsonValue values = value["values"];
+  if (values.missing()) values.fail("missing");
+  for (const JsonValue& channel : values.members()) {
+    const std::string name = channel.name();
+    const std::optional<int> fap = fapByName(name);
+    if (!fap) channel.fail("unknown FAP name" + fapNameHint(name));
+    key.set(*fap, readChannelValue(*fap, channel));
   }
+  return key;
+}
 
-private:
-  // Checked before anything else: another program's JSON or a newer schema should be
-  // reported as such, not as a list of fields this build happens not to know.
-  void checkFormatAndVersion(const QJsonObject& root) const {
-    if (!root.contains("format")) {
-      fail("format", "missing; this is not a Lacrima project");
-    }
-    const QJsonValue format = root["format"];
-    if (!format.isString() || format.toString().toStdString() != kFormat) {
-      fail("format", "expected \"" + std::string(kFormat) + "\", got " + describe(format));
-    }
-    if (!root.contains("version")) fail("version", "missing");
-    const QJsonValue version = root["version"];
-    const double number = version.toDouble(-1.0);
-    if (!version.isDouble() || number != std::floor(number) || number < 1.0) {
-      fail("version", "expected a whole number >= 1, got " + describe(version));
-    }
-    if (number > ProjectDocument::kSchemaVersion) {
-      fail("version", "written by a newer Lacrima (schema " + formatJsonNumber(number) +
-                          "); this build reads up to " +
-                          std::to_string(ProjectDocument::kSchemaVersion));
-    }
-  }
-
-  void rejectUnknown(const QJsonObject& object, const std::string& path,
-                     std::initializer_list<std::string_view> known) const {
-    for (auto it = object.begin(); it != object.end(); ++it) {
-      const std::string name = it.key().toStdString();
-      if (std::find(known.begin(), known.end(), name) == known.end()) {
-        fail(child(path, name), "unknown field; expected one of " + join(known));
-      }
-    }
-  }
-
-  QJsonObject object(const QJsonValue& value, const std::string& path) const {
-    if (!value.isObject()) fail(path, "expected an object, got " + describe(value));
-    return value.toObject();
-  }
-
-  QJsonArray array(const QJsonValue& value, const std::string& path) const {
-    if (!value.isArray()) fail(path, "expected an array, got " + describe(value));
-    return value.toArray();
-  }
-
-  std::string string(const QJsonValue& value, const std::string& path) const {
-    if (!value.isString()) fail(path, "expected a string, got " + describe(value));
-    return value.toString().toStdString();
-  }
-
-  bool boolean(const QJsonValue& value, const std::string& path) const {
-    if (!value.isBool()) fail(path, "expected true or false, got " + describe(value));
-    return value.toBool();
-  }
-
-  double finiteNumber(const QJsonValue& value, const std::string& path) const {
-    // QJsonDocument turns numbers too large for a double into infinities.
-    if (!value.isDouble() || !std::isfinite(value.toDouble())) {
-      fail(path, "expected a finite number, got " + describe(value));
-    }
-    return value.toDouble();
-  }
-
-  double fps(const QJsonValue& value) const {
-    const double fps = value.isDouble() ? value.toDouble() : std::nan("");
-    if (!(fps > 0.0 && fps <= kMaxFps)) {
-      fail("fps", "expected a number in (0, " + formatJsonNumber(kMaxFps) + "], got " +
-                      describe(value));
-    }
-    return fps;
-  }
-
-  Interpolation interpolation(const QJsonValue& value, const std::string& path) const {
-    const auto mode = interpolationFromString(value.isString() ? string(value, path) : "");
-    if (!mode) fail(path, "expected \"linear\" or \"smooth\", got " + describe(value));
-    return *mode;
-  }
-
-  KeyframeSequence keys(const QJsonValue& value, Interpolation defaultMode) const {
-    const QJsonArray list = array(value, "keys");
-    std::vector<Keyframe> result;
-    result.reserve(static_cast<std::size_t>(list.size()));
-    for (qsizetype i = 0; i < list.size(); ++i) {
-      result.push_back(key(list[i], element("keys", i), defaultMode));
-    }
-    rejectDuplicateTimes(result);
-    return KeyframeSequence(std::move(result));
-  }
-
-  Keyframe key(const QJsonValue& value, const std::string& path,
-               Interpolation defaultMode) const {
-    const QJsonObject object = this->object(value, path);
-    rejectUnknown(object, path, {"time", "interpolation", "values"});
-    Keyframe key;
-    if (!object.contains("time")) fail(child(path, "time"), "missing");
-    key.time = finiteNumber(object["time"], child(path, "time"));
-    if (key.time < 0.0) {
-      fail(child(path, "time"), "expected a time >= 0 s, got " + formatJsonNumber(key.time));
-    }
-    key.interpolation = object.contains("interpolation")
-                            ? interpolation(object["interpolation"], child(path, "interpolation"))
-                            : defaultMode;
-    if (!object.contains("values")) fail(child(path, "values"), "missing");
-    const std::string valuesPath = child(path, "values");
-    const QJsonObject values = this->object(object["values"], valuesPath);
-    for (auto it = values.begin(); it != values.end(); ++it) {
-      const std::string name = it.key().toStdString();
-      const std::optional<int> fap = fapByName(name);
-      if (!fap) fail(child(valuesPath, name), "unknown FAP name" + fapNameHint(name));
-      key.set(*fap, channelValue(*fap, it.value(), child(valuesPath, name)));
-    }
-    return key;
-  }
-
-  float channelValue(int fap, const QJsonValue& value, const std::string& path) const {
-    const double v = value.isDouble() ? value.toDouble() : std::nan("");
-    if (isTearChannel(fap)) {
-      if (!(v >= 0.0 && v <= kMaxTearParticles && v == std::floor(v))) {
-        fail(path, "expected a whole number of particles in [0, " +
-                       std::to_string(kMaxTearParticles) + "], got " + describe(value));
-      }
-    } else if (!(std::abs(v) <= kMaxChannelMagnitude)) {
-      fail(path, "expected a number in [-1e7, 1e7], got " + describe(value));
-    }
-    return static_cast<float>(v);
-  }
-
-  void rejectDuplicateTimes(const std::vector<Keyframe>& keys) const {
-    std::vector<std::size_t> order(keys.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t b) { return keys[a].time < keys[b].time; });
-    for (std::size_t i = 1; i < order.size(); ++i) {
-      const std::size_t first = std::min(order[i - 1], order[i]);
-      const std::size_t second = std::max(order[i - 1], order[i]);
-      if (keys[second].time - keys[first].time < kSameKeyTime &&
-          keys[first].time - keys[second].time < kSameKeyTime) {
-        fail(element("keys", static_cast<qsizetype>(second)) + ".time",
-             formatJsonNumber(keys[second].time) + " repeats the time of " +
-                 element("keys", static_cast<qsizetype>(first)));
-      }
+void rejectDuplicateTimes(const std::vector<Keyframe>& keys, const std::vector<JsonValue>& values) {
+  std::vector<std::size_t> order(keys.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return keys[a].time < keys[b].time; });
+  for (std::size_t i = 1; i < order.size(); ++i) {
+    const std::size_t first = std::min(order[i - 1], order[i]);
+    const std::size_t second = std::max(order[i - 1], order[i]);
+    if (keys[second].time - keys[first].time < kSameKeyTime &&
+        keys[first].time - keys[second].time < kSameKeyTime) {
+      values[second]["time"].fail(formatJsonNumber(keys[second].time) + " repeats the time of " +
+                                  values[first].path().toString());
     }
   }
+}
 
-  TearSources tearSources(const QJsonValue& value) const {
-    const QJsonObject object = this->object(value, "tearSources");
-    rejectUnknown(object, "tearSources", {"left", "right"});
-    TearSources sources;
-    if (object.contains("left")) sources.left = source(object["left"], "tearSources.left");
-    if (object.contains("right")) sources.right = source(object["right"], "tearSources.right");
-    return sources;
+KeyframeSequence readKeys(const JsonValue& value, Interpolation defaultMode) {
+  const std::vector<JsonValue> list = value.array(kMaxKeys);
+  std::vector<Keyframe> result;
+  result.reserve(list.size());
+  for (const JsonValue& entry : list) result.push_back(readKey(entry, defaultMode));
+  rejectDuplicateTimes(result, list);
+  return KeyframeSequence(std::move(result));
+}
+
+std::optional<Eigen::Vector3d> readSource(const JsonValue& value) {
+  if (value.isNull()) return std::nullopt;
+  if (!value.isArray() || value.size() != 3) {
+    value.fail("expected null or an array of 3 finite numbers [x, y, z], got " + value.describe());
   }
+  const std::vector<double> xyz = value.numbers(3);
+  return Eigen::Vector3d(xyz[0], xyz[1], xyz[2]);
+}
 
-  std::optional<Eigen::Vector3d> source(const QJsonValue& value, const std::string& path) const {
-    if (value.isNull()) return std::nullopt;
-    if (!value.isArray() || value.toArray().size() != 3) {
-      fail(path, "expected null or an array of 3 finite numbers [x, y, z], got " +
-                     describe(value));
-    }
-    const QJsonArray xyz = value.toArray();
-    Eigen::Vector3d position;
-    for (qsizetype i = 0; i < 3; ++i) position[i] = finiteNumber(xyz[i], element(path, i));
-    return position;
+TearSources readTearSources(const JsonValue& value) {
+  value.rejectUnknownMembers({"left", "right"});
+  TearSources sources;
+  if (value.has("left")) sources.left = readSource(value["left"]);
+  if (value.has("right")) sources.right = readSource(value["right"]);
+  return sources;
+}
+
+SceneSettings readScene(const JsonValue& value) {
+  value.rejectUnknownMembers(
+      {"particles", "surface", "trails", "textureBlending", "redness", "blush", "simulation"});
+  SceneSettings scene;
+  const auto flag = [&](const char* name, bool& target) {
+    if (value.has(name)) target = value[name].boolean();
+  };
+  flag("particles", scene.particles);
+  flag("surface", scene.surface);
+  flag("trails", scene.trails);
+  flag("textureBlending", scene.textureBlending);
+  flag("blush", scene.blush);
+  if (value.has("redness")) {
+    scene.redness = value["redness"].oneOf({"animation", "tears"}) == 0
+                        ? SceneSettings::Redness::Animation
+                        : SceneSettings::Redness::Tears;
   }
+  if (value.has("simulation")) scene.simulation = readTearParameters(value["simulation"]);
+  return scene;
+}
 
-  SceneSettings scene(const QJsonValue& value) const {
-    const QJsonObject object = this->object(value, "scene");
-    rejectUnknown(object, "scene",
-                  {"particles", "surface", "trails", "textureBlending", "redness", "blush",
-                   "simulation"});
-    SceneSettings scene;
-    const auto flag = [&](const char* name, bool& target) {
-      if (object.contains(name)) target = boolean(object[name], child("scene", name));
-    };
-    flag("particles", scene.particles);
-    flag("surface", scene.surface);
-    flag("trails", scene.trails);
-    flag("textureBlending", scene.textureBlending);
-    flag("blush", scene.blush);
-    if (object.contains("redness")) scene.redness = redness(object["redness"]);
-    if (object.contains("simulation")) scene.simulation = simulation(object["simulation"]);
-    return scene;
+// The project tests pin errors in valid JSON to the file alone (syntax errors keep their line
+// and column). Reading the input with ProjectDocument::read instead names the line and column.
+ProjectDocument readNamingTheFileOnly(const JsonInput& input) {
+  try {
+    return ProjectDocument::read(input.root());
+  } catch (const FileError& error) {
+    throw FileError({error.where().file, 0, 0}, error.message());
   }
-
-  SceneSettings::Redness redness(const QJsonValue& value) const {
-    const std::string text = value.isString() ? value.toString().toStdString() : "";
-    if (text == "animation") return SceneSettings::Redness::Animation;
-    if (text == "tears") return SceneSettings::Redness::Tears;
-    fail("scene.redness", "expected \"animation\" or \"tears\", got " + describe(value));
-  }
-
-  TearParameterValues simulation(const QJsonValue& value) const {
-    const QJsonObject object = this->object(value, "scene.simulation");
-    TearParameterValues parameters;
-    for (auto it = object.begin(); it != object.end(); ++it) {
-      const std::string name = it.key().toStdString();
-      const std::string path = child("scene.simulation", name);
-      if (!it.value().isDouble()) fail(path, "expected a number, got " + describe(it.value()));
-      try {
-        validateTearParameter(name, it.value().toDouble());
-      } catch (const std::invalid_argument& error) {
-        // The path already names the parameter; drop the "<name>: " the check starts with.
-        std::string_view why = error.what();
-        const std::string prefix = name + ": ";
-        if (why.starts_with(prefix)) why.remove_prefix(prefix.size());
-        fail(path, std::string(why));
-      }
-      parameters[name] = it.value().toDouble();
-    }
-    return parameters;
-  }
-
-  std::string file_;
-};
-
+}
 
 }  // namespace
 
 bool ProjectDocument::operator==(const ProjectDocument& other) const {
   return name == other.name && fps == other.fps &&
-         defaultInterpolation == other.defaultInterpolation &&
-         keys.keys() == other.keys.keys() && tearSources == other.tearSources &&
-         scene == other.scene;
+         defaultInterpolation == other.defaultInterpolation && keys.keys() == other.keys.keys() &&
+         tearSources == other.tearSources && scene == other.scene;
 }
 
 std::string ProjectDocument::toJson() const {
@@ -454,40 +309,29 @@ std::string ProjectDocument::toJson() const {
   return std::move(out).finish();
 }
 
+ProjectDocument ProjectDocument::read(const JsonValue& root) {
+  checkFormatAndVersion(root);
+  root.rejectUnknownMembers(
+      {"format", "version", "name", "fps", "interpolation", "keys", "tearSources", "scene"});
+  ProjectDocument document;
+  if (root.has("name")) document.name = root["name"].string();
+  if (root.has("fps")) document.fps = readFps(root["fps"]);
+  if (root.has("interpolation"))
+    document.defaultInterpolation = readInterpolation(root["interpolation"]);
+  const JsonValue keys = root["keys"];
+  if (keys.missing()) keys.fail("missing; every project lists its keys");
+  document.keys = readKeys(keys, document.defaultInterpolation);
+  if (root.has("tearSources")) document.tearSources = readTearSources(root["tearSources"]);
+  if (root.has("scene")) document.scene = readScene(root["scene"]);
+  return document;
+}
+
 ProjectDocument ProjectDocument::fromJson(std::string_view json, const std::string& displayName) {
-  const QByteArray bytes(json.data(), static_cast<qsizetype>(json.size()));
-  QJsonParseError error{};
-  const QJsonDocument parsed = QJsonDocument::fromJson(bytes, &error);
-  if (error.error != QJsonParseError::NoError) {
-    throw FileError(jsonSyntaxErrorLocation(json, error, displayName),
-                    "invalid JSON: " + error.errorString().toStdString());
-  }
-  const DocumentReader reader(displayName);
-  if (!parsed.isObject()) reader.fail("", "expected a JSON object at the top level");
-  return reader.read(parsed.object());
+  return readNamingTheFileOnly(JsonInput::parse(json, displayName));
 }
 
 ProjectDocument ProjectDocument::load(const std::string& path) {
-  QFile file(QString::fromStdString(path));
-  // QFile refuses folders with "Unknown error"; say what is actually wrong.
-  if (QFileInfo(file).isDir()) throw FileError({path, 0, 0}, "is a folder, not a project file");
-  if (!file.open(QIODevice::ReadOnly)) {
-    throw FileError({path, 0, 0}, "cannot open: " + file.errorString().toStdString());
-  }
-  const auto tooLarge = [&](qint64 bytes) {
-    throw FileError({path, 0, 0}, "is " + std::to_string(bytes >> 20) +
-                                      " MiB or more; project files are limited to " +
-                                      std::to_string(kMaxFileBytes >> 20) + " MiB");
-  };
-  if (file.size() > kMaxFileBytes) tooLarge(file.size());
-  // Read one byte past the limit: pipes and special files report size 0.
-  const QByteArray bytes = file.read(kMaxFileBytes + 1);
-  if (file.error() != QFileDevice::NoError) {
-    throw FileError({path, 0, 0}, "cannot read: " + file.errorString().toStdString());
-  }
-  if (bytes.size() > kMaxFileBytes) tooLarge(bytes.size());
-  return fromJson(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())),
-                  path);
+  return readNamingTheFileOnly(JsonInput::load(path, {"project file", kMaxFileBytes}));
 }
 
 void ProjectDocument::save(const std::string& path) const { saveAtomically(path, toJson()); }
@@ -500,4 +344,4 @@ ProjectDocument ProjectDocument::fromAnimation(const FapAnimation& animation) {
   return document;
 }
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

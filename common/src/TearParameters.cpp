@@ -1,3 +1,4 @@
+#include <lacrima/common/JsonValue.h>
 #include <lacrima/common/TearParameters.h>
 
 #include <array>
@@ -69,18 +70,32 @@ const TearParameterInfo* findTearParameter(std::string_view name) {
   return nullptr;
 }
 
-void validateTearParameter(std::string_view name, double value) {
+std::string tearParameterProblem(std::string_view name, double value) {
   const TearParameterInfo* info = findTearParameter(name);
-  if (!info) {
-    throw std::invalid_argument("unknown parameter '" + std::string(name) +
-                                "'; expected one of: " + knownNames());
-  }
+  if (!info)
+    return "unknown parameter '" + std::string(name) + "'; expected one of: " + knownNames();
   // Written so that NaN, which compares false with everything, fails too.
-  if (!(value >= info->minValue && value <= info->maxValue)) {
-    throw std::invalid_argument(std::string(name) + ": " + formatNumber(value) +
-                                " is outside [" + formatNumber(info->minValue) + ", " +
-                                formatNumber(info->maxValue) + "]");
-  }
+  if (value >= info->minValue && value <= info->maxValue) return {};
+  return formatNumber(value) + " is outside [" + formatNumber(info->minValue) + ", " +
+         formatNumber(info->maxValue) + "]";
 }
 
-}  // namespace lacrima::common
+void validateTearParameter(std::string_view name, double value) {
+  const std::string problem = tearParameterProblem(name, value);
+  if (problem.empty()) return;
+  throw std::invalid_argument(findTearParameter(name) ? std::string(name) + ": " + problem
+                                                      : problem);
+}
+
+TearParameterValues readTearParameters(const JsonValue& object) {
+  TearParameterValues values;
+  for (const JsonValue& parameter : object.members()) {
+    if (!parameter.isNumber()) parameter.fail("expected a number, got " + parameter.describe());
+    const std::string problem = tearParameterProblem(parameter.name(), parameter.number());
+    if (!problem.empty()) parameter.fail(problem);
+    values[parameter.name()] = parameter.number();
+  }
+  return values;
+}
+
+}  // namespace lacrima::inline common

@@ -1,16 +1,7 @@
 #include "ThreeJsonModel.h"
 
-#include <lacrima/common/Diagnostics.h>
-#include <lacrima/common/JsonSyntaxError.h>
+#include <lacrima/common/JsonInput.h>
 
-#include <QFile>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
-#include <QJsonParseError>
-#include <QString>
-
-#include <cmath>
 #include <limits>
 #include <type_traits>
 
@@ -18,103 +9,71 @@ namespace lacrima::rigging {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& path, const std::string& message) {
-  throw FileError(SourceLocation{path}, message);
+// The MakeHuman body is 2.4 MB; the bounds leave a wide margin over any head.
+constexpr qint64 kMaxFileBytes = qint64{256} << 20;
+constexpr std::size_t kMaxVertices = std::size_t{1} << 22;
+constexpr std::size_t kMaxFaceEntries = std::size_t{1} << 26;  // up to 22 entries a face
+constexpr std::size_t kMaxMaterials = 4096;
+constexpr std::size_t kMaxUvLayers = 16;
+constexpr int kMaxIndex = std::numeric_limits<int>::max();
+
+JsonValue readJsonObject(const std::string& path) {
+  return JsonInput::load(path, {"three.js model", kMaxFileBytes}).root();
 }
 
-QJsonObject readJsonObject(const std::string& path) {
-  QFile file(QString::fromStdString(path));
-  if (!file.open(QIODevice::ReadOnly))
-    fail(path, "cannot open: " + file.errorString().toStdString());
-  const QByteArray bytes = file.readAll();
-  QJsonParseError error;
-  const QJsonDocument document = QJsonDocument::fromJson(bytes, &error);
-  if (error.error != QJsonParseError::NoError) {
-    const std::string_view text(bytes.constData(), static_cast<std::size_t>(bytes.size()));
-    throw FileError(jsonSyntaxErrorLocation(text, error, path),
-                    "not valid JSON (" + error.errorString().toStdString() + ")");
-  }
-  if (!document.isObject()) fail(path, "expected a JSON object at the top level");
-  return document.object();
-}
-
-// The array under `key`; an empty array when the key is absent and not required.
-QJsonArray arrayField(const QJsonObject& object, const char* key, const std::string& path,
-                      bool required) {
-  const QJsonValue value = object.value(QLatin1String(key));
-  if (value.isUndefined() && !required) return {};
-  if (!value.isArray()) fail(path, std::string("expected an array \"") + key + "\"");
-  return value.toArray();
-}
-
-double numberAt(const QJsonArray& array, qsizetype i, const char* key, const std::string& path) {
-  const QJsonValue value = array.at(i);
-  if (!value.isDouble())
-    fail(path, std::string("\"") + key + "\"[" + std::to_string(i) + "]: expected a number");
-  return value.toDouble();
-}
-
-int indexAt(const QJsonArray& array, qsizetype i, const char* key, const std::string& path) {
-  const double value = numberAt(array, i, key, path);
-  if (value != std::floor(value) || value < 0 || value > std::numeric_limits<int>::max())
-    fail(path, std::string("\"") + key + "\"[" + std::to_string(i) +
-                   "]: expected a non-negative whole number");
-  return static_cast<int>(value);
-}
-
-// A flat array of numbers, `width` per column, as a width x n matrix.
+// A flat array of numbers, `Rows` per column, as a Rows x n matrix.
 template <int Rows>
-Eigen::Matrix<float, Rows, Eigen::Dynamic> flatMatrix(const QJsonArray& array, const char* key,
-                                                      const std::string& path) {
-  if (array.size() % Rows != 0)
-    fail(path, std::string("\"") + key + "\" has " + std::to_string(array.size()) +
-                   " numbers, expected a multiple of " + std::to_string(Rows));
-  Eigen::Matrix<float, Rows, Eigen::Dynamic> m(Rows, array.size() / Rows);
-  for (qsizetype i = 0; i < array.size(); ++i)
-    m(static_cast<Eigen::Index>(i % Rows), static_cast<Eigen::Index>(i / Rows)) =
-        static_cast<float>(numberAt(array, i, key, path));
-  return m;
+Eigen::Matrix<float, Rows, Eigen::Dynamic> flatMatrix(const JsonValue& array) {
+  const std::vector<double> numbers = array.numbers(Rows * kMaxVertices);
+  if (numbers.size() % Rows != 0)
+    array.fail("expected a multiple of " + std::to_string(Rows) + " numbers, got " +
+               array.describe());
+  return Eigen::Map<const Eigen::Matrix<double, Rows, Eigen::Dynamic>>(
+             numbers.data(), Rows, static_cast<Eigen::Index>(numbers.size() / Rows))
+      .template cast<float>();
 }
 
 // An array of n arrays of exactly three numbers, as a 3 x n matrix.
 template <typename Scalar>
-Eigen::Matrix<Scalar, 3, Eigen::Dynamic> tripleRows(const QJsonArray& array, const char* key,
-                                                    const std::string& path) {
-  Eigen::Matrix<Scalar, 3, Eigen::Dynamic> m(3, array.size());
-  for (qsizetype i = 0; i < array.size(); ++i) {
-    const QJsonArray row = array.at(i).toArray();
-    if (row.size() != 3)
-      fail(path, std::string("\"") + key + "\"[" + std::to_string(i) +
-                     "]: expected an array of 3 numbers");
-    for (int k = 0; k < 3; ++k) {
-      const Eigen::Index col = static_cast<Eigen::Index>(i);
-      if constexpr (std::is_integral_v<Scalar>)
-        m(k, col) = indexAt(row, k, key, path);
-      else
-        m(k, col) = static_cast<Scalar>(numberAt(row, k, key, path));
+Eigen::Matrix<Scalar, 3, Eigen::Dynamic> tripleRows(const JsonValue& array) {
+  const std::vector<JsonValue> rows = array.array(kMaxVertices);
+  Eigen::Matrix<Scalar, 3, Eigen::Dynamic> m(3, static_cast<Eigen::Index>(rows.size()));
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (!rows[i].isArray() || rows[i].size() != 3)
+      rows[i].fail("expected an array of 3 numbers, got " + rows[i].describe());
+    const Eigen::Index col = static_cast<Eigen::Index>(i);
+    if constexpr (std::is_integral_v<Scalar>) {
+      const std::vector<int> row = rows[i].integers(0, kMaxIndex, 3);
+      m.col(col) << row[0], row[1], row[2];
+    } else {
+      const std::vector<double> row = rows[i].numbers(3);
+      m.col(col) << static_cast<Scalar>(row[0]), static_cast<Scalar>(row[1]),
+          static_cast<Scalar>(row[2]);
     }
   }
   return m;
 }
 
-Eigen::Vector3f colour(const QJsonObject& object, const char* key, const Eigen::Vector3f& fallback,
-                       const std::string& path) {
-  const QJsonValue value = object.value(QLatin1String(key));
-  if (value.isUndefined()) return fallback;
-  const QJsonArray rgb = value.toArray();
-  if (!value.isArray() || rgb.size() != 3)
-    fail(path, std::string("\"") + key + "\": expected an array of 3 numbers");
-  return {static_cast<float>(numberAt(rgb, 0, key, path)),
-          static_cast<float>(numberAt(rgb, 1, key, path)),
-          static_cast<float>(numberAt(rgb, 2, key, path))};
+Eigen::Vector3f colour(const JsonValue& object, const char* key, const Eigen::Vector3f& fallback) {
+  if (!object.has(key)) return fallback;
+  const JsonValue rgb = object[key];
+  if (!rgb.isArray() || rgb.size() != 3)
+    rgb.fail("expected an array of 3 numbers, got " + rgb.describe());
+  const std::vector<double> value = rgb.numbers(3);
+  return Eigen::Vector3d(value[0], value[1], value[2]).cast<float>();
 }
 
-ThreeMaterial materialFrom(const QJsonObject& object, const std::string& path) {
+std::string optionalText(const JsonValue& object, const char* key) {
+  return object.has(key) ? object[key].string() : std::string();
+}
+
+ThreeMaterial materialFrom(const JsonValue& object) {
+  object.object();
   ThreeMaterial m;
-  m.name = object.value(QLatin1String("DbgName")).toString().toStdString();
-  m.diffuseMap = object.value(QLatin1String("mapDiffuse")).toString().toStdString();
-  m.diffuse = colour(object, "colorDiffuse", m.diffuse, path);
-  m.specular = colour(object, "colorSpecular", m.specular, path);
+  m.name = optionalText(object, "DbgName");
+  m.diffuseMap = optionalText(object, "mapDiffuse");
+  m.diffuse = colour(object, "colorDiffuse", m.diffuse);
+  m.specular = colour(object, "colorSpecular", m.specular);
   return m;
 }
 
@@ -123,33 +82,47 @@ ThreeMaterial materialFrom(const QJsonObject& object, const std::string& path) {
 constexpr int kQuad = 1, kMaterial = 2, kFaceUv = 4, kCornerUv = 8, kFaceNormal = 16,
               kCornerNormal = 32, kFaceColour = 64, kCornerColour = 128;
 
-std::vector<ThreeFace> parseFaces(const QJsonArray& data, int uvLayers, const std::string& path) {
-  std::vector<ThreeFace> faces;
-  const qsizetype size = data.size();
-  qsizetype at = 0;
+// Reads "faces" and checks every vertex, uv and material index against what `m` has.
+std::vector<ThreeFace> parseFaces(const JsonValue& faces, int uvLayers, const ThreeModel& m) {
+  const std::vector<int> data = faces.integers(0, kMaxIndex, kMaxFaceEntries);
+  std::vector<ThreeFace> out;
+  std::size_t at = 0;
   // Reads the next entry of the face that started at `start`, or reports where it was cut off.
-  auto next = [&](qsizetype start) {
-    if (at >= size)
-      fail(path, "\"faces\" ends inside the face starting at entry " + std::to_string(start));
-    return indexAt(data, at++, "faces", path);
+  auto next = [&](std::size_t start) {
+    if (at >= data.size()) faces.element(start).fail("\"faces\" ends inside this face");
+    return data[at++];
   };
-  while (at < size) {
-    const qsizetype start = at;
+  // The next entry, an index into something `m` has `count` of.
+  auto index = [&](std::size_t start, Eigen::Index count, const char* what) {
+    const std::size_t here = at;
+    const int value = next(start);
+    if (value >= count)
+      faces.element(here).fail("face " + std::to_string(out.size()) + " uses " + what + " " +
+                               std::to_string(value) + ", but there are only " +
+                               std::to_string(count));
+    return value;
+  };
+  const auto materialCount = static_cast<Eigen::Index>(m.materials.size());
+  while (at < data.size()) {
+    const std::size_t start = at;
     const int type = next(start);
     if (type > 255)
-      fail(path, "\"faces\"[" + std::to_string(start) + "]: unknown face type " +
-                     std::to_string(type) + " (expected a three.js format 3 type below 256)");
+      faces.element(start).fail("unknown face type " + std::to_string(type) +
+                                " (expected a three.js format 3 type below 256)");
     ThreeFace face;
     face.corners = (type & kQuad) ? 4 : 3;
-    for (int c = 0; c < face.corners; ++c) face.vertex[static_cast<size_t>(c)] = next(start);
-    if (type & kMaterial) face.material = next(start);
+    for (int c = 0; c < face.corners; ++c)
+      face.vertex[static_cast<size_t>(c)] = index(start, m.vertices.cols(), "vertex");
+    if (type & kMaterial) face.material = index(start, materialCount, "material");
     if (type & kFaceUv)
       for (int layer = 0; layer < uvLayers; ++layer) next(start);
     if (type & kCornerUv)
       for (int layer = 0; layer < uvLayers; ++layer)
         for (int c = 0; c < face.corners; ++c) {
-          const int uv = next(start);
-          if (layer == 0) face.uv[static_cast<size_t>(c)] = uv;
+          if (layer == 0)
+            face.uv[static_cast<size_t>(c)] = index(start, m.uvs.cols(), "uv");
+          else
+            next(start);
         }
     if (type & kFaceNormal) next(start);
     if (type & kCornerNormal)
@@ -157,75 +130,53 @@ std::vector<ThreeFace> parseFaces(const QJsonArray& data, int uvLayers, const st
     if (type & kFaceColour) next(start);
     if (type & kCornerColour)
       for (int c = 0; c < face.corners; ++c) next(start);
-    faces.push_back(face);
+    out.push_back(face);
   }
-  return faces;
-}
-
-void checkIndices(const ThreeModel& m) {
-  const auto vertexCount = m.vertices.cols();
-  const auto uvCount = m.uvs.cols();
-  for (size_t f = 0; f < m.faces.size(); ++f) {
-    const ThreeFace& face = m.faces[f];
-    for (int c = 0; c < face.corners; ++c) {
-      const auto k = static_cast<size_t>(c);
-      if (face.vertex[k] >= vertexCount)
-        fail(m.path, "face " + std::to_string(f) + " uses vertex " +
-                         std::to_string(face.vertex[k]) + ", but there are only " +
-                         std::to_string(vertexCount));
-      if (face.uv[k] >= uvCount)
-        fail(m.path, "face " + std::to_string(f) + " uses uv " + std::to_string(face.uv[k]) +
-                         ", but there are only " + std::to_string(uvCount));
-    }
-    if (face.material >= static_cast<int>(m.materials.size()))
-      fail(m.path, "face " + std::to_string(f) + " uses material " + std::to_string(face.material) +
-                       ", but there are only " + std::to_string(m.materials.size()));
-  }
+  return out;
 }
 
 }  // namespace
 
 ThreeModel readThreeModel(const std::string& path) {
-  const QJsonObject root = readJsonObject(path);
+  const JsonValue root = readJsonObject(path);
   ThreeModel m;
   m.path = path;
 
-  m.vertices = flatMatrix<3>(arrayField(root, "vertices", path, true), "vertices", path);
-  const double scale = root.value(QLatin1String("scale")).toDouble(1.0);
-  if (!(scale > 0)) fail(path, "\"scale\" must be a positive number");
-  if (scale != 1.0) m.vertices /= static_cast<float>(scale);
-
-  const QJsonArray uvLayers = arrayField(root, "uvs", path, false);
-  if (!uvLayers.isEmpty()) {
-    if (!uvLayers.at(0).isArray()) fail(path, "\"uvs\": expected an array of uv layers");
-    m.uvs = flatMatrix<2>(uvLayers.at(0).toArray(), "uvs", path);
+  m.vertices = flatMatrix<3>(root.required("vertices"));
+  if (root.has("scale")) {
+    const double scale = root["scale"].number();
+    if (!(scale > 0))
+      root["scale"].fail("expected a positive number, got " + root["scale"].describe());
+    if (scale != 1.0) m.vertices /= static_cast<float>(scale);
   }
 
-  for (const QJsonValue& material : arrayField(root, "materials", path, false))
-    m.materials.push_back(materialFrom(material.toObject(), path));
+  std::vector<JsonValue> uvLayers;
+  if (root.has("uvs")) uvLayers = root["uvs"].array(kMaxUvLayers);
+  if (!uvLayers.empty()) m.uvs = flatMatrix<2>(uvLayers.front());
 
-  m.faces =
-      parseFaces(arrayField(root, "faces", path, true), static_cast<int>(uvLayers.size()), path);
-  checkIndices(m);
+  if (root.has("materials"))
+    for (const JsonValue& material : root["materials"].array(kMaxMaterials))
+      m.materials.push_back(materialFrom(material));
 
-  const QJsonArray refs = arrayField(root, "ref_vIdxs", path, false);
-  if (!refs.isEmpty()) {
-    m.binding.refs = tripleRows<int>(refs, "ref_vIdxs", path);
-    m.binding.weights = tripleRows<float>(arrayField(root, "weights", path, true), "weights", path);
-    m.binding.offsets = tripleRows<float>(arrayField(root, "offsets", path, true), "offsets", path);
+  m.faces = parseFaces(root.required("faces"), static_cast<int>(uvLayers.size()), m);
+
+  if (root.has("ref_vIdxs")) m.binding.refs = tripleRows<int>(root["ref_vIdxs"]);
+  if (m.isProxy()) {
+    m.binding.weights = tripleRows<float>(root.required("weights"));
+    m.binding.offsets = tripleRows<float>(root.required("offsets"));
     const auto n = m.vertices.cols();
     if (m.binding.refs.cols() != n || m.binding.weights.cols() != n ||
         m.binding.offsets.cols() != n)
-      fail(path, "a proxy needs one \"ref_vIdxs\", \"weights\" and \"offsets\" entry per vertex (" +
-                     std::to_string(n) + " vertices; " + std::to_string(m.binding.refs.cols()) +
-                     ", " + std::to_string(m.binding.weights.cols()) + ", " +
-                     std::to_string(m.binding.offsets.cols()) + " entries)");
+      root.fail("a proxy needs one \"ref_vIdxs\", \"weights\" and \"offsets\" entry per vertex (" +
+                std::to_string(n) + " vertices; " + std::to_string(m.binding.refs.cols()) + ", " +
+                std::to_string(m.binding.weights.cols()) + ", " +
+                std::to_string(m.binding.offsets.cols()) + " entries)");
   }
   return m;
 }
 
 ThreeMaterial readThreeMaterialFile(const std::string& path) {
-  return materialFrom(readJsonObject(path), path);
+  return materialFrom(readJsonObject(path));
 }
 
 int findThreeMaterial(const ThreeModel& model, std::string_view name) {

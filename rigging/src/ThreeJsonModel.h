@@ -48,7 +48,7 @@ struct ThreeModel {
 };
 
 // Reads and checks a model: every vertex and uv index in range, the face array well formed.
-// Throws FileError naming `path` and what was expected.
+// Throws FileError "path:line:column: JSON path: what was expected".
 ThreeModel readThreeModel(const std::string& path);
 
 // Reads a bare material object (a MakeHuman skin file such as young_caucasian_female.json).

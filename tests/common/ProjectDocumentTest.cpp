@@ -1,6 +1,7 @@
 // Project documents: exact JSON round trips, precise errors, atomic saves; and the tear
 // parameter table the documents validate against.
 #include <lacrima/common/FapTable.h>
+#include <lacrima/common/JsonInput.h>
 #include <lacrima/common/ProjectDocument.h>
 #include <lacrima/common/TearParameters.h>
 
@@ -315,6 +316,23 @@ private slots:
     QVERIFY2(QString::fromStdString(error.message()).startsWith(message),
              qPrintable(QString::fromStdString(error.message())));
     QVERIFY(QString::fromStdString(error.what()).startsWith(location + ": "));
+  }
+
+  // read() is what a file embedding a project (a recovery file) uses; unlike fromJson it keeps
+  // the line and column of a bad value.
+  void readNamesLineColumnAndPath() {
+    const std::string json =
+        "{\"format\": \"lacrima-project\", \"version\": 1,\n \"keys\": [\n"
+        "  {\"time\": 0, \"values\": {}},\n"
+        "  {\"time\": 1, \"values\": {\"open_jaw\": \"wide\"}}]}";
+    try {
+      ProjectDocument::read(JsonInput::parse(json, kDisplayName).root());
+      QFAIL("a value of the wrong type was read");
+    } catch (const FileError& error) {
+      QCOMPARE(std::string(error.what()),
+               std::string("doc.json:4:26: keys[1].values.open_jaw: expected a number in "
+                           "[-1e7, 1e7], got \"wide\""));
+    }
   }
 
   void loadNamesAMissingFile() {

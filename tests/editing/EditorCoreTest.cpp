@@ -7,7 +7,6 @@
 #include <lacrima/editing/ChannelFilter.h>
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editing/FapTransfer.h>
-#include <lacrima/editing/JsonPathLocator.h>
 #include <lacrima/editing/KeyClipboard.h>
 #include <lacrima/editing/KeyReduction.h>
 #include <lacrima/editing/Mirror.h>
@@ -357,16 +356,6 @@ private slots:
     }
   }
 
-  void jsonPathLocatorFindsMembersAndElements() {
-    const std::string json = "{\n \"a\": [1, {\"b\": 2},\n  {\"c\": {\"d\\\"x\": 3}}],\n \"e\": 4, \"a\": []\n}";
-    const editing::JsonPath a = editing::JsonPath() / "a";
-    QCOMPARE(editing::locateJsonPath(json, editing::JsonPath() / "e", "f").toString(), std::string("f:4:2"));
-    // Duplicate keys resolve to the last one, as QJsonDocument does.
-    QCOMPARE(editing::locateJsonPath(json, a, "f").toString(), std::string("f:4:10"));
-    QCOMPARE(editing::locateJsonPath(json, editing::JsonPath() / "zz", "f").toString(), std::string("f"));
-    QCOMPARE((a / 2 / "c" / "d\"x").toString(), std::string("a[2].c.\"d\"x\""));
-  }
-
   // --- key reduction -------------------------------------------------------------------------
 
   void keyReductionReproducesEveryFrameWithinTheTolerance() {
@@ -610,6 +599,24 @@ private slots:
     for (int i = 0; i < 40; ++i) clock.advance();
     QVERIFY(!clock.isPlaying());
     QCOMPARE(model.currentTime(), 1.0);
+  }
+
+  void recoveryFileErrorsNameLineColumnAndPath() {
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("session-1.json"));
+    QFile out(file);
+    QVERIFY(out.open(QIODevice::WriteOnly));
+    out.write("{\"format\": \"lacrima-recovery\", \"version\": 1, \"sourcePath\": \"\", \"savedAt\": \"\",\n"
+              " \"project\": {\"format\": \"lacrima-project\", \"version\": 1,\n"
+              "  \"keys\": [{\"time\": 0, \"values\": {\"opn_jaw\": 1}}]}}\n");
+    out.close();
+    try {
+      editing::RecoveryStore::read(file);
+      QFAIL("a recovery file with an unknown FAP name was read");
+    } catch (const FileError& e) {
+      QCOMPARE(QString::fromUtf8(e.what()),
+               file + QStringLiteral(":3:35: project.keys[0].values.opn_jaw: unknown FAP name; did you mean open_jaw?"));
+    }
   }
 
   void recoveryFilesRoundTripAndOrphansNeedTheirEditorGone() {

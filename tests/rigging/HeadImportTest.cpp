@@ -335,6 +335,12 @@ class HeadImportTest : public QObject {
               "{\"vertices\": [0, 0, 0], \"faces\": [0, 0, 0, 7]}");  // a triangle past the end
     const std::string range = errorOf([&] { rigging::loadDefaultHead(copy.toStdString()); });
     QVERIFY2(contains(range, eyes.toStdString()) && contains(range, "vertex 7"), range.c_str());
+    // Both the range error and a value of the wrong type name the line, column and JSON path.
+    QVERIFY2(contains(range, eyes.toStdString() + ":1:44: faces[3]: face 0 uses vertex 7"),
+             range.c_str());
+    writeFile(eyes, "{\"vertices\": [0, 0, 0,\n  1, \"x\", 1], \"faces\": []}");
+    const std::string type = errorOf([&] { rigging::loadDefaultHead(copy.toStdString()); });
+    QCOMPARE(type, eyes.toStdString() + ":2:6: vertices[4]: expected a finite number, got \"x\"");
   }
 
   void cacheFollowsTheEnvironment() {

@@ -349,6 +349,13 @@ private slots:
     const std::string bary = errorFor(required + R"(, "9.15": {"submesh": "skin", "triangle": 0, "barycentric": [0.5, 0.5, 0.5]})");
     QVERIFY2(bary.find("\"9.15\".barycentric") != std::string::npos, bary.c_str());
     QVERIFY(errorFor(required + R"(, "9.15": {"submesh": "skin", "vertex": 2})").empty());
+    // Errors found while reading and while validating both name the line and column.
+    const std::string located = errorFor(required + ",\n  \"9.15\": {\"submesh\": \"skin\", \"vertex\": 4}");
+    QVERIFY2(located.starts_with(path.toStdString() + ":6:31: points.\"9.15\".vertex: index 4 out of range"),
+             located.c_str());
+    writeFile(path, head + "\n  \"3.1\": {\"submesh\": \"skin\", \"vertex\": -1}}}");
+    QCOMPARE(fileErrorOf([&] { rigging::readFeaturePointFile(path.toStdString()); }),
+             path.toStdString() + ":2:30: points.\"3.1\".vertex: expected a whole number in [0, 2147483647], got -1");
     writeFile(path, "{\"format\": \"lacrima-fdp\",\n  \"version\": 1,,}");
     const std::string syntax = fileErrorOf([&] { rigging::readFeaturePointFile(path.toStdString()); });
     QVERIFY2(syntax.find(path.toStdString() + ":2:") != std::string::npos, syntax.c_str());

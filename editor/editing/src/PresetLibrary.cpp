@@ -1,15 +1,11 @@
 #include <lacrima/editing/PresetLibrary.h>
 
 #include <lacrima/common/FapTable.h>
-#include <lacrima/common/JsonSyntaxError.h>
+#include <lacrima/common/JsonInput.h>
 #include <lacrima/common/JsonWriter.h>
 #include <lacrima/editing/ChannelLimits.h>
-#include <lacrima/editing/JsonPathLocator.h>
 
-#include <QFile>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
+#include <QString>
 
 #include <algorithm>
 #include <cmath>
@@ -20,19 +16,9 @@ namespace {
 
 // A presets file is a few kilobytes; anything this large is not one.
 constexpr qint64 kMaxFileBytes = 16 * 1024 * 1024;
-
-std::string describe(const QJsonValue& value) {
-  switch (value.type()) {
-    case QJsonValue::Null: return "null";
-    case QJsonValue::Bool: return value.toBool() ? "true" : "false";
-    case QJsonValue::Double: return formatJsonNumber(value.toDouble());
-    case QJsonValue::String: return '"' + value.toString().toStdString() + '"';
-    case QJsonValue::Array: return "an array";
-    case QJsonValue::Object: return "an object";
-    case QJsonValue::Undefined: break;
-  }
-  return "nothing";
-}
+// The built-in file has a few dozen presets of a few keys each.
+constexpr std::size_t kMaxPresets = 10'000;
+constexpr std::size_t kMaxKeys = 10'000;
 
 bool isValidId(const std::string& id) {
   return !id.empty() && std::all_of(id.begin(), id.end(), [](char c) {
@@ -40,169 +26,125 @@ bool isValidId(const std::string& id) {
   });
 }
 
-class Reader {
-public:
-  Reader(std::string_view json, std::string file) : json_(json), file_(std::move(file)) {}
+std::string text(const JsonValue& value) {
+  if (!value.isString() || QString::fromStdString(value.string()).trimmed().isEmpty())
+    value.fail("expected non-empty text, got " + value.describe());
+  return value.string();
+}
 
-  [[noreturn]] void fail(const JsonPath& path, const std::string& message) const {
-    const std::string where = path.empty() ? message : path.toString() + ": " + message;
-    throw FileError(locateJsonPath(json_, path, file_), where);
-  }
-
-  std::vector<Preset> read(const QJsonObject& root) const;
-
-private:
-  void rejectUnknown(const QJsonObject& object, const JsonPath& path,
-                     std::initializer_list<std::string_view> known) const {
-    for (auto it = object.begin(); it != object.end(); ++it) {
-      const std::string name = it.key().toStdString();
-      if (std::find(known.begin(), known.end(), name) != known.end()) continue;
-      std::string list;
-      for (std::string_view k : known) list += (list.empty() ? "" : ", ") + std::string(k);
-      fail(path / name, "unknown field; expected one of " + list);
+Keyframe readPose(const JsonValue& value) {
+  const std::vector<JsonValue> values = value.members();
+  if (values.empty()) value.fail("expected at least one FAP value, got an empty object");
+  Keyframe key;
+  for (const JsonValue& channel : values) {
+    const std::string name = channel.name();
+    const std::optional<int> fap = fapByName(name);
+    if (!fap)
+      channel.fail(
+          "unknown FAP name; expected a name from the FAP table such as open_jaw, "
+          "raise_l_i_eyebrow or tears_l_eye");
+    const ChannelLimits limits = editLimits(*fap);
+    const double v = channel.number();
+    const bool whole = isTearChannel(*fap) || isHighLevelFap(*fap);
+    if (v < limits.min || v > limits.max || (whole && v != std::floor(v))) {
+      channel.fail(std::string("expected ") + (whole ? "a whole number" : "a number") + " in [" +
+                   std::to_string(limits.min) + ", " + std::to_string(limits.max) +
+                   "] (the editing range of " + name + "), got " + formatJsonNumber(v));
     }
+    key.set(*fap, static_cast<float>(v));
   }
+  return key;
+}
 
-  QJsonObject object(const QJsonValue& value, const JsonPath& path) const {
-    if (!value.isObject()) fail(path, "expected an object, got " + describe(value));
-    return value.toObject();
-  }
-
-  std::string text(const QJsonObject& parent, std::string_view name, const JsonPath& path,
-                   bool required) const {
-    const QString key = QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
-    if (!parent.contains(key)) {
-      if (required) fail(path, "missing field \"" + std::string(name) + "\"");
-      return {};
+std::vector<Keyframe> readSequence(const JsonValue& value) {
+  if (!value.isArray()) value.fail("expected an array of keys, got " + value.describe());
+  const std::vector<JsonValue> entries = value.array(kMaxKeys);
+  if (entries.size() < 2)
+    value.fail("expected at least two keys (use \"values\" for a single pose)");
+  std::vector<Keyframe> keys;
+  for (const JsonValue& entry : entries) {
+    entry.rejectUnknownMembers({"time", "interpolation", "values"});
+    const JsonValue time = entry.required("time");
+    entry.required("values");
+    const double seconds = time.number();
+    if (keys.empty() && seconds != 0.0)
+      time.fail("expected 0 for the first key, got " + formatJsonNumber(seconds));
+    if (!keys.empty() && seconds <= keys.back().time) {
+      time.fail("expected a time after the previous key's " + formatJsonNumber(keys.back().time) +
+                " s, got " + formatJsonNumber(seconds));
     }
-    const QJsonValue value = parent[key];
-    if (!value.isString() || value.toString().trimmed().isEmpty())
-      fail(path / name, "expected non-empty text, got " + describe(value));
-    return value.toString().toStdString();
+    if (seconds > 600.0) time.fail("expected at most 600 s, got " + formatJsonNumber(seconds));
+    Keyframe key = readPose(entry["values"]);
+    key.time = seconds;
+    key.interpolation = Interpolation::Smooth;
+    if (entry.has("interpolation"))
+      key.interpolation = entry["interpolation"].oneOf({"linear", "smooth"}) == 0
+                              ? Interpolation::Linear
+                              : Interpolation::Smooth;
+    keys.push_back(key);
   }
+  return keys;
+}
 
-  double number(const QJsonValue& value, const JsonPath& path) const {
-    if (!value.isDouble() || !std::isfinite(value.toDouble()))
-      fail(path, "expected a finite number, got " + describe(value));
-    return value.toDouble();
+Preset readPreset(const JsonValue& entry) {
+  entry.rejectUnknownMembers(
+      {"id", "name", "category", "description", "expression", "values", "keys"});
+  Preset preset;
+  preset.id = text(entry.required("id"));
+  if (!isValidId(preset.id))
+    entry["id"].fail("expected lower-case letters, digits and '-', got \"" + preset.id + "\"");
+  preset.name = text(entry.required("name"));
+  preset.category = text(entry.required("category"));
+  if (entry.has("description")) preset.description = text(entry["description"]);
+  if (entry.has("expression")) {
+    const JsonValue expression = entry["expression"];
+    const double code = expression.number();
+    if (code < 1 || code > 6 || code != std::floor(code))
+      expression.fail(
+          "expected an expression code 1..6 (joy, sadness, anger, fear, disgust, surprise), got " +
+          formatJsonNumber(code));
+    preset.expression = static_cast<int>(code);
   }
-
-  Keyframe pose(const QJsonValue& value, const JsonPath& path) const {
-    const QJsonObject values = object(value, path);
-    if (values.isEmpty()) fail(path, "expected at least one FAP value, got an empty object");
-    Keyframe key;
-    for (auto it = values.begin(); it != values.end(); ++it) {
-      const std::string name = it.key().toStdString();
-      const JsonPath at = path / name;
-      const std::optional<int> fap = fapByName(name);
-      if (!fap) fail(at, "unknown FAP name; expected a name from the FAP table such as open_jaw, raise_l_i_eyebrow or tears_l_eye");
-      const ChannelLimits limits = editLimits(*fap);
-      const double v = number(it.value(), at);
-      const bool whole = isTearChannel(*fap) || isHighLevelFap(*fap);
-      if (v < limits.min || v > limits.max || (whole && v != std::floor(v))) {
-        fail(at, std::string("expected ") + (whole ? "a whole number" : "a number") + " in [" +
-                     std::to_string(limits.min) + ", " + std::to_string(limits.max) +
-                     "] (the editing range of " + name + "), got " + formatJsonNumber(v));
-      }
-      key.set(*fap, static_cast<float>(v));
-    }
-    return key;
+  const bool hasValues = entry.has("values");
+  if (hasValues == entry.has("keys"))
+    entry.fail("expected exactly one of \"values\" (a pose) and \"keys\" (a sequence)");
+  if (hasValues) {
+    Keyframe key = readPose(entry["values"]);
+    key.interpolation = Interpolation::Smooth;
+    preset.keys.push_back(key);
+  } else {
+    preset.keys = readSequence(entry["keys"]);
   }
+  return preset;
+}
 
-  std::vector<Keyframe> sequence(const QJsonValue& value, const JsonPath& path) const {
-    if (!value.isArray()) fail(path, "expected an array of keys, got " + describe(value));
-    const QJsonArray array = value.toArray();
-    if (array.size() < 2) fail(path, "expected at least two keys (use \"values\" for a single pose)");
-    std::vector<Keyframe> keys;
-    for (qsizetype i = 0; i < array.size(); ++i) {
-      const JsonPath at = path / static_cast<int>(i);
-      const QJsonObject entry = object(array[i], at);
-      rejectUnknown(entry, at, {"time", "interpolation", "values"});
-      if (!entry.contains("time")) fail(at, "missing field \"time\"");
-      if (!entry.contains("values")) fail(at, "missing field \"values\"");
-      const double time = number(entry["time"], at / "time");
-      if (i == 0 && time != 0.0) fail(at / "time", "expected 0 for the first key, got " + formatJsonNumber(time));
-      if (i > 0 && time <= keys.back().time) {
-        fail(at / "time", "expected a time after the previous key's " +
-                              formatJsonNumber(keys.back().time) + " s, got " + formatJsonNumber(time));
-      }
-      if (time > 600.0) fail(at / "time", "expected at most 600 s, got " + formatJsonNumber(time));
-      Keyframe key = pose(entry["values"], at / "values");
-      key.time = time;
-      key.interpolation = Interpolation::Smooth;
-      if (entry.contains("interpolation")) {
-        const QJsonValue mode = entry["interpolation"];
-        const auto parsed = mode.isString() ? interpolationFromString(mode.toString().toStdString())
-                                            : std::nullopt;
-        if (!parsed) fail(at / "interpolation", "expected \"linear\" or \"smooth\", got " + describe(mode));
-        key.interpolation = *parsed;
-      }
-      keys.push_back(key);
-    }
-    return keys;
-  }
-
-  Preset preset(const QJsonValue& value, const JsonPath& path) const {
-    const QJsonObject entry = object(value, path);
-    rejectUnknown(entry, path, {"id", "name", "category", "description", "expression", "values", "keys"});
-    Preset preset;
-    preset.id = text(entry, "id", path, true);
-    if (!isValidId(preset.id))
-      fail(path / "id", "expected lower-case letters, digits and '-', got \"" + preset.id + "\"");
-    preset.name = text(entry, "name", path, true);
-    preset.category = text(entry, "category", path, true);
-    preset.description = text(entry, "description", path, false);
-    if (entry.contains("expression")) {
-      const double code = number(entry["expression"], path / "expression");
-      if (code < 1 || code > 6 || code != std::floor(code))
-        fail(path / "expression", "expected an expression code 1..6 (joy, sadness, anger, fear, disgust, surprise), got " +
-                                      formatJsonNumber(code));
-      preset.expression = static_cast<int>(code);
-    }
-    const bool hasValues = entry.contains("values");
-    const bool hasKeys = entry.contains("keys");
-    if (hasValues == hasKeys)
-      fail(path, "expected exactly one of \"values\" (a pose) and \"keys\" (a sequence)");
-    if (hasValues) {
-      Keyframe key = pose(entry["values"], path / "values");
-      key.interpolation = Interpolation::Smooth;
-      preset.keys.push_back(key);
-    } else {
-      preset.keys = sequence(entry["keys"], path / "keys");
-    }
-    return preset;
-  }
-
-  std::string_view json_;
-  std::string file_;
-};
-
-std::vector<Preset> Reader::read(const QJsonObject& root) const {
-  const JsonPath top;
-  if (!root.contains("format")) fail(top, "missing field \"format\"; this is not a Lacrima presets file");
-  if (root["format"].toString().toStdString() != PresetLibrary::kFormat)
-    fail(top / "format", "expected \"" + std::string(PresetLibrary::kFormat) + "\", got " + describe(root["format"]));
-  if (!root.contains("version")) fail(top, "missing field \"version\"");
-  const double version = number(root["version"], top / "version");
-  if (version != PresetLibrary::kVersion)
-    fail(top / "version", "expected " + std::to_string(PresetLibrary::kVersion) + ", got " + formatJsonNumber(version));
-  rejectUnknown(root, top, {"format", "version", "presets"});
-  if (!root.contains("presets")) fail(top, "missing field \"presets\"");
-  if (!root["presets"].isArray()) fail(top / "presets", "expected an array of presets, got " + describe(root["presets"]));
-  const QJsonArray array = root["presets"].toArray();
+std::vector<Preset> readPresets(const JsonValue& root) {
+  if (!root.has("format"))
+    root.fail("missing field \"format\"; this is not a Lacrima presets file");
+  const JsonValue format = root["format"];
+  if (!format.isString() || format.string() != PresetLibrary::kFormat)
+    format.fail("expected \"" + std::string(PresetLibrary::kFormat) + "\", got " +
+                format.describe());
+  const JsonValue version = root.required("version");
+  if (version.number() != PresetLibrary::kVersion)
+    version.fail("expected " + std::to_string(PresetLibrary::kVersion) + ", got " +
+                 version.describe());
+  root.rejectUnknownMembers({"format", "version", "presets"});
+  const JsonValue list = root.required("presets");
+  if (!list.isArray()) list.fail("expected an array of presets, got " + list.describe());
   std::vector<Preset> presets;
   std::set<std::string> ids;
   std::set<int> expressions;
-  for (qsizetype i = 0; i < array.size(); ++i) {
-    const JsonPath at = top / "presets" / static_cast<int>(i);
-    Preset preset = this->preset(array[i], at);
+  for (const JsonValue& entry : list.array(kMaxPresets)) {
+    Preset preset = readPreset(entry);
     if (!ids.insert(preset.id).second)
-      fail(at / "id", "expected a unique id; \"" + preset.id + "\" is used by an earlier preset");
+      entry["id"].fail("expected a unique id; \"" + preset.id + "\" is used by an earlier preset");
     if (preset.expression && !expressions.insert(*preset.expression).second)
-      fail(at / "expression", "expected each expression code once; " + std::to_string(*preset.expression) +
-                                  " is used by an earlier preset");
+      entry["expression"].fail("expected each expression code once; " +
+                               std::to_string(*preset.expression) +
+                               " is used by an earlier preset");
     if (preset.expression && preset.isSequence())
-      fail(at / "expression", "expected only on a pose (\"values\"), not on a sequence");
+      entry["expression"].fail("expected only on a pose (\"values\"), not on a sequence");
     presets.push_back(std::move(preset));
   }
   return presets;
@@ -210,28 +152,18 @@ std::vector<Preset> Reader::read(const QJsonObject& root) const {
 
 }  // namespace
 
-PresetLibrary PresetLibrary::fromJson(std::string_view json, const std::string& displayName) {
-  QJsonParseError error;
-  const QJsonDocument document = QJsonDocument::fromJson(
-      QByteArray::fromRawData(json.data(), static_cast<qsizetype>(json.size())), &error);
-  if (error.error != QJsonParseError::NoError) {
-    throw FileError(jsonSyntaxErrorLocation(json, error, displayName),
-                    "invalid JSON: " + error.errorString().toStdString());
-  }
-  if (!document.isObject()) throw FileError({displayName, 1, 1}, "expected a JSON object at the top level");
+PresetLibrary PresetLibrary::read(const JsonValue& root) {
   PresetLibrary library;
-  library.presets_ = Reader(json, displayName).read(document.object());
+  library.presets_ = readPresets(root);
   return library;
 }
 
+PresetLibrary PresetLibrary::fromJson(std::string_view json, const std::string& displayName) {
+  return read(JsonInput::parse(json, displayName).root());
+}
+
 PresetLibrary PresetLibrary::load(const std::string& path) {
-  QFile file(QString::fromStdString(path));
-  if (!file.open(QIODevice::ReadOnly))
-    throw FileError({path, 0, 0}, "cannot open: " + file.errorString().toStdString());
-  if (file.size() > kMaxFileBytes)
-    throw FileError({path, 0, 0}, "is " + std::to_string(file.size() >> 20) + " MiB; expected a presets file of at most 16 MiB");
-  const QByteArray bytes = file.readAll();
-  return fromJson(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())), path);
+  return read(JsonInput::load(path, {"presets file", kMaxFileBytes}).root());
 }
 
 PresetLibrary PresetLibrary::builtIn() { return load(std::string(kBuiltInPath)); }

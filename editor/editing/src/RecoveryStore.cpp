@@ -1,14 +1,12 @@
 #include <lacrima/editing/RecoveryStore.h>
 
 #include <lacrima/common/AtomicSave.h>
-#include <lacrima/common/JsonSyntaxError.h>
+#include <lacrima/common/JsonInput.h>
 #include <lacrima/common/JsonWriter.h>
 
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <QLockFile>
 #include <QStandardPaths>
 
@@ -54,7 +52,8 @@ void RecoveryStore::save(const ProjectDocument& document, const QString& sourceP
     lock_->setStaleLockTime(0);
     if (!lock_->tryLock(0)) {
       lock_.reset();
-      throw FileError({lockPathFor(filePath()).toStdString(), 0, 0}, "cannot lock the recovery file");
+      throw FileError({lockPathFor(filePath()).toStdString(), 0, 0},
+                      "cannot lock the recovery file");
     }
   }
   // The project text goes in verbatim, so the recovered document is exactly the saved one.
@@ -63,7 +62,8 @@ void RecoveryStore::save(const ProjectDocument& document, const QString& sourceP
   header.field("format", kFormat);
   header.field("version", 1);
   header.field("sourcePath", sourcePath.toStdString());
-  header.field("savedAt", QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs).toStdString());
+  header.field("savedAt",
+               QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs).toStdString());
   header.endObject();
   std::string text = std::move(header).finish();
   while (!text.empty() && (text.back() == '\n' || text.back() == '}')) text.pop_back();
@@ -89,7 +89,7 @@ std::vector<RecoveryStore::Orphan> RecoveryStore::orphans() const {
     const QString path = dir.filePath(name);
     if (path == filePath()) continue;
     QLockFile lock(lockPathFor(path));
-    lock.setStaleLockTime(0);  // only a dead process makes a lock stale
+    lock.setStaleLockTime(0);        // only a dead process makes a lock stale
     if (!lock.tryLock(0)) continue;  // its editor is still running
     lock.unlock();
     try {
@@ -109,30 +109,19 @@ std::vector<RecoveryStore::Orphan> RecoveryStore::orphans() const {
 }
 
 ProjectDocument RecoveryStore::read(const QString& file, QString* sourcePath, QDateTime* savedAt) {
-  const std::string name = file.toStdString();
-  QFile in(file);
-  if (!in.open(QIODevice::ReadOnly)) throw FileError({name, 0, 0}, "cannot open: " + in.errorString().toStdString());
-  if (in.size() > kMaxRecoveryBytes) throw FileError({name, 0, 0}, "too large for a recovery file");
-  const QByteArray bytes = in.readAll();
-  const std::string_view text(bytes.constData(), static_cast<std::size_t>(bytes.size()));
-  QJsonParseError error;
-  const QJsonDocument json = QJsonDocument::fromJson(bytes, &error);
-  if (error.error != QJsonParseError::NoError)
-    throw FileError(jsonSyntaxErrorLocation(text, error, name), "invalid JSON: " + error.errorString().toStdString());
-  const QJsonObject root = json.object();
-  if (root["format"].toString() != QLatin1String(kFormat))
-    throw FileError({name, 0, 0}, "format: expected \"lacrima-recovery\"");
-  if (root["version"].toInt() != 1) throw FileError({name, 0, 0}, "version: expected 1");
-  if (!root["project"].isObject()) throw FileError({name, 0, 0}, "project: expected an object");
-  // The project starts at its key's value; parse that text, not a re-serialisation.
-  const qsizetype start = bytes.indexOf("\"project\":");
-  const qsizetype end = bytes.lastIndexOf('}');
-  if (start < 0 || end <= start) throw FileError({name, 0, 0}, "project: expected an object");
-  const qsizetype body = start + 10;
-  const std::string_view projectText(bytes.constData() + body, static_cast<std::size_t>(end - body));
-  ProjectDocument document = ProjectDocument::fromJson(projectText, name);
-  if (sourcePath) *sourcePath = root["sourcePath"].toString();
-  if (savedAt) *savedAt = QDateTime::fromString(root["savedAt"].toString(), Qt::ISODateWithMs);
+  const JsonValue root =
+      JsonInput::load(file.toStdString(), {"recovery file", kMaxRecoveryBytes}).root();
+  const JsonValue format = root["format"];
+  if (!format.isString() || format.string() != kFormat)
+    format.fail("expected \"lacrima-recovery\", got " + format.describe());
+  const JsonValue version = root["version"];
+  if (!version.isNumber() || version.number() != 1)
+    version.fail("expected 1, got " + version.describe());
+  ProjectDocument document = ProjectDocument::read(root["project"]);
+  if (sourcePath) *sourcePath = QString::fromStdString(root["sourcePath"].string());
+  if (savedAt)
+    *savedAt =
+        QDateTime::fromString(QString::fromStdString(root["savedAt"].string()), Qt::ISODateWithMs);
   return document;
 }
 

@@ -2,6 +2,7 @@
 // Errors and warnings that point at a place in a file: "file:line:column: message".
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace lacrima::inline common {
@@ -25,17 +26,22 @@ struct Diagnostic {
 // Thrown for input that cannot be used: malformed files, invalid documents, failed saves.
 // what() is the full "file:line:col: message" text, ready to show to a user.
 class FileError : public std::runtime_error {
-public:
+ public:
   FileError(SourceLocation where, const std::string& message);
+  explicit FileError(const Diagnostic& problem) : FileError(problem.where, problem.message) {}
 
   const SourceLocation& where() const { return where_; }
   const std::string& message() const { return message_; }
 
-private:
+ private:
   SourceLocation where_;
   std::string message_;
 };
 
 using Warnings = std::vector<Diagnostic>;
 
-}  // namespace lacrima::common
+// Where byte `offset` of `text` is, named `file`: 1-based line and column, the column counted in
+// characters, as editors count it (UTF-8 continuation bytes belong to the character before them).
+SourceLocation locationInText(std::string_view text, std::size_t offset, const std::string& file);
+
+}  // namespace lacrima::inline common

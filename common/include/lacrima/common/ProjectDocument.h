@@ -14,6 +14,7 @@
 // Unknown or invalid fields are errors naming the JSON path and, for syntax errors, the
 // line and column. A document written and read back compares equal.
 #include <lacrima/common/Diagnostics.h>
+#include <lacrima/common/JsonValue.h>
 #include <lacrima/common/Keyframes.h>
 #include <lacrima/common/TearParameters.h>
 
@@ -60,6 +61,9 @@ struct ProjectDocument {
   std::string toJson() const;
   // Throws FileError with `displayName` and the line/column or JSON path of the problem.
   static ProjectDocument fromJson(std::string_view json, const std::string& displayName);
+  // A project stored as a value of a larger document (a recovery file holds one). Throws
+  // FileError naming the line, column and JSON path of the problem.
+  static ProjectDocument read(const JsonValue& value);
 
   static ProjectDocument load(const std::string& path);
   void save(const std::string& path) const;  // atomic: temporary file, then rename

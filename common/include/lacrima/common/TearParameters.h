@@ -33,8 +33,16 @@ const TearParameterInfo* findTearParameter(std::string_view name);
 // Values by name; only names from the table, each within its range.
 using TearParameterValues = std::map<std::string, double, std::less<>>;
 
-// Throws std::invalid_argument("<name>: <why>; expected ...") for an unknown name or a value
-// outside its range (NaN and infinities included).
+// Why `value` cannot be parameter `name` ("unknown parameter 'x'; expected one of: ...",
+// "20000 is outside [0, 10000]"; NaN and infinities are outside too), or "" when it can.
+std::string tearParameterProblem(std::string_view name, double value);
+
+// Throws std::invalid_argument with the problem, prefixed "<name>: " for a value out of range.
 void validateTearParameter(std::string_view name, double value);
+
+class JsonValue;
+// An object of name: number, each valid. Throws FileError at the first member that is not, as
+// "file:line:column: path.name: <tearParameterProblem>" (JsonValue.h).
+TearParameterValues readTearParameters(const JsonValue& object);
 
 }  // namespace lacrima::common

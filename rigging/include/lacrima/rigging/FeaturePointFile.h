@@ -88,6 +88,7 @@ struct EyeSpec {
 
 struct FeaturePointFile {
   std::string path;  // as given, for messages
+  std::string text;  // as read, so that validateFeaturePoints can name lines and columns
   int version = kFeaturePointFileVersion;
   std::string meshNote;
   std::vector<std::string> skin, jaw, tongue, attached;
@@ -103,15 +104,15 @@ const std::vector<std::string>& fapuFeaturePoints();
 // The FDP ids moved by FAPs 3-68 (each FAP's FapInfo::featurePoint), ascending.
 const std::vector<std::string>& animatedFeaturePoints();
 
-// Parses the file. Throws FileError naming `path` (with line and column for JSON syntax
-// errors) and the JSON path of the bad value, e.g. points."2.1".vertex, with what was
-// expected. Unknown keys become warnings when `warnings` is given.
+// Parses the file. Throws FileError listing every problem, each as "path:line:column: JSON
+// path: what was expected", e.g. points."2.1".vertex. Unknown keys become warnings (located the
+// same way) when `warnings` is given.
 FeaturePointFile readFeaturePointFile(const std::string& path, Warnings* warnings = nullptr);
 
 // Checks the file against `mesh`: every named sub-mesh exists, indices are in range,
 // barycentrics are valid, the required points exist and no sub-mesh has two roles. Throws
-// FileError listing every error, each naming the feature point (or role) and what was expected;
-// appends named warnings for missing optional points.
+// FileError listing every error, each naming the line, column and JSON path of the feature point
+// (or role) and what was expected; appends named warnings for missing optional points.
 void validateFeaturePoints(const FeaturePointFile& file, const HeadMesh& mesh, Warnings* warnings);
 
 // Global vertex indices a point is bound to: one vertex, or the triangle's three corners.

@@ -22,6 +22,7 @@
 //   the expression picker can apply it.
 // Errors are FileError "file:line:column: json.path: what was expected".
 #include <lacrima/common/Diagnostics.h>
+#include <lacrima/common/JsonValue.h>
 #include <lacrima/common/Keyframes.h>
 
 #include <optional>
@@ -51,6 +52,7 @@ public:
   // Throws FileError naming `displayName`, the line and column, the JSON path and what was
   // expected.
   static PresetLibrary fromJson(std::string_view json, const std::string& displayName);
+  static PresetLibrary read(const JsonValue& root);
   static PresetLibrary load(const std::string& path);  // also reads ":/..." resources
   static PresetLibrary builtIn();
 

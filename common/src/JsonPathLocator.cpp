@@ -1,22 +1,15 @@
-#include <lacrima/editing/JsonPathLocator.h>
+#include <lacrima/common/JsonPathLocator.h>
 
 #include <cctype>
 #include <optional>
 
-namespace lacrima::editing {
+namespace lacrima::inline common {
 namespace {
-
-bool isIdentifier(std::string_view name) {
-  if (name.empty()) return false;
-  for (char c : name)
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-')) return false;
-  return true;
-}
 
 // Walks valid JSON text. Every function starts on the first character of what it reads and
 // leaves `at` just past it.
 class Scanner {
-public:
+ public:
   explicit Scanner(std::string_view text) : text_(text) {}
 
   std::optional<std::size_t> find(const JsonPath& path) {
@@ -24,9 +17,8 @@ public:
     return findIn(path.steps(), 0);
   }
 
-private:
-  std::optional<std::size_t> findIn(const std::vector<std::variant<std::string, int>>& steps,
-                                    std::size_t depth) {
+ private:
+  std::optional<std::size_t> findIn(const std::vector<JsonPath::Step>& steps, std::size_t depth) {
     if (depth == steps.size()) return at_;
     if (const auto* member = std::get_if<std::string>(&steps[depth])) {
       if (peek() != '{') return std::nullopt;
@@ -78,22 +70,82 @@ private:
     while (at_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[at_]))) ++at_;
   }
 
-  // Unescapes the common escapes; \u sequences are kept literally (keys here are ASCII).
+  // The key as QJsonDocument decodes it, so that it compares equal to the path's member name.
   std::string readString() {
     std::string out;
     ++at_;  // opening quote
     while (at_ < text_.size() && text_[at_] != '"') {
-      if (text_[at_] == '\\' && at_ + 1 < text_.size()) {
-        ++at_;
-        const char c = text_[at_];
-        out += c == 'n' ? '\n' : c == 't' ? '\t' : c;
-      } else {
-        out += text_[at_];
+      if (text_[at_] != '\\' || at_ + 1 >= text_.size()) {
+        out += text_[at_++];
+        continue;
       }
-      ++at_;
+      const char c = text_[at_ + 1];
+      at_ += 2;
+      switch (c) {
+        case 'b':
+          out += '\b';
+          break;
+        case 'f':
+          out += '\f';
+          break;
+        case 'n':
+          out += '\n';
+          break;
+        case 'r':
+          out += '\r';
+          break;
+        case 't':
+          out += '\t';
+          break;
+        case 'u':
+          appendUtf8(readCodePoint(), out);
+          break;
+        default:
+          out += c;  // \" \\ \/
+      }
     }
     ++at_;  // closing quote
     return out;
+  }
+
+  // The code point of a \uXXXX escape whose "\u" was read, joining a surrogate pair.
+  char32_t readCodePoint() {
+    const char32_t unit = readHex4();
+    if (unit >= 0xD800 && unit < 0xDC00 && text_.substr(at_, 2) == "\\u") {
+      at_ += 2;
+      const char32_t low = readHex4();
+      return 0x10000 + ((unit - 0xD800) << 10) + (low - 0xDC00);
+    }
+    return unit;
+  }
+
+  char32_t readHex4() {
+    char32_t value = 0;
+    for (int i = 0; i < 4 && at_ < text_.size(); ++i, ++at_) {
+      const char c = text_[at_];
+      const int digit = c <= '9' ? c - '0' : (c | 0x20) - 'a' + 10;
+      value = value * 16 + static_cast<char32_t>(digit);
+    }
+    return value;
+  }
+
+  static void appendUtf8(char32_t c, std::string& out) {
+    const auto byte = [&](char32_t bits) { out += static_cast<char>(bits); };
+    if (c < 0x80) {
+      byte(c);
+    } else if (c < 0x800) {
+      byte(0xC0 | (c >> 6));
+      byte(0x80 | (c & 0x3F));
+    } else if (c < 0x10000) {
+      byte(0xE0 | (c >> 12));
+      byte(0x80 | ((c >> 6) & 0x3F));
+      byte(0x80 | (c & 0x3F));
+    } else {
+      byte(0xF0 | (c >> 18));
+      byte(0x80 | ((c >> 12) & 0x3F));
+      byte(0x80 | ((c >> 6) & 0x3F));
+      byte(0x80 | (c & 0x3F));
+    }
   }
 
   void skipValue() {
@@ -130,50 +182,11 @@ private:
 
 }  // namespace
 
-JsonPath JsonPath::operator/(std::string_view member) const {
-  JsonPath path = *this;
-  path.steps_.emplace_back(std::string(member));
-  return path;
-}
-
-JsonPath JsonPath::operator/(int index) const {
-  JsonPath path = *this;
-  path.steps_.emplace_back(index);
-  return path;
-}
-
-std::string JsonPath::toString() const {
-  std::string text;
-  for (const auto& step : steps_) {
-    if (const auto* member = std::get_if<std::string>(&step)) {
-      if (isIdentifier(*member)) {
-        if (!text.empty()) text += '.';
-        text += *member;
-      } else {
-        if (!text.empty()) text += '.';
-        text += '"' + *member + '"';
-      }
-    } else {
-      text += '[' + std::to_string(std::get<int>(step)) + ']';
-    }
-  }
-  return text;
-}
-
-SourceLocation locateJsonPath(std::string_view json, const JsonPath& path, const std::string& file) {
+SourceLocation locateJsonPath(std::string_view json, const JsonPath& path,
+                              const std::string& file) {
   const std::optional<std::size_t> offset = Scanner(json).find(path);
   if (!offset) return {file, 0, 0};
-  int line = 1;
-  int column = 1;
-  for (std::size_t i = 0; i < *offset && i < json.size(); ++i) {
-    if (json[i] == '\n') {
-      ++line;
-      column = 1;
-    } else if ((static_cast<unsigned char>(json[i]) & 0xC0) != 0x80) {
-      ++column;
-    }
-  }
-  return {file, line, column};
+  return locationInText(json, *offset, file);
 }
 
-}  // namespace lacrima::editing
+}  // namespace lacrima::inline common

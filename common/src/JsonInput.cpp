@@ -1,0 +1,55 @@
+#include <lacrima/common/JsonInput.h>
+#include <lacrima/common/JsonSyntaxError.h>
+
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QJsonParseError>
+
+namespace lacrima::inline common {
+
+JsonInput JsonInput::parse(std::string_view text, std::string name) {
+  auto source = std::make_shared<const JsonSource>(JsonSource{std::string(text), std::move(name)});
+  QJsonParseError error{};
+  const QJsonDocument document = QJsonDocument::fromJson(
+      QByteArray::fromRawData(source->text.data(), static_cast<qsizetype>(source->text.size())),
+      &error);
+  if (error.error != QJsonParseError::NoError) {
+    throw FileError(jsonSyntaxErrorLocation(source->text, error, source->name),
+                    "invalid JSON: " + error.errorString().toStdString());
+  }
+  QJsonValue root =
+      document.isObject() ? QJsonValue(document.object()) : QJsonValue(document.array());
+  return JsonInput(std::move(source), std::move(root));
+}
+
+JsonInput JsonInput::load(const std::string& path, const FileLimits& limits) {
+  const auto fail = [&](const std::string& message) { throw FileError({path, 0, 0}, message); };
+  const std::string kind(limits.kind);
+  QFile file(QString::fromStdString(path));
+  // QFile refuses folders with "Unknown error"; say what is actually wrong.
+  if (QFileInfo(file).isDir()) fail("is a folder, not a " + kind);
+  if (!file.open(QIODevice::ReadOnly)) fail("cannot open: " + file.errorString().toStdString());
+  const auto tooLarge = [&](qint64 bytes) {
+    fail("is " + std::to_string(bytes >> 20) + " MiB or more; " + kind + "s are limited to " +
+         std::to_string(limits.maxBytes >> 20) + " MiB");
+  };
+  if (file.size() > limits.maxBytes) tooLarge(file.size());
+  // Read one byte past the limit: pipes and special files report size 0.
+  const QByteArray bytes = file.read(limits.maxBytes + 1);
+  if (file.error() != QFileDevice::NoError)
+    fail("cannot read: " + file.errorString().toStdString());
+  if (bytes.size() > limits.maxBytes) tooLarge(bytes.size());
+  return parse(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())), path);
+}
+
+JsonValue JsonInput::root() const {
+  const JsonValue root(root_, JsonPath(), source_);
+  if (!root.isObject())
+    root.fail("expected a JSON object at the top level, got " + root.describe());
+  return root;
+}
+
+}  // namespace lacrima::inline common
