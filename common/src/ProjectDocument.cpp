@@ -263,16 +263,6 @@ SceneSettings readScene(const JsonValue& value) {
   return scene;
 }
 
-// The project tests pin errors in valid JSON to the file alone (syntax errors keep their line
-// and column). Reading the input with ProjectDocument::read instead names the line and column.
-ProjectDocument readNamingTheFileOnly(const JsonInput& input) {
-  try {
-    return ProjectDocument::read(input.root());
-  } catch (const FileError& error) {
-    throw FileError({error.where().file, 0, 0}, error.message());
-  }
-}
-
 }  // namespace
 
 bool ProjectDocument::operator==(const ProjectDocument& other) const {
@@ -327,11 +317,11 @@ ProjectDocument ProjectDocument::read(const JsonValue& root) {
 }
 
 ProjectDocument ProjectDocument::fromJson(std::string_view json, const std::string& displayName) {
-  return readNamingTheFileOnly(JsonInput::parse(json, displayName));
+  return read(JsonInput::parse(json, displayName).root());
 }
 
 ProjectDocument ProjectDocument::load(const std::string& path) {
-  return readNamingTheFileOnly(JsonInput::load(path, {"project file", kMaxFileBytes}));
+  return read(JsonInput::load(path, {"project file", kMaxFileBytes}).root());
 }
 
 void ProjectDocument::save(const std::string& path) const { saveAtomically(path, toJson()); }

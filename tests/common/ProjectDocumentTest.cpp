@@ -228,82 +228,82 @@ private slots:
     QTest::newRow("bad syntax after UTF-8")
         << QString::fromUtf8("{\"name\": \"\xc3\xa9t\xc3\xa9\", \"fps\": 22,}")
         << "doc.json:1:27" << "invalid JSON: ";
-    QTest::newRow("not an object") << "[1, 2]" << "doc.json" << "expected a JSON object";
-    QTest::newRow("missing format") << R"({"version": 1, "keys": []})" << "doc.json"
+    QTest::newRow("not an object") << "[1, 2]" << "doc.json:1:1" << "expected a JSON object";
+    QTest::newRow("missing format") << R"({"version": 1, "keys": []})" << "doc.json:1:1"
                                     << "format: missing; this is not a Lacrima project";
     QTest::newRow("wrong format") << R"({"format": "lacrima-projekt", "version": 1, "keys": []})"
-                                  << "doc.json"
+                                  << "doc.json:1:2"
                                   << "format: expected \"lacrima-project\", got the string";
     QTest::newRow("newer version")
         << R"({"format": "lacrima-project", "version": 2, "keys": [], "newField": 1})"
-        << "doc.json" << "version: written by a newer Lacrima (schema 2); this build reads up to 1";
+        << "doc.json:1:31" << "version: written by a newer Lacrima (schema 2); this build reads up to 1";
     QTest::newRow("fractional version")
-        << R"({"format": "lacrima-project", "version": 1.5, "keys": []})" << "doc.json"
+        << R"({"format": "lacrima-project", "version": 1.5, "keys": []})" << "doc.json:1:31"
         << "version: expected a whole number >= 1";
     QTest::newRow("missing keys") << R"({"format": "lacrima-project", "version": 1})"
-                                  << "doc.json" << "keys: missing";
+                                  << "doc.json:1:1" << "keys: missing";
     QTest::newRow("unknown top-level field")
-        << QString::fromStdString(withTopLevel(R"("colour": "red")")) << "doc.json"
+        << QString::fromStdString(withTopLevel(R"("colour": "red")")) << "doc.json:1:57"
         << "colour: unknown field; expected one of format, version, name, fps";
     QTest::newRow("unknown FAP name") << QString::fromStdString(withValues(R"({"opn_jaw": 1})"))
-                                      << "doc.json"
+                                      << "doc.json:2:45"
                                       << "keys[0].values.opn_jaw: unknown FAP name; did you mean open_jaw?";
     QTest::newRow("fractional tear count")
-        << QString::fromStdString(withValues(R"({"tears_l_eye": 2.5})")) << "doc.json"
+        << QString::fromStdString(withValues(R"({"tears_l_eye": 2.5})")) << "doc.json:2:45"
         << "keys[0].values.tears_l_eye: expected a whole number of particles in [0, 100000], got 2.5";
     QTest::newRow("too many tears")
-        << QString::fromStdString(withValues(R"({"tears_r_eye": 100001})")) << "doc.json"
+        << QString::fromStdString(withValues(R"({"tears_r_eye": 100001})")) << "doc.json:2:45"
         << "keys[0].values.tears_r_eye: expected a whole number of particles";
     QTest::newRow("value too large")
-        << QString::fromStdString(withValues(R"({"open_jaw": 2e7})")) << "doc.json"
+        << QString::fromStdString(withValues(R"({"open_jaw": 2e7})")) << "doc.json:2:45"
         << "keys[0].values.open_jaw: expected a number in [-1e7, 1e7], got 20000000";
     QTest::newRow("value not a number")
-        << QString::fromStdString(withValues(R"({"open_jaw": "12"})")) << "doc.json"
+        << QString::fromStdString(withValues(R"({"open_jaw": "12"})")) << "doc.json:2:45"
         << "keys[0].values.open_jaw: expected a number";
     QTest::newRow("negative fps") << QString::fromStdString(withTopLevel(R"("fps": -22)"))
-                                  << "doc.json" << "fps: expected a number in (0, 1000], got -22";
+                                  << "doc.json:1:57" << "fps: expected a number in (0, 1000], got -22";
     QTest::newRow("fps as text") << QString::fromStdString(withTopLevel(R"("fps": "22")"))
-                                 << "doc.json" << "fps: expected a number in (0, 1000]";
+                                 << "doc.json:1:57" << "fps: expected a number in (0, 1000]";
     QTest::newRow("bad default interpolation")
-        << QString::fromStdString(withTopLevel(R"("interpolation": "cubic")")) << "doc.json"
+        << QString::fromStdString(withTopLevel(R"("interpolation": "cubic")")) << "doc.json:1:57"
         << "interpolation: expected \"linear\" or \"smooth\"";
     QTest::newRow("tearSources with 2 numbers")
         << QString::fromStdString(withTopLevel(R"("tearSources": {"left": [1, 2], "right": null})"))
-        << "doc.json" << "tearSources.left: expected null or an array of 3 finite numbers";
+        << "doc.json:1:73" << "tearSources.left: expected null or an array of 3 finite numbers";
     QTest::newRow("tearSources with text")
         << QString::fromStdString(withTopLevel(R"("tearSources": {"right": [1, "2", 3]})"))
-        << "doc.json" << "tearSources.right[1]: expected a finite number";
+        << "doc.json:1:86" << "tearSources.right[1]: expected a finite number";
     QTest::newRow("unknown tear source")
         << QString::fromStdString(withTopLevel(R"("tearSources": {"centre": null})"))
-        << "doc.json" << "tearSources.centre: unknown field; expected one of left, right";
+        << "doc.json:1:73" << "tearSources.centre: unknown field; expected one of left, right";
     QTest::newRow("unknown scene field")
-        << QString::fromStdString(withTopLevel(R"("scene": {"colour": 1})")) << "doc.json"
+        << QString::fromStdString(withTopLevel(R"("scene": {"colour": 1})")) << "doc.json:1:67"
         << "scene.colour: unknown field; expected one of particles, surface, trails";
     QTest::newRow("scene flag not a bool")
-        << QString::fromStdString(withTopLevel(R"("scene": {"trails": 1})")) << "doc.json"
+        << QString::fromStdString(withTopLevel(R"("scene": {"trails": 1})")) << "doc.json:1:67"
         << "scene.trails: expected true or false";
     QTest::newRow("bad redness")
         << QString::fromStdString(withTopLevel(R"("scene": {"redness": "always"})"))
-        << "doc.json" << "scene.redness: expected \"animation\" or \"tears\"";
+        << "doc.json:1:67" << "scene.redness: expected \"animation\" or \"tears\"";
     QTest::newRow("unknown simulation parameter")
         << QString::fromStdString(withTopLevel(R"("scene": {"simulation": {"stickiness": 1}})"))
-        << "doc.json" << "scene.simulation.stickiness: unknown parameter 'stickiness'; expected one of: pressure";
+        << "doc.json:1:82" << "scene.simulation.stickiness: unknown parameter 'stickiness'; expected one of: pressure";
     QTest::newRow("adhesion out of range")
         << QString::fromStdString(withTopLevel(R"("scene": {"simulation": {"adhesion": 20000}})"))
-        << "doc.json" << "scene.simulation.adhesion: 20000 is outside [0, 10000]";
+        << "doc.json:1:82" << "scene.simulation.adhesion: 20000 is outside [0, 10000]";
     QTest::newRow("duplicate key time")
         << R"({"format": "lacrima-project", "version": 1, "keys": [
                {"time": 0.5, "values": {}}, {"time": 1, "values": {}},
                {"time": 0.5, "values": {"open_jaw": 1}}]})"
-        << "doc.json" << "keys[2].time: 0.5 repeats the time of keys[0]";
+        << "doc.json:3:17" << "keys[2].time: 0.5 repeats the time of keys[0]";
     QTest::newRow("negative key time")
         << R"({"format": "lacrima-project", "version": 1, "keys": [{"time": -1, "values": {}}]})"
-        << "doc.json" << "keys[0].time: expected a time >= 0 s, got -1";
+        << "doc.json:1:55" << "keys[0].time: expected a time >= 0 s, got -1";
     QTest::newRow("unknown key field")
         << R"({"format": "lacrima-project", "version": 1, "keys": [{"time": 0, "values": {}, "ease": 1}]})"
-        << "doc.json" << "keys[0].ease: unknown field; expected one of time, interpolation, values";
+        << "doc.json:1:80" << "keys[0].ease: unknown field; expected one of time, interpolation, values";
     QTest::newRow("key without values")
-        << R"({"format": "lacrima-project", "version": 1, "keys": [{"time": 0}]})" << "doc.json"
+        << R"({"format": "lacrima-project", "version": 1, "keys": [{"time": 0}]})" << "doc.json:1:54"
         << "keys[0].values: missing";
   }
 
@@ -318,8 +318,8 @@ private slots:
     QVERIFY(QString::fromStdString(error.what()).startsWith(location + ": "));
   }
 
-  // read() is what a file embedding a project (a recovery file) uses; unlike fromJson it keeps
-  // the line and column of a bad value.
+  // read() is what a file embedding a project (a recovery file) uses; it names the line and
+  // column of a bad value as fromJson and load do.
   void readNamesLineColumnAndPath() {
     const std::string json =
         "{\"format\": \"lacrima-project\", \"version\": 1,\n \"keys\": [\n"

@@ -1,12 +1,7 @@
 #include "Kernels.h"
 
+#include <lacrima/common/JsonInput.h>
 #include <lacrima/tears/Parameters.h>
-#include <lacrima/common/JsonSyntaxError.h>
-
-#include <QByteArray>
-#include <QJsonDocument>
-#include <QJsonObject>
-#include <QJsonParseError>
 
 #include <cmath>
 #include <stdexcept>
@@ -63,28 +58,12 @@ double TearSettings::get(std::string_view name) const {
 }
 
 TearSettings TearSettings::fromJson(std::string_view json) {
-  QJsonParseError error{};
-  const QJsonDocument document = QJsonDocument::fromJson(
-      QByteArray(json.data(), static_cast<qsizetype>(json.size())), &error);
-  if (error.error != QJsonParseError::NoError) {
-    throw std::invalid_argument(
-        jsonSyntaxErrorLocation(json, error, "tear parameters").toString() +
-        ": invalid JSON: " + error.errorString().toStdString());
-  }
-  if (!document.isObject())
-    throw std::invalid_argument("tear parameters: expected a JSON object of name: number");
   TearSettings result;  // filled completely before it is returned: no half-applied state
-  const QJsonObject object = document.object();
-  for (auto it = object.begin(); it != object.end(); ++it) {
-    const std::string name = it.key().toStdString();
-    if (!it.value().isDouble()) {
-      throw std::invalid_argument("tear parameters: " + name + ": expected a number");
-    }
-    try {
-      result.set(name, it.value().toDouble());
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(std::string("tear parameters: ") + e.what());
-    }
+  try {
+    const JsonInput input = JsonInput::parse(json, "tear parameters");
+    for (const auto& [name, value] : readTearParameters(input.root())) result.set(name, value);
+  } catch (const FileError& error) {
+    throw std::invalid_argument(error.what());  // what the settings' callers catch
   }
   return result;
 }
