@@ -11,7 +11,7 @@ namespace lacrima {
 // Projects are recognised by the .json extension; everything else is read as a .fap file.
 bool isProjectPath(const std::string& path);
 
-FapReadResult readFap(const std::string& path);      // warnings printed to stderr
+FapReadResult readFap(const std::string& path);  // warnings printed to stderr
 ProjectDocument loadProject(const std::string& path);
 FapAnimation loadAnimation(const std::string& path);  // a .fap file, or a project baked at its fps
 

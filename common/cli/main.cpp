@@ -65,10 +65,10 @@ int check(const std::string& path) {
   const FapReadResult read = readFap(path);
   const FapAnimation& anim = read.animation;
   std::printf("%s: FAP %s, %s fps, %d frames (%s s), %d channels masked (%s), %d warning%s\n",
-              path.c_str(), anim.version.c_str(), formatNumber(anim.fps).c_str(),
-              anim.frameCount(), formatNumber(anim.duration()).c_str(),
-              static_cast<int>(anim.animated.count()), channelRanges(anim.animated).c_str(),
-              static_cast<int>(read.warnings.size()), read.warnings.size() == 1 ? "" : "s");
+              path.c_str(), anim.version.c_str(), formatNumber(anim.fps).c_str(), anim.frameCount(),
+              formatNumber(anim.duration()).c_str(), static_cast<int>(anim.animated.count()),
+              channelRanges(anim.animated).c_str(), static_cast<int>(read.warnings.size()),
+              read.warnings.size() == 1 ? "" : "s");
   return kExitOk;
 }
 
@@ -136,8 +136,8 @@ struct Command {
 };
 
 int usageError(const QString& message) {
-  std::fprintf(stderr, "lacrima-fap: %s\n\nusage: lacrima-fap COMMAND ...\n%s",
-               qPrintable(message), kCommandSummary);
+  std::fprintf(stderr, "lacrima-fap: %s\n\nusage: lacrima-fap COMMAND ...\n%s", qPrintable(message),
+               kCommandSummary);
   return kExitUsage;
 }
 
@@ -155,7 +155,9 @@ int main(int argc, char** argv) {
 
   const Command commands[] = {
       {"check", "Validate FILE and print one summary line.", "FILE", false,
-       [](QCommandLineParser&, const std::string& file, const std::string&) { return check(file); }},
+       [](QCommandLineParser&, const std::string& file, const std::string&) {
+         return check(file);
+       }},
       {"dump", "Print FILE's decoded frames as CSV.", "FILE", false,
        [](QCommandLineParser&, const std::string& file, const std::string&) { return dump(file); }},
       {"interpolate", "Treat IN's frames as keys and resample them at --fps into OUT.", "IN", true,
@@ -163,10 +165,13 @@ int main(int argc, char** argv) {
          bool ok = false;
          const double fps = p.value(fpsOption).toDouble(&ok);
          if (!ok || !(fps > 0 && fps <= 1000))
-           return usageError("--fps expects a frame rate in (0, 1000], got '" + p.value(fpsOption) + "'");
+           return usageError("--fps expects a frame rate in (0, 1000], got '" + p.value(fpsOption) +
+                             "'");
          return interpolate(in, out, fps, p.isSet(smoothOption));
        },
-       [&](QCommandLineParser& p) { p.addOptions({fpsOption, smoothOption}); }},
+       [&](QCommandLineParser& p) {
+         p.addOptions({fpsOption, smoothOption});
+       }},
       {"convert", "Convert between .fap and project .json (by OUT's extension).", "IN", true,
        [&](QCommandLineParser& p, const std::string& in, const std::string& out) {
          return convert(in, out, p.isSet(strictOption));

@@ -23,4 +23,4 @@ void saveAtomically(const std::string& path, std::string_view bytes) {
   if (!file.commit()) fail(file.errorString());
 }
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

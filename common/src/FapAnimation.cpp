@@ -39,4 +39,4 @@ FapValues FapAnimation::sample(double seconds) const {
   return out;
 }
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

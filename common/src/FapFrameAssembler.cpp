@@ -177,4 +177,4 @@ void FrameAssembler::fillGaps(FapAnimation& animation, const std::vector<int>& s
   }
 }
 
-}  // namespace lacrima::common::fapio
+}  // namespace lacrima::inline common::fapio

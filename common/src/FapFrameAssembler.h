@@ -13,7 +13,7 @@
 namespace lacrima::inline common::fapio {
 
 class FrameAssembler {
-public:
+ public:
   FrameAssembler(const std::string& displayName, int maxFilledFrames);
 
   // nframes from the header and where it was written. `expectedFrames` only sizes the first
@@ -30,7 +30,7 @@ public:
   // Throws FileError when filling would invent more than maxFilledFrames frames.
   void finish(FapAnimation& animation, Warnings& warnings);
 
-private:
+ private:
   struct Origin {
     std::int64_t number;
     int line;
@@ -54,4 +54,4 @@ private:
   int firstBeyondHeader_ = -1;        // index in origins_ of the first number >= nframes
 };
 
-}  // namespace lacrima::common::fapio
+}  // namespace lacrima::inline common::fapio

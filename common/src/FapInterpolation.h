@@ -20,4 +20,4 @@ inline void blendFrames(const FapValues& a, const FapValues& b, double t, FapVal
   }
 }
 
-}  // namespace lacrima::common::fapio
+}  // namespace lacrima::inline common::fapio

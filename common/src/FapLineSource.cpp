@@ -72,4 +72,4 @@ bool LineSource::refill() {
   return true;
 }
 
-}  // namespace lacrima::common::fapio
+}  // namespace lacrima::inline common::fapio

@@ -10,7 +10,7 @@
 namespace lacrima::inline common::fapio {
 
 class LineSource {
-public:
+ public:
   // Lines of text already in memory; `text` must outlive the source.
   LineSource(std::string_view text, const std::string& displayName, std::size_t maxLineLength);
   // Lines of an open file, read in chunks so memory stays bounded whatever the file holds.
@@ -29,7 +29,7 @@ public:
 
   static constexpr std::size_t kChunkSize = 64 * 1024;
 
-private:
+ private:
   bool refill();
 
   const std::string& displayName_;
@@ -42,4 +42,4 @@ private:
   int lineNumber_ = 0;
 };
 
-}  // namespace lacrima::common::fapio
+}  // namespace lacrima::inline common::fapio

@@ -64,7 +64,7 @@ struct FileCloser {
 };
 
 class Parser {
-public:
+ public:
   Parser(LineSource& lines, const std::string& displayName, std::size_t inputSize)
       : lines_(lines),
         displayName_(displayName),
@@ -73,7 +73,7 @@ public:
 
   FapReadResult run();
 
-private:
+ private:
   bool nextLine();
   void tokenizeOrFail();
   void readHeader(FapReadResult& result);
@@ -427,4 +427,4 @@ FapReadResult FapReader::parse(std::string_view text, const std::string& display
   return Parser(lines, displayName, text.size()).run();
 }
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

@@ -220,15 +220,24 @@ static_assert(rowsAreConsistent());
 
 Eigen::Vector3f toVector(Dir d) {
   switch (d) {
-    case Up: return {0, 1, 0};
-    case Down: return {0, -1, 0};
-    case Left: return {1, 0, 0};
-    case Right: return {-1, 0, 0};
-    case Forward: return {0, 0, 1};
-    case YawLeft: return {0, 1, 0};
-    case PitchDown: return {1, 0, 0};
-    case RollRight: return {0, 0, 1};
-    case Zero: break;
+    case Up:
+      return {0, 1, 0};
+    case Down:
+      return {0, -1, 0};
+    case Left:
+      return {1, 0, 0};
+    case Right:
+      return {-1, 0, 0};
+    case Forward:
+      return {0, 0, 1};
+    case YawLeft:
+      return {0, 1, 0};
+    case PitchDown:
+      return {1, 0, 0};
+    case RollRight:
+      return {0, 0, 1};
+    case Zero:
+      break;
   }
   return Eigen::Vector3f::Zero();
 }
@@ -240,9 +249,9 @@ const std::array<FapInfo, kChannelCount>& table() {
     std::array<FapInfo, kChannelCount> out;
     for (int i = 0; i < kChannelCount; ++i) {
       const Row& r = kRows[i];
-      out[i] = FapInfo{r.number,  r.name,          r.description,    r.unit,
-                       r.bidirectional, r.motion,  toVector(r.dir),  r.group,
-                       r.featurePoint,  r.quantizerStep, r.sliderMin, r.sliderMax};
+      out[i] = FapInfo{r.number,        r.name,          r.description,   r.unit,
+                       r.bidirectional, r.motion,        toVector(r.dir), r.group,
+                       r.featurePoint,  r.quantizerStep, r.sliderMin,     r.sliderMax};
     }
     return out;
   }();
@@ -311,33 +320,52 @@ bool mirrorNegates(int fap) {
 
 std::string_view toString(FapUnit unit) {
   switch (unit) {
-    case None: return "none";
-    case IRISD: return "IRISD";
-    case ES: return "ES";
-    case ENS: return "ENS";
-    case MNS: return "MNS";
-    case MW: return "MW";
-    case AU: return "AU";
-    case Particles: return "particles";
+    case None:
+      return "none";
+    case IRISD:
+      return "IRISD";
+    case ES:
+      return "ES";
+    case ENS:
+      return "ENS";
+    case MNS:
+      return "MNS";
+    case MW:
+      return "MW";
+    case AU:
+      return "AU";
+    case Particles:
+      return "particles";
   }
   return "unknown";
 }
 
 std::string_view toString(FapGroup group) {
   switch (group) {
-    case VisemeExpression: return "visemes and expressions";
-    case JawChinInnerLips: return "jaw, chin and inner lips";
-    case Eyes: return "eyes";
-    case Eyebrows: return "eyebrows";
-    case Cheeks: return "cheeks";
-    case Tongue: return "tongue";
-    case Head: return "head";
-    case OuterLips: return "outer lips";
-    case Nose: return "nose";
-    case Ears: return "ears";
-    case Tears: return "tears";
+    case VisemeExpression:
+      return "visemes and expressions";
+    case JawChinInnerLips:
+      return "jaw, chin and inner lips";
+    case Eyes:
+      return "eyes";
+    case Eyebrows:
+      return "eyebrows";
+    case Cheeks:
+      return "cheeks";
+    case Tongue:
+      return "tongue";
+    case Head:
+      return "head";
+    case OuterLips:
+      return "outer lips";
+    case Nose:
+      return "nose";
+    case Ears:
+      return "ears";
+    case Tears:
+      return "tears";
   }
   return "unknown";
 }
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

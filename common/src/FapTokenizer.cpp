@@ -135,4 +135,4 @@ std::string quoteToken(std::string_view token) {
   return quoted;
 }
 
-}  // namespace lacrima::common::fapio
+}  // namespace lacrima::inline common::fapio

@@ -12,7 +12,7 @@ enum class NumberStatus { Ok, NotANumber, NotFinite, OutOfRange };
 // Walks the tokens of one line: blanks (space, tab, CR, VT, FF) separate them, and a token
 // that starts with '#' ends the line's tokens. Allocates nothing, for the per-frame hot path.
 class TokenCursor {
-public:
+ public:
   explicit TokenCursor(std::string_view line)
       : begin_(line.data()), p_(begin_), end_(begin_ + line.size()) {}
 
@@ -31,7 +31,7 @@ public:
   // from where next() stopped to the end of the line, comment included; -1 when there is none.
   long controlByteInRest() const;
 
-private:
+ private:
   const char* begin_;
   const char* p_;
   const char* end_;
@@ -53,4 +53,4 @@ WholeStatus parseDigits(std::string_view token, std::int64_t cap, std::int64_t& 
 // The token for a message: quoted, cut to about 20 characters.
 std::string quoteToken(std::string_view token);
 
-}  // namespace lacrima::common::fapio
+}  // namespace lacrima::inline common::fapio

@@ -35,14 +35,14 @@ std::string headerName(const std::string& name) {
 }
 
 class TextWriter {
-public:
+ public:
   TextWriter(const FapAnimation& animation, const FapWriteOptions& options, Warnings* warnings,
              const std::string& file)
       : animation_(animation), options_(options), warnings_(warnings), file_(file) {}
 
   std::string write();
 
-private:
+ private:
   long fps();
   void chooseChannels();
   std::string maskLine() const;
@@ -170,4 +170,4 @@ void FapWriter::save(const FapAnimation& animation, const std::string& path,
   saveAtomically(path, text);
 }
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

@@ -46,8 +46,8 @@ std::vector<int> weldCoincidentVertices(const Eigen::Matrix3Xf& positions) {
 }
 
 void accumulateNormals(const Eigen::Matrix3Xf& positions,
-                       const std::vector<Eigen::Vector3i>& triangles,
-                       const std::vector<int>& weld, Eigen::Matrix3Xf& normals) {
+                       const std::vector<Eigen::Vector3i>& triangles, const std::vector<int>& weld,
+                       Eigen::Matrix3Xf& normals) {
   normals.setZero(3, positions.cols());
   for (const Eigen::Vector3i& t : triangles) {
     // The unnormalised cross product weights each face by its area.
@@ -62,23 +62,27 @@ void accumulateNormals(const Eigen::Matrix3Xf& positions,
   for (Eigen::Index v = 0; v < positions.cols(); ++v) {
     const float length = normals.col(v).norm();
     // A vertex on no triangle (or only degenerate ones) gets +z rather than NaN.
-    normals.col(v) = length > 0 ? Eigen::Vector3f(normals.col(v) / length) : Eigen::Vector3f::UnitZ();
+    normals.col(v) =
+        length > 0 ? Eigen::Vector3f(normals.col(v) / length) : Eigen::Vector3f::UnitZ();
   }
 }
 
 void HeadMesh::computeNormals() {
   std::vector<Eigen::Vector3i> all;
   all.reserve(static_cast<size_t>(triangleCount()));
-  for (const HeadSubmesh& s : submeshes) all.insert(all.end(), s.triangles.begin(), s.triangles.end());
+  for (const HeadSubmesh& s : submeshes)
+    all.insert(all.end(), s.triangles.begin(), s.triangles.end());
   accumulateNormals(positions, all, weldCoincidentVertices(positions), normals);
 }
 
 Eigen::Vector3f HeadMesh::boundsMin() const {
-  return positions.cols() ? Eigen::Vector3f(positions.rowwise().minCoeff()) : Eigen::Vector3f::Zero();
+  return positions.cols() ? Eigen::Vector3f(positions.rowwise().minCoeff())
+                          : Eigen::Vector3f::Zero();
 }
 
 Eigen::Vector3f HeadMesh::boundsMax() const {
-  return positions.cols() ? Eigen::Vector3f(positions.rowwise().maxCoeff()) : Eigen::Vector3f::Zero();
+  return positions.cols() ? Eigen::Vector3f(positions.rowwise().maxCoeff())
+                          : Eigen::Vector3f::Zero();
 }
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

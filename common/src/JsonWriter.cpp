@@ -110,12 +110,23 @@ void JsonWriter::appendString(std::string_view value) {
 
 void JsonWriter::appendEscaped(char c) {
   switch (c) {
-    case '"': text_ += "\\\""; return;
-    case '\\': text_ += "\\\\"; return;
-    case '\n': text_ += "\\n"; return;
-    case '\r': text_ += "\\r"; return;
-    case '\t': text_ += "\\t"; return;
-    default: break;
+    case '"':
+      text_ += "\\\"";
+      return;
+    case '\\':
+      text_ += "\\\\";
+      return;
+    case '\n':
+      text_ += "\\n";
+      return;
+    case '\r':
+      text_ += "\\r";
+      return;
+    case '\t':
+      text_ += "\\t";
+      return;
+    default:
+      break;
   }
   if (static_cast<unsigned char>(c) < 0x20) {
     constexpr char kHex[] = "0123456789abcdef";
@@ -127,4 +138,4 @@ void JsonWriter::appendEscaped(char c) {
   text_ += c;
 }
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

@@ -94,8 +94,7 @@ double hermite(const Knot& a, const Knot& b, double ma, double mb, double t) {
   const double r = 1.0 - s;
   const double rise = (b.value - a.value) * s * s * (3.0 - 2.0 * s);
   const double bend = h * (ma * s * r * r - mb * s * s * r);
-  return std::clamp(a.value + rise + bend, std::min(a.value, b.value),
-                    std::max(a.value, b.value));
+  return std::clamp(a.value + rise + bend, std::min(a.value, b.value), std::max(a.value, b.value));
 }
 
 // Value of a channel's curve at t, where `reached` knots lie at or before t.
@@ -177,8 +176,7 @@ void Keyframe::clear(int fap) {
 }
 
 bool Keyframe::operator==(const Keyframe& other) const {
-  if (time != other.time || interpolation != other.interpolation ||
-      channels != other.channels) {
+  if (time != other.time || interpolation != other.interpolation || channels != other.channels) {
     return false;
   }
   for (int i = 0; i < kChannelCount; ++i) {
@@ -278,8 +276,8 @@ FapValues KeyframeSequence::evaluate(double seconds) const {
     const std::span<const Knot> knots(window[i].data() + (2 - before[i]),
                                       static_cast<std::size_t>(count));
     const int fap = fapNumber(i);
-    result[i] = channelValue(fap, curveValue(fap, knots, static_cast<std::size_t>(before[i]),
-                                             seconds));
+    result[i] =
+        channelValue(fap, curveValue(fap, knots, static_cast<std::size_t>(before[i]), seconds));
   }
   return result;
 }
@@ -341,4 +339,4 @@ KeyframeSequence KeyframeSequence::fromAnimation(const FapAnimation& animation,
   return KeyframeSequence(std::move(keys));
 }
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

@@ -15,8 +15,10 @@ std::vector<std::string> mediaCandidates(std::string_view relative) {
     const QString beside = QCoreApplication::applicationDirPath() + "/../share/lacrima/" + name;
     places.push_back(QDir::cleanPath(beside).toStdString());
   }
-  places.push_back(QDir::cleanPath(QStringLiteral(LACRIMA_INSTALL_PREFIX "/share/lacrima/") + name).toStdString());
-  places.push_back(QDir::cleanPath(QStringLiteral(LACRIMA_SOURCE_MEDIA_DIR "/") + name).toStdString());
+  places.push_back(QDir::cleanPath(QStringLiteral(LACRIMA_INSTALL_PREFIX "/share/lacrima/") + name)
+                       .toStdString());
+  places.push_back(
+      QDir::cleanPath(QStringLiteral(LACRIMA_SOURCE_MEDIA_DIR "/") + name).toStdString());
   return places;
 }
 
@@ -26,7 +28,8 @@ std::string findMediaFile(std::string_view relative) {
     if (QFileInfo(QString::fromStdString(place)).isFile()) return place;
   std::string looked;
   for (const std::string& place : places) looked += (looked.empty() ? "" : ", ") + place;
-  throw FileError({std::string(relative), 0, 0}, "Lacrima's media file is missing; looked in " + looked);
+  throw FileError({std::string(relative), 0, 0},
+                  "Lacrima's media file is missing; looked in " + looked);
 }
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

@@ -43,7 +43,7 @@ bool nameContains(std::string_view name, std::string_view part) {
 // uv-seam copies grouped by weld root, as compressed rows: the copies of root r are
 // members_[start_[r] .. start_[r + 1]), ascending (a root is its own first copy).
 class SeamGroups {
-public:
+ public:
   explicit SeamGroups(const Eigen::Matrix3Xf& positions)
       : root_(weldCoincidentVertices(positions)), start_(root_.size() + 1, 0) {
     for (int r : root_) ++start_[static_cast<std::size_t>(r) + 1];
@@ -51,7 +51,8 @@ public:
     members_.resize(root_.size());
     std::vector<int> fill(start_.begin(), start_.end() - 1);
     for (std::size_t v = 0; v < root_.size(); ++v)
-      members_[static_cast<std::size_t>(fill[static_cast<std::size_t>(root_[v])]++)] = static_cast<int>(v);
+      members_[static_cast<std::size_t>(fill[static_cast<std::size_t>(root_[v])]++)] =
+          static_cast<int>(v);
   }
 
   int root(int v) const { return root_[static_cast<std::size_t>(v)]; }
@@ -60,7 +61,7 @@ public:
     return {members_.data() + start_[r], static_cast<std::size_t>(start_[r + 1] - start_[r])};
   }
 
-private:
+ private:
   std::vector<int> root_;
   std::vector<int> start_;
   std::vector<int> members_;
@@ -70,9 +71,11 @@ private:
 // The scratch array is dense but only touched entries are visited, so the cost follows the
 // influence's size, not the head's.
 class SeamExpander {
-public:
+ public:
   SeamExpander(const SeamGroups& seams, int vertexCount)
-      : seams_(seams), vertexCount_(vertexCount), rootWeight_(static_cast<std::size_t>(vertexCount), 0.0f) {}
+      : seams_(seams),
+        vertexCount_(vertexCount),
+        rootWeight_(static_cast<std::size_t>(vertexCount), 0.0f) {}
 
   struct Problems {
     int rejected = 0;  // index out of range, or weight not finite and positive
@@ -113,7 +116,7 @@ public:
     return out;
   }
 
-private:
+ private:
   const SeamGroups& seams_;
   int vertexCount_;
   std::vector<float> rootWeight_;
@@ -121,7 +124,7 @@ private:
 };
 
 class Baker {
-public:
+ public:
   explicit Baker(const RigInput& input)
       : in_(input),
         mesh_(*input.mesh),
@@ -140,10 +143,17 @@ public:
     for (int fap = 3; fap <= kFapCount; ++fap) {
       VertexPose& pose = set.poses[static_cast<std::size_t>(channelIndex(fap))];
       switch (fapInfo(fap).motion) {
-        case FapMotion::Translation: pose = translation(fap); break;
-        case FapMotion::Dilation: pose = dilation(fap, fap == 29 ? set.eyeLeft : set.eyeRight); break;
-        case FapMotion::Curl: pose = curl(fap); break;
-        default: break;
+        case FapMotion::Translation:
+          pose = translation(fap);
+          break;
+        case FapMotion::Dilation:
+          pose = dilation(fap, fap == 29 ? set.eyeLeft : set.eyeRight);
+          break;
+        case FapMotion::Curl:
+          pose = curl(fap);
+          break;
+        default:
+          break;
       }
     }
     const ChannelMask driven = set.drivenChannels();
@@ -154,7 +164,7 @@ public:
 
   std::vector<std::string> warnings;
 
-private:
+ private:
   static bool usable(double unit) { return std::isfinite(unit) && unit > 0.0; }
 
   // One warning per bad FAPU listing every FAP it silences, instead of one per FAP.
@@ -163,11 +173,10 @@ private:
       if (usable(in_.fapu.unitValue(unit))) continue;
       std::string faps;
       for (int fap = 3; fap <= kFapCount; ++fap)
-        if (fapInfo(fap).unit == unit)
-          faps += (faps.empty() ? "" : ", ") + std::to_string(fap);
+        if (fapInfo(fap).unit == unit) faps += (faps.empty() ? "" : ", ") + std::to_string(fap);
       warnings.push_back("FAPU " + std::string(toString(unit)) + " = " +
-                         number(in_.fapu.unitValue(unit)) +
-                         " is not positive and finite; FAPs " + faps + " get no pose");
+                         number(in_.fapu.unitValue(unit)) + " is not positive and finite; FAPs " +
+                         faps + " get no pose");
     }
   }
 
@@ -184,7 +193,8 @@ private:
       warnings.push_back("feature point " + id + ": " + std::to_string(raw.vertices.size()) +
                          " vertices but " + std::to_string(raw.weights.size()) +
                          " weights; the unmatched entries are skipped");
-    for (std::size_t k = 0; k < count; ++k) expander_.add(raw.vertices[k], raw.weights[k], problems);
+    for (std::size_t k = 0; k < count; ++k)
+      expander_.add(raw.vertices[k], raw.weights[k], problems);
     if (problems.rejected)
       warnings.push_back("feature point " + id + ": " + std::to_string(problems.rejected) +
                          " influence entries skipped (vertex outside the head, or weight not "
@@ -211,8 +221,8 @@ private:
     }
     VertexPose pose;
     pose.vertices = weights->vertices;
-    const Eigen::Map<const Eigen::RowVectorXf> w(weights->weights.data(),
-                                                 static_cast<Eigen::Index>(weights->weights.size()));
+    const Eigen::Map<const Eigen::RowVectorXf> w(
+        weights->weights.data(), static_cast<Eigen::Index>(weights->weights.size()));
     const Eigen::Vector3f step = info.positiveMotion * static_cast<float>(unit);
     pose.offsets.noalias() = step * w;
     return pose;
@@ -239,7 +249,7 @@ private:
                   " eye's centre, so the eye has no axis");
     const Eigen::Vector3d axis = axisVector / axisLength;
 
-    const double irisRadius = 512.0 * step;      // IRISD0 / 2
+    const double irisRadius = 512.0 * step;       // IRISD0 / 2
     const double pupilRadius = irisRadius / 3.0;  // neutral pupil: a third of the iris
     const double edgeShift = 0.5 * step;          // diameter grows one step per unit
     const std::vector<char>& cornea = corneaMask();
@@ -262,8 +272,10 @@ private:
       offsets.push_back((radial * (edgeShift * profile / r)).cast<float>());
     }
     if (vertices.empty())
-      return none("no " + side + " eyeball vertex lies in front of its centre within the iris "
-                  "disc of radius IRISD0/2 = " + number(irisRadius));
+      return none("no " + side +
+                  " eyeball vertex lies in front of its centre within the iris "
+                  "disc of radius IRISD0/2 = " +
+                  number(irisRadius));
     return packed(std::move(vertices), offsets);
   }
 
@@ -308,11 +320,14 @@ private:
       tongue.vertices.resize(static_cast<std::size_t>(last - first));
       std::iota(tongue.vertices.begin(), tongue.vertices.end(), first);
       tongue.weights.assign(tongue.vertices.size(), 1.0f);
-      warnings.push_back(fapLabel(fap) + ": no usable influence for feature points 6.3 and 6.4; "
-                         "curling the whole '" + s.name + "' sub-mesh");
+      warnings.push_back(fapLabel(fap) +
+                         ": no usable influence for feature points 6.3 and 6.4; "
+                         "curling the whole '" +
+                         s.name + "' sub-mesh");
       return tongue;
     }
-    warnings.push_back(fapLabel(fap) + ": no usable influence for feature points 6.3 and 6.4 and "
+    warnings.push_back(fapLabel(fap) +
+                       ": no usable influence for feature points 6.3 and 6.4 and "
                        "no sub-mesh named like 'tongue'; pose empty");
     return {};
   }
@@ -337,7 +352,8 @@ private:
   }
 
   // Validated, seam-closed eyeball group; empty (with a warning) when unusable.
-  RotationGroup eyeGroup(const RotationGroup& raw, const std::string& side, int yawFap, int pitchFap) {
+  RotationGroup eyeGroup(const RotationGroup& raw, const std::string& side, int yawFap,
+                         int pitchFap) {
     const std::string faps = "FAPs " + std::to_string(yawFap) + " and " + std::to_string(pitchFap);
     RotationGroup group;
     if (raw.vertices.empty()) {
@@ -358,7 +374,8 @@ private:
   RotationGroup headGroup() {
     RotationGroup group;
     if (!in_.neckPivot.allFinite()) {
-      warnings.push_back("FAPs 48, 49 and 50: the neck pivot is not finite; the head does not turn");
+      warnings.push_back(
+          "FAPs 48, 49 and 50: the neck pivot is not finite; the head does not turn");
       return group;
     }
     group.centre = in_.neckPivot;
@@ -399,7 +416,8 @@ private:
     VertexPose pose;
     pose.vertices = std::move(vertices);
     pose.offsets.resize(3, static_cast<Eigen::Index>(offsets.size()));
-    for (std::size_t k = 0; k < offsets.size(); ++k) pose.offsets.col(static_cast<Eigen::Index>(k)) = offsets[k];
+    for (std::size_t k = 0; k < offsets.size(); ++k)
+      pose.offsets.col(static_cast<Eigen::Index>(k)) = offsets[k];
     return pose;
   }
 
@@ -426,4 +444,4 @@ PoseSet bakePoses(const RigInput& input, PoseBakeReport* report) {
   return set;
 }
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

@@ -133,8 +133,10 @@ PoseBlender::PoseBlender(const HeadMesh& neutral, PoseSet poses)
   eyeRightShift_.fill(Eigen::Vector3f::Zero());
   for (int i : linearChannels_) {
     const VertexPose& pose = poses_.poses[static_cast<std::size_t>(i)];
-    eyeLeftShift_[static_cast<std::size_t>(i)] = meanShift(pose, left, poses_.eyeLeft.vertices.size());
-    eyeRightShift_[static_cast<std::size_t>(i)] = meanShift(pose, right, poses_.eyeRight.vertices.size());
+    eyeLeftShift_[static_cast<std::size_t>(i)] =
+        meanShift(pose, left, poses_.eyeLeft.vertices.size());
+    eyeRightShift_[static_cast<std::size_t>(i)] =
+        meanShift(pose, right, poses_.eyeRight.vertices.size());
   }
 }
 
@@ -176,8 +178,8 @@ void PoseBlender::blend(const FapValues& values, Eigen::Matrix3Xf& positions,
 
   // Head: R_head = R_yaw(49) * R_pitch(48) * R_roll(50) about the neck pivot.
   if (!poses_.head.vertices.empty() && anyNonZero(values, {48, 49, 50})) {
-    const Eigen::Quaterniond turn = channelRotation(values, 49) * channelRotation(values, 48) *
-                                    channelRotation(values, 50);
+    const Eigen::Quaterniond turn =
+        channelRotation(values, 49) * channelRotation(values, 48) * channelRotation(values, 50);
     rotateVertices(positions, poses_.head.vertices, turn.toRotationMatrix().cast<float>(),
                    poses_.head.centre);
   }
@@ -185,4 +187,4 @@ void PoseBlender::blend(const FapValues& values, Eigen::Matrix3Xf& positions,
   accumulateNormals(positions, triangles_, weld_, normals);
 }
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

@@ -31,18 +31,37 @@ int main(int argc, char** argv) {
   QApplication::setApplicationVersion(QStringLiteral(LACRIMA_VERSION));
 
   QCommandLineParser parser;
-  parser.setApplicationDescription(QStringLiteral("Keyframe MPEG-4 facial animation with real-time tears."));
+  parser.setApplicationDescription(
+      QStringLiteral("Keyframe MPEG-4 facial animation with real-time tears."));
   parser.addHelpOption();
   parser.addVersionOption();
-  parser.addPositionalArgument(QStringLiteral("file"), QStringLiteral("A project (.json) to open or a FAP file to import."), QStringLiteral("[file]"));
-  const QCommandLineOption screenshot(QStringLiteral("screenshot"), QStringLiteral("Save the window as PNG to <file> and exit."), QStringLiteral("file"));
-  const QCommandLineOption size(QStringLiteral("size"), QStringLiteral("Window size for --screenshot (default 1440x900)."), QStringLiteral("WxH"), QStringLiteral("1440x900"));
-  const QCommandLineOption time(QStringLiteral("time"), QStringLiteral("Start at this time in seconds."), QStringLiteral("seconds"));
-  const QCommandLineOption filter(QStringLiteral("filter"), QStringLiteral("Start with this channel filter."), QStringLiteral("text"));
-  const QCommandLineOption focus(QStringLiteral("focus"), QStringLiteral("Draw this channel's curve in the timeline."), QStringLiteral("fap"));
-  const QCommandLineOption presets(QStringLiteral("presets"), QStringLiteral("Use this presets file instead of the built-in one."), QStringLiteral("file"));
-  const QCommandLineOption noPreview(QStringLiteral("no-preview"), QStringLiteral("Do not load the head (no 3D preview)."));
-  const QCommandLineOption warm(QStringLiteral("warm-up"), QStringLiteral("For --screenshot: simulate this many frames of tears first."), QStringLiteral("frames"), QStringLiteral("0"));
+  parser.addPositionalArgument(QStringLiteral("file"),
+                               QStringLiteral("A project (.json) to open or a FAP file to import."),
+                               QStringLiteral("[file]"));
+  const QCommandLineOption screenshot(QStringLiteral("screenshot"),
+                                      QStringLiteral("Save the window as PNG to <file> and exit."),
+                                      QStringLiteral("file"));
+  const QCommandLineOption size(QStringLiteral("size"),
+                                QStringLiteral("Window size for --screenshot (default 1440x900)."),
+                                QStringLiteral("WxH"), QStringLiteral("1440x900"));
+  const QCommandLineOption time(QStringLiteral("time"),
+                                QStringLiteral("Start at this time in seconds."),
+                                QStringLiteral("seconds"));
+  const QCommandLineOption filter(QStringLiteral("filter"),
+                                  QStringLiteral("Start with this channel filter."),
+                                  QStringLiteral("text"));
+  const QCommandLineOption focus(QStringLiteral("focus"),
+                                 QStringLiteral("Draw this channel's curve in the timeline."),
+                                 QStringLiteral("fap"));
+  const QCommandLineOption presets(
+      QStringLiteral("presets"),
+      QStringLiteral("Use this presets file instead of the built-in one."), QStringLiteral("file"));
+  const QCommandLineOption noPreview(QStringLiteral("no-preview"),
+                                     QStringLiteral("Do not load the head (no 3D preview)."));
+  const QCommandLineOption warm(
+      QStringLiteral("warm-up"),
+      QStringLiteral("For --screenshot: simulate this many frames of tears first."),
+      QStringLiteral("frames"), QStringLiteral("0"));
   parser.addOptions({screenshot, size, time, filter, focus, presets, noPreview, warm});
   parser.process(app);
 
@@ -61,7 +80,8 @@ int main(int argc, char** argv) {
   options.offerRecovery = !batch;
   options.presetsPath = parser.value(presets);
   MainWindow window(options);
-  if (!window.lastError().isEmpty()) std::fprintf(stderr, "lacrima-editor: %s\n", qPrintable(window.lastError()));
+  if (!window.lastError().isEmpty())
+    std::fprintf(stderr, "lacrima-editor: %s\n", qPrintable(window.lastError()));
 
   if (!files.isEmpty() && !window.openFile(files.front())) {
     std::fprintf(stderr, "lacrima-editor: %s\n", qPrintable(window.lastError()));
@@ -76,7 +96,8 @@ int main(int argc, char** argv) {
     return app.exec();
   }
 
-  const lacrima::ParsedImageSize windowSize = lacrima::parseImageSize(parser.value(size).toStdString());
+  const lacrima::ParsedImageSize windowSize =
+      lacrima::parseImageSize(parser.value(size).toStdString());
   if (!windowSize.error.empty()) {
     std::fprintf(stderr, "lacrima-editor: --size: %s\n", windowSize.error.c_str());
     return 2;
@@ -88,7 +109,8 @@ int main(int argc, char** argv) {
   settle.start();
   while (settle.elapsed() < 300) app.processEvents(QEventLoop::AllEvents, 50);
   window.preview()->loadHead();
-  for (int i = 0; i < parser.value(warm).toInt(); ++i) window.preview()->step(window.model().frameDuration());
+  for (int i = 0; i < parser.value(warm).toInt(); ++i)
+    window.preview()->step(window.model().frameDuration());
   settle.restart();
   while (settle.elapsed() < 300) app.processEvents(QEventLoop::AllEvents, 50);
   const QImage image = window.screenshot();

@@ -30,15 +30,22 @@ QString tooltipFor(const FapInfo& info) {
   QString text = QStringLiteral("<b>%1 &nbsp;%2</b><br>%3<br><br>")
                      .arg(info.number)
                      .arg(fromView(info.name), fromView(info.description));
-  text += QCoreApplication::translate("ChannelRow", "Unit: %1 · %2").arg(unit,
-      info.bidirectional ? QCoreApplication::translate("ChannelRow", "bidirectional")
-                         : QCoreApplication::translate("ChannelRow", "unidirectional"));
+  text += QCoreApplication::translate("ChannelRow", "Unit: %1 · %2")
+              .arg(unit, info.bidirectional
+                             ? QCoreApplication::translate("ChannelRow", "bidirectional")
+                             : QCoreApplication::translate("ChannelRow", "unidirectional"));
   if (!info.featurePoint.empty())
-    text += QCoreApplication::translate("ChannelRow", " · feature point %1").arg(fromView(info.featurePoint));
-  text += QStringLiteral("<br>") + QCoreApplication::translate("ChannelRow", "Slider %1 … %2, typed values %3 … %4")
-                                       .arg(info.sliderMin).arg(info.sliderMax).arg(limits.min).arg(limits.max);
+    text += QCoreApplication::translate("ChannelRow", " · feature point %1")
+                .arg(fromView(info.featurePoint));
+  text += QStringLiteral("<br>") +
+          QCoreApplication::translate("ChannelRow", "Slider %1 … %2, typed values %3 … %4")
+              .arg(info.sliderMin)
+              .arg(info.sliderMax)
+              .arg(limits.min)
+              .arg(limits.max);
   text += QStringLiteral("<br><i>") +
-          QCoreApplication::translate("ChannelRow", "Double-click the slider to reset; Shift-drag for fine steps.") +
+          QCoreApplication::translate(
+              "ChannelRow", "Double-click the slider to reset; Shift-drag for fine steps.") +
           QStringLiteral("</i>");
   return text;
 }
@@ -83,7 +90,8 @@ ChannelRow::ChannelRow(editing::EditorModel& model, int fap, QWidget* parent)
   name_->setFixedWidth(138);
   name_->setTextFormat(Qt::PlainText);
 
-  slider_ = new ZeroSlider(info.sliderMin, info.sliderMax, info.quantizerStep, theme::groupColour(info.group), this);
+  slider_ = new ZeroSlider(info.sliderMin, info.sliderMax, info.quantizerStep,
+                           theme::groupColour(info.group), this);
 
   spin_ = new QSpinBox(this);
   spin_->setRange(limits.min, limits.max);

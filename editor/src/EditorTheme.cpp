@@ -33,11 +33,11 @@ void apply(QApplication& app) {
   for (auto role : {QPalette::WindowText, QPalette::Text, QPalette::ButtonText})
     p.setColor(QPalette::Disabled, role, disabled);
   app.setPalette(p);
-  app.setStyleSheet(QStringLiteral(
-      "QToolTip { border: 1px solid #50545b; padding: 4px; }"
-      "QDockWidget::title { padding: 4px 6px; background: #25272b; }"
-      "QToolBar { border: none; spacing: 2px; }"
-      "QStatusBar { color: #aeb2b9; }"));
+  app.setStyleSheet(
+      QStringLiteral("QToolTip { border: 1px solid #50545b; padding: 4px; }"
+                     "QDockWidget::title { padding: 4px 6px; background: #25272b; }"
+                     "QToolBar { border: none; spacing: 2px; }"
+                     "QStatusBar { color: #aeb2b9; }"));
 }
 
 QColor keyAccent() { return {0xf2, 0xb1, 0x3a}; }
@@ -47,17 +47,28 @@ QColor tearBlue() { return {0x5a, 0xb4, 0xf0}; }
 
 QColor groupColour(FapGroup group) {
   switch (group) {
-    case FapGroup::VisemeExpression: return {0xd0, 0xd3, 0xd8};
-    case FapGroup::JawChinInnerLips: return {0xf0, 0x8c, 0x4b};
-    case FapGroup::Eyes: return {0x4c, 0xc9, 0xb0};
-    case FapGroup::Eyebrows: return {0xa5, 0x87, 0xf0};
-    case FapGroup::Cheeks: return {0xf0, 0x7e, 0xb2};
-    case FapGroup::Tongue: return {0xe0, 0x5d, 0x5d};
-    case FapGroup::Head: return {0x8f, 0xa9, 0xc9};
-    case FapGroup::OuterLips: return {0xf2, 0xa2, 0x7c};
-    case FapGroup::Nose: return {0xe6, 0xcf, 0x5a};
-    case FapGroup::Ears: return {0x8c, 0xc9, 0x6a};
-    case FapGroup::Tears: return tearBlue();
+    case FapGroup::VisemeExpression:
+      return {0xd0, 0xd3, 0xd8};
+    case FapGroup::JawChinInnerLips:
+      return {0xf0, 0x8c, 0x4b};
+    case FapGroup::Eyes:
+      return {0x4c, 0xc9, 0xb0};
+    case FapGroup::Eyebrows:
+      return {0xa5, 0x87, 0xf0};
+    case FapGroup::Cheeks:
+      return {0xf0, 0x7e, 0xb2};
+    case FapGroup::Tongue:
+      return {0xe0, 0x5d, 0x5d};
+    case FapGroup::Head:
+      return {0x8f, 0xa9, 0xc9};
+    case FapGroup::OuterLips:
+      return {0xf2, 0xa2, 0x7c};
+    case FapGroup::Nose:
+      return {0xe6, 0xcf, 0x5a};
+    case FapGroup::Ears:
+      return {0x8c, 0xc9, 0x6a};
+    case FapGroup::Tears:
+      return tearBlue();
   }
   return {0xc0, 0xc0, 0xc0};
 }

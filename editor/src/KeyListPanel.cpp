@@ -15,9 +15,10 @@ namespace {
 
 // A choice between the two modes instead of free text.
 class InterpolationDelegate : public QStyledItemDelegate {
-public:
+ public:
   using QStyledItemDelegate::QStyledItemDelegate;
-  QWidget* createEditor(QWidget* parent, const QStyleOptionViewItem&, const QModelIndex&) const override {
+  QWidget* createEditor(QWidget* parent, const QStyleOptionViewItem&,
+                        const QModelIndex&) const override {
     auto* combo = new QComboBox(parent);
     combo->addItems({QStringLiteral("linear"), QStringLiteral("smooth")});
     return combo;
@@ -25,14 +26,16 @@ public:
   void setEditorData(QWidget* editor, const QModelIndex& index) const override {
     static_cast<QComboBox*>(editor)->setCurrentText(index.data(Qt::EditRole).toString());
   }
-  void setModelData(QWidget* editor, QAbstractItemModel* model, const QModelIndex& index) const override {
+  void setModelData(QWidget* editor, QAbstractItemModel* model,
+                    const QModelIndex& index) const override {
     model->setData(index, static_cast<QComboBox*>(editor)->currentText(), Qt::EditRole);
   }
 };
 
 }  // namespace
 
-KeyListPanel::KeyListPanel(editing::EditorModel& model, QWidget* parent) : QWidget(parent), model_(model) {
+KeyListPanel::KeyListPanel(editing::EditorModel& model, QWidget* parent)
+    : QWidget(parent), model_(model) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   table_ = new KeyTableModel(model_, this);
@@ -41,7 +44,8 @@ KeyListPanel::KeyListPanel(editing::EditorModel& model, QWidget* parent) : QWidg
   view_->setSelectionBehavior(QAbstractItemView::SelectRows);
   view_->setSelectionMode(QAbstractItemView::ExtendedSelection);
   view_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
-  view_->setItemDelegateForColumn(KeyTableModel::InterpolationColumn, new InterpolationDelegate(view_));
+  view_->setItemDelegateForColumn(KeyTableModel::InterpolationColumn,
+                                  new InterpolationDelegate(view_));
   view_->verticalHeader()->hide();
   view_->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
   view_->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
@@ -54,12 +58,14 @@ KeyListPanel::KeyListPanel(editing::EditorModel& model, QWidget* parent) : QWidg
   view_->setWordWrap(false);
   layout->addWidget(view_);
 
-  connect(view_->selectionModel(), &QItemSelectionModel::selectionChanged, this, &KeyListPanel::pushSelection);
+  connect(view_->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+          &KeyListPanel::pushSelection);
   connect(&model_, &editing::EditorModel::selectionChanged, this, &KeyListPanel::pullSelection);
   connect(table_, &QAbstractItemModel::modelReset, this, &KeyListPanel::pullSelection);
   connect(view_, &QTableView::clicked, this, [this](const QModelIndex& index) {
     const auto& keys = model_.document().keys.keys();
-    if (index.row() < static_cast<int>(keys.size())) model_.setCurrentTime(keys[static_cast<std::size_t>(index.row())].time);
+    if (index.row() < static_cast<int>(keys.size()))
+      model_.setCurrentTime(keys[static_cast<std::size_t>(index.row())].time);
   });
 }
 
@@ -84,7 +90,8 @@ void KeyListPanel::pushSelection() {
   std::vector<double> times;
   const auto& keys = model_.document().keys.keys();
   for (const QModelIndex& index : view_->selectionModel()->selectedRows())
-    if (index.row() < static_cast<int>(keys.size())) times.push_back(keys[static_cast<std::size_t>(index.row())].time);
+    if (index.row() < static_cast<int>(keys.size()))
+      times.push_back(keys[static_cast<std::size_t>(index.row())].time);
   model_.setSelectedTimes(times);
   syncing_ = false;
 }

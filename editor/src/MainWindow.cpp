@@ -2,13 +2,13 @@
 
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/EditorModel.h>
-#include <lacrima/editing/KeyClipboard.h>
-#include <lacrima/editor/KeyListPanel.h>
 #include <lacrima/editing/FrameStepClock.h>
+#include <lacrima/editing/KeyClipboard.h>
+#include <lacrima/editing/RecoveryStore.h>
+#include <lacrima/editor/KeyListPanel.h>
 #include <lacrima/editor/PresetPanel.h>
 #include <lacrima/editor/PreviewPanel.h>
 #include <lacrima/editor/RecoveryBanner.h>
-#include <lacrima/editing/RecoveryStore.h>
 #include <lacrima/editor/SliderPanel.h>
 #include <lacrima/editor/TimelineWidget.h>
 #include <lacrima/editor/TransportBar.h>
@@ -42,9 +42,9 @@ MainWindow::MainWindow(EditorOptions options, QWidget* parent)
       options_(std::move(options)),
       model_(std::make_unique<editing::EditorModel>()),
       clock_(std::make_unique<editing::FrameStepClock>(*model_)),
-      recovery_(std::make_unique<editing::RecoveryStore>(options_.recoveryDirectory.isEmpty()
-                                                    ? editing::RecoveryStore::defaultDirectory()
-                                                    : options_.recoveryDirectory)) {
+      recovery_(std::make_unique<editing::RecoveryStore>(
+          options_.recoveryDirectory.isEmpty() ? editing::RecoveryStore::defaultDirectory()
+                                               : options_.recoveryDirectory)) {
   setObjectName(QStringLiteral("lacrimaEditor"));
   setAcceptDrops(true);
   setDockNestingEnabled(true);
@@ -70,9 +70,12 @@ MainWindow::MainWindow(EditorOptions options, QWidget* parent)
   connect(model_.get(), &editing::EditorModel::documentReset, this, &MainWindow::updateTitle);
   connect(model_.get(), &editing::EditorModel::settingsChanged, this, &MainWindow::updateTitle);
   connect(model_.get(), &editing::EditorModel::keysChanged, this, &MainWindow::updateStatusFigures);
-  connect(model_.get(), &editing::EditorModel::settingsChanged, this, &MainWindow::updateStatusFigures);
-  connect(model_.get(), &editing::EditorModel::message, this, [this](const QString& text) { statusBar()->showMessage(text, 5000); });
-  connect(clock_.get(), &editing::FrameStepClock::playingChanged, this, &MainWindow::updateStatusFigures);
+  connect(model_.get(), &editing::EditorModel::settingsChanged, this,
+          &MainWindow::updateStatusFigures);
+  connect(model_.get(), &editing::EditorModel::message, this,
+          [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+  connect(clock_.get(), &editing::FrameStepClock::playingChanged, this,
+          &MainWindow::updateStatusFigures);
 
   QSettings settings;
   resize(1440, 900);
@@ -82,7 +85,8 @@ MainWindow::MainWindow(EditorOptions options, QWidget* parent)
   newDocument();
   if (options_.offerRecovery) checkForRecovery();
   if (options_.preview) QTimer::singleShot(0, preview_, &PreviewPanel::loadHead);
-  statusBar()->showMessage(tr("Move a slider to key it at the playhead · K keys the whole pose · Space plays"), 8000);
+  statusBar()->showMessage(
+      tr("Move a slider to key it at the playhead · K keys the whole pose · Space plays"), 8000);
 }
 
 MainWindow::~MainWindow() {
@@ -126,27 +130,33 @@ void MainWindow::createDocks() {
   connect(banner_, &RecoveryBanner::restoreRequested, this, &MainWindow::restoreRecovery);
   connect(banner_, &RecoveryBanner::discardRequested, this, &MainWindow::discardRecovery);
 
-  const auto dock = [this](const QString& title, const QString& name, QWidget* content, Qt::DockWidgetArea area) {
+  const auto dock = [this](const QString& title, const QString& name, QWidget* content,
+                           Qt::DockWidgetArea area) {
     auto* d = new QDockWidget(title, this);
     d->setObjectName(name);
     d->setWidget(content);
-    d->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable | QDockWidget::DockWidgetClosable);
+    d->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable |
+                   QDockWidget::DockWidgetClosable);
     addDockWidget(area, d);
     return d;
   };
 
   sliders_ = new SliderPanel(*model_, this);
-  QDockWidget* channels = dock(tr("Channels"), QStringLiteral("dock.channels"), sliders_, Qt::LeftDockWidgetArea);
+  QDockWidget* channels =
+      dock(tr("Channels"), QStringLiteral("dock.channels"), sliders_, Qt::LeftDockWidgetArea);
   sliders_->setMinimumWidth(430);
 
   presets_ = new PresetPanel(*model_, std::move(library), this);
   presets_->setLibrary(presets_->library(), presetsSource);
-  QDockWidget* presetDock = dock(tr("Presets"), QStringLiteral("dock.presets"), presets_, Qt::RightDockWidgetArea);
+  QDockWidget* presetDock =
+      dock(tr("Presets"), QStringLiteral("dock.presets"), presets_, Qt::RightDockWidgetArea);
   keyList_ = new KeyListPanel(*model_, this);
-  QDockWidget* keysDock = dock(tr("Keys"), QStringLiteral("dock.keys"), keyList_, Qt::RightDockWidgetArea);
+  QDockWidget* keysDock =
+      dock(tr("Keys"), QStringLiteral("dock.keys"), keyList_, Qt::RightDockWidgetArea);
   history_ = new QUndoView(model_->undoStack(), this);
   history_->setEmptyLabel(tr("<opened>"));
-  QDockWidget* historyDock = dock(tr("History"), QStringLiteral("dock.history"), history_, Qt::RightDockWidgetArea);
+  QDockWidget* historyDock =
+      dock(tr("History"), QStringLiteral("dock.history"), history_, Qt::RightDockWidgetArea);
   // Presets above, the key table and the history tabbed below them.
   splitDockWidget(presetDock, keysDock, Qt::Vertical);
   tabifyDockWidget(keysDock, historyDock);
@@ -162,7 +172,8 @@ void MainWindow::createDocks() {
   timeline_ = new TimelineWidget(*model_, timelineBox);
   timelineLayout->addWidget(transport_);
   timelineLayout->addWidget(timeline_, 1);
-  QDockWidget* timelineDock = dock(tr("Timeline"), QStringLiteral("dock.timeline"), timelineBox, Qt::BottomDockWidgetArea);
+  QDockWidget* timelineDock =
+      dock(tr("Timeline"), QStringLiteral("dock.timeline"), timelineBox, Qt::BottomDockWidgetArea);
   // The timeline spans the whole width, under the channel list too.
   setCorner(Qt::BottomLeftCorner, Qt::BottomDockWidgetArea);
   setCorner(Qt::BottomRightCorner, Qt::BottomDockWidgetArea);
@@ -177,14 +188,15 @@ void MainWindow::createDocks() {
     if (const editing::Preset* preset = presets_->library().forExpression(code)) {
       model_->applyPreset(*preset, presets_->intensity(), presets_->replacesPose());
     } else {
-      statusBar()->showMessage(tr("The presets file has no pose for expression %1").arg(code), 5000);
+      statusBar()->showMessage(tr("The presets file has no pose for expression %1").arg(code),
+                               5000);
     }
   });
   connect(preview_, &PreviewPanel::statusChanged, this, &MainWindow::updateStatusFigures);
 }
 
-QAction* MainWindow::addAction(QMenu* menu, const QString& name, const QString& text, const QKeySequence& shortcut,
-                               const QString& tip) {
+QAction* MainWindow::addAction(QMenu* menu, const QString& name, const QString& text,
+                               const QKeySequence& shortcut, const QString& tip) {
   auto* a = new QAction(text, this);
   a->setObjectName(name);
   if (!shortcut.isEmpty()) a->setShortcut(shortcut);
@@ -198,28 +210,37 @@ QAction* MainWindow::addAction(QMenu* menu, const QString& name, const QString& 
 void MainWindow::createMenus() {
   editing::EditorModel& m = *model_;
   QMenu* file = menuBar()->addMenu(tr("&File"));
-  connect(addAction(file, QStringLiteral("file.new"), tr("&New"), QKeySequence::New), &QAction::triggered, this, [this] {
-    if (maybeSave()) newDocument();
-  });
-  connect(addAction(file, QStringLiteral("file.open"), tr("&Open…"), QKeySequence::Open), &QAction::triggered, this,
-          &MainWindow::openDialog);
+  connect(addAction(file, QStringLiteral("file.new"), tr("&New"), QKeySequence::New),
+          &QAction::triggered, this, [this] {
+            if (maybeSave()) newDocument();
+          });
+  connect(addAction(file, QStringLiteral("file.open"), tr("&Open…"), QKeySequence::Open),
+          &QAction::triggered, this, &MainWindow::openDialog);
   recentMenu_ = file->addMenu(tr("Open &Recent"));
   file->addSeparator();
-  connect(addAction(file, QStringLiteral("file.save"), tr("&Save"), QKeySequence::Save), &QAction::triggered, this, [this] {
-    if (filePath_.isEmpty()) saveDialog();
-    else saveTo(filePath_);
-  });
-  connect(addAction(file, QStringLiteral("file.saveAs"), tr("Save &As…"), QKeySequence(QStringLiteral("Ctrl+Shift+S"))),
+  connect(addAction(file, QStringLiteral("file.save"), tr("&Save"), QKeySequence::Save),
+          &QAction::triggered, this, [this] {
+            if (filePath_.isEmpty())
+              saveDialog();
+            else
+              saveTo(filePath_);
+          });
+  connect(addAction(file, QStringLiteral("file.saveAs"), tr("Save &As…"),
+                    QKeySequence(QStringLiteral("Ctrl+Shift+S"))),
           &QAction::triggered, this, &MainWindow::saveDialog);
   file->addSeparator();
-  connect(addAction(file, QStringLiteral("file.import"), tr("&Import FAP…"), QKeySequence(QStringLiteral("Ctrl+I")),
+  connect(addAction(file, QStringLiteral("file.import"), tr("&Import FAP…"),
+                    QKeySequence(QStringLiteral("Ctrl+I")),
                     tr("Read a .fap file: its frames become keys, optionally reduced")),
           &QAction::triggered, this, &MainWindow::importDialog);
-  connect(addAction(file, QStringLiteral("file.export"), tr("&Export FAP…"), QKeySequence(QStringLiteral("Ctrl+E")),
-                    tr("Bake the keys to a .fap file (22 fps; with tear channels, or strict 68 FAPs)")),
-          &QAction::triggered, this, &MainWindow::exportDialog);
+  connect(
+      addAction(file, QStringLiteral("file.export"), tr("&Export FAP…"),
+                QKeySequence(QStringLiteral("Ctrl+E")),
+                tr("Bake the keys to a .fap file (22 fps; with tear channels, or strict 68 FAPs)")),
+      &QAction::triggered, this, &MainWindow::exportDialog);
   file->addSeparator();
-  connect(addAction(file, QStringLiteral("file.quit"), tr("&Quit"), QKeySequence::Quit), &QAction::triggered, this, &QWidget::close);
+  connect(addAction(file, QStringLiteral("file.quit"), tr("&Quit"), QKeySequence::Quit),
+          &QAction::triggered, this, &QWidget::close);
   rebuildRecentMenu();
 
   QMenu* edit = menuBar()->addMenu(tr("&Edit"));
@@ -228,26 +249,33 @@ void MainWindow::createMenus() {
   undo->setShortcut(QKeySequence::Undo);
   QAction* redo = m.undoStack()->createRedoAction(this, tr("&Redo"));
   redo->setObjectName(QStringLiteral("edit.redo"));
-  redo->setShortcuts({QKeySequence(QStringLiteral("Ctrl+Shift+Z")), QKeySequence(QStringLiteral("Ctrl+Y"))});
+  redo->setShortcuts(
+      {QKeySequence(QStringLiteral("Ctrl+Shift+Z")), QKeySequence(QStringLiteral("Ctrl+Y"))});
   edit->addAction(undo);
   edit->addAction(redo);
   QMainWindow::addAction(undo);
   QMainWindow::addAction(redo);
   edit->addSeparator();
-  connect(addAction(edit, QStringLiteral("edit.copy"), tr("&Copy keys"), QKeySequence::Copy), &QAction::triggered, this,
-          &MainWindow::copyKeys);
-  connect(addAction(edit, QStringLiteral("edit.paste"), tr("&Paste keys at playhead"), QKeySequence::Paste),
+  connect(addAction(edit, QStringLiteral("edit.copy"), tr("&Copy keys"), QKeySequence::Copy),
+          &QAction::triggered, this, &MainWindow::copyKeys);
+  connect(addAction(edit, QStringLiteral("edit.paste"), tr("&Paste keys at playhead"),
+                    QKeySequence::Paste),
           &QAction::triggered, this, [this] { pasteKeys(); });
-  QAction* del = addAction(edit, QStringLiteral("edit.delete"), tr("&Delete keys"), QKeySequence::Delete);
+  QAction* del =
+      addAction(edit, QStringLiteral("edit.delete"), tr("&Delete keys"), QKeySequence::Delete);
   del->setShortcuts({QKeySequence::Delete, QKeySequence(Qt::Key_Backspace)});
   connect(del, &QAction::triggered, this, [this] {
-    if (!model_->selectedTimes().empty()) model_->deleteSelectedKeys();
-    else if (model_->currentKeyIndex() >= 0) model_->deleteKeys({model_->currentTime()});
+    if (!model_->selectedTimes().empty())
+      model_->deleteSelectedKeys();
+    else if (model_->currentKeyIndex() >= 0)
+      model_->deleteKeys({model_->currentTime()});
   });
-  connect(addAction(edit, QStringLiteral("edit.selectAll"), tr("Select &all keys"), QKeySequence::SelectAll),
+  connect(addAction(edit, QStringLiteral("edit.selectAll"), tr("Select &all keys"),
+                    QKeySequence::SelectAll),
           &QAction::triggered, &m, &editing::EditorModel::selectAll);
   edit->addSeparator();
-  connect(addAction(edit, QStringLiteral("edit.mirror"), tr("&Mirror left ↔ right"), QKeySequence(QStringLiteral("Ctrl+M")),
+  connect(addAction(edit, QStringLiteral("edit.mirror"), tr("&Mirror left ↔ right"),
+                    QKeySequence(QStringLiteral("Ctrl+M")),
                     tr("Mirror the selected keys, or the pose at the playhead")),
           &QAction::triggered, &m, &editing::EditorModel::mirror);
   QAction* symmetric = addAction(edit, QStringLiteral("edit.symmetric"), tr("S&ymmetric editing"),
@@ -257,66 +285,81 @@ void MainWindow::createMenus() {
   connect(symmetric, &QAction::toggled, &m, &editing::EditorModel::setSymmetricEdit);
   connect(&m, &editing::EditorModel::symmetricEditChanged, symmetric, &QAction::setChecked);
   edit->addSeparator();
-  connect(addAction(edit, QStringLiteral("edit.settings"), tr("Project &settings…"), QKeySequence(QStringLiteral("Ctrl+,"))),
+  connect(addAction(edit, QStringLiteral("edit.settings"), tr("Project &settings…"),
+                    QKeySequence(QStringLiteral("Ctrl+,"))),
           &QAction::triggered, this, &MainWindow::settingsDialog);
 
   QMenu* key = menuBar()->addMenu(tr("&Key"));
-  connect(addAction(key, QStringLiteral("key.add"), tr("&Add key (whole pose)"), QKeySequence(Qt::Key_K),
-                    tr("Key every animated channel at the playhead")),
+  connect(addAction(key, QStringLiteral("key.add"), tr("&Add key (whole pose)"),
+                    QKeySequence(Qt::Key_K), tr("Key every animated channel at the playhead")),
           &QAction::triggered, &m, &editing::EditorModel::addKey);
   const auto targets = [this] {
     std::vector<double> t = model_->selectedTimes();
     if (t.empty() && model_->currentKeyIndex() >= 0) t.push_back(model_->currentTime());
     return t;
   };
-  connect(addAction(key, QStringLiteral("key.linear"), tr("Make &linear"), QKeySequence(Qt::Key_L)), &QAction::triggered,
-          this, [this, targets] { model_->setInterpolation(targets(), Interpolation::Linear); });
-  connect(addAction(key, QStringLiteral("key.smooth"), tr("Make s&mooth"), QKeySequence(Qt::Key_S)), &QAction::triggered,
-          this, [this, targets] { model_->setInterpolation(targets(), Interpolation::Smooth); });
+  connect(addAction(key, QStringLiteral("key.linear"), tr("Make &linear"), QKeySequence(Qt::Key_L)),
+          &QAction::triggered, this,
+          [this, targets] { model_->setInterpolation(targets(), Interpolation::Linear); });
+  connect(addAction(key, QStringLiteral("key.smooth"), tr("Make s&mooth"), QKeySequence(Qt::Key_S)),
+          &QAction::triggered, this,
+          [this, targets] { model_->setInterpolation(targets(), Interpolation::Smooth); });
   key->addSeparator();
-  connect(addAction(key, QStringLiteral("key.previous"), tr("&Previous key"), QKeySequence(Qt::Key_Comma)),
+  connect(addAction(key, QStringLiteral("key.previous"), tr("&Previous key"),
+                    QKeySequence(Qt::Key_Comma)),
           &QAction::triggered, this, [this] { model_->setCurrentTime(previousKeyTime(*model_)); });
-  connect(addAction(key, QStringLiteral("key.next"), tr("&Next key"), QKeySequence(Qt::Key_Period)), &QAction::triggered,
-          this, [this] { model_->setCurrentTime(nextKeyTime(*model_)); });
+  connect(addAction(key, QStringLiteral("key.next"), tr("&Next key"), QKeySequence(Qt::Key_Period)),
+          &QAction::triggered, this, [this] { model_->setCurrentTime(nextKeyTime(*model_)); });
 
   QMenu* play = menuBar()->addMenu(tr("&Playback"));
-  connect(addAction(play, QStringLiteral("play.toggle"), tr("&Play / pause"), QKeySequence(Qt::Key_Space)),
+  connect(addAction(play, QStringLiteral("play.toggle"), tr("&Play / pause"),
+                    QKeySequence(Qt::Key_Space)),
           &QAction::triggered, clock_.get(), &editing::FrameStepClock::toggle);
-  connect(addAction(play, QStringLiteral("play.start"), tr("Go to &start"), QKeySequence(Qt::Key_Home)), &QAction::triggered,
-          this, [this] { model_->setCurrentTime(model_->document().keys.startTime()); });
-  connect(addAction(play, QStringLiteral("play.end"), tr("Go to &end"), QKeySequence(Qt::Key_End)), &QAction::triggered,
-          this, [this] { model_->setCurrentTime(model_->endTime()); });
-  connect(addAction(play, QStringLiteral("play.previousFrame"), tr("Previous &frame"), QKeySequence(Qt::Key_Left)),
-          &QAction::triggered, this, [this] { model_->setCurrentTime(model_->currentTime() - model_->frameDuration()); });
-  connect(addAction(play, QStringLiteral("play.nextFrame"), tr("&Next frame"), QKeySequence(Qt::Key_Right)),
-          &QAction::triggered, this, [this] { model_->setCurrentTime(model_->currentTime() + model_->frameDuration()); });
+  connect(
+      addAction(play, QStringLiteral("play.start"), tr("Go to &start"), QKeySequence(Qt::Key_Home)),
+      &QAction::triggered, this,
+      [this] { model_->setCurrentTime(model_->document().keys.startTime()); });
+  connect(addAction(play, QStringLiteral("play.end"), tr("Go to &end"), QKeySequence(Qt::Key_End)),
+          &QAction::triggered, this, [this] { model_->setCurrentTime(model_->endTime()); });
+  connect(addAction(play, QStringLiteral("play.previousFrame"), tr("Previous &frame"),
+                    QKeySequence(Qt::Key_Left)),
+          &QAction::triggered, this,
+          [this] { model_->setCurrentTime(model_->currentTime() - model_->frameDuration()); });
+  connect(addAction(play, QStringLiteral("play.nextFrame"), tr("&Next frame"),
+                    QKeySequence(Qt::Key_Right)),
+          &QAction::triggered, this,
+          [this] { model_->setCurrentTime(model_->currentTime() + model_->frameDuration()); });
 
   viewMenu_ = menuBar()->addMenu(tr("&View"));
-  QAction* tears = addAction(viewMenu_, QStringLiteral("view.tearPreview"), tr("&Tear preview"), QKeySequence(Qt::Key_T),
-                             tr("Simulate the tears while paused"));
+  QAction* tears = addAction(viewMenu_, QStringLiteral("view.tearPreview"), tr("&Tear preview"),
+                             QKeySequence(Qt::Key_T), tr("Simulate the tears while paused"));
   tears->setCheckable(true);
   tears->setChecked(preview_->tearPreview());
   connect(tears, &QAction::toggled, preview_, &PreviewPanel::setTearPreview);
-  connect(addAction(viewMenu_, QStringLiteral("view.frameAll"), tr("&Frame all keys"), QKeySequence(Qt::Key_F)),
+  connect(addAction(viewMenu_, QStringLiteral("view.frameAll"), tr("&Frame all keys"),
+                    QKeySequence(Qt::Key_F)),
           &QAction::triggered, timeline_, &TimelineWidget::fitAll);
-  connect(addAction(viewMenu_, QStringLiteral("view.filter"), tr("Find &channel"), QKeySequence::Find), &QAction::triggered,
-          this, [this] {
-            sliders_->filterBox()->setFocus();
-            sliders_->filterBox()->selectAll();
-          });
+  connect(
+      addAction(viewMenu_, QStringLiteral("view.filter"), tr("Find &channel"), QKeySequence::Find),
+      &QAction::triggered, this, [this] {
+        sliders_->filterBox()->setFocus();
+        sliders_->filterBox()->selectAll();
+      });
   viewMenu_->addSeparator();
   for (QDockWidget* d : findChildren<QDockWidget*>()) viewMenu_->addAction(d->toggleViewAction());
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
-  connect(addAction(help, QStringLiteral("help.shortcuts"), tr("&Keyboard shortcuts"), QKeySequence::HelpContents),
+  connect(addAction(help, QStringLiteral("help.shortcuts"), tr("&Keyboard shortcuts"),
+                    QKeySequence::HelpContents),
           &QAction::triggered, this, &MainWindow::showShortcuts);
 
   auto* bar = addToolBar(tr("Main"));
   bar->setObjectName(QStringLiteral("toolbar.main"));
   bar->setMovable(false);
   bar->setToolButtonStyle(Qt::ToolButtonTextOnly);
-  for (const char* name : {"file.new", "file.open", "file.save", "", "edit.undo", "edit.redo", "", "key.add",
-                           "edit.delete", "edit.mirror", "edit.symmetric", "", "file.import", "file.export"}) {
+  for (const char* name :
+       {"file.new", "file.open", "file.save", "", "edit.undo", "edit.redo", "", "key.add",
+        "edit.delete", "edit.mirror", "edit.symmetric", "", "file.import", "file.export"}) {
     if (!*name) {
       bar->addSeparator();
       continue;
@@ -346,7 +389,8 @@ void MainWindow::updateStatusFigures() {
                      .arg(doc.fps)
                      .arg(doc.keys.endTime(), 0, 'f', 2);
   if (clock_->isPlaying()) text += tr(" · playing at %1 fps").arg(clock_->rate());
-  if (preview_ && !preview_->statusText().isEmpty()) text += QStringLiteral(" · ") + preview_->statusText();
+  if (preview_ && !preview_->statusText().isEmpty())
+    text += QStringLiteral(" · ") + preview_->statusText();
   figures_->setText(text);
 }
 
@@ -376,7 +420,8 @@ void MainWindow::copyKeys() {
     statusBar()->showMessage(tr("Select keys to copy (click them in the timeline)"), 4000);
     return;
   }
-  QApplication::clipboard()->setMimeData(editing::keysToMimeData(editing::copyKeys(model_->document().keys, times)));
+  QApplication::clipboard()->setMimeData(
+      editing::keysToMimeData(editing::copyKeys(model_->document().keys, times)));
   statusBar()->showMessage(tr("Copied %n key(s)", nullptr, static_cast<int>(times.size())), 3000);
 }
 
@@ -415,9 +460,11 @@ void MainWindow::settingsDialog() {
   connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
   if (dialog.exec() != QDialog::Accepted) return;
   ProjectDocument settings = doc;
-  settings.name = name->text().trimmed().isEmpty() ? "untitled" : name->text().trimmed().toStdString();
+  settings.name =
+      name->text().trimmed().isEmpty() ? "untitled" : name->text().trimmed().toStdString();
   settings.fps = fps->value();
-  settings.defaultInterpolation = mode->currentIndex() == 1 ? Interpolation::Smooth : Interpolation::Linear;
+  settings.defaultInterpolation =
+      mode->currentIndex() == 1 ? Interpolation::Smooth : Interpolation::Linear;
   effects->applyTo(settings.scene);
   model_->setSettings(settings, tr("Project settings"));
 }
@@ -429,12 +476,14 @@ void MainWindow::showShortcuts() {
     QString text = a->text();
     text.remove(QLatin1Char('&'));
     rows += QStringLiteral("<tr><td style='padding-right:18px'><b>%1</b></td><td>%2</td></tr>")
-                .arg(a->shortcut().toString(QKeySequence::NativeText).toHtmlEscaped(), text.toHtmlEscaped());
+                .arg(a->shortcut().toString(QKeySequence::NativeText).toHtmlEscaped(),
+                     text.toHtmlEscaped());
   }
-  const QString extra = tr("<p>Timeline: click a key to select it and jump to it, drag to move (whole frames), "
-                           "drag on empty space to select, double-click to add a key, right-click for interpolation, "
-                           "wheel to zoom, Shift+wheel or middle-drag to pan.<br>Sliders: Shift-drag for fine steps, "
-                           "double-click resets, the diamond keys or unkeys the channel.</p>");
+  const QString extra =
+      tr("<p>Timeline: click a key to select it and jump to it, drag to move (whole frames), "
+         "drag on empty space to select, double-click to add a key, right-click for interpolation, "
+         "wheel to zoom, Shift+wheel or middle-drag to pan.<br>Sliders: Shift-drag for fine steps, "
+         "double-click resets, the diamond keys or unkeys the channel.</p>");
   if (!options_.interactive) return;
   QMessageBox box(this);
   box.setWindowTitle(tr("Keyboard shortcuts"));

@@ -3,9 +3,9 @@
 
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editing/FrameStepClock.h>
+#include <lacrima/editing/RecoveryStore.h>
 #include <lacrima/editor/PresetPanel.h>
 #include <lacrima/editor/RecoveryBanner.h>
-#include <lacrima/editing/RecoveryStore.h>
 
 #include <QCheckBox>
 #include <QCloseEvent>
@@ -34,7 +34,9 @@ const QString kRecentKey = QStringLiteral("files/recent");
 const QString kToleranceKey = QStringLiteral("import/tolerance");
 const QString kReduceKey = QStringLiteral("import/reduce");
 
-bool isFapFile(const QString& path) { return !path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive); }
+bool isFapFile(const QString& path) {
+  return !path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive);
+}
 
 QString joinWarnings(const Warnings& warnings) {
   QStringList lines;
@@ -54,7 +56,8 @@ bool MainWindow::maybeSave() {
   if (!model_->isModified() || !options_.interactive) return true;
   const auto answer = QMessageBox::warning(
       this, tr("Unsaved changes"),
-      tr("“%1” has unsaved changes. Save them first?").arg(QString::fromStdString(model_->document().name)),
+      tr("“%1” has unsaved changes. Save them first?")
+          .arg(QString::fromStdString(model_->document().name)),
       QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
   if (answer == QMessageBox::Cancel) return false;
   if (answer == QMessageBox::Save) return filePath_.isEmpty() ? saveDialog() : saveTo(filePath_);
@@ -123,7 +126,8 @@ bool MainWindow::saveTo(const QString& path) {
 
 bool MainWindow::importFap(const QString& path, std::optional<double> reductionTolerance) {
   try {
-    editing::FapImportResult result = editing::importFap(path.toStdString(), editing::FapImportOptions{reductionTolerance});
+    editing::FapImportResult result =
+        editing::importFap(path.toStdString(), editing::FapImportOptions{reductionTolerance});
     clock_->pause();
     filePath_.clear();
     model_->resetDocument(std::move(result.document), false);
@@ -137,8 +141,11 @@ bool MainWindow::importFap(const QString& path, std::optional<double> reductionT
                                 .arg(result.keys)
                                 .arg(*reductionTolerance)
                                 .arg(result.maxError, 0, 'g', 3)
-                          : tr("Imported %1: %2 frames as %2 keys").arg(QFileInfo(path).fileName()).arg(result.frames);
-    if (!result.warnings.empty()) message += tr(" · %n warning(s)", nullptr, static_cast<int>(result.warnings.size()));
+                          : tr("Imported %1: %2 frames as %2 keys")
+                                .arg(QFileInfo(path).fileName())
+                                .arg(result.frames);
+    if (!result.warnings.empty())
+      message += tr(" · %n warning(s)", nullptr, static_cast<int>(result.warnings.size()));
     statusBar()->showMessage(message, 10000);
     if (!result.warnings.empty()) statusBar()->setToolTip(joinWarnings(result.warnings));
     autosaveNow();  // an import is unsaved work from the first moment
@@ -151,13 +158,15 @@ bool MainWindow::importFap(const QString& path, std::optional<double> reductionT
 
 bool MainWindow::exportFap(const QString& path, const editing::FapExportOptions& options) {
   try {
-    const editing::FapExportResult result = editing::exportFap(model_->document(), path.toStdString(), options);
+    const editing::FapExportResult result =
+        editing::exportFap(model_->document(), path.toStdString(), options);
     QString message = tr("Exported %1 frames at %2 fps to %3 (%4)")
                           .arg(result.frames)
                           .arg(options.fps)
                           .arg(QFileInfo(path).fileName())
-                          .arg(options.strict ? tr("strict 68 FAPs")
-                                              : result.wroteTears ? tr("with tear channels") : tr("68 FAPs, no tears"));
+                          .arg(options.strict      ? tr("strict 68 FAPs")
+                               : result.wroteTears ? tr("with tear channels")
+                                                   : tr("68 FAPs, no tears"));
     if (!result.warnings.empty()) message += QStringLiteral(" · ") + joinWarnings(result.warnings);
     statusBar()->showMessage(message, 10000);
     return true;
@@ -171,16 +180,19 @@ bool MainWindow::exportFap(const QString& path, const editing::FapExportOptions&
 
 void MainWindow::openDialog() {
   if (!options_.interactive || !maybeSave()) return;
-  const QString path = QFileDialog::getOpenFileName(this, tr("Open project or FAP file"), QFileInfo(filePath_).path(),
-                                                    tr("Projects and FAP files (*.json *.fap);;Projects (*.json);;FAP files (*.fap)"));
+  const QString path = QFileDialog::getOpenFileName(
+      this, tr("Open project or FAP file"), QFileInfo(filePath_).path(),
+      tr("Projects and FAP files (*.json *.fap);;Projects (*.json);;FAP files (*.fap)"));
   if (!path.isEmpty()) openFile(path);
 }
 
 bool MainWindow::saveDialog() {
   if (!options_.interactive) return false;
   QString suggestion = filePath_;
-  if (suggestion.isEmpty()) suggestion = QString::fromStdString(model_->document().name) + QStringLiteral(".json");
-  QString path = QFileDialog::getSaveFileName(this, tr("Save project"), suggestion, tr("Projects (*.json)"));
+  if (suggestion.isEmpty())
+    suggestion = QString::fromStdString(model_->document().name) + QStringLiteral(".json");
+  QString path =
+      QFileDialog::getSaveFileName(this, tr("Save project"), suggestion, tr("Projects (*.json)"));
   if (path.isEmpty()) return false;
   if (!path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive)) path += QStringLiteral(".json");
   return saveTo(path);
@@ -188,7 +200,8 @@ bool MainWindow::saveDialog() {
 
 void MainWindow::importDialog() {
   if (!options_.interactive || !maybeSave()) return;
-  const QString path = QFileDialog::getOpenFileName(this, tr("Import FAP file"), QString(), tr("FAP files (*.fap);;All files (*)"));
+  const QString path = QFileDialog::getOpenFileName(this, tr("Import FAP file"), QString(),
+                                                    tr("FAP files (*.fap);;All files (*)"));
   if (path.isEmpty()) return;
   QSettings settings;
   QDialog dialog(this);
@@ -196,14 +209,18 @@ void MainWindow::importDialog() {
   auto* form = new QFormLayout(&dialog);
   auto* reduce = new QCheckBox(tr("Reduce keys"), &dialog);
   reduce->setChecked(settings.value(kReduceKey, true).toBool());
-  reduce->setToolTip(tr("Drop every frame that linear interpolation between the kept keys reproduces within the tolerance, on every channel"));
+  reduce->setToolTip(
+      tr("Drop every frame that linear interpolation between the kept keys reproduces within the "
+         "tolerance, on every channel"));
   auto* tolerance = new QDoubleSpinBox(&dialog);
   tolerance->setRange(0, 1000);
   tolerance->setDecimals(2);
   tolerance->setValue(settings.value(kToleranceKey, 1.0).toDouble());
   tolerance->setSuffix(tr(" units"));
-  tolerance->setToolTip(tr("Largest difference allowed on any channel, in its own units (FAPU steps, AU, particles). "
-                           "1 follows the motion of integer files; 0 keeps every frame that is not on a straight line."));
+  tolerance->setToolTip(
+      tr("Largest difference allowed on any channel, in its own units (FAPU steps, AU, particles). "
+         "1 follows the motion of integer files; 0 keeps every frame that is not on a straight "
+         "line."));
   form->addRow(reduce);
   form->addRow(tr("Tolerance"), tolerance);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
@@ -233,15 +250,20 @@ void MainWindow::exportDialog() {
   profile->addItem(tr("Strict: the 68 standard FAPs (other players)"));
   form->addRow(tr("Frame rate"), fps);
   form->addRow(tr("Profile"), profile);
-  form->addRow(new QLabel(tr("Frames cover the first key to the last; FAP 1 and 2 are not written (portable profile)."), &dialog));
+  form->addRow(new QLabel(
+      tr("Frames cover the first key to the last; FAP 1 and 2 are not written (portable profile)."),
+      &dialog));
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
   form->addRow(buttons);
   connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
   connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
   if (dialog.exec() != QDialog::Accepted) return;
-  QString suggestion = filePath_.isEmpty() ? QString::fromStdString(model_->document().name) + QStringLiteral(".fap")
-                                           : QFileInfo(filePath_).path() + '/' + QFileInfo(filePath_).completeBaseName() + QStringLiteral(".fap");
-  QString path = QFileDialog::getSaveFileName(this, tr("Export FAP"), suggestion, tr("FAP files (*.fap)"));
+  QString suggestion =
+      filePath_.isEmpty() ? QString::fromStdString(model_->document().name) + QStringLiteral(".fap")
+                          : QFileInfo(filePath_).path() + '/' +
+                                QFileInfo(filePath_).completeBaseName() + QStringLiteral(".fap");
+  QString path =
+      QFileDialog::getSaveFileName(this, tr("Export FAP"), suggestion, tr("FAP files (*.fap)"));
   if (path.isEmpty()) return;
   if (!path.endsWith(QLatin1String(".fap"), Qt::CaseInsensitive)) path += QStringLiteral(".fap");
   exportFap(path, editing::FapExportOptions{fps->value(), profile->currentIndex() == 1});
@@ -249,11 +271,15 @@ void MainWindow::exportDialog() {
 
 void MainWindow::loadPresetsDialog() {
   if (!options_.interactive) return;
-  const QString path = QFileDialog::getOpenFileName(this, tr("Load presets"), QString(), tr("Presets (*.json)"));
+  const QString path =
+      QFileDialog::getOpenFileName(this, tr("Load presets"), QString(), tr("Presets (*.json)"));
   if (path.isEmpty()) return;
   try {
     presets_->setLibrary(editing::PresetLibrary::load(path.toStdString()), path);
-    statusBar()->showMessage(tr("Loaded %n preset(s) from %1", nullptr, static_cast<int>(presets_->library().presets().size())).arg(path), 5000);
+    statusBar()->showMessage(tr("Loaded %n preset(s) from %1", nullptr,
+                                static_cast<int>(presets_->library().presets().size()))
+                                 .arg(path),
+                             5000);
   } catch (const FileError& e) {
     reportError(tr("Cannot load the presets"), QString::fromUtf8(e.what()));
   }
@@ -277,7 +303,8 @@ void MainWindow::rebuildRecentMenu() {
   const QStringList recent = QSettings().value(kRecentKey).toStringList();
   int number = 1;
   for (const QString& path : recent) {
-    QAction* a = recentMenu_->addAction(QStringLiteral("&%1  %2").arg(number++).arg(QFileInfo(path).fileName()));
+    QAction* a = recentMenu_->addAction(
+        QStringLiteral("&%1  %2").arg(number++).arg(QFileInfo(path).fileName()));
     a->setStatusTip(path);
     a->setEnabled(QFileInfo::exists(path));
     connect(a, &QAction::triggered, this, [this, path] {
@@ -298,8 +325,10 @@ void MainWindow::autosaveNow() {
   autosaveSoon_->stop();
   autosaveDirty_ = false;
   try {
-    if (model_->isModified()) recovery_->save(model_->document(), filePath_);
-    else recovery_->discard();
+    if (model_->isModified())
+      recovery_->save(model_->document(), filePath_);
+    else
+      recovery_->discard();
   } catch (const FileError& e) {
     statusBar()->showMessage(tr("Autosave failed: %1").arg(QString::fromUtf8(e.what())), 8000);
   }
@@ -316,10 +345,12 @@ void MainWindow::checkForRecovery() {
   pendingRecovery_ = newest.file;
   QString where = newest.sourcePath.isEmpty() ? tr("never saved") : newest.sourcePath;
   QString text = tr("<b>Unsaved work was found</b> from an editor that did not close cleanly: “%1” "
-                    "(%n key(s), %2, autosaved %3).", nullptr, newest.keys)
+                    "(%n key(s), %2, autosaved %3).",
+                    nullptr, newest.keys)
                      .arg(newest.name.toHtmlEscaped(), where.toHtmlEscaped(),
                           QLocale().toString(newest.savedAt.toLocalTime(), QLocale::ShortFormat));
-  if (orphans.size() > 1) text += tr(" %n older one(s) too.", nullptr, static_cast<int>(orphans.size() - 1));
+  if (orphans.size() > 1)
+    text += tr(" %n older one(s) too.", nullptr, static_cast<int>(orphans.size() - 1));
   banner_->setText(text);
   banner_->show();
 }

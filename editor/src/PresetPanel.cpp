@@ -16,7 +16,8 @@
 
 namespace lacrima::editor {
 
-PresetPanel::PresetPanel(editing::EditorModel& model, editing::PresetLibrary library, QWidget* parent)
+PresetPanel::PresetPanel(editing::EditorModel& model, editing::PresetLibrary library,
+                         QWidget* parent)
     : QWidget(parent), model_(model), library_(std::move(library)) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(6, 6, 6, 6);
@@ -53,7 +54,9 @@ PresetPanel::PresetPanel(editing::EditorModel& model, editing::PresetLibrary lib
 
   replace_ = new QCheckBox(tr("Replace the current pose"), this);
   replace_->setChecked(true);
-  replace_->setToolTip(tr("Channels the preset does not set go back to 0 at this time; off: the preset is added on top"));
+  replace_->setToolTip(
+      tr("Channels the preset does not set go back to 0 at this time; off: the preset is added on "
+         "top"));
   layout->addWidget(replace_);
 
   auto* buttons = new QHBoxLayout;
@@ -61,7 +64,8 @@ PresetPanel::PresetPanel(editing::EditorModel& model, editing::PresetLibrary lib
   apply_->setObjectName(QStringLiteral("applyPreset"));
   apply_->setDefault(true);
   auto* mirror = new QPushButton(tr("Mirror L ↔ R"), this);
-  mirror->setToolTip(tr("Mirror the selected keys, or the pose at the playhead, left to right (Ctrl+M)"));
+  mirror->setToolTip(
+      tr("Mirror the selected keys, or the pose at the playhead, left to right (Ctrl+M)"));
   auto* load = new QToolButton(this);
   load->setText(QStringLiteral("…"));
   load->setToolTip(tr("Load another presets file"));
@@ -70,7 +74,8 @@ PresetPanel::PresetPanel(editing::EditorModel& model, editing::PresetLibrary lib
   buttons->addWidget(load);
   layout->addLayout(buttons);
 
-  connect(intensity_, &QSlider::valueChanged, this, [this](int v) { intensityLabel_->setText(QStringLiteral("%1 %").arg(v)); });
+  connect(intensity_, &QSlider::valueChanged, this,
+          [this](int v) { intensityLabel_->setText(QStringLiteral("%1 %").arg(v)); });
   connect(list_, &QTreeWidget::currentItemChanged, this, &PresetPanel::showDetails);
   connect(list_, &QTreeWidget::itemDoubleClicked, this, [this] { apply(selectedId()); });
   connect(apply_, &QPushButton::clicked, this, [this] { apply(selectedId()); });
@@ -111,7 +116,8 @@ void PresetPanel::rebuild() {
     for (const editing::Preset& preset : library_.presets()) {
       if (preset.category != category) continue;
       QString label = QString::fromStdString(preset.name);
-      if (preset.isSequence()) label += tr("   (%1 keys, %2 s)").arg(preset.keys.size()).arg(preset.duration(), 0, 'f', 1);
+      if (preset.isSequence())
+        label += tr("   (%1 keys, %2 s)").arg(preset.keys.size()).arg(preset.duration(), 0, 'f', 1);
       auto* item = new QTreeWidgetItem(heading, {label});
       item->setData(0, Qt::UserRole, QString::fromStdString(preset.id));
       item->setToolTip(0, QString::fromStdString(preset.description));
@@ -130,7 +136,8 @@ void PresetPanel::showDetails() {
   const editing::Preset* preset = library_.find(selectedId().toStdString());
   apply_->setEnabled(preset != nullptr);
   if (!preset) {
-    details_->setText(tr("Pick a preset, then Apply (or double-click it). It lands at the playhead."));
+    details_->setText(
+        tr("Pick a preset, then Apply (or double-click it). It lands at the playhead."));
     return;
   }
   int channels = 0;

@@ -2,8 +2,8 @@
 
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/EditorModel.h>
-#include <lacrima/editor/EditorTheme.h>
 #include <lacrima/editing/FrameStepClock.h>
+#include <lacrima/editor/EditorTheme.h>
 
 #include <lacrima/playback/FrameProducer.h>
 #include <lacrima/playback/HeadRig.h>
@@ -29,7 +29,8 @@ struct PreviewPanel::State {
   bool attempted = false;
 };
 
-PreviewPanel::PreviewPanel(editing::EditorModel& model, editing::FrameStepClock& clock, QWidget* parent)
+PreviewPanel::PreviewPanel(editing::EditorModel& model, editing::FrameStepClock& clock,
+                           QWidget* parent)
     : QWidget(parent), state_(std::make_unique<State>()), model_(model), clock_(clock) {
   setObjectName(QStringLiteral("preview"));
   auto* layout = new QVBoxLayout(this);
@@ -46,7 +47,8 @@ PreviewPanel::PreviewPanel(editing::EditorModel& model, editing::FrameStepClock&
   tearToggle_->setToolTip(tr("Simulate the tears while paused when a tear channel is above 0 (T)"));
   auto* resetTears = new QToolButton(bar);
   resetTears->setText(tr("Clear tears"));
-  resetTears->setToolTip(tr("Remove every tear particle and trail; they build up again from the tear channels"));
+  resetTears->setToolTip(
+      tr("Remove every tear particle and trail; they build up again from the tear channels"));
   status_ = new QLabel(bar);
   status_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
   QPalette dim = status_->palette();
@@ -89,16 +91,15 @@ PreviewPanel::PreviewPanel(editing::EditorModel& model, editing::FrameStepClock&
   });
   connect(&model_, &editing::EditorModel::settingsChanged, this, [this] {
     if (!state_->producer) return;
-    if (!(state_->producer->scene() == model_.document().scene)) state_->producer->setScene(model_.document().scene);
+    if (!(state_->producer->scene() == model_.document().scene))
+      state_->producer->setScene(model_.document().scene);
     state_->producer->setTearSources(model_.document().tearSources);
   });
 }
 
 PreviewPanel::~PreviewPanel() = default;
 
-bool PreviewPanel::hasHead() const {
-  return state_->producer != nullptr;
-}
+bool PreviewPanel::hasHead() const { return state_->producer != nullptr; }
 
 QString PreviewPanel::statusText() const { return statusText_; }
 
@@ -116,7 +117,8 @@ bool PreviewPanel::loadHead() {
     QElapsedTimer timer;
     timer.start();
     state_->rig = playback::loadDefaultHeadRig();
-    state_->producer = std::make_unique<playback::FrameProducer>(*state_->rig, model_.document().scene);
+    state_->producer =
+        std::make_unique<playback::FrameProducer>(*state_->rig, model_.document().scene);
     state_->producer->setTearSources(model_.document().tearSources);
     state_->viewport = new viewport::FaceViewport(this);
     state_->viewport->setObjectName(QStringLiteral("faceViewport"));
@@ -137,8 +139,9 @@ bool PreviewPanel::loadHead() {
   } catch (const std::exception& e) {
     state_->producer.reset();
     state_->rig.reset();
-    message_->setText(tr("No preview: %1\n\nThe editor works without it; the tear channels still export.")
-                          .arg(QString::fromUtf8(e.what())));
+    message_->setText(
+        tr("No preview: %1\n\nThe editor works without it; the tear channels still export.")
+            .arg(QString::fromUtf8(e.what())));
     setStatus(tr("no head"));
     return false;
   }
@@ -156,9 +159,7 @@ int PreviewPanel::particleCount() const {
   return state_->producer ? state_->producer->particleCount() : 0;
 }
 
-QWidget* PreviewPanel::viewportWidget() const {
-  return state_->viewport;
-}
+QWidget* PreviewPanel::viewportWidget() const { return state_->viewport; }
 
 QImage PreviewPanel::grabFrame() {
   if (state_->viewport) return state_->viewport->grabFrame();
@@ -177,13 +178,16 @@ void PreviewPanel::pose() {
 void PreviewPanel::step(double dt) {
   if (!state_->producer) return;
   const double duration = model_.endTime();
-  const double progress = duration > 0 ? std::clamp(model_.currentTime() / duration, 0.0, 1.0) : 0.0;
+  const double progress =
+      duration > 0 ? std::clamp(model_.currentTime() / duration, 0.0, 1.0) : 0.0;
   QElapsedTimer timer;
   timer.start();
   const auto& view = state_->producer->produce(model_.currentValues(), dt, progress);
   lastProduceMs_ = timer.nsecsElapsed() / 1e6;
   state_->viewport->showFrame(view);
-  setStatus(tr("%1 particles · %2 ms").arg(state_->producer->particleCount()).arg(lastProduceMs_, 0, 'f', 1));
+  setStatus(tr("%1 particles · %2 ms")
+                .arg(state_->producer->particleCount())
+                .arg(lastProduceMs_, 0, 'f', 1));
 }
 
 void PreviewPanel::onValuesChanged() {

@@ -2,10 +2,10 @@
 
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/ChannelFilter.h>
-#include <lacrima/editor/ChannelRow.h>
 #include <lacrima/editing/EditorModel.h>
-#include <lacrima/editor/EditorTheme.h>
 #include <lacrima/editing/HighLevelCodes.h>
+#include <lacrima/editor/ChannelRow.h>
+#include <lacrima/editor/EditorTheme.h>
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -39,7 +39,7 @@ QString groupTitle(FapGroup group) {
 
 // A foldable group: a painted header (colour, title, keyed count, reset) over its rows.
 class GroupSection : public QWidget {
-public:
+ public:
   GroupSection(FapGroup group, QWidget* parent) : QWidget(parent), group_(group) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 2);
@@ -56,7 +56,8 @@ public:
     reset_->setAutoRaise(true);
     reset_->setFixedSize(20, 20);
     reset_->setFocusPolicy(Qt::NoFocus);
-    reset_->setToolTip(QCoreApplication::translate("SliderPanel", "Reset every %1 channel to 0 at the current time")
+    reset_->setToolTip(QCoreApplication::translate(
+                           "SliderPanel", "Reset every %1 channel to 0 at the current time")
                            .arg(fromView(toString(group))));
   }
 
@@ -89,15 +90,15 @@ public:
     header_->update();
   }
 
-private:
+ private:
   class Header : public QWidget {
-  public:
+   public:
     explicit Header(GroupSection* section) : QWidget(section), section_(section) {
       setFixedHeight(24);
       setCursor(Qt::PointingHandCursor);
     }
 
-  protected:
+   protected:
     void paintEvent(QPaintEvent*) override {
       QPainter p(this);
       p.setRenderHint(QPainter::Antialiasing);
@@ -109,8 +110,10 @@ private:
       QPolygonF arrow;
       const double cx = 12;
       const double cy = height() / 2.0;
-      if (open) arrow << QPointF(cx - 4, cy - 2) << QPointF(cx + 4, cy - 2) << QPointF(cx, cy + 3);
-      else arrow << QPointF(cx - 2, cy - 4) << QPointF(cx - 2, cy + 4) << QPointF(cx + 3, cy);
+      if (open)
+        arrow << QPointF(cx - 4, cy - 2) << QPointF(cx + 4, cy - 2) << QPointF(cx, cy + 3);
+      else
+        arrow << QPointF(cx - 2, cy - 4) << QPointF(cx - 2, cy + 4) << QPointF(cx + 3, cy);
       p.setPen(Qt::NoPen);
       p.setBrush(palette().color(QPalette::WindowText));
       p.drawPolygon(arrow);
@@ -123,8 +126,9 @@ private:
       if (section_->keyed_ > 0) {
         p.setFont(font());
         p.setPen(theme::keyAccent());
-        p.drawText(textRect, Qt::AlignVCenter | Qt::AlignRight,
-                   QCoreApplication::translate("SliderPanel", "%n keyed", nullptr, section_->keyed_));
+        p.drawText(
+            textRect, Qt::AlignVCenter | Qt::AlignRight,
+            QCoreApplication::translate("SliderPanel", "%n keyed", nullptr, section_->keyed_));
       }
     }
     void resizeEvent(QResizeEvent*) override {
@@ -134,7 +138,7 @@ private:
       if (event->button() == Qt::LeftButton) section_->setExpanded(!section_->expanded_);
     }
 
-  private:
+   private:
     GroupSection* section_;
   };
 
@@ -149,7 +153,8 @@ private:
   bool forced_ = false;
 };
 
-SliderPanel::SliderPanel(editing::EditorModel& model, QWidget* parent) : QWidget(parent), model_(model) {
+SliderPanel::SliderPanel(editing::EditorModel& model, QWidget* parent)
+    : QWidget(parent), model_(model) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(4, 4, 0, 0);
   layout->setSpacing(4);
@@ -166,7 +171,8 @@ SliderPanel::SliderPanel(editing::EditorModel& model, QWidget* parent) : QWidget
   symmetric_ = new QToolButton(this);
   symmetric_->setText(tr("Symmetric"));
   symmetric_->setCheckable(true);
-  symmetric_->setToolTip(tr("Symmetric editing: moving a left or right channel moves its mirror channel too"));
+  symmetric_->setToolTip(
+      tr("Symmetric editing: moving a left or right channel moves its mirror channel too"));
   top->addWidget(filter_, 1);
   top->addWidget(matchCount_);
   top->addWidget(symmetric_);
@@ -181,13 +187,15 @@ SliderPanel::SliderPanel(editing::EditorModel& model, QWidget* parent) : QWidget
 
   connect(filter_, &QLineEdit::textChanged, this, [this] { applyFilter(); });
   connect(symmetric_, &QToolButton::toggled, &model_, &editing::EditorModel::setSymmetricEdit);
-  connect(&model_, &editing::EditorModel::symmetricEditChanged, symmetric_, &QToolButton::setChecked);
+  connect(&model_, &editing::EditorModel::symmetricEditChanged, symmetric_,
+          &QToolButton::setChecked);
   connect(&model_, &editing::EditorModel::valuesChanged, this, &SliderPanel::refresh);
   connect(&model_, &editing::EditorModel::focusChannelChanged, this, [this](int fap) {
     if (highlighted_ && rows_[static_cast<std::size_t>(highlighted_)])
       rows_[static_cast<std::size_t>(highlighted_)]->setHighlighted(false);
     highlighted_ = fap;
-    if (rows_[static_cast<std::size_t>(fap)]) rows_[static_cast<std::size_t>(fap)]->setHighlighted(true);
+    if (rows_[static_cast<std::size_t>(fap)])
+      rows_[static_cast<std::size_t>(fap)]->setHighlighted(true);
   });
   applyFilter();
   refresh();
@@ -200,7 +208,8 @@ void SliderPanel::buildGroups() {
   auto* column = new QVBoxLayout(content);
   column->setContentsMargins(0, 0, 4, 0);
   column->setSpacing(0);
-  for (int g = static_cast<int>(FapGroup::VisemeExpression); g <= static_cast<int>(FapGroup::Tears); ++g) {
+  for (int g = static_cast<int>(FapGroup::VisemeExpression); g <= static_cast<int>(FapGroup::Tears);
+       ++g) {
     const auto group = static_cast<FapGroup>(g);
     auto* section = new GroupSection(group, content);
     section->setObjectName(QStringLiteral("group-%1").arg(g));
@@ -213,7 +222,8 @@ void SliderPanel::buildGroups() {
         auto* h = new QHBoxLayout(row);
         h->setContentsMargins(22, 2, 4, 2);
         h->setSpacing(6);
-        auto* label = new QLabel(QStringLiteral("%1  %2").arg(info.number).arg(fromView(info.name)), row);
+        auto* label =
+            new QLabel(QStringLiteral("%1  %2").arg(info.number).arg(fromView(info.name)), row);
         label->setFixedWidth(96);
         label->setToolTip(fromView(info.description));
         auto* combo = new QComboBox(row);
@@ -224,8 +234,10 @@ void SliderPanel::buildGroups() {
           combo->addItem(QStringLiteral("%1 · %2").arg(c.code).arg(fromView(c.name)), c.code);
           combo->setItemData(combo->count() - 1, fromView(c.detail), Qt::ToolTipRole);
         }
-        combo->setToolTip(fromView(info.description) +
-                          tr("\nSets FAP %1 at the current time (a code: it holds until the next key).").arg(info.number));
+        combo->setToolTip(
+            fromView(info.description) +
+            tr("\nSets FAP %1 at the current time (a code: it holds until the next key).")
+                .arg(info.number));
         h->addWidget(label);
         h->addWidget(combo, 1);
         const int fap = info.number;
@@ -241,7 +253,9 @@ void SliderPanel::buildGroups() {
           expressionRow_ = row;
           auto* expand = new QToolButton(row);
           expand->setText(tr("Pose"));
-          expand->setToolTip(tr("Spell the chosen expression out as low-level FAPs (its preset) at the current time"));
+          expand->setToolTip(
+              tr("Spell the chosen expression out as low-level FAPs (its preset) at the current "
+                 "time"));
           expand->setFocusPolicy(Qt::NoFocus);
           h->addWidget(expand);
           connect(expand, &QToolButton::clicked, this, [this, combo] {
@@ -278,7 +292,8 @@ void SliderPanel::refresh() {
   }
   for (QComboBox* combo : {viseme_, expression_}) {
     const int fap = combo == viseme_ ? 1 : 2;
-    const int code = static_cast<int>(std::lround(values[static_cast<std::size_t>(channelIndex(fap))]));
+    const int code =
+        static_cast<int>(std::lround(values[static_cast<std::size_t>(channelIndex(fap))]));
     const int index = combo->findData(code);
     if (index != combo->currentIndex()) {
       const QSignalBlocker block(combo);

@@ -21,8 +21,8 @@ namespace {
 constexpr double kRulerHeight = 22.0;
 constexpr double kLaneHeight = 30.0;
 constexpr double kKeyRadius = 5.5;
-constexpr double kMinScale = 0.5;      // px per second: 30 minutes across 900 px
-constexpr double kMaxScale = 4000.0;   // a frame at 22 fps is 180 px
+constexpr double kMinScale = 0.5;     // px per second: 30 minutes across 900 px
+constexpr double kMaxScale = 4000.0;  // a frame at 22 fps is 180 px
 constexpr double kCurveSampleRate = 60.0;
 constexpr std::size_t kMaxCurveSamples = 60000;
 
@@ -39,7 +39,8 @@ QString timeLabel(double seconds, double step) {
 
 }  // namespace
 
-TimelineWidget::TimelineWidget(editing::EditorModel& model, QWidget* parent) : QWidget(parent), model_(model) {
+TimelineWidget::TimelineWidget(editing::EditorModel& model, QWidget* parent)
+    : QWidget(parent), model_(model) {
   setObjectName(QStringLiteral("timeline"));
   setFocusPolicy(Qt::ClickFocus);
   setMouseTracking(false);
@@ -148,7 +149,8 @@ TimelineWidget::Curve TimelineWidget::bakeChannel(int fap) const {
   curve.start = sequence.startTime();
   curve.rate = rate;
   curve.samples.reserve(baked.frames.size());
-  for (const FapValues& frame : baked.frames) curve.samples.push_back(frame[static_cast<std::size_t>(channelIndex(fap))]);
+  for (const FapValues& frame : baked.frames)
+    curve.samples.push_back(frame[static_cast<std::size_t>(channelIndex(fap))]);
   return curve;
 }
 
@@ -180,12 +182,14 @@ void TimelineWidget::paintEvent(QPaintEvent*) {
                pal.color(QPalette::AlternateBase).lighter(118));
   }
   paintRuler(p);
-  const QRectF curveArea(0, kRulerHeight + kLaneHeight + 4, width(), height() - kRulerHeight - kLaneHeight - 8);
+  const QRectF curveArea(0, kRulerHeight + kLaneHeight + 4, width(),
+                         height() - kRulerHeight - kLaneHeight - 8);
   paintCurves(p, curveArea);
 
   // Lane separator.
   p.setPen(QPen(pal.color(QPalette::Mid), 1));
-  p.drawLine(QPointF(0, kRulerHeight + kLaneHeight + 0.5), QPointF(width(), kRulerHeight + kLaneHeight + 0.5));
+  p.drawLine(QPointF(0, kRulerHeight + kLaneHeight + 0.5),
+             QPointF(width(), kRulerHeight + kLaneHeight + 0.5));
   paintKeys(p);
 
   // Playhead.
@@ -244,7 +248,8 @@ void TimelineWidget::paintRuler(QPainter& p) {
     p.drawLine(QPointF(x, kRulerHeight), QPointF(x, height()));
     p.setPen(QPen(pal.color(QPalette::WindowText).darker(130), 1));
     p.drawLine(QPointF(x, kRulerHeight - 8), QPointF(x, kRulerHeight));
-    p.drawText(QRectF(x + 3, 0, 80, kRulerHeight - 6), Qt::AlignLeft | Qt::AlignVCenter, timeLabel(t, step));
+    p.drawText(QRectF(x + 3, 0, 80, kRulerHeight - 6), Qt::AlignLeft | Qt::AlignVCenter,
+               timeLabel(t, step));
     // Half steps, unlabelled.
     const double hx = std::round(xOfTime(t + step / 2)) + 0.5;
     p.drawLine(QPointF(hx, kRulerHeight - 5), QPointF(hx, kRulerHeight));
@@ -265,13 +270,17 @@ void TimelineWidget::paintCurves(QPainter& p, const QRectF& area) {
     const double from = std::max(t0, curve.start);
     const double to = std::min(t1, end);
     // Held before the first key and after the last.
-    if (t0 < curve.start) line << QPointF(0, yOf(curve.samples.front())) << QPointF(xOfTime(curve.start), yOf(curve.samples.front()));
+    if (t0 < curve.start)
+      line << QPointF(0, yOf(curve.samples.front()))
+           << QPointF(xOfTime(curve.start), yOf(curve.samples.front()));
     if (from <= to) {
       const auto sampleAt = [&](double t) {
-        const double f = std::clamp((t - curve.start) * curve.rate, 0.0, double(curve.samples.size() - 1));
+        const double f =
+            std::clamp((t - curve.start) * curve.rate, 0.0, double(curve.samples.size() - 1));
         const std::size_t i = static_cast<std::size_t>(f);
         const std::size_t j = std::min(i + 1, curve.samples.size() - 1);
-        return static_cast<float>(curve.samples[i] + (f - i) * (curve.samples[j] - curve.samples[i]));
+        return static_cast<float>(curve.samples[i] +
+                                  (f - i) * (curve.samples[j] - curve.samples[i]));
       };
       if (curve.rate / scale_ >= 1.0) {
         const double x0 = xOfTime(from);
@@ -280,12 +289,18 @@ void TimelineWidget::paintCurves(QPainter& p, const QRectF& area) {
         for (double x = x0; x < x1; x += 1.0) line << QPointF(x, yOf(sampleAt(timeAtX(x))));
         line << QPointF(x1, yOf(sampleAt(to)));
       } else {
-        const std::size_t i0 = static_cast<std::size_t>(std::max(0.0, std::floor((from - curve.start) * curve.rate)));
-        const std::size_t i1 = std::min(curve.samples.size() - 1, static_cast<std::size_t>(std::ceil((to - curve.start) * curve.rate)));
-        for (std::size_t i = i0; i <= i1; ++i) line << QPointF(xOfTime(curve.start + i / curve.rate), yOf(curve.samples[i]));
+        const std::size_t i0 =
+            static_cast<std::size_t>(std::max(0.0, std::floor((from - curve.start) * curve.rate)));
+        const std::size_t i1 =
+            std::min(curve.samples.size() - 1,
+                     static_cast<std::size_t>(std::ceil((to - curve.start) * curve.rate)));
+        for (std::size_t i = i0; i <= i1; ++i)
+          line << QPointF(xOfTime(curve.start + i / curve.rate), yOf(curve.samples[i]));
       }
     }
-    if (t1 > end) line << QPointF(xOfTime(end), yOf(curve.samples.back())) << QPointF(width(), yOf(curve.samples.back()));
+    if (t1 > end)
+      line << QPointF(xOfTime(end), yOf(curve.samples.back()))
+           << QPointF(width(), yOf(curve.samples.back()));
     return line;
   };
 
@@ -348,12 +363,16 @@ void TimelineWidget::paintCurves(QPainter& p, const QRectF& area) {
     p.drawPolyline(line);
   }
   p.setPen(colour);
-  QString label = QStringLiteral("%1 %2").arg(fap).arg(QString::fromUtf8(info.name.data(), static_cast<qsizetype>(info.name.size())));
+  QString label = QStringLiteral("%1 %2").arg(fap).arg(
+      QString::fromUtf8(info.name.data(), static_cast<qsizetype>(info.name.size())));
   if (focusCurve_.samples.empty()) {
     label += tr("  (not animated)");
   } else {
-    const auto [low, high] = std::minmax_element(focusCurve_.samples.begin(), focusCurve_.samples.end());
-    label += QStringLiteral("   %1 … %2").arg(static_cast<double>(*low), 0, 'f', 0).arg(static_cast<double>(*high), 0, 'f', 0);
+    const auto [low, high] =
+        std::minmax_element(focusCurve_.samples.begin(), focusCurve_.samples.end());
+    label += QStringLiteral("   %1 … %2")
+                 .arg(static_cast<double>(*low), 0, 'f', 0)
+                 .arg(static_cast<double>(*high), 0, 'f', 0);
   }
   p.drawText(QRectF(6, area.top(), 400, 16), Qt::AlignLeft | Qt::AlignTop, label);
 }
@@ -373,8 +392,10 @@ void TimelineWidget::paintKeys(QPainter& p) {
   const double ghost = drag_ == Drag::MoveKeys ? ghostFrames_ * frame : 0.0;
   const double current = model_.currentTime();
 
-  const auto first = std::lower_bound(keys.begin(), keys.end(), t0, [](const auto& k, double v) { return k.time < v; });
-  const auto last = std::upper_bound(first, keys.end(), t1, [](double v, const auto& k) { return v < k.time; });
+  const auto first = std::lower_bound(keys.begin(), keys.end(), t0,
+                                      [](const auto& k, double v) { return k.time < v; });
+  const auto last =
+      std::upper_bound(first, keys.end(), t1, [](double v, const auto& k) { return v < k.time; });
   // Keys closer than a few pixels (a whole imported file in view) are drawn as ticks on one line.
   const bool dense = (last - first) * 4 > width();
 
@@ -421,7 +442,8 @@ void TimelineWidget::paintKeys(QPainter& p) {
       p.drawEllipse(QPointF(xOfTime(k->time), cy), r - 1, r - 1);
     }
     const bool atPlayhead = std::abs(k->time - current) < 1e-9;
-    p.setPen(QPen(atPlayhead ? QColor(Qt::white) : palette().color(QPalette::Base), atPlayhead ? 1.6 : 1.0));
+    p.setPen(QPen(atPlayhead ? QColor(Qt::white) : palette().color(QPalette::Base),
+                  atPlayhead ? 1.6 : 1.0));
     p.setBrush(fill);
     if (k->interpolation == Interpolation::Smooth) {
       p.drawEllipse(QPointF(x, cy), r - 0.5, r - 0.5);
@@ -482,8 +504,12 @@ void TimelineWidget::mouseMoveEvent(QMouseEvent* event) {
   const QPointF pos = event->position();
   const bool moved = (pos - pressPos_).manhattanLength() >= 4;
   switch (drag_) {
-    case Drag::Scrub: model_.setCurrentTime(timeAtX(pos.x())); break;
-    case Drag::Pan: setView(panStart_ - (pos.x() - pressPos_.x()) / scale_, scale_); break;
+    case Drag::Scrub:
+      model_.setCurrentTime(timeAtX(pos.x()));
+      break;
+    case Drag::Pan:
+      setView(panStart_ - (pos.x() - pressPos_.x()) / scale_, scale_);
+      break;
     case Drag::PendingKey:
       if (moved) drag_ = Drag::MoveKeys;
       [[fallthrough]];
@@ -502,14 +528,16 @@ void TimelineWidget::mouseMoveEvent(QMouseEvent* event) {
       const double a = timeAtX(band_.left());
       const double b = timeAtX(band_.right());
       std::vector<double> selection;
-      if (event->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier)) selection = model_.selectedTimes();
+      if (event->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier))
+        selection = model_.selectedTimes();
       for (const Keyframe& k : model_.document().keys.keys())
         if (k.time >= a && k.time <= b) selection.push_back(k.time);
       model_.setSelectedTimes(selection);
       update();
       break;
     }
-    case Drag::None: break;
+    case Drag::None:
+      break;
   }
 }
 
@@ -530,8 +558,12 @@ void TimelineWidget::mouseReleaseEvent(QMouseEvent* event) {
         model_.setCurrentTime(keys[static_cast<std::size_t>(pressedKey_)].time);
       break;
     }
-    case Drag::PendingBand: model_.setCurrentTime(timeAtX(event->position().x())); break;
-    default: update(); break;
+    case Drag::PendingBand:
+      model_.setCurrentTime(timeAtX(event->position().x()));
+      break;
+    default:
+      update();
+      break;
   }
   pressedKey_ = -1;
 }
@@ -546,7 +578,8 @@ void TimelineWidget::mouseDoubleClickEvent(QMouseEvent* event) {
 
 void TimelineWidget::wheelEvent(QWheelEvent* event) {
   const QPoint delta = event->angleDelta();
-  const bool pan = (event->modifiers() & Qt::ShiftModifier) || std::abs(delta.x()) > std::abs(delta.y());
+  const bool pan =
+      (event->modifiers() & Qt::ShiftModifier) || std::abs(delta.x()) > std::abs(delta.y());
   if (pan) {
     const int d = delta.x() != 0 ? delta.x() : delta.y();
     setView(start_ - d / 120.0 * 60.0 / scale_, scale_);
@@ -573,19 +606,24 @@ void TimelineWidget::contextMenuEvent(QContextMenuEvent* event) {
     smooth->setCheckable(true);
     linear->setChecked(k.interpolation == Interpolation::Linear);
     smooth->setChecked(k.interpolation == Interpolation::Smooth);
-    connect(linear, &QAction::triggered, this, [this, selection] { model_.setInterpolation(selection, Interpolation::Linear); });
-    connect(smooth, &QAction::triggered, this, [this, selection] { model_.setInterpolation(selection, Interpolation::Smooth); });
+    connect(linear, &QAction::triggered, this,
+            [this, selection] { model_.setInterpolation(selection, Interpolation::Linear); });
+    connect(smooth, &QAction::triggered, this,
+            [this, selection] { model_.setInterpolation(selection, Interpolation::Smooth); });
     menu.addSeparator();
     connect(menu.addAction(tr("Copy")), &QAction::triggered, this, &TimelineWidget::copyRequested);
-    connect(menu.addAction(tr("Mirror left ↔ right")), &QAction::triggered, this, &TimelineWidget::mirrorRequested);
-    connect(menu.addAction(tr("Delete")), &QAction::triggered, this, [this, selection] { model_.deleteKeys(selection); });
+    connect(menu.addAction(tr("Mirror left ↔ right")), &QAction::triggered, this,
+            &TimelineWidget::mirrorRequested);
+    connect(menu.addAction(tr("Delete")), &QAction::triggered, this,
+            [this, selection] { model_.deleteKeys(selection); });
   } else {
     const double t = model_.snapTime(timeAtX(pos.x()));
     connect(menu.addAction(tr("Add key here")), &QAction::triggered, this, [this, t] {
       model_.setCurrentTime(t);
       model_.addKey();
     });
-    connect(menu.addAction(tr("Paste here")), &QAction::triggered, this, [this, t] { emit pasteRequested(t); });
+    connect(menu.addAction(tr("Paste here")), &QAction::triggered, this,
+            [this, t] { emit pasteRequested(t); });
     menu.addSeparator();
     connect(menu.addAction(tr("Frame all")), &QAction::triggered, this, &TimelineWidget::fitAll);
   }

@@ -1,8 +1,8 @@
 #include <lacrima/editor/TransportBar.h>
 
 #include <lacrima/editing/EditorModel.h>
-#include <lacrima/editor/EditorTheme.h>
 #include <lacrima/editing/FrameStepClock.h>
+#include <lacrima/editor/EditorTheme.h>
 
 #include <QHBoxLayout>
 #include <QIcon>
@@ -63,7 +63,9 @@ QIcon TransportBar::icon(Glyph glyph, const QColor& colour) {
       triangle(6, 16, false);
       triangle(16, 26, false);
       break;
-    case Glyph::Play: triangle(10, 25, true); break;
+    case Glyph::Play:
+      triangle(10, 25, true);
+      break;
     case Glyph::Pause:
       p.drawRect(QRectF(9, 8, 5, 16));
       p.drawRect(QRectF(18, 8, 5, 16));
@@ -104,7 +106,8 @@ QIcon TransportBar::icon(Glyph glyph, const QColor& colour) {
   return QIcon(pixmap);
 }
 
-TransportBar::TransportBar(editing::EditorModel& model, editing::FrameStepClock& clock, QWidget* parent)
+TransportBar::TransportBar(editing::EditorModel& model, editing::FrameStepClock& clock,
+                           QWidget* parent)
     : QWidget(parent), model_(model), clock_(clock) {
   auto* layout = new QHBoxLayout(this);
   layout->setContentsMargins(6, 2, 6, 2);
@@ -146,10 +149,13 @@ TransportBar::TransportBar(editing::EditorModel& model, editing::FrameStepClock&
   layout->addWidget(rateLabel);
   layout->addWidget(rate_);
 
-  connect(start, &QToolButton::clicked, this, [this] { model_.setCurrentTime(model_.document().keys.startTime()); });
+  connect(start, &QToolButton::clicked, this,
+          [this] { model_.setCurrentTime(model_.document().keys.startTime()); });
   connect(end, &QToolButton::clicked, this, [this] { model_.setCurrentTime(model_.endTime()); });
-  connect(previous, &QToolButton::clicked, this, [this] { model_.setCurrentTime(previousKeyTime(model_)); });
-  connect(next, &QToolButton::clicked, this, [this] { model_.setCurrentTime(nextKeyTime(model_)); });
+  connect(previous, &QToolButton::clicked, this,
+          [this] { model_.setCurrentTime(previousKeyTime(model_)); });
+  connect(next, &QToolButton::clicked, this,
+          [this] { model_.setCurrentTime(nextKeyTime(model_)); });
   connect(play_, &QToolButton::clicked, &clock_, &editing::FrameStepClock::toggle);
   connect(loop, &QToolButton::toggled, &clock_, &editing::FrameStepClock::setLoop);
   connect(rate_, &QSpinBox::valueChanged, &clock_, [this](int v) { clock_.setRate(v); });
@@ -167,7 +173,9 @@ void TransportBar::refreshTime() {
   const int frame = model_.frameAt(t);
   const int frames = model_.frameAt(model_.endTime());
   const bool onKey = model_.currentKeyIndex() >= 0;
-  const QString key = onKey ? QStringLiteral(" <span style='color:%1'>◆</span>").arg(theme::keyAccent().name()) : QString();
+  const QString key =
+      onKey ? QStringLiteral(" <span style='color:%1'>◆</span>").arg(theme::keyAccent().name())
+            : QString();
   time_->setText(tr("<b>%1 s</b> &nbsp; frame %2 / %3%4")
                      .arg(QString::number(t, 'f', 3))
                      .arg(frame)

@@ -16,7 +16,10 @@ constexpr double kZeroMagnet = 0.015;  // fraction of the range that sticks to 0
 }  // namespace
 
 ZeroSlider::ZeroSlider(int minimum, int maximum, int step, QColor colour, QWidget* parent)
-    : QWidget(parent), min_(minimum), max_(std::max(maximum, minimum + 1)), step_(std::max(1, step)),
+    : QWidget(parent),
+      min_(minimum),
+      max_(std::max(maximum, minimum + 1)),
+      step_(std::max(1, step)),
       colour_(colour) {
   setFocusPolicy(Qt::ClickFocus);
   setAttribute(Qt::WA_OpaquePaintEvent, false);
@@ -74,7 +77,8 @@ void ZeroSlider::paintEvent(QPaintEvent*) {
   const double valueX = xOf(value_);
   QColor fill = colour_;
   if (!emphasis_) fill.setAlphaF(0.55);
-  if (value_ != 0) p.fillRect(QRectF(std::min(zeroX, valueX), cy - 2.5, std::abs(valueX - zeroX), 5), fill);
+  if (value_ != 0)
+    p.fillRect(QRectF(std::min(zeroX, valueX), cy - 2.5, std::abs(valueX - zeroX), 5), fill);
 
   // The neutral mark, only for ranges that straddle 0.
   if (min_ < 0 && max_ > 0) {
@@ -83,7 +87,8 @@ void ZeroSlider::paintEvent(QPaintEvent*) {
   }
 
   const bool over = value_ > max_ || value_ < min_;
-  const QColor handle = hasFocus() || dragging_ ? QColor(Qt::white) : palette().color(QPalette::WindowText);
+  const QColor handle =
+      hasFocus() || dragging_ ? QColor(Qt::white) : palette().color(QPalette::WindowText);
   p.setPen(Qt::NoPen);
   p.setBrush(handle);
   if (over) {
@@ -139,13 +144,25 @@ void ZeroSlider::keyPressEvent(QKeyEvent* event) {
   const int page = std::max(step_, (max_ - min_) / 10);
   switch (event->key()) {
     case Qt::Key_Left:
-    case Qt::Key_Down: edit(value_ - step_); break;
+    case Qt::Key_Down:
+      edit(value_ - step_);
+      break;
     case Qt::Key_Right:
-    case Qt::Key_Up: edit(value_ + step_); break;
-    case Qt::Key_PageDown: edit(value_ - page); break;
-    case Qt::Key_PageUp: edit(value_ + page); break;
-    case Qt::Key_0: edit(0); break;
-    default: QWidget::keyPressEvent(event); return;
+    case Qt::Key_Up:
+      edit(value_ + step_);
+      break;
+    case Qt::Key_PageDown:
+      edit(value_ - page);
+      break;
+    case Qt::Key_PageUp:
+      edit(value_ + page);
+      break;
+    case Qt::Key_0:
+      edit(0);
+      break;
+    default:
+      QWidget::keyPressEvent(event);
+      return;
   }
   event->accept();
 }
@@ -166,7 +183,8 @@ bool ZeroSlider::event(QEvent* event) {
           return true;
         }
         break;
-      default: break;
+      default:
+        break;
     }
   }
   return QWidget::event(event);

@@ -15,9 +15,9 @@
 #include <QFileInfo>
 #include <QTimer>
 
+#include <unistd.h>
 #include <cstdio>
 #include <cstring>
-#include <unistd.h>
 
 using namespace lacrima;
 
@@ -29,12 +29,15 @@ constexpr int kExitUsage = 2;
 
 bool hasOption(int argc, char** argv, const char* name) {
   for (int i = 1; i < argc; ++i)
-    if (std::strcmp(argv[i], name) == 0 || std::strncmp(argv[i], name, std::strlen(name)) == 0) return true;
+    if (std::strcmp(argv[i], name) == 0 || std::strncmp(argv[i], name, std::strlen(name)) == 0)
+      return true;
   return false;
 }
 
 std::unique_ptr<playback::HeadRig> loadRig(const QCommandLineParser& parser) {
-  if (parser.isSet("mesh")) return playback::loadHeadRig(parser.value("mesh").toStdString(), parser.value("fdp").toStdString());
+  if (parser.isSet("mesh"))
+    return playback::loadHeadRig(parser.value("mesh").toStdString(),
+                                 parser.value("fdp").toStdString());
   return playback::loadDefaultHeadRig();
 }
 
@@ -43,8 +46,8 @@ void showProgress(int done, int total) {
   static const bool terminal = isatty(fileno(stderr));
   if (terminal) {
     const int width = 40, filled = done * width / std::max(1, total);
-    std::fprintf(stderr, "\rlacrima-player: [%.*s%*s] frame %d/%d", filled, "########################################",
-                 width - filled, "", done, total);
+    std::fprintf(stderr, "\rlacrima-player: [%.*s%*s] frame %d/%d", filled,
+                 "########################################", width - filled, "", done, total);
     if (done == total) std::fputc('\n', stderr);
   } else if (done == total || done % std::max(1, total / 10) == 0) {
     std::fprintf(stderr, "lacrima-player: rendered %d/%d frames\n", done, total);
@@ -65,8 +68,9 @@ int renderMode(const QCommandLineParser& parser, const QSize& size) {
   options.progress = showProgress;
   const player::BatchRenderResult result = player::renderAnimation(*rig, options);
   std::fprintf(stderr, "lacrima-player: %d frames in %.1f s\n", result.frames, result.seconds);
-  std::printf("%s/frame_0000.png ... frame_%04d.png and %s\n", QDir(options.outputDir).absolutePath().toLocal8Bit().constData(),
-              result.frames - 1, QFileInfo(result.contactSheet).absoluteFilePath().toLocal8Bit().constData());
+  std::printf("%s/frame_0000.png ... frame_%04d.png and %s\n",
+              QDir(options.outputDir).absolutePath().toLocal8Bit().constData(), result.frames - 1,
+              QFileInfo(result.contactSheet).absoluteFilePath().toLocal8Bit().constData());
   return kExitOk;
 }
 
@@ -77,7 +81,8 @@ int windowMode(QApplication& app, const QCommandLineParser& parser, const QSize*
     return kExitUsage;
   }
   player::PlayerWindow window(loadRig(parser));
-  for (const std::string& w : window.rig().warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  for (const std::string& w : window.rig().warnings)
+    std::fprintf(stderr, "warning: %s\n", w.c_str());
   window.resize(size ? *size : QSize(1360, 820));
   const bool screenshot = parser.isSet("screenshot");
   if (screenshot) window.setErrorDialogsEnabled(false);
@@ -91,7 +96,8 @@ int windowMode(QApplication& app, const QCommandLineParser& parser, const QSize*
   bool ok = false;
   const double at = parser.value("at").toDouble(&ok);
   if (!ok) {
-    std::fprintf(stderr, "lacrima-player: --at: expected seconds, got %s\n", parser.value("at").toLocal8Bit().constData());
+    std::fprintf(stderr, "lacrima-player: --at: expected seconds, got %s\n",
+                 parser.value("at").toLocal8Bit().constData());
     return kExitUsage;
   }
   int status = kExitOk;
@@ -116,20 +122,26 @@ int main(int argc, char** argv) {
   // OGRE on Debian renders through GLX: both modes need an X display. Say so before Qt would
   // abort on a missing one.
   const bool render = hasOption(argc, argv, "--render");
-  const bool help = hasOption(argc, argv, "--help") || hasOption(argc, argv, "-h") || hasOption(argc, argv, "--version");
+  const bool help = hasOption(argc, argv, "--help") || hasOption(argc, argv, "-h") ||
+                    hasOption(argc, argv, "--version");
   const bool haveX = !qEnvironmentVariableIsEmpty("DISPLAY");
   if (!haveX && !help) {
     if (render)
-      std::fprintf(stderr, "lacrima-player: --render needs an X display (OGRE renders through GLX) and there is none;\n"
-                           "  run it under a virtual one: xvfb-run -a lacrima-player --render OUT_DIR FILE\n");
+      std::fprintf(
+          stderr,
+          "lacrima-player: --render needs an X display (OGRE renders through GLX) and there is "
+          "none;\n"
+          "  run it under a virtual one: xvfb-run -a lacrima-player --render OUT_DIR FILE\n");
     else
-      std::fprintf(stderr, "lacrima-player: no X display to open a window on (DISPLAY is not set);\n"
-                           "  render images instead: xvfb-run -a lacrima-player --render OUT_DIR FILE\n");
+      std::fprintf(stderr,
+                   "lacrima-player: no X display to open a window on (DISPLAY is not set);\n"
+                   "  render images instead: xvfb-run -a lacrima-player --render OUT_DIR FILE\n");
     return kExitBadInput;
   }
   // The OGRE viewport embeds a GLX window: use X even in a Wayland session (XWayland). Help
   // and version need no display at all.
-  if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", haveX ? "xcb" : "offscreen");
+  if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+    qputenv("QT_QPA_PLATFORM", haveX ? "xcb" : "offscreen");
   QApplication app(argc, argv);
   QCoreApplication::setApplicationName("lacrima-player");
   QCoreApplication::setApplicationVersion(LACRIMA_VERSION);
@@ -146,20 +158,27 @@ int main(int argc, char** argv) {
       "Exit codes: 0 success, 1 bad input or failed write, 2 wrong usage.");
   parser.addHelpOption();
   parser.addVersionOption();
-  parser.addPositionalArgument("FILE", "The animation: a .fap file or a project (.json).", "[FILE]");
+  parser.addPositionalArgument("FILE", "The animation: a .fap file or a project (.json).",
+                               "[FILE]");
   parser.addOptions({
-      {"render", "Render every frame to OUT_DIR/frame_NNNN.png plus contact_sheet.png, then exit (needs an X "
-                 "display: run under xvfb-run).", "OUT_DIR"},
-      {"size", "Image size for --render, window size otherwise (default 1280x720 for --render).", "WxH"},
-      {"mesh", "Your own head (any format assimp reads) instead of the default head; needs --fdp.", "FILE"},
+      {"render",
+       "Render every frame to OUT_DIR/frame_NNNN.png plus contact_sheet.png, then exit (needs an X "
+       "display: run under xvfb-run).",
+       "OUT_DIR"},
+      {"size", "Image size for --render, window size otherwise (default 1280x720 for --render).",
+       "WxH"},
+      {"mesh", "Your own head (any format assimp reads) instead of the default head; needs --fdp.",
+       "FILE"},
       {"fdp", "The feature-point file (*.fdp.json) of --mesh.", "FILE"},
       {"play", "Start playing as soon as the file is open."},
-      {"screenshot", "Grab the whole window to PNG after showing FILE at --at seconds, then exit.", "PNG"},
+      {"screenshot", "Grab the whole window to PNG after showing FILE at --at seconds, then exit.",
+       "PNG"},
       {"at", "Time for --screenshot, in seconds (default 0).", "SECONDS", "0"},
   });
   parser.process(app);
   if (parser.isSet("mesh") != parser.isSet("fdp")) {
-    std::fprintf(stderr, "lacrima-player: --mesh and --fdp go together (a head and its feature points)\n");
+    std::fprintf(stderr,
+                 "lacrima-player: --mesh and --fdp go together (a head and its feature points)\n");
     return kExitUsage;
   }
   QSize size(1280, 720);
@@ -176,7 +195,8 @@ int main(int argc, char** argv) {
     return windowMode(app, parser, parser.isSet("size") ? &size : nullptr);
   } catch (const std::exception& e) {
     const QString input = parser.positionalArguments().value(0);
-    std::fprintf(stderr, "lacrima-player: %s\n", player::describeError(e, input).oneLine.toLocal8Bit().constData());
+    std::fprintf(stderr, "lacrima-player: %s\n",
+                 player::describeError(e, input).oneLine.toLocal8Bit().constData());
     return kExitBadInput;
   }
 }

@@ -35,7 +35,8 @@ BatchRenderResult renderAnimation(const playback::HeadRig& rig, const BatchRende
     const QImage image = renderer.render();
     if (std::binary_search(picked.begin(), picked.end(), f))
       sheet.push_back({image.scaledToWidth(400, Qt::SmoothTransformation), f, t});
-    writer.write(image, out.filePath(QStringLiteral("frame_%1.png").arg(f, 4, 10, QLatin1Char('0'))));
+    writer.write(image,
+                 out.filePath(QStringLiteral("frame_%1.png").arg(f, 4, 10, QLatin1Char('0'))));
     if (options.progress) options.progress(f + 1, frames);
   }
   writer.finish();

@@ -54,7 +54,9 @@ QString clockText(double seconds) {
 }  // namespace
 
 PlayerWindow::PlayerWindow(std::unique_ptr<playback::HeadRig> rig, QWidget* parent)
-    : QMainWindow(parent), rig_(std::move(rig)), playback_(std::make_unique<playback::Playback>(*rig_, kCheckpointInterval)) {
+    : QMainWindow(parent),
+      rig_(std::move(rig)),
+      playback_(std::make_unique<playback::Playback>(*rig_, kCheckpointInterval)) {
   setWindowTitle(tr("Lacrima Player"));
   setAcceptDrops(true);
   sinceStart_.start();
@@ -121,7 +123,8 @@ void PlayerWindow::buildActions() {
   viewMenu_->addAction(resetView_);
   // Application-wide, so the keys also work while the floating Scene panel has the focus;
   // modal dialogs still block them, and text fields keep Space and the arrows for typing.
-  for (QAction* a : {play_, reset_, stepBack_, stepForward_, resetView_}) a->setShortcutContext(Qt::ApplicationShortcut);
+  for (QAction* a : {play_, reset_, stepBack_, stepForward_, resetView_})
+    a->setShortcutContext(Qt::ApplicationShortcut);
   addActions({play_, reset_, stepBack_, stepForward_, resetView_});
 }
 
@@ -144,10 +147,12 @@ void PlayerWindow::buildLayout() {
   }
   timeline_ = new QSlider(Qt::Horizontal, transport);
   timeline_->setFocusPolicy(Qt::NoFocus);
-  timeline_->setToolTip(tr("Drag to scrub; going back replays the tears from the nearest checkpoint"));
+  timeline_->setToolTip(
+      tr("Drag to scrub; going back replays the tears from the nearest checkpoint"));
   bar->addWidget(timeline_, 1);
   timeLabel_ = new QLabel(transport);
-  timeLabel_->setMinimumWidth(timeLabel_->fontMetrics().horizontalAdvance("00:00.00 / 00:00.00") + 8);
+  timeLabel_->setMinimumWidth(timeLabel_->fontMetrics().horizontalAdvance("00:00.00 / 00:00.00") +
+                              8);
   bar->addWidget(timeLabel_);
   connect(timeline_, &QSlider::sliderPressed, this, [this] {
     playAfterScrub_ = playing();
@@ -232,17 +237,20 @@ bool PlayerWindow::openFile(const QString& path) {
   }
   const QFileInfo info(path);
   setWindowTitle(tr("%1 - Lacrima Player").arg(info.fileName()));
-  QString summary = tr("%1: %2 frames at %3 fps, %4 s%5")
-                        .arg(info.fileName())
-                        .arg(playback_->frameCount())
-                        .arg(playback_->frameRate())
-                        .arg(playback_->duration(), 0, 'f', 2)
-                        .arg(playback_->hasTears() ? tr(", with tears") : tr(", no tears (nothing simulated)"));
+  QString summary =
+      tr("%1: %2 frames at %3 fps, %4 s%5")
+          .arg(info.fileName())
+          .arg(playback_->frameCount())
+          .arg(playback_->frameRate())
+          .arg(playback_->duration(), 0, 'f', 2)
+          .arg(playback_->hasTears() ? tr(", with tears") : tr(", no tears (nothing simulated)"));
   if (!playback_->warnings().empty())
-    summary += tr("; %n warning(s), the first: %1", nullptr, static_cast<int>(playback_->warnings().size()))
+    summary += tr("; %n warning(s), the first: %1", nullptr,
+                  static_cast<int>(playback_->warnings().size()))
                    .arg(QString::fromStdString(playback_->warnings().front().toString()));
   statusBar()->showMessage(summary);
-  for (const Diagnostic& d : playback_->warnings()) std::fprintf(stderr, "warning: %s\n", d.toString().c_str());
+  for (const Diagnostic& d : playback_->warnings())
+    std::fprintf(stderr, "warning: %s\n", d.toString().c_str());
   display(playback_->view());
   updateTransport();
   emit fileOpened(path);
@@ -252,11 +260,13 @@ bool PlayerWindow::openFile(const QString& path) {
 void PlayerWindow::reportError(const std::exception& error, const QString& path) {
   const ErrorReport report = describeError(error, path);
   std::fprintf(stderr, "lacrima-player: %s\n", report.oneLine.toLocal8Bit().constData());
-  statusBar()->showMessage(tr("Could not open %1 (the previous animation is still loaded)").arg(QFileInfo(path).fileName()));
+  statusBar()->showMessage(tr("Could not open %1 (the previous animation is still loaded)")
+                               .arg(QFileInfo(path).fileName()));
   emit openFailed(report.oneLine);
   if (!errorDialogs_) return;
-  auto* box = new QMessageBox(QMessageBox::Critical, tr("Cannot open %1").arg(QFileInfo(path).fileName()),
-                              report.html(), QMessageBox::Ok, this);
+  auto* box =
+      new QMessageBox(QMessageBox::Critical, tr("Cannot open %1").arg(QFileInfo(path).fileName()),
+                      report.html(), QMessageBox::Ok, this);
   box->setObjectName("openErrorDialog");
   box->setDetailedText(report.oneLine);
   box->setAttribute(Qt::WA_DeleteOnClose);
@@ -269,7 +279,8 @@ void PlayerWindow::chooseFile() {
                           : QFileInfo(QString::fromStdString(playback_->path())).absolutePath();
   const QString path = QFileDialog::getOpenFileName(
       this, tr("Open an animation"), dir,
-      tr("Animations (*.fap *.json *.lacrima);;FAP files (*.fap);;Lacrima projects (*.json *.lacrima);;All files (*)"));
+      tr("Animations (*.fap *.json *.lacrima);;FAP files (*.fap);;Lacrima projects (*.json "
+         "*.lacrima);;All files (*)"));
   if (!path.isEmpty()) openFile(path);
 }
 
@@ -362,12 +373,16 @@ void PlayerWindow::updateTransport() {
     timeline_->setValue(static_cast<int>(std::lround(playback_->currentTime() * 1000)));
   }
   play_->setEnabled(loaded);
-  timeLabel_->setText(clockText(playback_->currentTime()) + " / " + clockText(playback_->duration()));
-  frameLabel_->setText(loaded ? tr("frame %1 / %2").arg(playback_->currentFrame()).arg(playback_->frameCount() - 1)
-                              : tr("no animation"));
+  timeLabel_->setText(clockText(playback_->currentTime()) + " / " +
+                      clockText(playback_->duration()));
+  frameLabel_->setText(
+      loaded ? tr("frame %1 / %2").arg(playback_->currentFrame()).arg(playback_->frameCount() - 1)
+             : tr("no animation"));
   const playback::ProducerTimes& t = playback_->producer().lastTimes();
   const int particles = playback_->producer().particleCount();
-  tearsLabel_->setText(particles > 0 ? tr("%1 tear particles (%2 ms)").arg(particles).arg(t.simulation + t.surface + t.trails, 0, 'f', 1)
+  tearsLabel_->setText(particles > 0 ? tr("%1 tear particles (%2 ms)")
+                                           .arg(particles)
+                                           .arg(t.simulation + t.surface + t.trails, 0, 'f', 1)
                                      : (playback_->hasTears() ? tr("no tears now") : QString()));
 }
 
@@ -383,7 +398,8 @@ void PlayerWindow::countRender() {
   renderTimes_.push_back(now);
   while (!renderTimes_.empty() && renderTimes_.front() < now - 1000) renderTimes_.pop_front();
   // Over the last second, or since the first render of a burst when that is shorter.
-  const double span = renderTimes_.size() > 1 ? static_cast<double>(renderTimes_.back() - renderTimes_.front()) : 0;
+  const double span =
+      renderTimes_.size() > 1 ? static_cast<double>(renderTimes_.back() - renderTimes_.front()) : 0;
   fps_ = span > 0 ? (static_cast<double>(renderTimes_.size()) - 1) * 1000.0 / span : 0;
   fpsLabel_->setText(playing() ? tr("%1 fps").arg(fps_, 0, 'f', 0) : tr("paused"));
 }

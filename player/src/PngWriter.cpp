@@ -11,7 +11,8 @@ void savePng(const QImage& image, const QString& path) {
   // about 30% larger than the default level and four times faster.
   const QImage rgb = image.hasAlphaChannel() ? image.convertToFormat(QImage::Format_RGB888) : image;
   if (!rgb.save(path, "PNG", 80))
-    throw FileError({path.toStdString(), 0, 0}, "cannot write the PNG image (folder not writable or disk full?)");
+    throw FileError({path.toStdString(), 0, 0},
+                    "cannot write the PNG image (folder not writable or disk full?)");
 }
 
 PngWriter::PngWriter(int inFlight) : inFlight_(std::max(1, inFlight)) {}
@@ -30,7 +31,8 @@ void PngWriter::waitOldest() {
 
 void PngWriter::write(QImage image, const QString& path) {
   while (static_cast<int>(pending_.size()) >= inFlight_) waitOldest();
-  pending_.push_back(std::async(std::launch::async, [image = std::move(image), path] { savePng(image, path); }));
+  pending_.push_back(
+      std::async(std::launch::async, [image = std::move(image), path] { savePng(image, path); }));
 }
 
 void PngWriter::finish() {

@@ -17,7 +17,8 @@ namespace {
 
 // "node_size" -> "Node size"
 QString label(std::string_view name) {
-  QString text = QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())).replace('_', ' ');
+  QString text =
+      QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())).replace('_', ' ');
   text[0] = text[0].toUpper();
   return text;
 }
@@ -37,17 +38,20 @@ TearParametersPanel::TearParametersPanel(QWidget* parent) : QWidget(parent) {
     const int decimals = decimalsFor(info.defaultValue);
     box->setDecimals(decimals);
     // The smallest step the box can show must stay in range (iso and the lengths are > 0).
-    box->setRange(std::max(info.minValue, info.minValue > 0 ? std::pow(10.0, -decimals) : 0.0), info.maxValue);
+    box->setRange(std::max(info.minValue, info.minValue > 0 ? std::pow(10.0, -decimals) : 0.0),
+                  info.maxValue);
     box->setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
     box->setValue(info.defaultValue);
     box->setKeyboardTracking(false);
     box->setAccelerated(true);
     box->setToolTip(QStringLiteral("%1\n2009 value: %2; range %3 to %4")
-                        .arg(QString::fromUtf8(info.description.data(), static_cast<qsizetype>(info.description.size())))
+                        .arg(QString::fromUtf8(info.description.data(),
+                                               static_cast<qsizetype>(info.description.size())))
                         .arg(info.defaultValue)
                         .arg(info.minValue)
                         .arg(info.maxValue));
-    box->setObjectName(QString::fromUtf8(info.name.data(), static_cast<qsizetype>(info.name.size())));
+    box->setObjectName(
+        QString::fromUtf8(info.name.data(), static_cast<qsizetype>(info.name.size())));
     form->addRow(label(info.name), box);
     boxes_.push_back(box);
   }
@@ -88,7 +92,8 @@ void TearParametersPanel::setShown(const TearParameterValues& values) {
   settle_->stop();
 }
 
-void TearParametersPanel::display(const TearParameterValues& values, const TearParameterValues& fileValues) {
+void TearParametersPanel::display(const TearParameterValues& values,
+                                  const TearParameterValues& fileValues) {
   fileValues_ = fileValues;
   file_->setEnabled(!fileValues.empty());
   setShown(values);
@@ -100,7 +105,8 @@ TearParameterValues TearParametersPanel::values() const {
   for (std::size_t i = 0; i < boxes_.size(); ++i) {
     const double shown = boxes_[i]->value();
     // The box rounds to its decimals; a value that rounds to the default is the default.
-    const double defaultShown = QString::number(table[i].defaultValue, 'f', boxes_[i]->decimals()).toDouble();
+    const double defaultShown =
+        QString::number(table[i].defaultValue, 'f', boxes_[i]->decimals()).toDouble();
     if (shown != defaultShown) values[std::string(table[i].name)] = shown;
   }
   return values;

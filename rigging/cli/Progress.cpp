@@ -20,7 +20,8 @@ void Progress::update(double fraction, std::string_view stage) {
     const std::string_view kind = stage.substr(0, stage.find(" of "));
     if (kind == lastStage_) return;
     lastStage_ = std::string(kind);
-    std::fprintf(stderr, "lacrima-rig: %3d%% %.*s\n", percent, static_cast<int>(kind.size()), kind.data());
+    std::fprintf(stderr, "lacrima-rig: %3d%% %.*s\n", percent, static_cast<int>(kind.size()),
+                 kind.data());
     return;
   }
   if (percent == lastPercent_ && stage == lastStage_) return;
@@ -28,8 +29,8 @@ void Progress::update(double fraction, std::string_view stage) {
   lastStage_ = std::string(stage);
   constexpr int kWidth = 30;
   const int filled = percent * kWidth / 100;
-  std::fprintf(stderr, "\r[%.*s%*s] %3d%% %-32.32s", filled, "##############################", kWidth - filled, "",
-               percent, lastStage_.c_str());
+  std::fprintf(stderr, "\r[%.*s%*s] %3d%% %-32.32s", filled, "##############################",
+               kWidth - filled, "", percent, lastStage_.c_str());
   std::fflush(stderr);
   open_ = true;
 }

@@ -7,7 +7,7 @@
 namespace lacrima {
 
 class Progress {
-public:
+ public:
   Progress();
   ~Progress();  // ends a bar line that is still open
   Progress(const Progress&) = delete;
@@ -15,9 +15,9 @@ public:
 
   void update(double fraction, std::string_view stage);
 
-private:
+ private:
   bool terminal_;
-  bool open_ = false;   // a bar is on the current line
+  bool open_ = false;  // a bar is on the current line
   int lastPercent_ = -1;
   std::string lastStage_;
 };

@@ -9,11 +9,11 @@
 #include <lacrima/common/FapTable.h>
 #include <lacrima/common/MediaFiles.h>
 #include <lacrima/common/PoseSet.h>
+#include <lacrima/exporters/GlbExport.h>
+#include <lacrima/exporters/OgreMeshExport.h>
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/rigging/FeaturePointFile.h>
-#include <lacrima/exporters/GlbExport.h>
 #include <lacrima/rigging/MeshImport.h>
-#include <lacrima/exporters/OgreMeshExport.h>
 #include <lacrima/rigging/RigBuilder.h>
 #include <lacrima/rigging/RigDescription.h>
 #include <lacrima/rigging/SkinTopology.h>
@@ -65,7 +65,8 @@ void printWarnings(const Warnings& warnings) {
   for (const Diagnostic& d : warnings) std::fprintf(stderr, "warning: %s\n", d.toString().c_str());
 }
 
-PreviewPoints pointsForPreview(const HeadMesh& mesh, const rigging::FeaturePointFile& fdp, const rigging::BuiltRig* rig) {
+PreviewPoints pointsForPreview(const HeadMesh& mesh, const rigging::FeaturePointFile& fdp,
+                               const rigging::BuiltRig* rig) {
   PreviewPoints points;
   for (const auto& [id, spec] : fdp.points) points[id] = rigging::surfacePosition(spec.at, mesh);
   if (rig) {
@@ -88,21 +89,28 @@ int run(QCommandLineParser& parser) {
   const bool useDefault = parser.isSet("default");
   if (useDefault == parser.isSet("mesh"))
     throw UsageError("choose the head: --default, or --mesh FILE with --fdp FILE");
-  if (parser.isSet("mesh") && !parser.isSet("fdp")) throw UsageError("--mesh needs --fdp FILE (its feature points)");
-  const bool wantRig = parser.isSet("output") || parser.isSet("report") || parser.isSet("pose-image");
+  if (parser.isSet("mesh") && !parser.isSet("fdp"))
+    throw UsageError("--mesh needs --fdp FILE (its feature points)");
+  const bool wantRig =
+      parser.isSet("output") || parser.isSet("report") || parser.isSet("pose-image");
   if (!wantRig && !parser.isSet("fdp-image"))
     throw UsageError("nothing to do: give -o DIR, --report, --fdp-image or --pose-image");
-  if (parser.isSet("fap") && !parser.isSet("pose-image")) throw UsageError("--fap only applies to --pose-image");
+  if (parser.isSet("fap") && !parser.isSet("pose-image"))
+    throw UsageError("--fap only applies to --pose-image");
   std::optional<rigging::GeodesicMethod> method;
   if (parser.isSet("geodesics")) {
     const QString m = parser.value("geodesics");
-    if (m == "dijkstra") method = rigging::GeodesicMethod::Dijkstra;
-    else if (m == "heat") method = rigging::GeodesicMethod::Heat;
-    else throw UsageError("--geodesics: expected dijkstra or heat, got " + m.toStdString());
+    if (m == "dijkstra")
+      method = rigging::GeodesicMethod::Dijkstra;
+    else if (m == "heat")
+      method = rigging::GeodesicMethod::Heat;
+    else
+      throw UsageError("--geodesics: expected dijkstra or heat, got " + m.toStdString());
   }
   bool sizeOk = false;
   const int panelSize = parser.value("image-size").toInt(&sizeOk);
-  if (!sizeOk || panelSize < 100 || panelSize > 4000) throw UsageError("--image-size: expected 100 to 4000 pixels");
+  if (!sizeOk || panelSize < 100 || panelSize > 4000)
+    throw UsageError("--image-size: expected 100 to 4000 pixels");
   const FapValues values = parseFapValues(parser.values("fap"));
 
   QElapsedTimer timer;
@@ -111,8 +119,9 @@ int run(QCommandLineParser& parser) {
   std::string fdpPath = parser.value("fdp").toStdString();
   if (useDefault) {
     if (!rigging::defaultHeadAvailable())
-      throw FileError({rigging::defaultHeadPackageDir(), 0, 0},
-                      "the default head is not in the cache; run packaging/fetch-default-head.sh first");
+      throw FileError(
+          {rigging::defaultHeadPackageDir(), 0, 0},
+          "the default head is not in the cache; run packaging/fetch-default-head.sh first");
     mesh = rigging::loadDefaultHead();
     if (fdpPath.empty()) fdpPath = findMediaFile("default-head.fdp.json");
   } else {
@@ -140,18 +149,22 @@ int run(QCommandLineParser& parser) {
   const double rigSeconds = static_cast<double>(timer.elapsed()) / 1000.0;
   if (rig) {
     for (const std::string& w : rig->warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-    std::fprintf(stderr, "lacrima-rig: loaded and rigged %d vertices in %.2f s\n", mesh.vertexCount(), rigSeconds);
+    std::fprintf(stderr, "lacrima-rig: loaded and rigged %d vertices in %.2f s\n",
+                 mesh.vertexCount(), rigSeconds);
   }
 
   if (parser.isSet("output")) {
     const QString dir = parser.value("output");
-    if (!QDir().mkpath(dir)) throw FileError({dir.toStdString(), 0, 0}, "cannot create the output folder");
+    if (!QDir().mkpath(dir))
+      throw FileError({dir.toStdString(), 0, 0}, "cannot create the output folder");
     const std::string base = QDir(dir).absolutePath().toStdString() + "/";
     exporters::exportOgreMesh(mesh, rig->poses, base + "head.mesh");
     exporters::exportGlb(mesh, rig->poses, base + "head.glb");
     saveAtomically(base + "rig.json", rigging::rigDescriptionJson(mesh, *rig));
-    std::fprintf(stderr, "lacrima-rig: wrote %shead.mesh, head.material, head.glb, rig.json (%.2f s in all)\n",
-                 base.c_str(), static_cast<double>(timer.elapsed()) / 1000.0);
+    std::fprintf(
+        stderr,
+        "lacrima-rig: wrote %shead.mesh, head.material, head.glb, rig.json (%.2f s in all)\n",
+        base.c_str(), static_cast<double>(timer.elapsed()) / 1000.0);
   }
   if (parser.isSet("report")) {
     const std::string report = rigging::rigReportJson(mesh, *rig);
@@ -163,13 +176,16 @@ int run(QCommandLineParser& parser) {
     if (rig) {
       preview = *rig;
     } else {
-      for (auto [spec, out] : {std::pair{&fdp.eyeLeft, &preview.eyeCentreLeft}, std::pair{&fdp.eyeRight, &preview.eyeCentreRight}}) {
-        if (spec->centre) *out = *spec->centre;
+      for (auto [spec, out] : {std::pair{&fdp.eyeLeft, &preview.eyeCentreLeft},
+                               std::pair{&fdp.eyeRight, &preview.eyeCentreRight}}) {
+        if (spec->centre)
+          *out = *spec->centre;
         else if (!spec->submeshes.empty()) {
           std::vector<Eigen::Vector3d> pts;
           for (const std::string& name : spec->submeshes) {
             const HeadSubmesh& s = *mesh.findSubmesh(name);
-            for (int v = 0; v < s.vertexCount; ++v) pts.push_back(mesh.positions.col(s.firstVertex + v).cast<double>());
+            for (int v = 0; v < s.vertexCount; ++v)
+              pts.push_back(mesh.positions.col(s.firstVertex + v).cast<double>());
           }
           Eigen::Matrix3Xd m(3, static_cast<Eigen::Index>(pts.size()));
           for (std::size_t k = 0; k < pts.size(); ++k) m.col(static_cast<Eigen::Index>(k)) = pts[k];
@@ -180,9 +196,10 @@ int run(QCommandLineParser& parser) {
       preview.tearLeft.position = preview.tearRight.position = preview.neckPivot;
     }
     const PreviewPoints points = pointsForPreview(mesh, fdp, &preview);
-    savePng(exporters::renderHeadPreview(mesh, mesh.positions, previewPanels(mesh, points), previewMarkers(points),
-                              previewStyle(mesh, fdp, panelSize)),
-            parser.value("fdp-image").toStdString());
+    savePng(
+        exporters::renderHeadPreview(mesh, mesh.positions, previewPanels(mesh, points),
+                                     previewMarkers(points), previewStyle(mesh, fdp, panelSize)),
+        parser.value("fdp-image").toStdString());
   }
   if (parser.isSet("pose-image")) {
     const PoseBlender blender(mesh, rig->poses);
@@ -200,9 +217,13 @@ int run(QCommandLineParser& parser) {
     QString title;
     for (int fap = 1; fap <= kChannelCount; ++fap)
       if (const float v = values[static_cast<std::size_t>(channelIndex(fap))]; v != 0.0f)
-        title += QString(" %1=%2").arg(QString::fromUtf8(fapInfo(fap).name.data(), static_cast<qsizetype>(fapInfo(fap).name.size()))).arg(v);
+        title += QString(" %1=%2")
+                     .arg(QString::fromUtf8(fapInfo(fap).name.data(),
+                                            static_cast<qsizetype>(fapInfo(fap).name.size())))
+                     .arg(v);
     for (exporters::PreviewPanel& p : panels) p.title += title;
-    savePng(exporters::renderHeadPreview(mesh, positions, panels, previewMarkers(points), previewStyle(mesh, fdp, panelSize)),
+    savePng(exporters::renderHeadPreview(mesh, positions, panels, previewMarkers(points),
+                                         previewStyle(mesh, fdp, panelSize)),
             parser.value("pose-image").toStdString());
   }
   return kExitOk;
@@ -233,16 +254,20 @@ int main(int argc, char** argv) {
       {"default", "Rig the default MakeHuman head (fetched by packaging/fetch-default-head.sh)."},
       {"mesh", "Rig this head file (any format assimp reads).", "FILE"},
       {"fdp", "Feature-point file (*.fdp.json); default head: the bundled one.", "FILE"},
-      {{"o", "output"}, "Write head.mesh, head.material, textures, head.glb and rig.json here.", "DIR"},
+      {{"o", "output"},
+       "Write head.mesh, head.material, textures, head.glb and rig.json here.",
+       "DIR"},
       {"geodesics", "Distance for influence falloff: dijkstra (default) or heat.", "METHOD"},
       {"report", "Print FAPU values and per-FAP checks as JSON on stdout."},
       {"fdp-image", "Render the neutral head with its feature points to a PNG.", "PNG"},
       {"pose-image", "Render the posed head (see --fap) with its feature points to a PNG.", "PNG"},
-      {"fap", "A FAP value for --pose-image, e.g. 3=400 or open_jaw=400 (repeatable).", "FAP=VALUE"},
+      {"fap", "A FAP value for --pose-image, e.g. 3=400 or open_jaw=400 (repeatable).",
+       "FAP=VALUE"},
       {"image-size", "Pixels per image panel (default 600).", "N", "600"},
   });
   if (!parser.parse(QCoreApplication::arguments())) {
-    std::fprintf(stderr, "lacrima-rig: %s\n(see lacrima-rig --help)\n", qPrintable(parser.errorText()));
+    std::fprintf(stderr, "lacrima-rig: %s\n(see lacrima-rig --help)\n",
+                 qPrintable(parser.errorText()));
     return kExitUsage;
   }
   if (parser.isSet("help")) {

@@ -25,7 +25,8 @@ Eigen::VectorXd dijkstraDistances(const SurfaceGraph& graph, const Eigen::Vector
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> heap;
   for (Eigen::Index k = 0; k < sources.size(); ++k) {
     const int v = sources[k];
-    const int node = v >= 0 && v < graph.meshVertexCount ? graph.nodeOfVertex[static_cast<size_t>(v)] : -1;
+    const int node =
+        v >= 0 && v < graph.meshVertexCount ? graph.nodeOfVertex[static_cast<size_t>(v)] : -1;
     if (node < 0)
       throw std::invalid_argument("dijkstraDistances: source vertex " + std::to_string(v) +
                                   " is not in the surface graph");

@@ -17,7 +17,7 @@ namespace {
 // Below this ratio of twice the area to the summed squared edge lengths a triangle counts as
 // flat: the ratio is ~0.29 for an equilateral triangle and ~sin(angle)/2 for a needle.
 constexpr double kFlatRatio = 1e-4;
-constexpr double kMassFloor = 1e-12;    // relative to the mean lumped mass
+constexpr double kMassFloor = 1e-12;     // relative to the mean lumped mass
 constexpr double kPoissonShift = 1e-12;  // relative to the mean diagonal of -L
 
 }  // namespace
@@ -97,7 +97,8 @@ HeatGeodesics::HeatGeodesics(const SurfaceGraph& graph, double timeFactor, bool 
     for (Eigen::SparseMatrix<double>::InnerIterator it(L, col); it; ++it)
       if (!pinned[static_cast<size_t>(it.row())] && !pinned[static_cast<size_t>(it.col())])
         poisson.emplace_back(static_cast<int>(it.row()), static_cast<int>(it.col()), -it.value());
-  for (int i = 0; i < n; ++i) poisson.emplace_back(i, i, pinned[static_cast<size_t>(i)] ? 1.0 : shift);
+  for (int i = 0; i < n; ++i)
+    poisson.emplace_back(i, i, pinned[static_cast<size_t>(i)] ? 1.0 : shift);
   Eigen::SparseMatrix<double> A(n, n);
   A.setFromTriplets(poisson.begin(), poisson.end());
   poisson_.compute(A);

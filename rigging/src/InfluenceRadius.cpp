@@ -17,8 +17,9 @@ int parsePart(std::string_view text) {
 
 double positive(double value, const char* unit, std::string_view featurePoint) {
   if (!(value > 0) || !std::isfinite(value))
-    throw std::invalid_argument("defaultInfluenceRadius: " + std::string(unit) + " for feature point " +
-                                std::string(featurePoint) + " is not a positive distance");
+    throw std::invalid_argument("defaultInfluenceRadius: " + std::string(unit) +
+                                " for feature point " + std::string(featurePoint) +
+                                " is not a positive distance");
   return value;
 }
 

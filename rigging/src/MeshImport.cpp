@@ -2,10 +2,10 @@
 
 #include <lacrima/common/Diagnostics.h>
 
-#include <assimp/Importer.hpp>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 
 #include <algorithm>
 #include <filesystem>
@@ -101,8 +101,9 @@ HeadMesh importHeadMesh(const std::string& path) {
   // JoinIdenticalVertices merges the OBJ reader's per-corner copies (same position, uv and
   // normal), so a vertex index names a point of the head and poses stay small. Its numbering
   // is first-use order, deterministic for a file (see the header).
-  const aiScene* scene = importer.ReadFile(
-      path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure);
+  const aiScene* scene =
+      importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                  aiProcess_ValidateDataStructure);
   if (!scene) fail(path, std::string("assimp cannot read it: ") + importer.GetErrorString());
   if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode)
     fail(path, "assimp read an incomplete scene (no mesh data)");

@@ -29,7 +29,7 @@ bool contains(const std::vector<std::string>& names, const std::string& name) {
 // Nearest vertex of `candidates` to each of `queries`, by a uniform grid over the candidates
 // (cell ~ mean spacing), searched in growing shells until the best hit is certain.
 class NearestVertex {
-public:
+ public:
   NearestVertex(const Eigen::Matrix3Xf& positions, std::vector<int> candidates)
       : positions_(positions), candidates_(std::move(candidates)) {
     lo_ = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
@@ -39,10 +39,12 @@ public:
       hi = hi.cwiseMax(positions_.col(v).cast<double>());
     }
     const double volume = std::max((hi - lo_).prod(), 1e-30);
-    cell_ = std::max(std::cbrt(volume / std::max<double>(1.0, static_cast<double>(candidates_.size()))), 1e-9);
+    cell_ = std::max(
+        std::cbrt(volume / std::max<double>(1.0, static_cast<double>(candidates_.size()))), 1e-9);
     dims_ = ((hi - lo_) / cell_).array().floor().cast<int>() + 1;
     cells_.resize(static_cast<std::size_t>(dims_.prod()));
-    for (int v : candidates_) cells_[static_cast<std::size_t>(flat(cellOf(positions_.col(v).cast<double>())))].push_back(v);
+    for (int v : candidates_)
+      cells_[static_cast<std::size_t>(flat(cellOf(positions_.col(v).cast<double>())))].push_back(v);
   }
 
   int nearest(const Eigen::Vector3d& p) const {
@@ -53,8 +55,10 @@ public:
       for (int x = c.x() - ring; x <= c.x() + ring; ++x)
         for (int y = c.y() - ring; y <= c.y() + ring; ++y)
           for (int z = c.z() - ring; z <= c.z() + ring; ++z) {
-            if (std::max({std::abs(x - c.x()), std::abs(y - c.y()), std::abs(z - c.z())}) != ring) continue;
-            if (x < 0 || y < 0 || z < 0 || x >= dims_.x() || y >= dims_.y() || z >= dims_.z()) continue;
+            if (std::max({std::abs(x - c.x()), std::abs(y - c.y()), std::abs(z - c.z())}) != ring)
+              continue;
+            if (x < 0 || y < 0 || z < 0 || x >= dims_.x() || y >= dims_.y() || z >= dims_.z())
+              continue;
             for (int v : cells_[static_cast<std::size_t>(flat({x, y, z}))]) {
               const double d2 = (positions_.col(v).cast<double>() - p).squaredNorm();
               if (d2 < bestD2) bestD2 = d2, best = v;
@@ -66,12 +70,14 @@ public:
     return best;
   }
 
-private:
+ private:
   Eigen::Vector3i cellOf(const Eigen::Vector3d& p) const {
     Eigen::Vector3i c = ((p - lo_) / cell_).array().floor().cast<int>();
     return c.cwiseMax(0).cwiseMin(dims_ - Eigen::Vector3i::Ones());
   }
-  int flat(const Eigen::Vector3i& c) const { return (c.z() * dims_.y() + c.y()) * dims_.x() + c.x(); }
+  int flat(const Eigen::Vector3i& c) const {
+    return (c.z() * dims_.y() + c.y()) * dims_.x() + c.x();
+  }
 
   const Eigen::Matrix3Xf& positions_;
   std::vector<int> candidates_;
@@ -85,7 +91,8 @@ private:
 // and vertices ascending.
 void merge(FeaturePointInfluence& influence, const std::vector<std::pair<int, float>>& extra) {
   std::map<int, float> all;
-  for (std::size_t k = 0; k < influence.vertices.size(); ++k) all[influence.vertices[k]] = influence.weights[k];
+  for (std::size_t k = 0; k < influence.vertices.size(); ++k)
+    all[influence.vertices[k]] = influence.weights[k];
   for (const auto& [v, w] : extra) {
     float& slot = all[v];
     slot = std::max(slot, w);
@@ -105,17 +112,20 @@ RotationGroup eyeGroup(const HeadMesh& mesh, const EyeSpec& spec, const std::str
   if (spec.submeshes.empty()) return group;
   group.vertices = verticesOf(mesh, spec.submeshes);
   if (group.vertices.empty())
-    throw FileError({path, 0, 0}, "submeshes.eye_" + side + ": the eye's sub-meshes have no vertices");
+    throw FileError({path, 0, 0},
+                    "submeshes.eye_" + side + ": the eye's sub-meshes have no vertices");
   if (spec.centre) {
     centre = *spec.centre;
   } else {
     Eigen::Matrix3Xd points(3, static_cast<Eigen::Index>(group.vertices.size()));
     for (std::size_t k = 0; k < group.vertices.size(); ++k)
-      points.col(static_cast<Eigen::Index>(k)) = mesh.positions.col(group.vertices[k]).cast<double>();
+      points.col(static_cast<Eigen::Index>(k)) =
+          mesh.positions.col(group.vertices[k]).cast<double>();
     const auto sphere = fitSphere(points);
     if (!sphere)
-      throw FileError({path, 0, 0}, "eyes." + side + ".centre: not given, and the " + side +
-                                        " eye's vertices do not span a sphere to fit one to; give it");
+      throw FileError({path, 0, 0},
+                      "eyes." + side + ".centre: not given, and the " + side +
+                          " eye's vertices do not span a sphere to fit one to; give it");
     centre = sphere->centre;
     radius = sphere->radius;
   }
@@ -127,7 +137,8 @@ TearSource tearSourceAt(const HeadMesh& mesh, int vertex) {
   TearSource t;
   t.vertex = vertex;
   t.position = mesh.positions.col(vertex).cast<double>();
-  if (mesh.normals.cols() == mesh.positions.cols()) t.normal = mesh.normals.col(vertex).cast<double>().normalized();
+  if (mesh.normals.cols() == mesh.positions.cols())
+    t.normal = mesh.normals.col(vertex).cast<double>().normalized();
   return t;
 }
 
@@ -146,10 +157,11 @@ BuiltRig buildRig(const HeadMesh& mesh, const FeaturePointFile& fdp, const RigOp
     const std::vector<int> bound = surfaceVertices(spec.at, mesh);
     auto& binding = rig.bindings[id];
     for (std::size_t k = 0; k < bound.size(); ++k)
-      binding.emplace_back(bound[k], bound.size() == 1 ? 1.0 : spec.at.barycentric[static_cast<Eigen::Index>(k)]);
+      binding.emplace_back(
+          bound[k], bound.size() == 1 ? 1.0 : spec.at.barycentric[static_cast<Eigen::Index>(k)]);
   }
   const auto& fp = rig.featurePoints;
-  FapuReferencePoints ref{fp.at("3.1"), fp.at("3.2"), fp.at("3.3"), fp.at("3.4"), fp.at("3.5"),
+  FapuReferencePoints ref{fp.at("3.1"), fp.at("3.2"),  fp.at("3.3"), fp.at("3.4"), fp.at("3.5"),
                           fp.at("3.6"), fp.at("9.15"), fp.at("2.2"), fp.at("8.3"), fp.at("8.4")};
   try {
     rig.fapu = computeFapu(ref);
@@ -184,27 +196,32 @@ BuiltRig buildRig(const HeadMesh& mesh, const FeaturePointFile& fdp, const RigOp
   // Heat factors the whole skin once; build only the solvers the points ask for.
   progress(0.1, needHeat ? "factoring the heat method" : "surface graphs");
   std::unique_ptr<InfluenceWeights> skinDijkstra, skinHeat, tongueWeights;
-  if (needDijkstra) skinDijkstra = std::make_unique<InfluenceWeights>(skinGraph, GeodesicMethod::Dijkstra);
+  if (needDijkstra)
+    skinDijkstra = std::make_unique<InfluenceWeights>(skinGraph, GeodesicMethod::Dijkstra);
   if (needHeat) skinHeat = std::make_unique<InfluenceWeights>(skinGraph, GeodesicMethod::Heat);
   if (!fdp.tongue.empty())
-    tongueWeights = std::make_unique<InfluenceWeights>(buildSurfaceGraph(mesh, fdp.tongue), GeodesicMethod::Dijkstra);
+    tongueWeights = std::make_unique<InfluenceWeights>(buildSurfaceGraph(mesh, fdp.tongue),
+                                                       GeodesicMethod::Dijkstra);
 
   // Attached vertices copy the weight of their nearest skin vertex.
   const std::vector<int> attached = verticesOf(mesh, fdp.attached);
   std::vector<int> attachedTo;
   if (!attached.empty()) {
     const NearestVertex nearestSkin(mesh.positions, verticesOf(mesh, fdp.skin));
-    for (int v : attached) attachedTo.push_back(nearestSkin.nearest(mesh.positions.col(v).cast<double>()));
+    for (int v : attached)
+      attachedTo.push_back(nearestSkin.nearest(mesh.positions.col(v).cast<double>()));
   }
 
   const std::size_t total = fdp.points.size();
   std::size_t done = 0;
   for (const auto& [id, spec] : fdp.points) {
-    progress(0.15 + 0.7 * static_cast<double>(done++) / static_cast<double>(std::max<std::size_t>(total, 1)),
+    progress(0.15 + 0.7 * static_cast<double>(done++) /
+                        static_cast<double>(std::max<std::size_t>(total, 1)),
              "influence of " + id);
     const std::string& sub = spec.at.submesh;
     const std::vector<int> sources = surfaceVertices(spec.at, mesh);
-    const Eigen::VectorXi src = Eigen::Map<const Eigen::VectorXi>(sources.data(), static_cast<Eigen::Index>(sources.size()));
+    const Eigen::VectorXi src = Eigen::Map<const Eigen::VectorXi>(
+        sources.data(), static_cast<Eigen::Index>(sources.size()));
     FeaturePointInfluence influence;
     if (contains(fdp.eyeLeft.submeshes, sub) || contains(fdp.eyeRight.submeshes, sub)) {
       const RotationGroup& eye = contains(fdp.eyeLeft.submeshes, sub) ? in.eyeLeft : in.eyeRight;
@@ -216,18 +233,25 @@ BuiltRig buildRig(const HeadMesh& mesh, const FeaturePointFile& fdp, const RigOp
       try {
         radius = spec.radius.value_or(defaultInfluenceRadius(rig.fapu, id));
       } catch (const std::invalid_argument& e) {
-        throw FileError({path, 0, 0}, "points.\"" + id + "\": no default radius (" + e.what() + "); give \"radius\"");
+        throw FileError({path, 0, 0}, "points.\"" + id + "\": no default radius (" + e.what() +
+                                          "); give \"radius\"");
       }
-      const GeodesicMethod m = onSkin ? spec.geodesics.value_or(fileMethod) : GeodesicMethod::Dijkstra;
-      const InfluenceWeights& solver = !onSkin ? *tongueWeights : m == GeodesicMethod::Heat ? *skinHeat : *skinDijkstra;
-      influence = sources.size() == 1 ? solver.atVertex(sources[0], radius)
-                                      : solver.atTriangle(Eigen::Vector3i(sources[0], sources[1], sources[2]), radius);
+      const GeodesicMethod m =
+          onSkin ? spec.geodesics.value_or(fileMethod) : GeodesicMethod::Dijkstra;
+      const InfluenceWeights& solver = !onSkin                     ? *tongueWeights
+                                       : m == GeodesicMethod::Heat ? *skinHeat
+                                                                   : *skinDijkstra;
+      influence =
+          sources.size() == 1
+              ? solver.atVertex(sources[0], radius)
+              : solver.atTriangle(Eigen::Vector3i(sources[0], sources[1], sources[2]), radius);
       rig.radii[id] = radius;
       rig.methods[id] = m;
       if (onSkin && !attached.empty()) {
         // Dense lookup of this point's skin weights for the attachments.
         std::map<int, float> weightOf;
-        for (std::size_t k = 0; k < influence.vertices.size(); ++k) weightOf[influence.vertices[k]] = influence.weights[k];
+        for (std::size_t k = 0; k < influence.vertices.size(); ++k)
+          weightOf[influence.vertices[k]] = influence.weights[k];
         std::vector<std::pair<int, float>> extra;
         for (std::size_t k = 0; k < attached.size(); ++k) {
           const auto hit = weightOf.find(attachedTo[k]);
@@ -236,8 +260,9 @@ BuiltRig buildRig(const HeadMesh& mesh, const FeaturePointFile& fdp, const RigOp
         merge(influence, extra);
       }
     } else {
-      rig.warnings.push_back("feature point " + id + ": sub-mesh \"" + sub +
-                             "\" has no deforming role (skin, tongue or eye); the point moves nothing");
+      rig.warnings.push_back(
+          "feature point " + id + ": sub-mesh \"" + sub +
+          "\" has no deforming role (skin, tongue or eye); the point moves nothing");
     }
     if (id == "2.1") {
       std::vector<std::pair<int, float>> rigid;
@@ -254,8 +279,9 @@ BuiltRig buildRig(const HeadMesh& mesh, const FeaturePointFile& fdp, const RigOp
   } else {
     const auto loop = lowestBoundaryLoopCentre(mesh, fdp.skin);
     if (!loop)
-      throw FileError({path, 0, 0}, "neck_pivot: not given, and the skin has no open boundary (neck) to "
-                                    "place it at; give \"neck_pivot\": [x, y, z]");
+      throw FileError({path, 0, 0},
+                      "neck_pivot: not given, and the skin has no open boundary (neck) to "
+                      "place it at; give \"neck_pivot\": [x, y, z]");
     rig.neckPivot = *loop;
   }
   in.neckPivot = rig.neckPivot.cast<float>();

@@ -30,14 +30,17 @@ bool isTranslation(int fap) { return fapInfo(fap).motion == FapMotion::Translati
 
 }  // namespace
 
-Eigen::Vector3d featurePointDisplacement(const BuiltRig& rig, const std::string& id, int fap, double value) {
+Eigen::Vector3d featurePointDisplacement(const BuiltRig& rig, const std::string& id, int fap,
+                                         double value) {
   const auto binding = rig.bindings.find(id);
   const VertexPose& pose = rig.poses.poses[static_cast<std::size_t>(channelIndex(fap))];
   Eigen::Vector3d d = Eigen::Vector3d::Zero();
   if (binding == rig.bindings.end() || pose.empty()) return d;
   for (const auto& [vertex, weight] : binding->second)
-    for (std::size_t k = 0; k < pose.vertices.size(); ++k)  // repeated entries add up, as in blending
-      if (pose.vertices[k] == vertex) d += weight * value * pose.offsets.col(static_cast<Eigen::Index>(k)).cast<double>();
+    for (std::size_t k = 0; k < pose.vertices.size();
+         ++k)  // repeated entries add up, as in blending
+      if (pose.vertices[k] == vertex)
+        d += weight * value * pose.offsets.col(static_cast<Eigen::Index>(k)).cast<double>();
   return d;
 }
 
@@ -66,8 +69,9 @@ std::string rigDescriptionJson(const HeadMesh& mesh, const BuiltRig& rig, const 
   w.endObject();
   w.key("eyes");
   w.beginObject();
-  for (const auto& [side, centre, group] : {std::tuple{"left", &rig.eyeCentreLeft, &rig.input.eyeLeft},
-                                            std::tuple{"right", &rig.eyeCentreRight, &rig.input.eyeRight}}) {
+  for (const auto& [side, centre, group] :
+       {std::tuple{"left", &rig.eyeCentreLeft, &rig.input.eyeLeft},
+        std::tuple{"right", &rig.eyeCentreRight, &rig.input.eyeRight}}) {
     if (!*centre) continue;
     w.key(side);
     w.beginObject();
@@ -81,7 +85,8 @@ std::string rigDescriptionJson(const HeadMesh& mesh, const BuiltRig& rig, const 
   row(w, rig.neckPivot);
   w.key("tear_sources");
   w.beginObject();
-  for (const auto& [side, tear] : {std::pair{"left", &rig.tearLeft}, std::pair{"right", &rig.tearRight}}) {
+  for (const auto& [side, tear] :
+       {std::pair{"left", &rig.tearLeft}, std::pair{"right", &rig.tearRight}}) {
     w.key(side);
     w.beginObject();
     w.field("vertex", tear->vertex);
@@ -148,7 +153,8 @@ std::string rigReportJson(const HeadMesh& mesh, const BuiltRig& rig) {
     if (pose.empty()) {
       w.string("no pose");
     } else {
-      if (std::abs(along - x0) > 1e-3 * x0) w.string("displacement differs from X0 by more than 0.1%");
+      if (std::abs(along - x0) > 1e-3 * x0)
+        w.string("displacement differs from X0 by more than 0.1%");
       if (across > 1e-3 * x0) w.string("moves the point off the FAP's axis");
     }
     w.endArray();

@@ -2,8 +2,8 @@
 
 #include <lacrima/rigging/SurfaceGraph.h>
 
-#include <algorithm>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <map>
 #include <numeric>
 #include <utility>
@@ -31,13 +31,16 @@ std::map<Edge, int> edgeUse(const SurfaceGraph& g) {
 }
 
 int findRoot(std::vector<int>& parent, int x) {
-  while (parent[static_cast<std::size_t>(x)] != x) x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+  while (parent[static_cast<std::size_t>(x)] != x)
+    x = parent[static_cast<std::size_t>(x)] =
+        parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
   return x;
 }
 
 }  // namespace
 
-std::vector<std::string> checkSkinTopology(const HeadMesh& mesh, const std::vector<std::string>& skin) {
+std::vector<std::string> checkSkinTopology(const HeadMesh& mesh,
+                                           const std::vector<std::string>& skin) {
   std::vector<std::string> warnings;
   const std::string what = "skin " + joined(skin);
 
@@ -57,9 +60,10 @@ std::vector<std::string> checkSkinTopology(const HeadMesh& mesh, const std::vect
     }
   }
   if (degenerate > 0)
-    warnings.push_back(what + ": " + std::to_string(degenerate) + " degenerate (zero-area) triangle" +
-                       (degenerate == 1 ? "" : "s") + ", e.g. local triangle " + std::to_string(example) +
-                       " of its sub-mesh; influences pass through them but they have no shading normal");
+    warnings.push_back(
+        what + ": " + std::to_string(degenerate) + " degenerate (zero-area) triangle" +
+        (degenerate == 1 ? "" : "s") + ", e.g. local triangle " + std::to_string(example) +
+        " of its sub-mesh; influences pass through them but they have no shading normal");
 
   const SurfaceGraph g = buildSurfaceGraph(mesh, skin);
   int nonManifold = 0;
@@ -67,16 +71,19 @@ std::vector<std::string> checkSkinTopology(const HeadMesh& mesh, const std::vect
   for (const auto& [edge, count] : edgeUse(g))
     if (count > 2 && nonManifold++ == 0) firstBad = edge;
   if (nonManifold > 0)
-    warnings.push_back(what + ": " + std::to_string(nonManifold) + " non-manifold edge" +
-                       (nonManifold == 1 ? "" : "s") + " (3 or more triangles), e.g. between vertices " +
-                       std::to_string(g.vertexOfNode[static_cast<std::size_t>(firstBad.first)]) + " and " +
-                       std::to_string(g.vertexOfNode[static_cast<std::size_t>(firstBad.second)]) +
-                       "; geodesic influences may jump between the sheets there");
+    warnings.push_back(
+        what + ": " + std::to_string(nonManifold) + " non-manifold edge" +
+        (nonManifold == 1 ? "" : "s") + " (3 or more triangles), e.g. between vertices " +
+        std::to_string(g.vertexOfNode[static_cast<std::size_t>(firstBad.first)]) + " and " +
+        std::to_string(g.vertexOfNode[static_cast<std::size_t>(firstBad.second)]) +
+        "; geodesic influences may jump between the sheets there");
 
   // Components with at least one triangle (a stray vertex is harmless).
   std::vector<int> sizes(static_cast<std::size_t>(g.componentCount), 0);
-  for (const Eigen::Vector3i& t : g.triangles) ++sizes[static_cast<std::size_t>(g.component[static_cast<std::size_t>(t[0])])];
-  const int pieces = static_cast<int>(std::count_if(sizes.begin(), sizes.end(), [](int n) { return n > 0; }));
+  for (const Eigen::Vector3i& t : g.triangles)
+    ++sizes[static_cast<std::size_t>(g.component[static_cast<std::size_t>(t[0])])];
+  const int pieces =
+      static_cast<int>(std::count_if(sizes.begin(), sizes.end(), [](int n) { return n > 0; }));
   if (pieces == 0)
     warnings.push_back(what + ": no triangles; nothing can be rigged");
   else if (pieces > 1)
@@ -86,20 +93,23 @@ std::vector<std::string> checkSkinTopology(const HeadMesh& mesh, const std::vect
   return warnings;
 }
 
-std::optional<Eigen::Vector3d> lowestBoundaryLoopCentre(const HeadMesh& mesh, const std::vector<std::string>& skin) {
+std::optional<Eigen::Vector3d> lowestBoundaryLoopCentre(const HeadMesh& mesh,
+                                                        const std::vector<std::string>& skin) {
   const SurfaceGraph g = buildSurfaceGraph(mesh, skin);
   std::vector<int> parent(static_cast<std::size_t>(g.nodeCount()));
   std::iota(parent.begin(), parent.end(), 0);
   std::vector<char> onBoundary(parent.size(), 0);
   for (const auto& [edge, count] : edgeUse(g)) {
     if (count != 1) continue;
-    onBoundary[static_cast<std::size_t>(edge.first)] = onBoundary[static_cast<std::size_t>(edge.second)] = 1;
+    onBoundary[static_cast<std::size_t>(edge.first)] =
+        onBoundary[static_cast<std::size_t>(edge.second)] = 1;
     parent[static_cast<std::size_t>(findRoot(parent, edge.first))] = findRoot(parent, edge.second);
   }
   std::map<int, std::pair<Eigen::Vector3d, int>> loops;  // root -> (sum, count)
   for (int n = 0; n < g.nodeCount(); ++n) {
     if (!onBoundary[static_cast<std::size_t>(n)]) continue;
-    auto& [sum, count] = loops.try_emplace(findRoot(parent, n), Eigen::Vector3d::Zero(), 0).first->second;
+    auto& [sum, count] =
+        loops.try_emplace(findRoot(parent, n), Eigen::Vector3d::Zero(), 0).first->second;
     sum += g.positions.col(n);
     ++count;
   }

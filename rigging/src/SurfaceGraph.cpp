@@ -115,7 +115,8 @@ SurfaceGraph buildFromMask(const Eigen::Matrix3Xf& positions,
   return g;
 }
 
-SurfaceGraph buildFromSubmeshes(const HeadMesh& mesh, const std::vector<const HeadSubmesh*>& parts) {
+SurfaceGraph buildFromSubmeshes(const HeadMesh& mesh,
+                                const std::vector<const HeadSubmesh*>& parts) {
   std::vector<char> chosen(static_cast<size_t>(mesh.vertexCount()), 0);
   std::vector<Eigen::Vector3i> triangles;
   for (const HeadSubmesh* s : parts) {
@@ -145,7 +146,8 @@ Eigen::VectorXd SurfaceGraph::toVertices(const Eigen::VectorXd& nodeValues, doub
 
 SurfaceGraph buildSurfaceGraph(const Eigen::Matrix3Xf& positions,
                                const std::vector<Eigen::Vector3i>& triangles) {
-  return buildFromMask(positions, triangles, std::vector<char>(static_cast<size_t>(positions.cols()), 1));
+  return buildFromMask(positions, triangles,
+                       std::vector<char>(static_cast<size_t>(positions.cols()), 1));
 }
 
 SurfaceGraph buildSurfaceGraph(const Eigen::Matrix3Xf& positions,

@@ -15,22 +15,25 @@
 namespace lacrima::bench {
 
 class BenchCommandLine {
-public:
+ public:
   // `subcommand` names it in the usage line and in the errors ("lacrima-bench tears: ...").
   BenchCommandLine(std::string subcommand, const QString& description);
 
   void flag(const QString& name, const QString& help, bool& target);
-  void wholeNumber(const QString& name, const QString& valueName, const QString& help, int low, int high, int& target);
+  void wholeNumber(const QString& name, const QString& valueName, const QString& help, int low,
+                   int high, int& target);
   // A number in [low, high], or in (low, high] for what must stay above `low` (a rate, a factor).
   enum class Low { Included, Excluded };
-  void number(const QString& name, const QString& valueName, const QString& help, double low, double high,
-              double& target, Low lowEnd = Low::Included);
-  void text(const QString& name, const QString& valueName, const QString& help, std::string& target);
+  void number(const QString& name, const QString& valueName, const QString& help, double low,
+              double high, double& target, Low lowEnd = Low::Included);
+  void text(const QString& name, const QString& valueName, const QString& help,
+            std::string& target);
   void imageSize(const QString& name, const QString& help, int& width, int& height);
 
   // One of a few words, each standing for a value of `target`.
   template <typename T>
-  void choice(const QString& name, const QString& help, std::vector<std::pair<QString, T>> choices, T& target) {
+  void choice(const QString& name, const QString& help, std::vector<std::pair<QString, T>> choices,
+              T& target) {
     QStringList words;
     for (const auto& choice : choices) words << choice.first;
     choiceOf(name, help, words, [choices = std::move(choices), &target](qsizetype chosen) {
@@ -48,7 +51,7 @@ public:
   // --help, 2 for wrong usage.
   std::optional<int> parse(int argc, char** argv);
 
-private:
+ private:
   void choiceOf(const QString& name, const QString& help, const QStringList& words,
                 std::function<void(qsizetype chosen)> take);
 

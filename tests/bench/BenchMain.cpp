@@ -12,7 +12,7 @@ int runPoses(int argc, char** argv);
 int runTearsSweep(int argc, char** argv);
 int runEditor(int argc, char** argv);
 int runPlayer(int argc, char** argv);
-}
+}  // namespace lacrima::bench
 
 namespace {
 
@@ -25,20 +25,28 @@ struct Subcommand {
 const Subcommand kSubcommands[] = {
     {"fapio", "read and write a 10-minute, 70-channel FAP animation (13,200 frames at 22 fps)",
      lacrima::bench::runFapIo},
-    {"tears", "tear pipeline (SPH, skin collision, surface, trails) on a cheek sheet or the default head",
+    {"tears",
+     "tear pipeline (SPH, skin collision, surface, trails) on a cheek sheet or the default head",
      lacrima::bench::runTears},
-    {"tears-sweep", "tears: error against a fine reference beside ms per frame (sub-step, kernel, cube, "
-     "neighbours)", lacrima::bench::runTearsSweep},
+    {"tears-sweep",
+     "tears: error against a fine reference beside ms per frame (sub-step, kernel, cube, "
+     "neighbours)",
+     lacrima::bench::runTearsSweep},
     {"geodesics", "geodesic distance: accuracy against time (sphere, plane), ms per feature point",
      lacrima::bench::runGeodesics},
-    {"editor", "the editor: live preview with 500 tear particles (>= 30 fps), slider and timeline costs", lacrima::bench::runEditor},
+    {"editor",
+     "the editor: live preview with 500 tear particles (>= 30 fps), slider and timeline costs",
+     lacrima::bench::runEditor},
     {"poses", "rig, bake and blend every FAP pose on synthetic and real (default, ICT) heads",
      lacrima::bench::runPoses},
-    {"player", "the whole player (playback + OGRE render) on the demo at 1280x720: fps, stage shares", lacrima::bench::runPlayer},
+    {"player",
+     "the whole player (playback + OGRE render) on the demo at 1280x720: fps, stage shares",
+     lacrima::bench::runPlayer},
 };
 
 void printUsage(FILE* out) {
-  std::fprintf(out, "usage: lacrima-bench SUBCOMMAND [options]   (SUBCOMMAND --help for options)\n\n");
+  std::fprintf(out,
+               "usage: lacrima-bench SUBCOMMAND [options]   (SUBCOMMAND --help for options)\n\n");
   for (const auto& s : kSubcommands) std::fprintf(out, "  %-12s %s\n", s.name, s.summary);
 }
 

@@ -30,7 +30,8 @@ Timing timeRuns(int runs, const std::function<void()>& body) {
   return t;
 }
 
-void writeTiming(JsonWriter& json, std::string_view name, const Timing& t, std::optional<double> targetBelow) {
+void writeTiming(JsonWriter& json, std::string_view name, const Timing& t,
+                 std::optional<double> targetBelow) {
   json.key(name);
   json.beginObject();
   json.field("median", t.medianMs);

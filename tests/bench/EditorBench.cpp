@@ -38,22 +38,25 @@ constexpr double kPreviewTargetFps = 30;
 constexpr int kTearsPerEye = 250;  // 500 particles in all
 
 struct Options {
-  int frames = 110;   // timed preview frames (5 s at 22 fps)
-  int warmUp = 44;    // frames before timing: the tears reach their count and start running
+  int frames = 110;  // timed preview frames (5 s at 22 fps)
+  int warmUp = 44;   // frames before timing: the tears reach their count and start running
   int width = 1440, height = 900;  // the editor window; the viewport gets what the docks leave
   bool json = false;
 };
 
 std::optional<int> parseOptions(int argc, char** argv, Options& options) {
-  BenchCommandLine line("editor",
-                        QString("Times the editor's widgets and its live preview with %1 tear particles.\n"
-                                "The preview needs an X display (OGRE is GLX only): run under\n"
-                                "  xvfb-run -a -s \"-screen 0 1280x1024x24\" lacrima-bench editor\n"
-                                "Without a display or without the default head, only the widget figures are printed.")
-                            .arg(2 * kTearsPerEye));
+  BenchCommandLine line(
+      "editor",
+      QString("Times the editor's widgets and its live preview with %1 tear particles.\n"
+              "The preview needs an X display (OGRE is GLX only): run under\n"
+              "  xvfb-run -a -s \"-screen 0 1280x1024x24\" lacrima-bench editor\n"
+              "Without a display or without the default head, only the widget figures are printed.")
+          .arg(2 * kTearsPerEye));
   line.wholeNumber("frames", "N", "Timed preview frames (default 110).", 1, 100000, options.frames);
-  line.wholeNumber("warm-up", "N", "Preview frames before timing (default 44).", 0, 100000, options.warmUp);
-  line.imageSize("size", "Editor window size (default 1440x900: a 628x598 viewport).", options.width, options.height);
+  line.wholeNumber("warm-up", "N", "Preview frames before timing (default 44).", 0, 100000,
+                   options.warmUp);
+  line.imageSize("size", "Editor window size (default 1440x900: a 628x598 viewport).",
+                 options.width, options.height);
   line.flag("json", "One JSON object instead of the table.", options.json);
   return line.parse(argc, argv);
 }
@@ -82,7 +85,8 @@ ProjectDocument longAnimation() {
     for (int fap = 3; fap <= kChannelCount; ++fap)
       animation.frames[i][static_cast<std::size_t>(channelIndex(fap))] =
           static_cast<float>(std::lround(std::max(0.0, 200 * std::sin(0.05 * i + fap))));
-  for (int fap = 3; fap <= kChannelCount; ++fap) animation.animated.set(static_cast<std::size_t>(channelIndex(fap)));
+  for (int fap = 3; fap <= kChannelCount; ++fap)
+    animation.animated.set(static_cast<std::size_t>(channelIndex(fap)));
   return editing::importAnimation(animation).document;
 }
 
@@ -105,7 +109,8 @@ int runEditor(int argc, char** argv) {
   char name[] = "lacrima-bench";
   char* qtArgv[] = {name, nullptr};
   QApplication app(qtArgc, qtArgv);
-  QStandardPaths::setTestModeEnabled(true);  // keep the user's recent files and window state out of it
+  QStandardPaths::setTestModeEnabled(
+      true);  // keep the user's recent files and window state out of it
   QTemporaryDir recovery;
 
   editor::EditorOptions editorOptions;
@@ -126,11 +131,13 @@ int runEditor(int argc, char** argv) {
   panel.show();
   // A time change refreshes every slider (values, key marks, group counts).
   int flip = 0;
-  const Timing sliderRefresh = timeRuns(200, [&] { model.setCurrentTime((flip++ % 2) ? 1.0 : 0.5); });
+  const Timing sliderRefresh =
+      timeRuns(200, [&] { model.setCurrentTime((flip++ % 2) ? 1.0 : 0.5); });
   // One step of a slider drag: a command pushed and merged into the drag, then the refresh.
   const int session = model.beginDragSession();
   int value = 0;
-  const Timing dragStep = timeRuns(200, [&] { model.setChannel(3, (value++ % 500) + 10, session); });
+  const Timing dragStep =
+      timeRuns(200, [&] { model.setChannel(3, (value++ % 500) + 10, session); });
 
   // The timeline of a two-minute, 68-channel animation (2,640 keys), whole and zoomed in.
   editing::EditorModel longModel;
@@ -140,7 +147,8 @@ int runEditor(int argc, char** argv) {
   timeline.show();
   QElapsedTimer exposing;
   exposing.start();
-  while (!(timeline.windowHandle() && timeline.windowHandle()->isExposed()) && exposing.elapsed() < 2000)
+  while (!(timeline.windowHandle() && timeline.windowHandle()->isExposed()) &&
+         exposing.elapsed() < 2000)
     app.processEvents(QEventLoop::AllEvents, 20);
   app.processEvents();
   // repaint() paints now, through the window's backing store, as a real update does.
@@ -174,7 +182,11 @@ int runEditor(int argc, char** argv) {
       previewNote = QStringLiteral("no preview: ") + window.preview()->statusText();
     } else {
       editing::EditorModel& m = window.model();
-      m.setChannels({{kTearLeftFap, kTearsPerEye}, {kTearRightFap, kTearsPerEye}, {3, 200}, {31, 220}, {32, 220}},
+      m.setChannels({{kTearLeftFap, kTearsPerEye},
+                     {kTearRightFap, kTearsPerEye},
+                     {3, 200},
+                     {31, 220},
+                     {32, 220}},
                     QStringLiteral("bench"));
       window.preview()->setTearPreview(false);  // the benchmark steps the tears itself
       const double dt = 1.0 / 22.0;
@@ -247,15 +259,19 @@ int runEditor(int argc, char** argv) {
   std::printf("  build 70-slider panel            %8.2f ms\n", panelBuild.medianMs);
   std::printf("  refresh all sliders (time step)  %8.3f ms\n", sliderRefresh.medianMs);
   std::printf("  slider drag step (undo + merge)  %8.3f ms\n", dragStep.medianMs);
-  std::printf("  timeline paint, %d keys, all    %8.2f ms\n", static_cast<int>(longModel.document().keys.keys().size()), paintAll.medianMs);
+  std::printf("  timeline paint, %d keys, all    %8.2f ms\n",
+              static_cast<int>(longModel.document().keys.keys().size()), paintAll.medianMs);
   std::printf("  timeline paint, zoomed in        %8.2f ms\n", paintZoomed.medianMs);
   std::printf("  timeline scrub step + paint      %8.2f ms\n", scrub.medianMs);
   if (previewRan) {
-    std::printf("preview, face + %d tear particles, %d frames, viewport %dx%d\n", particles, options.frames,
-                viewportWidth, viewportHeight);
-    std::printf("  %.1f fps   target >= %g fps: %s\n", fps, kPreviewTargetFps, previewPass ? "PASS" : "MISS");
-    std::printf("  frame %.1f ms median: produce %.1f ms (blend + tears), render %.1f ms, the rest is Qt events\n",
-                frameMs, produceMs, renderMs);
+    std::printf("preview, face + %d tear particles, %d frames, viewport %dx%d\n", particles,
+                options.frames, viewportWidth, viewportHeight);
+    std::printf("  %.1f fps   target >= %g fps: %s\n", fps, kPreviewTargetFps,
+                previewPass ? "PASS" : "MISS");
+    std::printf(
+        "  frame %.1f ms median: produce %.1f ms (blend + tears), render %.1f ms, the rest is Qt "
+        "events\n",
+        frameMs, produceMs, renderMs);
   } else {
     std::printf("preview: skipped (%s)\n", qPrintable(previewNote));
   }

@@ -36,12 +36,15 @@ struct Options {
 };
 
 std::optional<int> parseOptions(int argc, char** argv, Options& options) {
-  BenchCommandLine line("fapio",
-                        "Writes a deterministic pseudo-random 70-channel FAP animation to a temporary file,\n"
-                        "then times FapWriter::save and FapReader::readFile and measures the read's peak memory.");
-  line.wholeNumber("frames", "N", QString("Frames at %1 fps (default 13200: 10 minutes).").arg(kFps), 1, 1'000'000,
+  BenchCommandLine line(
+      "fapio",
+      "Writes a deterministic pseudo-random 70-channel FAP animation to a temporary file,\n"
+      "then times FapWriter::save and FapReader::readFile and measures the read's peak memory.");
+  line.wholeNumber("frames", "N",
+                   QString("Frames at %1 fps (default 13200: 10 minutes).").arg(kFps), 1, 1'000'000,
                    options.frames);
-  line.wholeNumber("runs", "N", "Timed runs of each operation, after one warm-up (default 15).", 1, 1000, options.runs);
+  line.wholeNumber("runs", "N", "Timed runs of each operation, after one warm-up (default 15).", 1,
+                   1000, options.runs);
   line.flag("json", "Print one JSON object instead of the table.", options.json);
   return line.parse(argc, argv);
 }

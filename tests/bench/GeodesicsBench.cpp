@@ -2,9 +2,9 @@
 // method (several time factors m) on refinements of a unit icosphere and a flat equilateral
 // lattice, the error against the exact distance (great circle, Euclidean) beside the set-up
 // and per-source milliseconds; then milliseconds per feature point on the real heads.
+#include "../rigging/GeodesicTestSurfaces.h"
 #include "BenchCommandLine.h"
 #include "BenchSupport.h"
-#include "../rigging/GeodesicTestSurfaces.h"
 
 #include <lacrima/common/JsonWriter.h>
 #include <lacrima/rigging/DefaultHead.h>
@@ -55,7 +55,8 @@ struct Options {
   bool quick = false;
   bool json = false;
   std::string csv;
-  std::string ictPath = std::string(LACRIMA_SHARED_DIR) + "/heads/ict-facekit/generic_neutral_mesh.obj";
+  std::string ictPath =
+      std::string(LACRIMA_SHARED_DIR) + "/heads/ict-facekit/generic_neutral_mesh.obj";
 };
 
 // One measured configuration.
@@ -72,18 +73,22 @@ struct Row {
 };
 
 std::optional<int> parseOptions(int argc, char** argv, Options& options) {
-  BenchCommandLine line(
-      "geodesics",
-      QString("Geodesic distance: error against exact distances beside time, for Dijkstra and the heat\n"
-              "method (m = 0.25, 1, 4; and m = 1 with the straight-line bound InfluenceWeights uses) on\n"
-              "an icosphere and a flat lattice at four refinements, then milliseconds per feature point\n"
-              "(%1 points) on the default head and the ICT head.")
-          .arg(kHeadPoints));
-  line.wholeNumber("runs", "N", "Timed runs of each measurement, after one warm-up (default 3).", 1, 1000, options.runs);
-  line.wholeNumber("sources", "N", "Sources per synthetic surface, errors averaged over them (default 8).", 1, 64,
+  BenchCommandLine line("geodesics", QString("Geodesic distance: error against exact distances "
+                                             "beside time, for Dijkstra and the heat\n"
+                                             "method (m = 0.25, 1, 4; and m = 1 with the "
+                                             "straight-line bound InfluenceWeights uses) on\n"
+                                             "an icosphere and a flat lattice at four refinements, "
+                                             "then milliseconds per feature point\n"
+                                             "(%1 points) on the default head and the ICT head.")
+                                         .arg(kHeadPoints));
+  line.wholeNumber("runs", "N", "Timed runs of each measurement, after one warm-up (default 3).", 1,
+                   1000, options.runs);
+  line.wholeNumber("sources", "N",
+                   "Sources per synthetic surface, errors averaged over them (default 8).", 1, 64,
                    options.sources);
   line.flag("quick", "Skip the finest refinement.", options.quick);
-  line.text("ict", "FILE", "The ICT-FaceKit head (default: the shared folder's copy).", options.ictPath);
+  line.text("ict", "FILE", "The ICT-FaceKit head (default: the shared folder's copy).",
+            options.ictPath);
   line.flag("json", "Print one JSON object instead of the tables.", options.json);
   line.text("csv", "FILE", "Also write every row as CSV.", options.csv);
   return line.parse(argc, argv);
@@ -122,7 +127,8 @@ Case planeCase(int columns, int sourceCount) {
   std::mt19937 random(11 + static_cast<unsigned>(columns));
   while (static_cast<int>(c.sources.size()) < sourceCount) {
     const int i = columns / 4 + static_cast<int>(random() % static_cast<unsigned>(columns / 2 + 1));
-    const int j = lattice.rows / 4 + static_cast<int>(random() % static_cast<unsigned>(lattice.rows / 2 + 1));
+    const int j =
+        lattice.rows / 4 + static_cast<int>(random() % static_cast<unsigned>(lattice.rows / 2 + 1));
     c.sources.push_back(lattice.index(i, j));
   }
   c.surface = std::move(lattice);
@@ -159,8 +165,11 @@ Eigen::VectorXi one(int v) { return Eigen::VectorXi::Constant(1, v); }
 void measureCase(const Case& c, const Options& options, std::vector<Row>& rows) {
   const Eigen::Matrix3Xf& p = c.surface.positions;
   std::optional<rigging::SurfaceGraph> graph;
-  const Timing graphTime = timeRuns(options.runs, [&] { graph = rigging::buildSurfaceGraph(p, c.surface.triangles); });
-  const auto perSource = [&](const Timing& t) { return t.medianMs / static_cast<double>(c.sources.size()); };
+  const Timing graphTime =
+      timeRuns(options.runs, [&] { graph = rigging::buildSurfaceGraph(p, c.surface.triangles); });
+  const auto perSource = [&](const Timing& t) {
+    return t.medianMs / static_cast<double>(c.sources.size());
+  };
   Row base;
   base.surface = c.name;
   base.vertices = static_cast<int>(p.cols());
@@ -183,7 +192,8 @@ void measureCase(const Case& c, const Options& options, std::vector<Row>& rows) 
     cut.method = "dijkstra cut-off";
     cut.meanRelError = cut.maxRelError = kNaN;
     cut.msPerSource = perSource(timeRuns(options.runs, [&] {
-      for (const int s : c.sources) rigging::dijkstraDistances(*graph, one(s), Eigen::VectorXd(), kWeightRadius);
+      for (const int s : c.sources)
+        rigging::dijkstraDistances(*graph, one(s), Eigen::VectorXd(), kWeightRadius);
     }));
     rows.push_back(cut);
   }
@@ -199,8 +209,8 @@ void measureCase(const Case& c, const Options& options, std::vector<Row>& rows) 
     row.m = m;
     std::unique_ptr<rigging::HeatGeodesics> heat;
     row.factorMs = timeRuns(options.runs, [&, m = m, bound = bound] {
-      heat = std::make_unique<rigging::HeatGeodesics>(*graph, m, bound);
-    }).medianMs;
+                     heat = std::make_unique<rigging::HeatGeodesics>(*graph, m, bound);
+                   }).medianMs;
     Errors errors;
     for (const int s : c.sources) errors.add(c, s, heat->distances(one(s)));
     errors.into(row);
@@ -218,7 +228,8 @@ void measureHead(const std::string& name, const HeadMesh& head,
                  std::vector<Row>& rows) {
   std::optional<rigging::SurfaceGraph> graph;
   const Timing graphTime = timeRuns(options.runs, [&] {
-    graph = submeshes.empty() ? rigging::buildSurfaceGraph(head) : rigging::buildSurfaceGraph(head, submeshes);
+    graph = submeshes.empty() ? rigging::buildSurfaceGraph(head)
+                              : rigging::buildSurfaceGraph(head, submeshes);
   });
   const double radius = kHeadRadiusFraction * (head.boundsMax().y() - head.boundsMin().y());
   std::vector<int> points;
@@ -234,7 +245,8 @@ void measureHead(const std::string& name, const HeadMesh& head,
   base.radius = radius;
 
   std::vector<FeaturePointInfluence> heatWeights;
-  const auto runAll = [&](const rigging::InfluenceWeights& weights, std::vector<FeaturePointInfluence>& out) {
+  const auto runAll = [&](const rigging::InfluenceWeights& weights,
+                          std::vector<FeaturePointInfluence>& out) {
     out.clear();
     for (const int v : points) out.push_back(weights.atVertex(v, radius));
   };
@@ -266,25 +278,33 @@ void measureHead(const std::string& name, const HeadMesh& head,
   heat.m = 1;
   std::unique_ptr<rigging::InfluenceWeights> heatSolver;
   heat.factorMs = timeRuns(options.runs, [&] {
-    heatSolver = std::make_unique<rigging::InfluenceWeights>(*graph, rigging::GeodesicMethod::Heat, 1.0);
-  }).medianMs;
-  heat.msPerSource = timeRuns(options.runs, [&] { runAll(*heatSolver, heatWeights); }).medianMs / kHeadPoints;
+                    heatSolver = std::make_unique<rigging::InfluenceWeights>(
+                        *graph, rigging::GeodesicMethod::Heat, 1.0);
+                  }).medianMs;
+  heat.msPerSource =
+      timeRuns(options.runs, [&] { runAll(*heatSolver, heatWeights); }).medianMs / kHeadPoints;
   heat.listedPerPoint = listed(heatWeights);
 
   const rigging::InfluenceWeights dijkstra(*graph, rigging::GeodesicMethod::Dijkstra);
   Row cut = base;
   cut.method = "dijkstra cut-off";
   std::vector<FeaturePointInfluence> cutWeights;
-  cut.msPerSource = timeRuns(options.runs, [&] { runAll(dijkstra, cutWeights); }).medianMs / kHeadPoints;
+  cut.msPerSource =
+      timeRuns(options.runs, [&] { runAll(dijkstra, cutWeights); }).medianMs / kHeadPoints;
   cut.listedPerPoint = listed(cutWeights);
   cut.maxWeightDiffToHeat = difference(cutWeights, heatWeights);
 
   // Without the cut-off: the whole head is searched for every point.
   Row full = base;
   full.method = "dijkstra";
-  full.msPerSource = timeRuns(options.runs, [&] {
-    for (const int v : points) rigging::InfluenceWeights::fromDistances(rigging::dijkstraDistances(*graph, one(v)), radius);
-  }).medianMs / kHeadPoints;
+  full.msPerSource = timeRuns(options.runs,
+                              [&] {
+                                for (const int v : points)
+                                  rigging::InfluenceWeights::fromDistances(
+                                      rigging::dijkstraDistances(*graph, one(v)), radius);
+                              })
+                         .medianMs /
+                     kHeadPoints;
   full.listedPerPoint = cut.listedPerPoint;
   full.maxWeightDiffToHeat = cut.maxWeightDiffToHeat;
 
@@ -315,8 +335,8 @@ void printSynthetic(const std::vector<Row>& rows) {
       "heat+bound: with the straight-line bound; on the flat lattice that bound IS the exact\n"
       "distance, so only the sphere tests it fairly.\n\n",
       kBand, kWeightRadius, kWeightRadius);
-  std::printf("%-10s %7s %7s  %-17s %9s %9s %10s %9s %9s %8s\n", "surface", "verts", "h",
-              "method", "graph ms", "factor ms", "ms/source", "mean err", "max err", "max |dw|");
+  std::printf("%-10s %7s %7s  %-17s %9s %9s %10s %9s %9s %8s\n", "surface", "verts", "h", "method",
+              "graph ms", "factor ms", "ms/source", "mean err", "max err", "max |dw|");
   std::string last;
   for (const Row& r : rows) {
     if (!std::isnan(r.radius)) continue;
@@ -326,7 +346,8 @@ void printSynthetic(const std::vector<Row>& rows) {
                 r.edgeLength, methodLabel(r).c_str(), cell(r.graphMs, "%.2f").c_str(),
                 cell(r.factorMs, "%.1f").c_str(), cell(r.msPerSource, "%.3f").c_str(),
                 cell(100 * r.meanRelError, "%.2f%%").c_str(),
-                cell(100 * r.maxRelError, "%.1f%%").c_str(), cell(r.maxWeightError, "%.3f").c_str());
+                cell(100 * r.maxRelError, "%.1f%%").c_str(),
+                cell(r.maxWeightError, "%.3f").c_str());
   }
 }
 
@@ -439,12 +460,14 @@ int runGeodesics(int argc, char** argv) {
       const HeadMesh head = rigging::loadDefaultHead();
       measureHead("default head (skin)", head, skinOf(head), options, rows);
     } else {
-      notes.push_back("default head: not in the cache (run packaging/fetch-default-head.sh); skipped");
+      notes.push_back(
+          "default head: not in the cache (run packaging/fetch-default-head.sh); skipped");
     }
     if (std::ifstream(options.ictPath).good()) {
       const HeadMesh head = rigging::importHeadMesh(options.ictPath);
       const std::vector<std::string> parts = skinOf(head);
-      measureHead(parts.empty() ? "ICT head (all)" : "ICT head (face+back)", head, parts, options, rows);
+      measureHead(parts.empty() ? "ICT head (all)" : "ICT head (face+back)", head, parts, options,
+                  rows);
     } else {
       notes.push_back("ICT head: " + options.ictPath + " is absent; skipped");
     }

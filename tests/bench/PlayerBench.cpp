@@ -35,12 +35,14 @@ struct Options {
 };
 
 std::optional<int> parseOptions(int argc, char** argv, Options& o) {
-  BenchCommandLine line("player",
-                        "Plays the demo (media/demo/crying.fap) on the default head through the player's\n"
-                        "playback and renderer, one render per animation frame, and reports frames per second\n"
-                        "of the whole loop with each stage's share. Needs an X display: run under xvfb-run.");
+  BenchCommandLine line(
+      "player",
+      "Plays the demo (media/demo/crying.fap) on the default head through the player's\n"
+      "playback and renderer, one render per animation frame, and reports frames per second\n"
+      "of the whole loop with each stage's share. Needs an X display: run under xvfb-run.");
   line.imageSize("size", "Image size (default 1280x720).", o.width, o.height);
-  line.wholeNumber("frames", "N", "Frames to play (default: the whole demo; longer runs replay it).", 1, 1000000,
+  line.wholeNumber("frames", "N",
+                   "Frames to play (default: the whole demo; longer runs replay it).", 1, 1000000,
                    o.frames);
   line.flag("json", "One JSON object instead of the table.", o.json);
   return line.parse(argc, argv);
@@ -57,12 +59,15 @@ int runPlayer(int argc, char** argv) {
   Options o;
   if (const std::optional<int> status = parseOptions(argc, argv, o)) return *status;
   if (std::getenv("DISPLAY") == nullptr || !*std::getenv("DISPLAY")) {
-    std::fprintf(stderr, "lacrima-bench player: needs an X display (OGRE renders through GLX); run it as\n"
-                         "  xvfb-run -a -s \"-screen 0 1280x1024x24\" lacrima-bench player\n");
+    std::fprintf(stderr,
+                 "lacrima-bench player: needs an X display (OGRE renders through GLX); run it as\n"
+                 "  xvfb-run -a -s \"-screen 0 1280x1024x24\" lacrima-bench player\n");
     return 1;
   }
   if (!rigging::defaultHeadAvailable()) {
-    std::fprintf(stderr, "lacrima-bench player: skipped: the default head is not fetched (packaging/fetch-default-head.sh)\n");
+    std::fprintf(stderr,
+                 "lacrima-bench player: skipped: the default head is not fetched "
+                 "(packaging/fetch-default-head.sh)\n");
     return 0;
   }
   int qtArgc = 1;
@@ -84,7 +89,8 @@ int runPlayer(int argc, char** argv) {
 
     const int demoFrames = playback.frameCount();
     const int frames = o.frames > 0 ? o.frames : demoFrames;
-    std::array<Stage, 7> stages{{{"blend"}, {"simulation"}, {"surface"}, {"trails"}, {"upload"}, {"render"}, {"readback"}}};
+    std::array<Stage, 7> stages{
+        {{"blend"}, {"simulation"}, {"surface"}, {"trails"}, {"upload"}, {"render"}, {"readback"}}};
     std::vector<double> frameMs;
     frameMs.reserve(static_cast<std::size_t>(frames));
     int peakParticles = 0;
@@ -100,7 +106,8 @@ int runPlayer(int argc, char** argv) {
       frameMs.push_back(millisecondsSince(t0));
       const playback::ProducerTimes& p = playback.producer().lastTimes();
       const scene::RenderTimes& r = renderer.lastTimes();
-      const std::array<double, 7> ms{p.blend, p.simulation, p.surface, p.trails, r.upload, r.render, r.readback};
+      const std::array<double, 7> ms{p.blend,  p.simulation, p.surface, p.trails,
+                                     r.upload, r.render,     r.readback};
       for (std::size_t s = 0; s < stages.size(); ++s) stages[s].total += ms[s];
       peakParticles = std::max(peakParticles, playback.producer().particleCount());
       if (image.isNull()) throw std::runtime_error("the renderer returned no image");
@@ -140,14 +147,17 @@ int runPlayer(int argc, char** argv) {
       const std::string text = std::move(json).finish();
       std::fwrite(text.data(), 1, text.size(), stdout);
     } else {
-      std::printf("player on %s: %d frames at %dx%d, up to %d tear particles (rig built in %.0f ms)\n", demo.c_str(), frames,
-                  o.width, o.height, peakParticles, rigMs);
+      std::printf(
+          "player on %s: %d frames at %dx%d, up to %d tear particles (rig built in %.0f ms)\n",
+          demo.c_str(), frames, o.width, o.height, peakParticles, rigMs);
       std::printf("  %-12s %10s %8s\n", "stage", "ms/frame", "share");
       for (const Stage& s : stages)
         std::printf("  %-12s %10.2f %7.1f%%\n", s.name, s.total / frames, 100.0 * s.total / wallMs);
       std::printf("  %-12s %10.2f %7.1f%%\n", "other", other / frames, 100.0 * other / wallMs);
-      std::printf("  %-12s %10.2f   (median %.2f, max %.2f)\n", "whole frame", wallMs / frames, median, worst);
-      std::printf("frames per second: %.1f  (target >= %.0f: %s)\n", fps, kTargetFps, pass ? "met" : "NOT MET");
+      std::printf("  %-12s %10.2f   (median %.2f, max %.2f)\n", "whole frame", wallMs / frames,
+                  median, worst);
+      std::printf("frames per second: %.1f  (target >= %.0f: %s)\n", fps, kTargetFps,
+                  pass ? "met" : "NOT MET");
     }
     return 0;
   } catch (const std::exception& e) {

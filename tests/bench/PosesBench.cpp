@@ -45,21 +45,24 @@ struct HeadCase {
 
 struct Figures {
   int vertices = 0, triangles = 0;
-  int poses = 0;               // non-empty linear poses
-  long long poseEntries = 0;   // sum of pose sizes: the per-frame scatter work
+  int poses = 0;              // non-empty linear poses
+  long long poseEntries = 0;  // sum of pose sizes: the per-frame scatter work
   double meanPoseSize = 0;
   Timing bake, blend;
 };
 
 std::optional<int> parseOptions(int argc, char** argv, Options& options) {
-  BenchCommandLine line("poses",
-                        "Bakes all FAP poses of synthetic heads with the default head's and the ICT head's\n"
-                        "vertex counts, and of the real default and ICT heads rigged by buildRig (skipped\n"
-                        "with a note when absent), then blends every pose at once per frame.");
-  line.wholeNumber("frames", "N", "Timed blends per head, after one warm-up (default 2000).", 1, 1'000'000,
-                   options.frames);
-  line.wholeNumber("runs", "N", "Timed bakes per head, after one warm-up (default 5).", 1, 1000, options.runs);
-  line.wholeNumber("rig-runs", "N", "Timed buildRig calls per real head, after one warm-up (default 1).", 1, 1000,
+  BenchCommandLine line(
+      "poses",
+      "Bakes all FAP poses of synthetic heads with the default head's and the ICT head's\n"
+      "vertex counts, and of the real default and ICT heads rigged by buildRig (skipped\n"
+      "with a note when absent), then blends every pose at once per frame.");
+  line.wholeNumber("frames", "N", "Timed blends per head, after one warm-up (default 2000).", 1,
+                   1'000'000, options.frames);
+  line.wholeNumber("runs", "N", "Timed bakes per head, after one warm-up (default 5).", 1, 1000,
+                   options.runs);
+  line.wholeNumber("rig-runs", "N",
+                   "Timed buildRig calls per real head, after one warm-up (default 1).", 1, 1000,
                    options.rigRuns);
   line.flag("json", "Print one JSON object instead of the table.", options.json);
   return line.parse(argc, argv);
@@ -180,22 +183,26 @@ void printTable(const std::vector<Measured>& measured) {
   for (const Measured& m : measured) {
     const HeadCase& c = m.head;
     const Figures& f = m.figures;
-    std::printf("  %s: %d vertices, %d triangles, %d linear poses of %.0f vertices on average "
-                "(%lld entries)\n",
-                c.name.c_str(), f.vertices, f.triangles, f.poses, f.meanPoseSize, f.poseEntries);
+    std::printf(
+        "  %s: %d vertices, %d triangles, %d linear poses of %.0f vertices on average "
+        "(%lld entries)\n",
+        c.name.c_str(), f.vertices, f.triangles, f.poses, f.meanPoseSize, f.poseEntries);
     if (m.rigBuild) {
       const Timing& r = *m.rigBuild;
-      std::printf("    rig    median %9.3f ms  (min %.3f, max %.3f, %d runs)       target < %g ms  %s"
-                  "   (buildRig: geodesic weights + bake)\n",
-                  r.medianMs, r.minMs, r.maxMs, r.runs, c.bakeTargetMs, mark(r.medianMs < c.bakeTargetMs));
+      std::printf(
+          "    rig    median %9.3f ms  (min %.3f, max %.3f, %d runs)       target < %g ms  %s"
+          "   (buildRig: geodesic weights + bake)\n",
+          r.medianMs, r.minMs, r.maxMs, r.runs, c.bakeTargetMs, mark(r.medianMs < c.bakeTargetMs));
     }
-    std::printf("    bake   median %9.3f ms  (min %.3f, max %.3f, %d runs)       target < %g ms  %s\n",
-                f.bake.medianMs, f.bake.minMs, f.bake.maxMs, f.bake.runs, c.bakeTargetMs,
-                mark(f.bake.medianMs < c.bakeTargetMs));
+    std::printf(
+        "    bake   median %9.3f ms  (min %.3f, max %.3f, %d runs)       target < %g ms  %s\n",
+        f.bake.medianMs, f.bake.minMs, f.bake.maxMs, f.bake.runs, c.bakeTargetMs,
+        mark(f.bake.medianMs < c.bakeTargetMs));
     std::printf("    blend  median %9.4f ms  (min %.4f, max %.4f, %d frames)  ", f.blend.medianMs,
                 f.blend.minMs, f.blend.maxMs, f.blend.runs);
     if (c.blendTargetMs) {
-      std::printf("target < %g ms   %s\n", *c.blendTargetMs, mark(f.blend.medianMs < *c.blendTargetMs));
+      std::printf("target < %g ms   %s\n", *c.blendTargetMs,
+                  mark(f.blend.medianMs < *c.blendTargetMs));
     } else {
       std::printf("(no target)\n");
     }
@@ -233,7 +240,8 @@ int runPoses(int argc, char** argv) {
       continue;
     }
     rigging::BuiltRig rig;
-    const Timing rigTiming = timeRuns(options.rigRuns, [&] { rig = rigging::buildRig(loaded->mesh, loaded->fdp); });
+    const Timing rigTiming =
+        timeRuns(options.rigRuns, [&] { rig = rigging::buildRig(loaded->mesh, loaded->fdp); });
     measured.push_back({realCases[k], measureHead(loaded->mesh, rig.input, options), rigTiming});
   }
 

@@ -13,7 +13,8 @@ RealHeadSpec defaultHeadSpec() {
 }
 
 RealHeadSpec ictHeadSpec() {
-  return {"ICT-FaceKit head", false, LACRIMA_SHARED_DIR "/heads/ict-facekit/generic_neutral_mesh.obj",
+  return {"ICT-FaceKit head", false,
+          LACRIMA_SHARED_DIR "/heads/ict-facekit/generic_neutral_mesh.obj",
           LACRIMA_SOURCE_DIR "/tests/rigging/ict-facekit.fdp.json"};
 }
 
@@ -21,7 +22,8 @@ std::optional<HeadMesh> loadRealMesh(const RealHeadSpec& spec, std::string& why)
   try {
     if (spec.defaultHead) {
       if (!rigging::defaultHeadAvailable()) {
-        why = "not in the cache " + rigging::defaultHeadPackageDir() + " (run packaging/fetch-default-head.sh)";
+        why = "not in the cache " + rigging::defaultHeadPackageDir() +
+              " (run packaging/fetch-default-head.sh)";
         return std::nullopt;
       }
       return rigging::loadDefaultHead();

@@ -29,14 +29,16 @@ LogRange decades(double minValue, double maxValue) {
 QString decadeLabel(int exponent) {
   // Plain numbers read faster than 1e-3 for the decades this benchmark spans.
   if (exponent >= 0 && exponent <= 4) return QString::number(std::pow(10.0, exponent), 'f', 0);
-  if (exponent < 0 && exponent >= -3) return QString::number(std::pow(10.0, exponent), 'f', -exponent);
+  if (exponent < 0 && exponent >= -3)
+    return QString::number(std::pow(10.0, exponent), 'f', -exponent);
   return QStringLiteral("1e%1").arg(exponent);
 }
 
 }  // namespace
 
 bool writeLogLogPlot(const std::string& path, const std::string& title, const std::string& xLabel,
-                     const std::string& yLabel, const std::vector<PlotSeries>& series, std::string& why) {
+                     const std::string& yLabel, const std::vector<PlotSeries>& series,
+                     std::string& why) {
   double xMin = std::numeric_limits<double>::infinity(), xMax = 0, yMin = xMin, yMax = 0;
   for (const PlotSeries& s : series)
     for (const PlotPoint& p : s.points)
@@ -68,8 +70,12 @@ bool writeLogLogPlot(const std::string& path, const std::string& title, const st
   font.setPixelSize(15);
   painter.setFont(font);
 
-  auto toX = [&](double v) { return area.left() + (std::log10(v) - xr.lo) / (xr.hi - xr.lo) * area.width(); };
-  auto toY = [&](double v) { return area.bottom() - (std::log10(v) - yr.lo) / (yr.hi - yr.lo) * area.height(); };
+  auto toX = [&](double v) {
+    return area.left() + (std::log10(v) - xr.lo) / (xr.hi - xr.lo) * area.width();
+  };
+  auto toY = [&](double v) {
+    return area.bottom() - (std::log10(v) - yr.lo) / (yr.hi - yr.lo) * area.height();
+  };
 
   // Grid: decades solid, 2..9 within each decade faint, so values can be read off.
   for (int e = int(xr.lo); e <= int(xr.hi); ++e) {
@@ -79,7 +85,8 @@ bool writeLogLogPlot(const std::string& path, const std::string& title, const st
       painter.drawLine(QPointF(x, area.top()), QPointF(x, area.bottom()));
     }
     painter.setPen(Qt::black);
-    painter.drawText(QRectF(toX(std::pow(10.0, e)) - 40, area.bottom() + 6, 80, 20), Qt::AlignCenter, decadeLabel(e));
+    painter.drawText(QRectF(toX(std::pow(10.0, e)) - 40, area.bottom() + 6, 80, 20),
+                     Qt::AlignCenter, decadeLabel(e));
   }
   for (int e = int(yr.lo); e <= int(yr.hi); ++e) {
     for (int m = 1; m <= 9 && (m == 1 || e < int(yr.hi)); ++m) {
@@ -88,8 +95,8 @@ bool writeLogLogPlot(const std::string& path, const std::string& title, const st
       painter.drawLine(QPointF(area.left(), y), QPointF(area.right(), y));
     }
     painter.setPen(Qt::black);
-    painter.drawText(QRectF(area.left() - 75, toY(std::pow(10.0, e)) - 10, 68, 20), Qt::AlignRight | Qt::AlignVCenter,
-                     decadeLabel(e));
+    painter.drawText(QRectF(area.left() - 75, toY(std::pow(10.0, e)) - 10, 68, 20),
+                     Qt::AlignRight | Qt::AlignVCenter, decadeLabel(e));
   }
   painter.setPen(QPen(Qt::black, 1.5));
   painter.drawRect(area);
@@ -106,12 +113,13 @@ bool writeLogLogPlot(const std::string& path, const std::string& title, const st
   painter.save();
   painter.translate(22, area.center().y());
   painter.rotate(-90);
-  painter.drawText(QRectF(-area.height() / 2, -12, area.height(), 24), Qt::AlignCenter, QString::fromStdString(yLabel));
+  painter.drawText(QRectF(-area.height() / 2, -12, area.height(), 24), Qt::AlignCenter,
+                   QString::fromStdString(yLabel));
   painter.restore();
 
   // Series: distinct hues and marker shapes, so they stay apart in greyscale too.
-  const QColor colours[] = {QColor(31, 119, 180), QColor(214, 39, 40), QColor(44, 160, 44), QColor(148, 103, 189),
-                            QColor(255, 127, 14), QColor(23, 190, 207)};
+  const QColor colours[] = {QColor(31, 119, 180),  QColor(214, 39, 40),  QColor(44, 160, 44),
+                            QColor(148, 103, 189), QColor(255, 127, 14), QColor(23, 190, 207)};
   auto marker = [&](QPointF c, int shape) {
     const double r = 6;
     if (shape % 3 == 0) {
@@ -159,8 +167,8 @@ bool writeLogLogPlot(const std::string& path, const std::string& title, const st
     painter.drawLine(at, at + QPointF(36, 0));
     marker(at + QPointF(18, 0), int(k));
     painter.setPen(Qt::black);
-    painter.drawText(QRectF(at.x() + 46, at.y() - 12, width - at.x() - 50, 24), Qt::AlignLeft | Qt::AlignVCenter,
-                     QString::fromStdString(series[k].name));
+    painter.drawText(QRectF(at.x() + 46, at.y() - 12, width - at.x() - 50, 24),
+                     Qt::AlignLeft | Qt::AlignVCenter, QString::fromStdString(series[k].name));
   }
   painter.end();
   if (!image.save(QString::fromStdString(path), "PNG")) {

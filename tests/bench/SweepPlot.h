@@ -18,6 +18,7 @@ struct PlotSeries {
 
 // Writes a PNG; returns false (and sets `why`) when the image cannot be saved.
 bool writeLogLogPlot(const std::string& path, const std::string& title, const std::string& xLabel,
-                     const std::string& yLabel, const std::vector<PlotSeries>& series, std::string& why);
+                     const std::string& yLabel, const std::vector<PlotSeries>& series,
+                     std::string& why);
 
 }  // namespace lacrima::bench

@@ -45,15 +45,20 @@ struct Options {
 };
 
 std::optional<int> parseOptions(int argc, char** argv, Options& o) {
-  BenchCommandLine line("tears",
-                        "Runs the tear pipeline (simulation + surface mesher + trails) on a generated, tilted\n"
-                        "cheek-sized sheet (decimetres) or the default head, with N/2 particles commanded per\n"
-                        "eye from the first frame, and reports the median frame time of the whole pipeline.");
-  line.wholeNumber("particles", "N", "Particles in all (default 100).", 0, 2 * kMaxTearParticles, o.particles);
-  line.wholeNumber("frames", "F", "Frames to simulate (default 110: 5 s at 22 fps).", 1, 1000000, o.frames);
-  line.number("fps", "R", "Animation frame rate (default 22).", 0, 1000, o.fps, BenchCommandLine::Low::Excluded);
+  BenchCommandLine line(
+      "tears",
+      "Runs the tear pipeline (simulation + surface mesher + trails) on a generated, tilted\n"
+      "cheek-sized sheet (decimetres) or the default head, with N/2 particles commanded per\n"
+      "eye from the first frame, and reports the median frame time of the whole pipeline.");
+  line.wholeNumber("particles", "N", "Particles in all (default 100).", 0, 2 * kMaxTearParticles,
+                   o.particles);
+  line.wholeNumber("frames", "F", "Frames to simulate (default 110: 5 s at 22 fps).", 1, 1000000,
+                   o.frames);
+  line.number("fps", "R", "Animation frame rate (default 22).", 0, 1000, o.fps,
+              BenchCommandLine::Low::Excluded);
   line.option("param", "NAME=VALUE",
-              "A tear parameter (pressure viscosity tension adhesion friction gravity kernel node_size cube_size "
+              "A tear parameter (pressure viscosity tension adhesion friction gravity kernel "
+              "node_size cube_size "
               "iso), validated against its range; repeatable.",
               [&o](const QString& pair) {
                 const qsizetype eq = pair.indexOf('=');
@@ -70,13 +75,17 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   line.choice("neighbours", "Neighbour structure (default grid).",
               {{"grid", NeighbourMethod::Grid}, {"octree", NeighbourMethod::Octree}}, o.neighbours);
   line.choice("tension", "Surface tension model (default mueller).",
-              {{"mueller", SurfaceTensionModel::Mueller}, {"akinci", SurfaceTensionModel::Akinci}}, o.tension);
+              {{"mueller", SurfaceTensionModel::Mueller}, {"akinci", SurfaceTensionModel::Akinci}},
+              o.tension);
   line.choice("solver", "Pressure solver: wcsph (equation of state) or dfsph (divergence-free).",
               {{"wcsph", PressureMethod::Wcsph}, {"dfsph", PressureMethod::Dfsph}}, o.solver);
-  line.number("max-step", "MS", "Longest sub-step in milliseconds (default: no cap).", 0, 1000, o.maxStepMs);
-  line.number("substep-factor", "F", "Scales the CFL and acceleration safety factors (default 1).", 0, 10,
-              o.substepFactor, BenchCommandLine::Low::Excluded);
-  line.number("skin", "S", "Verlet skin of the pair list, in kernel radii (default 0.3; 0 = no reuse).", 0, 2, o.skin);
+  line.number("max-step", "MS", "Longest sub-step in milliseconds (default: no cap).", 0, 1000,
+              o.maxStepMs);
+  line.number("substep-factor", "F", "Scales the CFL and acceleration safety factors (default 1).",
+              0, 10, o.substepFactor, BenchCommandLine::Low::Excluded);
+  line.number("skin", "S",
+              "Verlet skin of the pair list, in kernel radii (default 0.3; 0 = no reuse).", 0, 2,
+              o.skin);
   line.choice("head", "The cheek sheet (default) or the cached default head (skipped when absent).",
               {{"sheet", false}, {"default", true}}, o.head);
   line.flag("sway", "The sheet (or head) sways (rotates and translates) every frame.", o.sway);
@@ -162,8 +171,11 @@ int runTears(int argc, char** argv) {
   const ParticleSet& p = sim.particles();
   double maxDistance = 0;
   for (int i = 0; i < p.size(); ++i) {
-    finite = finite && p.position[static_cast<std::size_t>(i)].allFinite() && p.velocity[static_cast<std::size_t>(i)].allFinite();
-    maxDistance = std::max(maxDistance, (p.position[static_cast<std::size_t>(i)] - scene->centre).norm() / scene->radius);
+    finite = finite && p.position[static_cast<std::size_t>(i)].allFinite() &&
+             p.velocity[static_cast<std::size_t>(i)].allFinite();
+    maxDistance =
+        std::max(maxDistance,
+                 (p.position[static_cast<std::size_t>(i)] - scene->centre).norm() / scene->radius);
   }
   std::vector<double> sorted = frameMs;
   std::sort(sorted.begin(), sorted.end());
@@ -182,7 +194,8 @@ int runTears(int argc, char** argv) {
   const double gridRate = searchRate(grid, p.position, sim.kernelRadius());
   NeighbourList finalList;
   grid.find(p.position, sim.kernelRadius(), finalList);
-  const double neighboursPerParticle = p.empty() ? 0.0 : static_cast<double>(finalList.indices.size()) / p.size();
+  const double neighboursPerParticle =
+      p.empty() ? 0.0 : static_cast<double>(finalList.indices.size()) / p.size();
   const double octreeRate = searchRate(octree, p.position, sim.kernelRadius());
   const double n = o.frames;
   const TearCounters& c = sim.counters();
@@ -262,33 +275,46 @@ int runTears(int argc, char** argv) {
     return finite ? 0 : 1;
   }
 
-  std::printf("tears on the %s: %d particles requested, %d alive, %d frames at %g fps, %s, %s neighbours, %s tension%s\n",
-              scene->name.c_str(), o.particles, p.size(), o.frames, o.fps, o.solver == PressureMethod::Wcsph ? "WCSPH" : "DFSPH",
-              o.neighbours == NeighbourMethod::Grid ? "grid" : "octree",
-              o.tension == SurfaceTensionModel::Mueller ? "Mueller" : "Akinci", o.sway ? ", swaying" : "");
-  std::printf("  frame time     median %8.3f ms  (mean %.3f, max %.3f; simulation alone %.3f)", median, mean,
-              sorted.back(), simulationMedian);
+  std::printf(
+      "tears on the %s: %d particles requested, %d alive, %d frames at %g fps, %s, %s neighbours, "
+      "%s tension%s\n",
+      scene->name.c_str(), o.particles, p.size(), o.frames, o.fps,
+      o.solver == PressureMethod::Wcsph ? "WCSPH" : "DFSPH",
+      o.neighbours == NeighbourMethod::Grid ? "grid" : "octree",
+      o.tension == SurfaceTensionModel::Mueller ? "Mueller" : "Akinci", o.sway ? ", swaying" : "");
+  std::printf("  frame time     median %8.3f ms  (mean %.3f, max %.3f; simulation alone %.3f)",
+              median, mean, sorted.back(), simulationMedian);
   if (target > 0) std::printf("   target <= %.3g ms  %s", target, mark(median <= target));
-  std::printf("\n  stages (mean ms/frame): neighbours %.3f  density %.3f  forces %.3f  collision %.3f  emission %.3f"
-              "  surface %.3f  trails %.3f\n",
-              total.neighbours / n, total.density / n, total.forces / n, total.collision / n, total.emission / n,
-              surfaceTotal / n, trailsTotal / n);
-  std::printf("  counters: sph_steps %lld  substeps %lld (%.1f/frame)  clamped %lld  recycled %lld  ode_queries %lld  trimesh_updates %lld  surface_runs %lld\n",
-              c.sphSteps, c.substeps, c.substeps / n, c.clamped, c.recycled, c.odeQueries, c.trimeshUpdates,
-              c.surfaceRuns);
-  std::printf("  sub-step limits: cfl %lld  acceleration %lld  viscosity %lld  frame end %lld   pair-list builds %lld (%.1f/frame)\n",
-              c.cflLimited, c.accelerationLimited, c.viscosityLimited,
-              c.substeps - c.cflLimited - c.accelerationLimited - c.viscosityLimited, c.neighbourSearches,
-              c.neighbourSearches / n);
+  std::printf(
+      "\n  stages (mean ms/frame): neighbours %.3f  density %.3f  forces %.3f  collision %.3f  "
+      "emission %.3f"
+      "  surface %.3f  trails %.3f\n",
+      total.neighbours / n, total.density / n, total.forces / n, total.collision / n,
+      total.emission / n, surfaceTotal / n, trailsTotal / n);
+  std::printf(
+      "  counters: sph_steps %lld  substeps %lld (%.1f/frame)  clamped %lld  recycled %lld  "
+      "ode_queries %lld  trimesh_updates %lld  surface_runs %lld\n",
+      c.sphSteps, c.substeps, c.substeps / n, c.clamped, c.recycled, c.odeQueries, c.trimeshUpdates,
+      c.surfaceRuns);
+  std::printf(
+      "  sub-step limits: cfl %lld  acceleration %lld  viscosity %lld  frame end %lld   pair-list "
+      "builds %lld (%.1f/frame)\n",
+      c.cflLimited, c.accelerationLimited, c.viscosityLimited,
+      c.substeps - c.cflLimited - c.accelerationLimited - c.viscosityLimited, c.neighbourSearches,
+      c.neighbourSearches / n);
   if (o.solver == PressureMethod::Dfsph)
-    std::printf("  DFSPH: %.2f divergence and %.2f density sweeps per sub-step, %lld solves capped\n",
-                c.substeps ? static_cast<double>(c.divergenceIterations) / c.substeps : 0.0,
-                c.substeps ? static_cast<double>(c.densityIterations) / c.substeps : 0.0, c.solverCapped);
+    std::printf(
+        "  DFSPH: %.2f divergence and %.2f density sweeps per sub-step, %lld solves capped\n",
+        c.substeps ? static_cast<double>(c.divergenceIterations) / c.substeps : 0.0,
+        c.substeps ? static_cast<double>(c.densityIterations) / c.substeps : 0.0, c.solverCapped);
   std::printf("  neighbours within h per particle at the end: %.1f\n", neighboursPerParticle);
-  std::printf("  checkpoint %.3f ms, restore %.3f ms, %.1f kB\n", checkpointMs, restoreMs, checkpointBytes / 1024.0);
-  std::printf("  neighbour search: grid %.2f M particles/s, octree %.2f M particles/s   target >= 1  %s\n", gridRate,
-              octreeRate, mark(gridRate >= 1));
-  std::printf("  all finite: %s   max distance from the skin centre: %.2f half skin heights\n", finite ? "yes" : "NO", maxDistance);
+  std::printf("  checkpoint %.3f ms, restore %.3f ms, %.1f kB\n", checkpointMs, restoreMs,
+              checkpointBytes / 1024.0);
+  std::printf(
+      "  neighbour search: grid %.2f M particles/s, octree %.2f M particles/s   target >= 1  %s\n",
+      gridRate, octreeRate, mark(gridRate >= 1));
+  std::printf("  all finite: %s   max distance from the skin centre: %.2f half skin heights\n",
+              finite ? "yes" : "NO", maxDistance);
   return finite ? 0 : 1;
 }
 

@@ -16,7 +16,8 @@ namespace lacrima::bench {
 
 using namespace lacrima::tears;
 
-std::unique_ptr<TearSimulation> TearScene::simulate(const TearSettings& settings, SimulationOptions options) const {
+std::unique_ptr<TearSimulation> TearScene::simulate(const TearSettings& settings,
+                                                    SimulationOptions options) const {
   if (head) {
     HeadTearOptions sources;  // the rig's, as the player passes them
     sources.leftSource = leftSource;
@@ -35,7 +36,8 @@ Eigen::Matrix3Xf TearScene::positionsAt(double t, bool sway) const {
   // The same motion the sheet benchmark always used: 2 cm at 0.5 Hz, 0.08 rad about y at 0.3 Hz
   // (in head units: decimetres for both scenes).
   const Eigen::Vector3d shift(0.02 * std::sin(2 * std::numbers::pi * 0.5 * t), 0, 0);
-  const Eigen::AngleAxisd turn(0.08 * std::sin(2 * std::numbers::pi * 0.3 * t), Eigen::Vector3d::UnitY());
+  const Eigen::AngleAxisd turn(0.08 * std::sin(2 * std::numbers::pi * 0.3 * t),
+                               Eigen::Vector3d::UnitY());
   const Eigen::Matrix3f r = turn.toRotationMatrix().cast<float>();
   const Eigen::Vector3f c = centre.cast<float>(), s = shift.cast<float>();
   return ((r * (rest.colwise() - c)).colwise() + (c + s)).eval();
@@ -75,7 +77,8 @@ std::optional<TearScene> defaultHeadScene(std::string& why) {
   }
   scene.name = "default head";
   scene.rest = loaded->mesh.positions;
-  scene.skinTriangles = skin->triangles;  // the trail builder's skin; forHead adds the eyes after it
+  scene.skinTriangles =
+      skin->triangles;  // the trail builder's skin; forHead adds the eyes after it
   Eigen::AlignedBox3d box;
   for (const Eigen::Vector3i& t : scene.skinTriangles)
     for (int k = 0; k < 3; ++k) box.extend(scene.rest.col(t[k]).cast<double>());
@@ -85,7 +88,8 @@ std::optional<TearScene> defaultHeadScene(std::string& why) {
   return scene;
 }
 
-TearPipeline::TearPipeline(const TearScene& scene, const TearSettings& settings, const SimulationOptions& options)
+TearPipeline::TearPipeline(const TearScene& scene, const TearSettings& settings,
+                           const SimulationOptions& options)
     : sim_(scene.simulate(settings, options)), trails_(scene.skinTriangles) {}
 
 FrameTimes TearPipeline::step(const Eigen::Matrix3Xf& positions, int left, int right, double dt) {

@@ -17,15 +17,15 @@
 namespace lacrima::bench {
 
 struct TearScene {
-  std::string name;                             // "cheek sheet" or "default head"
-  Eigen::Matrix3Xf rest;                        // all head (or sheet) vertices
-  std::vector<Eigen::Vector3i> skinTriangles;   // by global vertex, as the simulation has them
+  std::string name;                            // "cheek sheet" or "default head"
+  Eigen::Matrix3Xf rest;                       // all head (or sheet) vertices
+  std::vector<Eigen::Vector3i> skinTriangles;  // by global vertex, as the simulation has them
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  double radius = 1;                            // half the skin's height, for escape distances
-  std::optional<HeadMesh> head;                 // set for a real head: simulations via forHead
+  double radius = 1;             // half the skin's height, for escape distances
+  std::optional<HeadMesh> head;  // set for a real head: simulations via forHead
   // Tear sources in the head frame: the sheet's, or the rig's for the default head.
   Eigen::Vector3d leftSource = Eigen::Vector3d::Zero(), rightSource = Eigen::Vector3d::Zero();
-  double headHeight = 0;                        // SimulationOptions::headHeight for the sheet
+  double headHeight = 0;  // SimulationOptions::headHeight for the sheet
 
   // A fresh simulation of this scene (forHead for a head, the sheet's sources otherwise).
   std::unique_ptr<tears::TearSimulation> simulate(const tears::TearSettings& settings,
@@ -49,8 +49,9 @@ struct FrameTimes {
 
 // One pipeline instance: the simulation and the mesher and trail builder fed from it.
 class TearPipeline {
-public:
-  TearPipeline(const TearScene& scene, const tears::TearSettings& settings, const tears::SimulationOptions& options);
+ public:
+  TearPipeline(const TearScene& scene, const tears::TearSettings& settings,
+               const tears::SimulationOptions& options);
   // Steps every stage one frame; the stages are timed separately.
   FrameTimes step(const Eigen::Matrix3Xf& positions, int left, int right, double dt);
 
@@ -58,7 +59,7 @@ public:
   const tears::SurfaceMesher& mesher() const { return mesher_; }
   const tears::TrailBuilder& trails() const { return trails_; }
 
-private:
+ private:
   std::unique_ptr<tears::TearSimulation> sim_;
   tears::SurfaceMesher mesher_;
   tears::TrailBuilder trails_;

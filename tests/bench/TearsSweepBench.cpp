@@ -26,12 +26,12 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <limits>
-#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -45,7 +45,9 @@ namespace {
 using namespace lacrima::tears;
 
 // "x1.5" for a scale of 1.5: four characters of the number at most.
-std::string scaleLabel(double scale) { return std::string("x").append(std::to_string(scale), 0, 4); }
+std::string scaleLabel(double scale) {
+  return std::string("x").append(std::to_string(scale), 0, 4);
+}
 
 struct Options {
   int particles = 200;
@@ -56,14 +58,17 @@ struct Options {
 };
 
 std::optional<int> parseOptions(int argc, char** argv, Options& o) {
-  BenchCommandLine line("tears-sweep",
-                        "Error against a fine reference run beside ms per frame of the full tear pipeline\n"
-                        "(simulation + surface + trails) on the cheek sheet or the default head, sweeping the\n"
-                        "sub-step safety factor, the kernel size, the cube size, the neighbour structure and\n"
-                        "the pressure solver (WCSPH, DFSPH).");
-  line.wholeNumber("particles", "N", "Particles in all (default 200).", 1, 2 * kMaxTearParticles, o.particles);
+  BenchCommandLine line(
+      "tears-sweep",
+      "Error against a fine reference run beside ms per frame of the full tear pipeline\n"
+      "(simulation + surface + trails) on the cheek sheet or the default head, sweeping the\n"
+      "sub-step safety factor, the kernel size, the cube size, the neighbour structure and\n"
+      "the pressure solver (WCSPH, DFSPH).");
+  line.wholeNumber("particles", "N", "Particles in all (default 200).", 1, 2 * kMaxTearParticles,
+                   o.particles);
   line.wholeNumber("frames", "F", "Frames at 22 fps (default 66).", 1, 100000, o.frames);
-  line.choice("head", "The cheek sheet (default) or the cached default head with the rig's sources.",
+  line.choice("head",
+              "The cheek sheet (default) or the cached default head with the rig's sources.",
               {{"sheet", false}, {"default", true}}, o.head);
   line.text("csv", "FILE", "Also write the table as CSV.", o.csv);
   line.text("png", "FILE", "Also draw error against ms per frame (log axes) as a PNG.", o.png);
@@ -113,7 +118,8 @@ SimulationOptions optionsFor(const Variant& v) {
   o.lambdaCfl = kDefaultOptions.lambdaCfl * v.lambdaScale;
   o.lambdaAcceleration = kDefaultOptions.lambdaAcceleration * v.lambdaScale;
   // Explicit viscosity overshoots past k dt = 1 (AdaptiveTimeStep.h): scale it down, never up.
-  o.lambdaViscosity = std::min(kDefaultOptions.lambdaViscosity, kDefaultOptions.lambdaViscosity * v.lambdaScale);
+  o.lambdaViscosity =
+      std::min(kDefaultOptions.lambdaViscosity, kDefaultOptions.lambdaViscosity * v.lambdaScale);
   return o;
 }
 
@@ -121,7 +127,8 @@ void capture(const TearSurface& surface, RunResult& out) {
   const auto x = surface.positions();
   const auto t = surface.triangles();
   out.surfaceVertices.assign(static_cast<std::size_t>(x.cols()), Eigen::Vector3d::Zero());
-  for (Eigen::Index i = 0; i < x.cols(); ++i) out.surfaceVertices[static_cast<std::size_t>(i)] = x.col(i);
+  for (Eigen::Index i = 0; i < x.cols(); ++i)
+    out.surfaceVertices[static_cast<std::size_t>(i)] = x.col(i);
   out.surfaceArea = 0;
   for (Eigen::Index k = 0; k < t.cols(); ++k) {
     const Eigen::Vector3d a = x.col(t(0, k)), b = x.col(t(1, k)), c = x.col(t(2, k));
@@ -130,12 +137,14 @@ void capture(const TearSurface& surface, RunResult& out) {
 }
 
 // Runs the pipeline; `extraCubes` add meshers at those cube scales (results in `extras`).
-RunResult run(const TearScene& scene, const Variant& v, const Options& o, const std::vector<double>& extraCubes = {},
+RunResult run(const TearScene& scene, const Variant& v, const Options& o,
+              const std::vector<double>& extraCubes = {},
               std::vector<RunResult>* extras = nullptr) {
   TearPipeline pipeline(scene, settingsFor(v), optionsFor(v));
   TearSimulation& sim = pipeline.simulation();
   std::vector<std::unique_ptr<SurfaceMesher>> meshers;
-  for (std::size_t k = 0; k < extraCubes.size(); ++k) meshers.push_back(std::make_unique<SurfaceMesher>());
+  for (std::size_t k = 0; k < extraCubes.size(); ++k)
+    meshers.push_back(std::make_unique<SurfaceMesher>());
   std::vector<double> extraMs(extraCubes.size(), 0.0);
   const double dt = 1.0 / o.fps;
   const int left = (o.particles + 1) / 2, right = o.particles / 2;
@@ -187,9 +196,11 @@ RunResult run(const TearScene& scene, const Variant& v, const Options& o, const 
 // Nearest-vertex lookups through a hash grid of cell edge `cell` (exact: rings grow until the
 // best distance found is inside the searched cube).
 class NearestVertex {
-public:
-  NearestVertex(const std::vector<Eigen::Vector3d>& points, double cell) : points_(points), cell_(cell) {
-    for (std::size_t i = 0; i < points.size(); ++i) cells_[key(cellOf(points[i]))].push_back(static_cast<int>(i));
+ public:
+  NearestVertex(const std::vector<Eigen::Vector3d>& points, double cell)
+      : points_(points), cell_(cell) {
+    for (std::size_t i = 0; i < points.size(); ++i)
+      cells_[key(cellOf(points[i]))].push_back(static_cast<int>(i));
   }
   double distance(const Eigen::Vector3d& x) const {
     if (points_.empty()) return std::numeric_limits<double>::infinity();
@@ -199,21 +210,27 @@ public:
       for (int dx = -ring; dx <= ring; ++dx)
         for (int dy = -ring; dy <= ring; ++dy)
           for (int dz = -ring; dz <= ring; ++dz) {
-            if (std::max({std::abs(dx), std::abs(dy), std::abs(dz)}) != ring) continue;  // the shell only
+            if (std::max({std::abs(dx), std::abs(dy), std::abs(dz)}) != ring)
+              continue;  // the shell only
             const auto it = cells_.find(key(c + Eigen::Vector3i(dx, dy, dz)));
             if (it == cells_.end()) continue;
-            for (int i : it->second) best = std::min(best, (points_[static_cast<std::size_t>(i)] - x).norm());
+            for (int i : it->second)
+              best = std::min(best, (points_[static_cast<std::size_t>(i)] - x).norm());
           }
       if (best <= ring * cell_) return best;  // nothing outside this cube can be closer
     }
-    for (const Eigen::Vector3d& p : points_) best = std::min(best, (p - x).norm());  // far away: brute force
+    for (const Eigen::Vector3d& p : points_)
+      best = std::min(best, (p - x).norm());  // far away: brute force
     return best;
   }
 
-private:
-  Eigen::Vector3i cellOf(const Eigen::Vector3d& x) const { return (x / cell_).array().floor().cast<int>(); }
+ private:
+  Eigen::Vector3i cellOf(const Eigen::Vector3d& x) const {
+    return (x / cell_).array().floor().cast<int>();
+  }
   static std::int64_t key(const Eigen::Vector3i& c) {
-    return (std::int64_t(c.x() & 0x1fffff) << 42) | (std::int64_t(c.y() & 0x1fffff) << 21) | std::int64_t(c.z() & 0x1fffff);
+    return (std::int64_t(c.x() & 0x1fffff) << 42) | (std::int64_t(c.y() & 0x1fffff) << 21) |
+           std::int64_t(c.z() & 0x1fffff);
   }
   const std::vector<Eigen::Vector3d>& points_;
   double cell_;
@@ -227,9 +244,12 @@ double meanNearest(const std::vector<Eigen::Vector3d>& from, const NearestVertex
   return sum / static_cast<double>(from.size());
 }
 
-Row compare(const Variant& v, const RunResult& r, const RunResult& ref, double radius, double cell) {
+Row compare(const Variant& v, const RunResult& r, const RunResult& ref, double radius,
+            double cell) {
   Row row{v, r.msPerFrame, r.substepsPerFrame, 0, 0, 0, 0, 0, false};
-  row.centroidError = 0.5 * ((r.centroid[0] - ref.centroid[0]).norm() + (r.centroid[1] - ref.centroid[1]).norm()) / radius;
+  row.centroidError =
+      0.5 * ((r.centroid[0] - ref.centroid[0]).norm() + (r.centroid[1] - ref.centroid[1]).norm()) /
+      radius;
   double sum = 0;
   for (const auto& [id, x] : r.particles) {
     const auto it = ref.particles.find(id);
@@ -242,9 +262,12 @@ Row compare(const Variant& v, const RunResult& r, const RunResult& ref, double r
     row.surfaceError = std::numeric_limits<double>::quiet_NaN();
   } else {
     const NearestVertex toRef(ref.surfaceVertices, cell), toRun(r.surfaceVertices, cell);
-    row.surfaceError = 0.5 * (meanNearest(r.surfaceVertices, toRef) + meanNearest(ref.surfaceVertices, toRun)) / radius;
+    row.surfaceError =
+        0.5 * (meanNearest(r.surfaceVertices, toRef) + meanNearest(ref.surfaceVertices, toRun)) /
+        radius;
   }
-  row.areaDifference = ref.surfaceArea > 0 ? std::abs(r.surfaceArea - ref.surfaceArea) / ref.surfaceArea : 0;
+  row.areaDifference =
+      ref.surfaceArea > 0 ? std::abs(r.surfaceArea - ref.surfaceArea) / ref.surfaceArea : 0;
   return row;
 }
 
@@ -259,14 +282,18 @@ int runTearsSweep(int argc, char** argv) {
 
   // The reference: the smallest sub-step and cube of the sweep, default kernel, grid.
   const double kFineLambda = 0.25, kFineCube = 0.25;
-  const Variant reference{"reference", "fine", kFineLambda, 1, kFineCube, NeighbourMethod::Grid, PressureMethod::Wcsph};
-  std::printf("tears-sweep: %d particles, %d frames at %g fps on the %s; reference: sub-step x%g, cube x%g ...\n",
-              o.particles, o.frames, o.fps, scene.name.c_str(), kFineLambda, kFineCube);
+  const Variant reference{
+      "reference", "fine", kFineLambda, 1, kFineCube, NeighbourMethod::Grid, PressureMethod::Wcsph};
+  std::printf(
+      "tears-sweep: %d particles, %d frames at %g fps on the %s; reference: sub-step x%g, cube x%g "
+      "...\n",
+      o.particles, o.frames, o.fps, scene.name.c_str(), kFineLambda, kFineCube);
   std::fflush(stdout);
   const std::vector<double> cubeScales = {0.5, 1, 2};
   std::vector<RunResult> cubeRuns;
   const RunResult ref = run(scene, reference, o, cubeScales, &cubeRuns);
-  const double radius = scene.simulate(settingsFor(reference), optionsFor(reference))->particleRadius();
+  const double radius =
+      scene.simulate(settingsFor(reference), optionsFor(reference))->particleRadius();
   const double cell = 2 * radius;
 
   std::vector<Row> rows;
@@ -276,8 +303,8 @@ int runTearsSweep(int argc, char** argv) {
     rows.push_back(compare(v, run(scene, v, o), ref, radius, cell));
   }
   for (double s : {0.5, 1.0, 1.5, 2.0}) {
-    const Variant v{"DFSPH, sub-step factor", scaleLabel(s), s, 1, 1, NeighbourMethod::Grid,
-                    PressureMethod::Dfsph};
+    const Variant v{"DFSPH, sub-step factor", scaleLabel(s),        s, 1, 1,
+                    NeighbourMethod::Grid,    PressureMethod::Dfsph};
     rows.push_back(compare(v, run(scene, v, o), ref, radius, cell));
   }
   for (double s : {0.5, 0.75, 1.0, 1.5}) {
@@ -286,34 +313,41 @@ int runTearsSweep(int argc, char** argv) {
   }
   for (std::size_t k = 0; k < cubeScales.size(); ++k) {
     const Variant v{"cube size (surface)", scaleLabel(cubeScales[k]), kFineLambda, 1,
-                    cubeScales[k], NeighbourMethod::Grid};
+                    cubeScales[k],         NeighbourMethod::Grid};
     Row row = compare(v, cubeRuns[k], ref, radius, cell);
     row.surfaceSeries = true;
     rows.push_back(row);
   }
   for (NeighbourMethod m : {NeighbourMethod::Grid, NeighbourMethod::Octree}) {
-    const Variant v{"neighbour structure", m == NeighbourMethod::Grid ? "grid" : "octree", 1, 1, 1, m};
+    const Variant v{
+        "neighbour structure", m == NeighbourMethod::Grid ? "grid" : "octree", 1, 1, 1, m};
     rows.push_back(compare(v, run(scene, v, o), ref, radius, cell));
   }
 
-  std::printf("  errors in reference particle radii (%.4g head units); ms = full pipeline per frame (mean)\n", radius);
-  std::printf("  %-26s %-7s %10s %9s %13s %10s %12s %10s %8s\n", "swept", "value", "ms/frame", "substeps",
-              "particle RMS", "centroid", "surface err", "area diff", "matched");
+  std::printf(
+      "  errors in reference particle radii (%.4g head units); ms = full pipeline per frame "
+      "(mean)\n",
+      radius);
+  std::printf("  %-26s %-7s %10s %9s %13s %10s %12s %10s %8s\n", "swept", "value", "ms/frame",
+              "substeps", "particle RMS", "centroid", "surface err", "area diff", "matched");
   for (const Row& r : rows)
-    std::printf("  %-26s %-7s %10.3f %9.1f %13.4g %10.4g %12.4g %9.1f%% %8d\n", r.variant.series.c_str(),
-                r.variant.label.c_str(), r.msPerFrame, r.substepsPerFrame, r.particleRms, r.centroidError,
-                r.surfaceError, 100 * r.areaDifference, r.matched);
+    std::printf("  %-26s %-7s %10.3f %9.1f %13.4g %10.4g %12.4g %9.1f%% %8d\n",
+                r.variant.series.c_str(), r.variant.label.c_str(), r.msPerFrame, r.substepsPerFrame,
+                r.particleRms, r.centroidError, r.surfaceError, 100 * r.areaDifference, r.matched);
 
   if (!o.csv.empty()) {
     std::ofstream csv(o.csv);
-    csv << "scene,series,value,solver,lambda_scale,kernel_scale,cube_scale,neighbours,ms_per_frame,substeps_per_frame,"
-           "particle_rms_radii,centroid_error_radii,surface_error_radii,area_difference,matched_particles\n";
+    csv << "scene,series,value,solver,lambda_scale,kernel_scale,cube_scale,neighbours,ms_per_frame,"
+           "substeps_per_frame,"
+           "particle_rms_radii,centroid_error_radii,surface_error_radii,area_difference,matched_"
+           "particles\n";
     for (const Row& r : rows) {
       const Variant& v = r.variant;
       csv << (o.head ? "default_head" : "cheek_sheet") << ',' << v.series << ',' << v.label << ','
-          << (v.solver == PressureMethod::Wcsph ? "wcsph" : "dfsph") << ',' << v.lambdaScale << ',' << v.kernelScale
-          << ',' << v.cubeScale << ',' << (v.neighbours == NeighbourMethod::Grid ? "grid" : "octree") << ','
-          << r.msPerFrame << ',' << r.substepsPerFrame << ',' << r.particleRms << ',' << r.centroidError << ','
+          << (v.solver == PressureMethod::Wcsph ? "wcsph" : "dfsph") << ',' << v.lambdaScale << ','
+          << v.kernelScale << ',' << v.cubeScale << ','
+          << (v.neighbours == NeighbourMethod::Grid ? "grid" : "octree") << ',' << r.msPerFrame
+          << ',' << r.substepsPerFrame << ',' << r.particleRms << ',' << r.centroidError << ','
           << r.surfaceError << ',' << r.areaDifference << ',' << r.matched << '\n';
     }
     if (!csv) {
@@ -327,14 +361,18 @@ int runTearsSweep(int argc, char** argv) {
     for (const Row& r : rows) {
       if (r.variant.series == "reference") continue;
       if (series.empty() || series.back().name.rfind(r.variant.series, 0) != 0)
-        series.push_back({r.variant.series + (r.surfaceSeries ? ": surface error" : ": centroid error"), {}});
-      series.back().points.push_back({r.msPerFrame, r.surfaceSeries ? r.surfaceError : r.centroidError, r.variant.label});
+        series.push_back(
+            {r.variant.series + (r.surfaceSeries ? ": surface error" : ": centroid error"), {}});
+      series.back().points.push_back(
+          {r.msPerFrame, r.surfaceSeries ? r.surfaceError : r.centroidError, r.variant.label});
     }
     std::string why;
-    if (!writeLogLogPlot(o.png, "Tears on the " + scene.name + ": error against cost (" + std::to_string(o.particles) + " particles, " +
-                                    std::to_string(o.frames) + " frames)",
-                         "ms per frame (simulation + surface + trails)", "error vs reference (particle radii)", series,
-                         why)) {
+    if (!writeLogLogPlot(o.png,
+                         "Tears on the " + scene.name + ": error against cost (" +
+                             std::to_string(o.particles) + " particles, " +
+                             std::to_string(o.frames) + " frames)",
+                         "ms per frame (simulation + surface + trails)",
+                         "error vs reference (particle radii)", series, why)) {
       std::fprintf(stderr, "tears-sweep: %s\n", why.c_str());
       return 1;
     }

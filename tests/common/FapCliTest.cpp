@@ -54,7 +54,7 @@ class FapCliTest : public QObject {
     return file;
   }
 
-private slots:
+ private slots:
   void initTestCase() { QVERIFY(dir_.isValid()); }
 
   void helpAndUsage() {

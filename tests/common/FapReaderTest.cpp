@@ -64,7 +64,7 @@ QString describe(const Warnings& warnings) {
 // Caps the address space a little above what the process already maps, so an allocation
 // sized by a number in a file throws std::bad_alloc instead of quietly succeeding.
 class AddressSpaceCap {
-public:
+ public:
   explicit AddressSpaceCap(long long headroomBytes) {
     getrlimit(RLIMIT_AS, &saved_);
     std::ifstream status("/proc/self/status");
@@ -85,7 +85,7 @@ public:
   }
   bool active() const { return active_; }
 
-private:
+ private:
   rlimit saved_{};
   bool active_ = false;
 };
@@ -120,7 +120,7 @@ class FapReaderTest : public QObject {
     }
   }
 
-private slots:
+ private slots:
   void initTestCase() { QVERIFY(tmp_.isValid()); }
 
   // ---- the public samples (facts from samples/SOURCES.md, values read from the files) ----

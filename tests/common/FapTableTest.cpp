@@ -1,8 +1,8 @@
 #include <lacrima/common/FapTable.h>
 
 #include <Eigen/Geometry>
-#include <algorithm>
 #include <QtTest>
+#include <algorithm>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -35,8 +35,8 @@ bool isSpatial(const FapInfo& info) {
 // The counterpart's name by the standard's spelling of sides: "_l_" / "_r_" and the
 // "_lm" / "_rm" lip points (lower_t_lip_lm, raise_b_lip_lm_o, ...).
 std::string swapSide(std::string name) {
-  for (auto [from, to] : {std::pair{"_l_", "_r_"}, std::pair{"_r_", "_l_"},
-                          std::pair{"_lm", "_rm"}, std::pair{"_rm", "_lm"}}) {
+  for (auto [from, to] : {std::pair{"_l_", "_r_"}, std::pair{"_r_", "_l_"}, std::pair{"_lm", "_rm"},
+                          std::pair{"_rm", "_lm"}}) {
     if (auto at = name.find(from); at != std::string::npos) {
       name.replace(at, std::string(from).size(), to);
       return name;
@@ -77,9 +77,8 @@ class FapTableTest : public QObject {
     using M = FapMotion;
     auto row = [](int fap, const char* name, U unit, bool bi, M motion, const char* positive,
                   int group, const char* fp) {
-      QTest::addRow("%d %s", fap, name)
-          << fap << QString(name) << int(unit) << bi << int(motion) << QString(positive)
-          << group << QString(fp);
+      QTest::addRow("%d %s", fap, name) << fap << QString(name) << int(unit) << bi << int(motion)
+                                        << QString(positive) << group << QString(fp);
     };
     row(1, "viseme", U::None, false, M::HighLevel, "", 1, "");
     row(2, "expression", U::None, false, M::HighLevel, "", 1, "");
@@ -212,8 +211,7 @@ class FapTableTest : public QObject {
         {FapUnit::IRISD, range({{19, 22}, {29, 30}})},
         {FapUnit::ES, range({{27, 28}, {37, 40}})},
         {FapUnit::ENS, range({{31, 36}, {41, 42}, {61, 68}})},
-        {FapUnit::MNS, range({{3, 5}, {8, 14}, {16, 18}, {44, 44}, {46, 46}, {51, 52},
-                              {55, 60}})},
+        {FapUnit::MNS, range({{3, 5}, {8, 14}, {16, 18}, {44, 44}, {46, 46}, {51, 52}, {55, 60}})},
         {FapUnit::MW, range({{6, 7}, {15, 15}, {43, 43}, {45, 45}, {53, 54}})},
         {FapUnit::AU, range({{23, 26}, {47, 50}})},
         {FapUnit::None, range({{1, 2}})},

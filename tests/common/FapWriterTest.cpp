@@ -59,7 +59,7 @@ class FapWriterTest : public QObject {
 
   QTemporaryDir tmp_;
 
-private slots:
+ private slots:
   void initTestCase() { QVERIFY(tmp_.isValid()); }
 
   void writesThePortableProfile() {

@@ -97,8 +97,7 @@ class FapuTest : public QObject {
     std::swap(p.pupilLeft, p.pupilRight);
     std::swap(p.lipCornerLeft, p.lipCornerRight);
     const std::string message = errorOf(p);
-    QVERIFY2(mentions(message, {"ES0 = -64 is not positive", "3.5", "3.6", "+x"}),
-             message.c_str());
+    QVERIFY2(mentions(message, {"ES0 = -64 is not positive", "3.5", "3.6", "+x"}), message.c_str());
     QVERIFY2(mentions(message, {"MW0 = -50 is not positive", "8.3", "8.4"}), message.c_str());
     QVERIFY2(!mentions(message, {"ENS0"}) && !mentions(message, {"MNS0"}), message.c_str());
   }
@@ -113,9 +112,9 @@ class FapuTest : public QObject {
 
   void upsideDownFaceIsRejected() {
     FapuReferencePoints p = syntheticFace();
-    for (Eigen::Vector3d* v : {&p.upperLidLeft, &p.upperLidRight, &p.lowerLidLeft,
-                               &p.lowerLidRight, &p.pupilLeft, &p.pupilRight, &p.noseBottom,
-                               &p.innerUpperLip, &p.lipCornerLeft, &p.lipCornerRight})
+    for (Eigen::Vector3d* v :
+         {&p.upperLidLeft, &p.upperLidRight, &p.lowerLidLeft, &p.lowerLidRight, &p.pupilLeft,
+          &p.pupilRight, &p.noseBottom, &p.innerUpperLip, &p.lipCornerLeft, &p.lipCornerRight})
       v->y() = -v->y();
     const std::string message = errorOf(p);
     QVERIFY2(mentions(message, {"IRISD0 left eye", "3.1", "3.3", "ENS0", "9.15", "MNS0", "2.2"}),

@@ -28,7 +28,7 @@ HeadMesh seamedSquare() {
 class HeadMeshTest : public QObject {
   Q_OBJECT
 
-private slots:
+ private slots:
   void lookup() {
     const HeadMesh mesh = seamedSquare();
     QCOMPARE(mesh.vertexCount(), 6);
@@ -64,7 +64,7 @@ private slots:
     for (int v = 0; v < 6; ++v) QVERIFY(std::abs(mesh.normals.col(v).norm() - 1.f) < 1e-6f);
     QVERIFY(mesh.normals.col(1).isApprox(mesh.normals.col(4)));
     QVERIFY(mesh.normals.col(2).isApprox(mesh.normals.col(5)));
-    QVERIFY(mesh.normals.col(0).isApprox(Eigen::Vector3f::UnitZ()));  // flat half faces +z
+    QVERIFY(mesh.normals.col(0).isApprox(Eigen::Vector3f::UnitZ()));   // flat half faces +z
     QVERIFY(!mesh.normals.col(1).isApprox(Eigen::Vector3f::UnitZ()));  // seam sees both halves
   }
 

@@ -7,7 +7,7 @@ using namespace lacrima;
 
 class ImageSizeTest : public QObject {
   Q_OBJECT
-private slots:
+ private slots:
   void readsWidthAndHeight() {
     const ParsedImageSize parsed = parseImageSize("1280x720");
     QVERIFY(parsed.error.empty());
@@ -21,8 +21,9 @@ private slots:
 
   void rejectsWhatIsNotASize_data() {
     QTest::addColumn<QString>("text");
-    for (const char* text : {"", "big", "1280", "1280x", "x720", "1280x720x2", " 1280x720", "1280 x 720", "12.5x720",
-                             "-1280x720", "15x720", "1280x8193", "99999999999x720"})
+    for (const char* text :
+         {"", "big", "1280", "1280x", "x720", "1280x720x2", " 1280x720", "1280 x 720", "12.5x720",
+          "-1280x720", "15x720", "1280x8193", "99999999999x720"})
       QTest::newRow(text) << QString::fromLatin1(text);
   }
   void rejectsWhatIsNotASize() {

@@ -14,7 +14,7 @@ using namespace lacrima;
 class JsonWriterTest : public QObject {
   Q_OBJECT
 
-private slots:
+ private slots:
   void compactKeepsOrder() {
     JsonWriter json(JsonWriter::Layout::Compact);
     json.beginObject();

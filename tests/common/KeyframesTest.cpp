@@ -57,7 +57,7 @@ std::pair<float, float> boundsAround(const std::vector<Keyframe>& keys, int fap,
 class KeyframesTest : public QObject {
   Q_OBJECT
 
-private slots:
+ private slots:
   void interpolationNamesRoundTrip() {
     QCOMPARE(toString(Interpolation::Linear), std::string_view("linear"));
     QCOMPARE(toString(Interpolation::Smooth), std::string_view("smooth"));
@@ -89,7 +89,8 @@ private slots:
   }
 
   void linearIsExactAtKeysAndMidpoints() {
-    const KeyframeSequence keys({makeKey(0.0, {{kOpenJaw, 0.0f}}), makeKey(2.0, {{kOpenJaw, 100.0f}}),
+    const KeyframeSequence keys({makeKey(0.0, {{kOpenJaw, 0.0f}}),
+                                 makeKey(2.0, {{kOpenJaw, 100.0f}}),
                                  makeKey(3.0, {{kOpenJaw, -50.0f}})});
     QCOMPARE(keys.evaluate(0.0)[channelIndex(kOpenJaw)], 0.0f);
     QCOMPARE(keys.evaluate(2.0)[channelIndex(kOpenJaw)], 100.0f);
@@ -119,7 +120,8 @@ private slots:
 
   void bakeStartsAtTheFirstKey() {
     // Keys from 0.5 s to 1.5 s at 10 fps: 11 frames, frame i at 0.5 + i / 10.
-    const KeyframeSequence keys({makeKey(0.5, {{kOpenJaw, 0.0f}}), makeKey(1.5, {{kOpenJaw, 10.0f}})});
+    const KeyframeSequence keys(
+        {makeKey(0.5, {{kOpenJaw, 0.0f}}), makeKey(1.5, {{kOpenJaw, 10.0f}})});
     const FapAnimation baked = keys.bake(10.0);
     QCOMPARE(baked.frameCount(), 11);
     for (int i = 0; i < baked.frameCount(); ++i) {
@@ -154,7 +156,8 @@ private slots:
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, keys.evaluate(NAN));
 
     // A channel keyed later than the sequence starts holds its first value until then.
-    const KeyframeSequence late({makeKey(0.0, {{kRaiseBLip, 1.0f}}), makeKey(1.0, {{kOpenJaw, 9.0f}}),
+    const KeyframeSequence late({makeKey(0.0, {{kRaiseBLip, 1.0f}}),
+                                 makeKey(1.0, {{kOpenJaw, 9.0f}}),
                                  makeKey(2.0, {{kOpenJaw, 19.0f}})});
     const FapAnimation baked = late.bake(2.0);
     QCOMPARE(baked.frameCount(), 5);
@@ -164,7 +167,8 @@ private slots:
   }
 
   void unsetChannelsStayZero() {
-    const KeyframeSequence keys({makeKey(0.0, {{kOpenJaw, 3.0f}}), makeKey(1.0, {{kOpenJaw, 8.0f}})});
+    const KeyframeSequence keys(
+        {makeKey(0.0, {{kOpenJaw, 3.0f}}), makeKey(1.0, {{kOpenJaw, 8.0f}})});
     const FapAnimation baked = keys.bake(22.0);
     for (const FapValues& frame : baked.frames) {
       for (int fap = 1; fap <= kChannelCount; ++fap) {
@@ -203,8 +207,9 @@ private slots:
       }
       const FapAnimation baked = KeyframeSequence(list).bake(200.0);
       for (int f = 1; f < baked.frameCount(); ++f) {
-        QVERIFY2(baked.frames[f][channelIndex(kOpenJaw)] >= baked.frames[f - 1][channelIndex(kOpenJaw)],
-                 qPrintable(QString("seed %1 frame %2").arg(seed).arg(f)));
+        QVERIFY2(
+            baked.frames[f][channelIndex(kOpenJaw)] >= baked.frames[f - 1][channelIndex(kOpenJaw)],
+            qPrintable(QString("seed %1 frame %2").arg(seed).arg(f)));
       }
     }
   }
@@ -226,14 +231,20 @@ private slots:
         const double t = start + (end - start) * i / 2000.0;
         const FapValues values = keys.evaluate(t);
         for (int fap : {kOpenJaw, kRaiseBLip}) {
-          if (std::none_of(list.begin(), list.end(), [&](const Keyframe& k) { return k.has(fap); })) {
+          if (std::none_of(list.begin(), list.end(),
+                           [&](const Keyframe& k) { return k.has(fap); })) {
             continue;
           }
           const auto [low, high] = boundsAround(list, fap, t);
           const float v = values[channelIndex(fap)];
           QVERIFY2(v >= low && v <= high,
                    qPrintable(QString("seed %1 fap %2 t %3: %4 outside [%5, %6]")
-                                  .arg(seed).arg(fap).arg(t).arg(v).arg(low).arg(high)));
+                                  .arg(seed)
+                                  .arg(fap)
+                                  .arg(t)
+                                  .arg(v)
+                                  .arg(low)
+                                  .arg(high)));
         }
       }
     }
@@ -275,7 +286,8 @@ private slots:
   }
 
   void tearChannelsAreWholeAndNonNegative() {
-    const KeyframeSequence keys({makeKey(0.0, {{kTearLeftFap, 0.0f}}), makeKey(1.0, {{kTearLeftFap, 5.0f}})});
+    const KeyframeSequence keys(
+        {makeKey(0.0, {{kTearLeftFap, 0.0f}}), makeKey(1.0, {{kTearLeftFap, 5.0f}})});
     const FapAnimation baked = keys.bake(22.0);
     QCOMPARE(baked.frameCount(), 23);
     for (int i = 0; i < baked.frameCount(); ++i) {
@@ -345,7 +357,8 @@ private slots:
 
   void constructorSortsAndTheLastDuplicateWins() {
     const KeyframeSequence keys({makeKey(2.0, {{kOpenJaw, 2.0f}}), makeKey(0.0, {{kOpenJaw, 0.0f}}),
-                                 makeKey(2.0, {{kRaiseBLip, 9.0f}}), makeKey(1.0, {{kOpenJaw, 1.0f}})});
+                                 makeKey(2.0, {{kRaiseBLip, 9.0f}}),
+                                 makeKey(1.0, {{kOpenJaw, 1.0f}})});
     QCOMPARE(keys.keys().size(), std::size_t{3});
     QCOMPARE(keys.keys()[0].time, 0.0);
     QCOMPARE(keys.keys()[1].time, 1.0);
@@ -405,7 +418,8 @@ private slots:
       QVERIFY_THROWS_EXCEPTION(std::invalid_argument, KeyframeSequence::fromAnimation(animation));
     }
     // Absurd lengths are refused instead of exhausting memory.
-    const KeyframeSequence huge({makeKey(0.0, {{kOpenJaw, 1.0f}}), makeKey(1e9, {{kOpenJaw, 1.0f}})});
+    const KeyframeSequence huge(
+        {makeKey(0.0, {{kOpenJaw, 1.0f}}), makeKey(1e9, {{kOpenJaw, 1.0f}})});
     QVERIFY_THROWS_EXCEPTION(std::length_error, huge.bake(1000.0));
   }
 

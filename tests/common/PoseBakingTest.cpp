@@ -52,7 +52,8 @@ Eigen::Vector3f offsetOf(const VertexPose& pose, int v) {
 }
 
 // Distance from the axis through the eye's centre and its pupil point.
-double axisDistance(const Eigen::Vector3f& p, const Eigen::Vector3f& centre, const Eigen::Vector3f& pupil) {
+double axisDistance(const Eigen::Vector3f& p, const Eigen::Vector3f& centre,
+                    const Eigen::Vector3f& pupil) {
   const Eigen::Vector3d a = (pupil - centre).cast<double>().normalized();
   const Eigen::Vector3d d = (p - centre).cast<double>();
   return (d - d.dot(a) * a).norm();
@@ -95,11 +96,15 @@ class PoseBakingTest : public QObject {
       blender.blend(values, positions, normals);
 
       const int fp = head.featureVertex.at(id);
-      const Eigen::Vector3d moved = (positions.col(fp) - head.mesh.positions.col(fp)).cast<double>();
+      const Eigen::Vector3d moved =
+          (positions.col(fp) - head.mesh.positions.col(fp)).cast<double>();
       const Eigen::Vector3d expected = x0 * info.positiveMotion.cast<double>();
       QVERIFY2((moved - expected).norm() < 1e-4 * x0,
                qPrintable(QString("FAP %1 moved %2 by %3, expected %4 along its direction")
-                              .arg(fap).arg(id.c_str()).arg(moved.norm()).arg(x0)));
+                              .arg(fap)
+                              .arg(id.c_str())
+                              .arg(moved.norm())
+                              .arg(x0)));
 
       const FeaturePointInfluence& influence = head.influences.at(id);
       std::vector<float> weight(size_t(head.mesh.vertexCount()), 0.0f);
@@ -108,8 +113,9 @@ class PoseBakingTest : public QObject {
       for (int v = 0; v < head.mesh.vertexCount(); ++v) {
         const Eigen::Vector3d d = (positions.col(v) - head.mesh.positions.col(v)).cast<double>();
         if (weight[size_t(v)] == 0.0f) {
-          QVERIFY2(positions.col(v) == head.mesh.positions.col(v),
-                   qPrintable(QString("FAP %1 moved vertex %2 outside the influence").arg(fap).arg(v)));
+          QVERIFY2(
+              positions.col(v) == head.mesh.positions.col(v),
+              qPrintable(QString("FAP %1 moved vertex %2 outside the influence").arg(fap).arg(v)));
         } else {
           QVERIFY((d - weight[size_t(v)] * expected).norm() < 1e-4 * x0);
         }
@@ -122,12 +128,14 @@ class PoseBakingTest : public QObject {
     const PoseSet set = bakePoses(head.rig());
     for (int fap : translationalFaps()) {
       const VertexPose& pose = poseOf(set, fap);
-      const size_t influenceSize = head.influences.at(std::string(fapInfo(fap).featurePoint)).vertices.size();
+      const size_t influenceSize =
+          head.influences.at(std::string(fapInfo(fap).featurePoint)).vertices.size();
       QCOMPARE(pose.vertices.size(), influenceSize);
       QCOMPARE(size_t(pose.offsets.cols()), influenceSize);
       QVERIFY(influenceSize < size_t(head.mesh.vertexCount()) / 4);  // a local pose, not dense
       QVERIFY(std::is_sorted(pose.vertices.begin(), pose.vertices.end()));
-      QVERIFY(std::adjacent_find(pose.vertices.begin(), pose.vertices.end()) == pose.vertices.end());
+      QVERIFY(std::adjacent_find(pose.vertices.begin(), pose.vertices.end()) ==
+              pose.vertices.end());
     }
   }
 
@@ -149,7 +157,8 @@ class PoseBakingTest : public QObject {
         expected.x() = -expected.x();
         const Eigen::Vector3f got = offsetOf(image, head.mirror[size_t(v)]);
         QVERIFY2((got - expected).norm() <= 1e-6f * std::max(1e-6f, expected.norm()),
-                 qPrintable(QString("FAP %1 vertex %2 vs FAP %3").arg(fap).arg(v).arg(mirroredFap(fap))));
+                 qPrintable(
+                     QString("FAP %1 vertex %2 vs FAP %3").arg(fap).arg(v).arg(mirroredFap(fap))));
       }
       if (mirroredFap(fap) != fap) ++pairs;
     }
@@ -182,8 +191,10 @@ class PoseBakingTest : public QObject {
     const PoseSet set = bakePoses(rig, &report);
     for (int fap : {3, 14, 15}) {
       QVERIFY(poseOf(set, fap).empty());
-      QVERIFY2(warned(report, {"FAP " + std::to_string(fap) + " (", "2.1"}), allWarnings(report).c_str());
-      QVERIFY(std::find(report.bakedFaps.begin(), report.bakedFaps.end(), fap) == report.bakedFaps.end());
+      QVERIFY2(warned(report, {"FAP " + std::to_string(fap) + " (", "2.1"}),
+               allWarnings(report).c_str());
+      QVERIFY(std::find(report.bakedFaps.begin(), report.bakedFaps.end(), fap) ==
+              report.bakedFaps.end());
     }
     for (int fap : {53, 59}) {
       QVERIFY(poseOf(set, fap).empty());
@@ -267,7 +278,8 @@ class PoseBakingTest : public QObject {
 
     const PoseSet set = bakePoses(head.rig());
     QCOMPARE(offsetOf(poseOf(set, 3), n), offsetOf(poseOf(set, 3), skinVertex));
-    QCOMPARE(offsetOf(poseOf(set, 3), n).y(), -skinWeight * float(head.fapu.unitValue(FapUnit::MNS)));
+    QCOMPARE(offsetOf(poseOf(set, 3), n).y(),
+             -skinWeight * float(head.fapu.unitValue(FapUnit::MNS)));
     QVERIFY(std::binary_search(set.eyeLeft.vertices.begin(), set.eyeLeft.vertices.end(), n + 1));
     QCOMPARE(poseOf(set, 3).vertices.size(), jaw.vertices.size() + 1);
   }
@@ -307,7 +319,8 @@ class PoseBakingTest : public QObject {
         QVERIFY(std::abs(grown / r - (1 + value * step / (2 * pupilRadius))) < 1e-4);
       } else {
         ++inIris;
-        const double expected = r + value * 0.5 * step * (irisRadius - r) / (irisRadius - pupilRadius);
+        const double expected =
+            r + value * 0.5 * step * (irisRadius - r) / (irisRadius - pupilRadius);
         QVERIFY(std::abs(grown - expected) < 1e-5);
         QVERIFY(grown > r);
       }
@@ -373,9 +386,7 @@ class PoseBakingTest : public QObject {
     checkTongueRoll(head, set);
   }
 
-  void nullMeshThrows() {
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, bakePoses(RigInput{}));
-  }
+  void nullMeshThrows() { QVERIFY_THROWS_EXCEPTION(std::invalid_argument, bakePoses(RigInput{})); }
 
  private:
   static void checkTongueRoll(const synthetic::Head& head, const PoseSet& set) {

@@ -46,7 +46,8 @@ FapValues mixedFrame(unsigned seed) {
   for (int fap = 3; fap <= kFapCount; ++fap) {
     const FapInfo& info = fapInfo(fap);
     const double t = double(random() % 10001) / 10000.0;
-    channel(values, fap) = float(std::round(0.5 * (info.sliderMin + t * (info.sliderMax - info.sliderMin))));
+    channel(values, fap) =
+        float(std::round(0.5 * (info.sliderMin + t * (info.sliderMax - info.sliderMin))));
   }
   return values;
 }
@@ -75,7 +76,7 @@ class PoseBlendingTest : public QObject {
     const PoseSet set = bakePoses(head.rig());
     const PoseBlender blender(head.mesh, set);
     FapValues values{};
-    channel(values, 3) = 700.0f;   // jaw and
+    channel(values, 3) = 700.0f;    // jaw and
     channel(values, 52) = -300.0f;  // lower lip overlap around the chin
     Eigen::Matrix3Xf positions, normals;
     blender.blend(values, positions, normals);
@@ -101,8 +102,11 @@ class PoseBlendingTest : public QObject {
     QVERIFY((before - after).cwiseAbs().maxCoeff() < 1e-5f);
     // and it did turn: the nose tip swings 60 degrees about the vertical through the pivot
     const int nose = head.featureVertex.at("9.3");
-    const Eigen::Vector3f from = head.mesh.positions.col(nose) - pivot, to = positions.col(nose) - pivot;
-    const float cosine = Eigen::Vector2f(from.x(), from.z()).normalized().dot(Eigen::Vector2f(to.x(), to.z()).normalized());
+    const Eigen::Vector3f from = head.mesh.positions.col(nose) - pivot,
+                          to = positions.col(nose) - pivot;
+    const float cosine = Eigen::Vector2f(from.x(), from.z())
+                             .normalized()
+                             .dot(Eigen::Vector2f(to.x(), to.z()).normalized());
     QVERIFY(std::abs(cosine - 0.5f) < 1e-5f);
     QVERIFY(to.x() > from.x());  // positive yaw faces toward the face's left
   }
@@ -118,7 +122,9 @@ class PoseBlendingTest : public QObject {
       blender.blend(values, positions, normals);
       return Eigen::Vector3f(positions.col(probe) - pivot);
     };
-    auto near = [](const Eigen::Vector3f& a, const Eigen::Vector3f& b) { return (a - b).norm() < 1e-5f; };
+    auto near = [](const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
+      return (a - b).norm() < 1e-5f;
+    };
     FapValues yaw{}, pitch{}, roll{}, yawPitch{};
     channel(yaw, 49) = turnValue(90);
     channel(pitch, 48) = turnValue(90);
@@ -159,8 +165,10 @@ class PoseBlendingTest : public QObject {
       }
       const Eigen::Vector3f gaze = (positions.col(pole) - centre) / synthetic::kEyeRadius;
       const float s = std::sin(float(20 * std::numbers::pi / 180));
-      if (fap == 23) QVERIFY((gaze - Eigen::Vector3f(s, 0, std::sqrt(1 - s * s))).norm() < 1e-5f);
-      else QVERIFY((gaze - Eigen::Vector3f(0, -s, std::sqrt(1 - s * s))).norm() < 1e-5f);
+      if (fap == 23)
+        QVERIFY((gaze - Eigen::Vector3f(s, 0, std::sqrt(1 - s * s))).norm() < 1e-5f);
+      else
+        QVERIFY((gaze - Eigen::Vector3f(0, -s, std::sqrt(1 - s * s))).norm() < 1e-5f);
     }
 
     // The right eye's yaw also looks toward the face's left.
@@ -226,7 +234,8 @@ class PoseBlendingTest : public QObject {
     const FapValues values = mixedFrame(11);
     FapValues mirrored{};
     for (int fap = 3; fap <= kFapCount; ++fap)
-      channel(mirrored, mirroredFap(fap)) = (mirrorNegates(fap) ? -1.0f : 1.0f) * values[size_t(channelIndex(fap))];
+      channel(mirrored, mirroredFap(fap)) =
+          (mirrorNegates(fap) ? -1.0f : 1.0f) * values[size_t(channelIndex(fap))];
     Eigen::Matrix3Xf positions, normals, image, imageNormals;
     blender.blend(values, positions, normals);
     blender.blend(mirrored, image, imageNormals);

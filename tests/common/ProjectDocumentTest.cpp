@@ -39,9 +39,10 @@ KeyframeSequence randomKeys(std::mt19937& random) {
     key.interpolation = coin(random) ? Interpolation::Smooth : Interpolation::Linear;
     for (int fap = 1; fap <= kChannelCount; ++fap) {
       if (!sparse(random)) continue;
-      const float value = isTearChannel(fap)
-                              ? static_cast<float>(tears(random))
-                              : static_cast<float>(mantissa(random) * std::pow(10.0, exponent(random)));
+      const float value =
+          isTearChannel(fap)
+              ? static_cast<float>(tears(random))
+              : static_cast<float>(mantissa(random) * std::pow(10.0, exponent(random)));
       key.set(fap, value);
     }
     keys.insert(key);
@@ -100,7 +101,8 @@ std::string withTopLevel(const std::string& fields) {
 // A valid document whose only key holds `values`.
 std::string withValues(const std::string& values) {
   return R"({"format": "lacrima-project", "version": 1,
-            "keys": [{"time": 0, "values": )" + values + "}]}";
+            "keys": [{"time": 0, "values": )" +
+         values + "}]}";
 }
 
 FileError parseError(const std::string& json) {
@@ -121,7 +123,7 @@ std::size_t countOccurrences(const QString& text, const QString& what) {
 class ProjectDocumentTest : public QObject {
   Q_OBJECT
 
-private slots:
+ private slots:
   void roundTripIsExact() {
     for (unsigned seed = 1; seed <= 300; ++seed) {
       const ProjectDocument document = randomDocument(seed);
@@ -170,15 +172,30 @@ private slots:
     document.scene.simulation["adhesion"] = 40.0;
     const QString json = QString::fromStdString(document.toJson());
 
-    for (const char* field :
-         {"\"format\": \"lacrima-project\"", "\"version\": 1", "\"name\": \"sad crying\"",
-          "\"fps\": 22", "\"interpolation\": \"linear\"", "\"keys\": [", "\"time\": 0.5",
-          "\"interpolation\": \"smooth\"", "\"values\": {", "\"open_jaw\": 120",
-          "\"tears_l_eye\": 12", "\"raise_b_midlip\": -7.25", "\"tearSources\": {",
-          "\"left\": [0.5, -1.25, 2]", "\"right\": null", "\"scene\": {", "\"particles\": false",
-          "\"surface\": true", "\"trails\": true", "\"textureBlending\": true",
-          "\"redness\": \"animation\"", "\"blush\": false", "\"simulation\": {",
-          "\"adhesion\": 40"}) {
+    for (const char* field : {"\"format\": \"lacrima-project\"",
+                              "\"version\": 1",
+                              "\"name\": \"sad crying\"",
+                              "\"fps\": 22",
+                              "\"interpolation\": \"linear\"",
+                              "\"keys\": [",
+                              "\"time\": 0.5",
+                              "\"interpolation\": \"smooth\"",
+                              "\"values\": {",
+                              "\"open_jaw\": 120",
+                              "\"tears_l_eye\": 12",
+                              "\"raise_b_midlip\": -7.25",
+                              "\"tearSources\": {",
+                              "\"left\": [0.5, -1.25, 2]",
+                              "\"right\": null",
+                              "\"scene\": {",
+                              "\"particles\": false",
+                              "\"surface\": true",
+                              "\"trails\": true",
+                              "\"textureBlending\": true",
+                              "\"redness\": \"animation\"",
+                              "\"blush\": false",
+                              "\"simulation\": {",
+                              "\"adhesion\": 40"}) {
       QVERIFY2(json.contains(QLatin1String(field)), field);
     }
     // Documented field order, keys sorted by time, values in channel order, indented.
@@ -222,35 +239,43 @@ private slots:
     QTest::addColumn<QString>("location");  // SourceLocation::toString()
     QTest::addColumn<QString>("message");   // expected at the start of FileError::message()
 
-    QTest::newRow("bad syntax") << QString(
-        "{\n  \"format\": \"lacrima-project\",\n  \"version\": 1,\n  \"keys\": [],\n}")
-                                << "doc.json:5:1" << "invalid JSON: ";
+    QTest::newRow("bad syntax")
+        << QString("{\n  \"format\": \"lacrima-project\",\n  \"version\": 1,\n  \"keys\": [],\n}")
+        << "doc.json:5:1"
+        << "invalid JSON: ";
     QTest::newRow("bad syntax after UTF-8")
-        << QString::fromUtf8("{\"name\": \"\xc3\xa9t\xc3\xa9\", \"fps\": 22,}")
-        << "doc.json:1:27" << "invalid JSON: ";
-    QTest::newRow("not an object") << "[1, 2]" << "doc.json:1:1" << "expected a JSON object";
-    QTest::newRow("missing format") << R"({"version": 1, "keys": []})" << "doc.json:1:1"
+        << QString::fromUtf8("{\"name\": \"\xc3\xa9t\xc3\xa9\", \"fps\": 22,}") << "doc.json:1:27"
+        << "invalid JSON: ";
+    QTest::newRow("not an object") << "[1, 2]"
+                                   << "doc.json:1:1"
+                                   << "expected a JSON object";
+    QTest::newRow("missing format") << R"({"version": 1, "keys": []})"
+                                    << "doc.json:1:1"
                                     << "format: missing; this is not a Lacrima project";
     QTest::newRow("wrong format") << R"({"format": "lacrima-projekt", "version": 1, "keys": []})"
                                   << "doc.json:1:2"
                                   << "format: expected \"lacrima-project\", got the string";
     QTest::newRow("newer version")
         << R"({"format": "lacrima-project", "version": 2, "keys": [], "newField": 1})"
-        << "doc.json:1:31" << "version: written by a newer Lacrima (schema 2); this build reads up to 1";
+        << "doc.json:1:31"
+        << "version: written by a newer Lacrima (schema 2); this build reads up to 1";
     QTest::newRow("fractional version")
-        << R"({"format": "lacrima-project", "version": 1.5, "keys": []})" << "doc.json:1:31"
+        << R"({"format": "lacrima-project", "version": 1.5, "keys": []})"
+        << "doc.json:1:31"
         << "version: expected a whole number >= 1";
     QTest::newRow("missing keys") << R"({"format": "lacrima-project", "version": 1})"
-                                  << "doc.json:1:1" << "keys: missing";
+                                  << "doc.json:1:1"
+                                  << "keys: missing";
     QTest::newRow("unknown top-level field")
         << QString::fromStdString(withTopLevel(R"("colour": "red")")) << "doc.json:1:57"
         << "colour: unknown field; expected one of format, version, name, fps";
-    QTest::newRow("unknown FAP name") << QString::fromStdString(withValues(R"({"opn_jaw": 1})"))
-                                      << "doc.json:2:45"
-                                      << "keys[0].values.opn_jaw: unknown FAP name; did you mean open_jaw?";
+    QTest::newRow("unknown FAP name")
+        << QString::fromStdString(withValues(R"({"opn_jaw": 1})")) << "doc.json:2:45"
+        << "keys[0].values.opn_jaw: unknown FAP name; did you mean open_jaw?";
     QTest::newRow("fractional tear count")
         << QString::fromStdString(withValues(R"({"tears_l_eye": 2.5})")) << "doc.json:2:45"
-        << "keys[0].values.tears_l_eye: expected a whole number of particles in [0, 100000], got 2.5";
+        << "keys[0].values.tears_l_eye: expected a whole number of particles in [0, 100000], got "
+           "2.5";
     QTest::newRow("too many tears")
         << QString::fromStdString(withValues(R"({"tears_r_eye": 100001})")) << "doc.json:2:45"
         << "keys[0].values.tears_r_eye: expected a whole number of particles";
@@ -261,49 +286,60 @@ private slots:
         << QString::fromStdString(withValues(R"({"open_jaw": "12"})")) << "doc.json:2:45"
         << "keys[0].values.open_jaw: expected a number";
     QTest::newRow("negative fps") << QString::fromStdString(withTopLevel(R"("fps": -22)"))
-                                  << "doc.json:1:57" << "fps: expected a number in (0, 1000], got -22";
+                                  << "doc.json:1:57"
+                                  << "fps: expected a number in (0, 1000], got -22";
     QTest::newRow("fps as text") << QString::fromStdString(withTopLevel(R"("fps": "22")"))
-                                 << "doc.json:1:57" << "fps: expected a number in (0, 1000]";
+                                 << "doc.json:1:57"
+                                 << "fps: expected a number in (0, 1000]";
     QTest::newRow("bad default interpolation")
         << QString::fromStdString(withTopLevel(R"("interpolation": "cubic")")) << "doc.json:1:57"
         << "interpolation: expected \"linear\" or \"smooth\"";
     QTest::newRow("tearSources with 2 numbers")
         << QString::fromStdString(withTopLevel(R"("tearSources": {"left": [1, 2], "right": null})"))
-        << "doc.json:1:73" << "tearSources.left: expected null or an array of 3 finite numbers";
+        << "doc.json:1:73"
+        << "tearSources.left: expected null or an array of 3 finite numbers";
     QTest::newRow("tearSources with text")
         << QString::fromStdString(withTopLevel(R"("tearSources": {"right": [1, "2", 3]})"))
-        << "doc.json:1:86" << "tearSources.right[1]: expected a finite number";
+        << "doc.json:1:86"
+        << "tearSources.right[1]: expected a finite number";
     QTest::newRow("unknown tear source")
         << QString::fromStdString(withTopLevel(R"("tearSources": {"centre": null})"))
-        << "doc.json:1:73" << "tearSources.centre: unknown field; expected one of left, right";
+        << "doc.json:1:73"
+        << "tearSources.centre: unknown field; expected one of left, right";
     QTest::newRow("unknown scene field")
         << QString::fromStdString(withTopLevel(R"("scene": {"colour": 1})")) << "doc.json:1:67"
         << "scene.colour: unknown field; expected one of particles, surface, trails";
     QTest::newRow("scene flag not a bool")
         << QString::fromStdString(withTopLevel(R"("scene": {"trails": 1})")) << "doc.json:1:67"
         << "scene.trails: expected true or false";
-    QTest::newRow("bad redness")
-        << QString::fromStdString(withTopLevel(R"("scene": {"redness": "always"})"))
-        << "doc.json:1:67" << "scene.redness: expected \"animation\" or \"tears\"";
+    QTest::newRow("bad redness") << QString::fromStdString(
+                                        withTopLevel(R"("scene": {"redness": "always"})"))
+                                 << "doc.json:1:67"
+                                 << "scene.redness: expected \"animation\" or \"tears\"";
     QTest::newRow("unknown simulation parameter")
         << QString::fromStdString(withTopLevel(R"("scene": {"simulation": {"stickiness": 1}})"))
-        << "doc.json:1:82" << "scene.simulation.stickiness: unknown parameter 'stickiness'; expected one of: pressure";
+        << "doc.json:1:82"
+        << "scene.simulation.stickiness: unknown parameter 'stickiness'; expected one of: pressure";
     QTest::newRow("adhesion out of range")
         << QString::fromStdString(withTopLevel(R"("scene": {"simulation": {"adhesion": 20000}})"))
-        << "doc.json:1:82" << "scene.simulation.adhesion: 20000 is outside [0, 10000]";
-    QTest::newRow("duplicate key time")
-        << R"({"format": "lacrima-project", "version": 1, "keys": [
+        << "doc.json:1:82"
+        << "scene.simulation.adhesion: 20000 is outside [0, 10000]";
+    QTest::newRow("duplicate key time") << R"({"format": "lacrima-project", "version": 1, "keys": [
                {"time": 0.5, "values": {}}, {"time": 1, "values": {}},
                {"time": 0.5, "values": {"open_jaw": 1}}]})"
-        << "doc.json:3:17" << "keys[2].time: 0.5 repeats the time of keys[0]";
+                                        << "doc.json:3:17"
+                                        << "keys[2].time: 0.5 repeats the time of keys[0]";
     QTest::newRow("negative key time")
         << R"({"format": "lacrima-project", "version": 1, "keys": [{"time": -1, "values": {}}]})"
-        << "doc.json:1:55" << "keys[0].time: expected a time >= 0 s, got -1";
+        << "doc.json:1:55"
+        << "keys[0].time: expected a time >= 0 s, got -1";
     QTest::newRow("unknown key field")
         << R"({"format": "lacrima-project", "version": 1, "keys": [{"time": 0, "values": {}, "ease": 1}]})"
-        << "doc.json:1:80" << "keys[0].ease: unknown field; expected one of time, interpolation, values";
+        << "doc.json:1:80"
+        << "keys[0].ease: unknown field; expected one of time, interpolation, values";
     QTest::newRow("key without values")
-        << R"({"format": "lacrima-project", "version": 1, "keys": [{"time": 0}]})" << "doc.json:1:54"
+        << R"({"format": "lacrima-project", "version": 1, "keys": [{"time": 0}]})"
+        << "doc.json:1:54"
         << "keys[0].values: missing";
   }
 
@@ -447,8 +483,8 @@ private slots:
 
   void tearParameterDefaultsAreThe2009Values() {
     const std::pair<const char*, double> expected[] = {
-        {"pressure", 0.004}, {"viscosity", 0.9}, {"tension", 0.2},  {"adhesion", 20.0},
-        {"friction", 3.8},   {"gravity", 9.81},  {"kernel", 0.5},   {"node_size", 0.5},
+        {"pressure", 0.004}, {"viscosity", 0.9}, {"tension", 0.2}, {"adhesion", 20.0},
+        {"friction", 3.8},   {"gravity", 9.81},  {"kernel", 0.5},  {"node_size", 0.5},
         {"cube_size", 0.25}, {"iso", 0.5}};
     QCOMPARE(tearParameterTable().size(), std::size(expected));
     for (std::size_t i = 0; i < std::size(expected); ++i) {
@@ -472,9 +508,14 @@ private slots:
     }
     // The stress cases a later simulation must survive are expressible.
     for (const auto& [name, value] :
-         std::initializer_list<std::pair<const char*, double>>{
-             {"adhesion", 10000.0}, {"pressure", 0.4}, {"viscosity", 0.0}, {"viscosity", 9.0},
-             {"tension", 0.0}, {"tension", 2.0}, {"kernel", 0.05}, {"kernel", 5.0}}) {
+         std::initializer_list<std::pair<const char*, double>>{{"adhesion", 10000.0},
+                                                               {"pressure", 0.4},
+                                                               {"viscosity", 0.0},
+                                                               {"viscosity", 9.0},
+                                                               {"tension", 0.0},
+                                                               {"tension", 2.0},
+                                                               {"kernel", 0.05},
+                                                               {"kernel", 5.0}}) {
       validateTearParameter(name, value);
     }
   }
@@ -495,8 +536,10 @@ private slots:
       validateTearParameter("Adhesion", 1.0);
       QFAIL("unknown name accepted");
     } catch (const std::invalid_argument& error) {
-      QVERIFY(std::string(error.what()).starts_with(
-          "unknown parameter 'Adhesion'; expected one of: pressure, viscosity, tension"));
+      QVERIFY(
+          std::string(error.what())
+              .starts_with(
+                  "unknown parameter 'Adhesion'; expected one of: pressure, viscosity, tension"));
     }
   }
 };

@@ -136,7 +136,8 @@ inline void sphere(const Eigen::Vector3f& centre, float radius, int rings, int s
   if (full) {
     const int back = static_cast<int>(points.size());
     points.push_back(centre - Eigen::Vector3f(0, 0, radius));
-    for (int s = 0; s < segments; ++s) triangles.emplace_back(ring(lastRing, s), back, ring(lastRing, s + 1));
+    for (int s = 0; s < segments; ++s)
+      triangles.emplace_back(ring(lastRing, s), back, ring(lastRing, s + 1));
   }
 }
 
@@ -145,14 +146,20 @@ inline double influenceRadius(const std::string& id, const FapuSet& f) {
   const int group = std::stoi(id.substr(0, id.find('.')));
   const int index = std::stoi(id.substr(id.find('.') + 1));
   switch (group) {
-    case 2: return index == 1 || index >= 10 ? f.mw0 : f.mw0 / 4;
+    case 2:
+      return index == 1 || index >= 10 ? f.mw0 : f.mw0 / 4;
     case 6:
-    case 8: return f.mw0 / 4;
+    case 8:
+      return f.mw0 / 4;
     case 3:
-    case 10: return f.es0 / 4;
-    case 4: return f.es0 / 3;
-    case 9: return f.ens0 / 4;
-    default: return f.es0 / 2;
+    case 10:
+      return f.es0 / 4;
+    case 4:
+      return f.es0 / 3;
+    case 9:
+      return f.ens0 / 4;
+    default:
+      return f.es0 / 2;
   }
 }
 
@@ -165,18 +172,18 @@ struct SheetPoint {
 // Targets on a 1/16 grid; snapped to the nearest sheet vertex for other resolutions.
 inline const std::vector<SheetPoint>& sheetPoints() {
   static const std::vector<SheetPoint> points{
-      {"2.1", nullptr, 0, -1.125},       {"2.2", nullptr, 0, -0.5625},
-      {"2.3", nullptr, 0, -0.6875},      {"2.4", "2.5", 0.3125, -0.625},
-      {"2.6", "2.7", 0.1875, -0.5625},   {"2.8", "2.9", 0.1875, -0.6875},
-      {"2.10", nullptr, 0, -0.9375},     {"3.1", "3.2", 0.5, 0.125},
-      {"3.3", "3.4", 0.5, -0.125},       {"4.1", "4.2", 0.25, 0.3125},
-      {"4.3", "4.4", 0.5, 0.375},        {"4.5", "4.6", 0.75, 0.3125},
-      {"5.1", "5.2", 0.6875, -0.4375},   {"5.3", "5.4", 0.5625, -0.25},
-      {"8.1", nullptr, 0, -0.5},         {"8.2", nullptr, 0, -0.75},
-      {"8.3", "8.4", 0.375, -0.625},     {"8.5", "8.6", 0.1875, -0.5},
-      {"8.7", "8.8", 0.1875, -0.75},     {"9.1", "9.2", 0.1875, -0.3125},
-      {"9.3", nullptr, 0, -0.25},        {"9.15", nullptr, 0, -0.375},
-      {"10.1", "10.2", 0.9375, 0.125},   {"10.3", "10.4", 0.9375, -0.125},
+      {"2.1", nullptr, 0, -1.125},     {"2.2", nullptr, 0, -0.5625},
+      {"2.3", nullptr, 0, -0.6875},    {"2.4", "2.5", 0.3125, -0.625},
+      {"2.6", "2.7", 0.1875, -0.5625}, {"2.8", "2.9", 0.1875, -0.6875},
+      {"2.10", nullptr, 0, -0.9375},   {"3.1", "3.2", 0.5, 0.125},
+      {"3.3", "3.4", 0.5, -0.125},     {"4.1", "4.2", 0.25, 0.3125},
+      {"4.3", "4.4", 0.5, 0.375},      {"4.5", "4.6", 0.75, 0.3125},
+      {"5.1", "5.2", 0.6875, -0.4375}, {"5.3", "5.4", 0.5625, -0.25},
+      {"8.1", nullptr, 0, -0.5},       {"8.2", nullptr, 0, -0.75},
+      {"8.3", "8.4", 0.375, -0.625},   {"8.5", "8.6", 0.1875, -0.5},
+      {"8.7", "8.8", 0.1875, -0.75},   {"9.1", "9.2", 0.1875, -0.3125},
+      {"9.3", nullptr, 0, -0.25},      {"9.15", nullptr, 0, -0.375},
+      {"10.1", "10.2", 0.9375, 0.125}, {"10.3", "10.4", 0.9375, -0.125},
   };
   return points;
 }
@@ -248,7 +255,8 @@ inline Head buildHead(const HeadSpec& spec = {}) {
   const int n = mesh.vertexCount();
   head.mirror.resize(static_cast<size_t>(n));
   for (int j = 0; j < rows; ++j)
-    for (int i = 0; i < columns; ++i) head.mirror[size_t(sheetVertex(i, j))] = sheetVertex(columns - 1 - i, j);
+    for (int i = 0; i < columns; ++i)
+      head.mirror[size_t(sheetVertex(i, j))] = sheetVertex(columns - 1 - i, j);
   for (int k = 0; k < static_cast<int>(eye.size()); ++k) {
     head.mirror[size_t(eyeL + k)] = eyeR + k;
     head.mirror[size_t(eyeR + k)] = eyeL + k;
@@ -291,7 +299,8 @@ inline Head buildHead(const HeadSpec& spec = {}) {
     if (sub.name == "skin" || id == "6.1" || id == "6.2")
       addFalloffInfluence(head, id, sub, spec.radiusScale * influenceRadius(id, head.fapu));
   }
-  auto rigid = [&](const std::string& id, std::initializer_list<int> firsts, int count0, int count1) {
+  auto rigid = [&](const std::string& id, std::initializer_list<int> firsts, int count0,
+                   int count1) {
     FeaturePointInfluence& influence = head.influences[id];
     int k = 0;
     for (int first : firsts) {
@@ -313,7 +322,8 @@ inline Head buildHead(const HeadSpec& spec = {}) {
   for (const char* id : {"6.3", "6.4"})
     head.influences[id].weights.assign(head.influences[id].vertices.size(), 1.0f);
 
-  auto group = [&](int first, int count0, int corneaFirst, int count1, const Eigen::Vector3f& centre) {
+  auto group = [&](int first, int count0, int corneaFirst, int count1,
+                   const Eigen::Vector3f& centre) {
     RotationGroup g;
     for (int v = first; v < first + count0; ++v) g.vertices.push_back(v);
     for (int v = corneaFirst; v < corneaFirst + count1; ++v) g.vertices.push_back(v);

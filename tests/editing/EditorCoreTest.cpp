@@ -7,10 +7,10 @@
 #include <lacrima/editing/ChannelFilter.h>
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editing/FapTransfer.h>
+#include <lacrima/editing/FrameStepClock.h>
 #include <lacrima/editing/KeyClipboard.h>
 #include <lacrima/editing/KeyReduction.h>
 #include <lacrima/editing/Mirror.h>
-#include <lacrima/editing/FrameStepClock.h>
 #include <lacrima/editing/PresetLibrary.h>
 #include <lacrima/editing/RecoveryStore.h>
 
@@ -48,11 +48,16 @@ FapAnimation syntheticAnimation(int frames, unsigned seed) {
     for (int i = 0; i < frames; ++i) {
       const double t = i / a.fps;
       double v = 0;
-      if (fap == 69 || fap == 70) v = std::max(0.0, std::round(60 * std::sin(0.7 * t + p)));
-      else if (fap == 48) v = i < frames / 2 ? 0 : 1500;  // a step
-      else if (fap == 19 || fap == 20) v = std::round(300 * std::max(0.0, std::sin(2.1 * t + p)));
-      else v = std::round(200 * std::sin(1.3 * t + p) + 40 * std::sin(5.1 * t));
-      a.frames[static_cast<std::size_t>(i)][static_cast<std::size_t>(channelIndex(fap))] = static_cast<float>(v);
+      if (fap == 69 || fap == 70)
+        v = std::max(0.0, std::round(60 * std::sin(0.7 * t + p)));
+      else if (fap == 48)
+        v = i < frames / 2 ? 0 : 1500;  // a step
+      else if (fap == 19 || fap == 20)
+        v = std::round(300 * std::max(0.0, std::sin(2.1 * t + p)));
+      else
+        v = std::round(200 * std::sin(1.3 * t + p) + 40 * std::sin(5.1 * t));
+      a.frames[static_cast<std::size_t>(i)][static_cast<std::size_t>(channelIndex(fap))] =
+          static_cast<float>(v);
     }
   }
   return a;
@@ -71,7 +76,7 @@ std::string writeTemp(const QTemporaryDir& dir, const QString& name, const std::
 class EditorCoreTest : public QObject {
   Q_OBJECT
 
-private slots:
+ private slots:
   void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
 
   // --- undo / redo ------------------------------------------------------------------------
@@ -91,16 +96,23 @@ private slots:
       switch (op(random)) {
         case 0:
         case 1:
-        case 2: model.setChannel(fap(random), value(random)); break;
-        case 3: model.addKey(); break;
+        case 2:
+          model.setChannel(fap(random), value(random));
+          break;
+        case 3:
+          model.addKey();
+          break;
         case 4: {
           const auto& keys = model.document().keys.keys();
-          if (!keys.empty()) model.moveKeys({keys[static_cast<std::size_t>(step) % keys.size()].time}, frame(random) - 30);
+          if (!keys.empty())
+            model.moveKeys({keys[static_cast<std::size_t>(step) % keys.size()].time},
+                           frame(random) - 30);
           break;
         }
         case 5: {
           const auto& keys = model.document().keys.keys();
-          if (!keys.empty()) model.deleteKeys({keys[static_cast<std::size_t>(step) % keys.size()].time});
+          if (!keys.empty())
+            model.deleteKeys({keys[static_cast<std::size_t>(step) % keys.size()].time});
           break;
         }
         case 6: {
@@ -111,10 +123,17 @@ private slots:
         }
         case 7:
           model.selectAll();
-          model.setInterpolation(model.selectedTimes(), step % 2 ? Interpolation::Smooth : Interpolation::Linear);
+          model.setInterpolation(model.selectedTimes(),
+                                 step % 2 ? Interpolation::Smooth : Interpolation::Linear);
           break;
-        case 8: model.mirror(); break;
-        case 9: model.applyPreset(presets.presets()[static_cast<std::size_t>(step) % presets.presets().size()], 0.8, step % 3 == 0); break;
+        case 8:
+          model.mirror();
+          break;
+        case 9:
+          model.applyPreset(
+              presets.presets()[static_cast<std::size_t>(step) % presets.presets().size()], 0.8,
+              step % 3 == 0);
+          break;
         case 10: {
           ProjectDocument settings = model.document();
           settings.fps = step % 2 ? 22 : 25;
@@ -129,11 +148,13 @@ private slots:
     QCOMPARE(model.undoStack()->count(), static_cast<int>(states.size()) - 1);
     for (int i = static_cast<int>(states.size()) - 2; i >= 0; --i) {
       model.undoStack()->undo();
-      QVERIFY2(model.document() == states[static_cast<std::size_t>(i)], qPrintable(QStringLiteral("undo to state %1").arg(i)));
+      QVERIFY2(model.document() == states[static_cast<std::size_t>(i)],
+               qPrintable(QStringLiteral("undo to state %1").arg(i)));
     }
     for (std::size_t i = 1; i < states.size(); ++i) {
       model.undoStack()->redo();
-      QVERIFY2(model.document() == states[i], qPrintable(QStringLiteral("redo to state %1").arg(i)));
+      QVERIFY2(model.document() == states[i],
+               qPrintable(QStringLiteral("redo to state %1").arg(i)));
     }
   }
 
@@ -275,7 +296,8 @@ private slots:
     const editing::Preset* sob = library.find("sobbing-cycle");
     QVERIFY(sob && sob->isSequence());
     QVERIFY(sob->keys.back().value(kTearLeftFap) > sob->keys.front().value(kTearLeftFap));
-    QCOMPARE(sob->keys.front().value(48), sob->keys.back().value(48));  // returns to its start: repeatable
+    QCOMPARE(sob->keys.front().value(48),
+             sob->keys.back().value(48));  // returns to its start: repeatable
     // The disgust pose is one-sided (what mirroring is for).
     const Keyframe& disgust = library.find("disgust")->keys.front();
     QVERIFY(disgust.value(8) != disgust.value(9));
@@ -302,37 +324,67 @@ private slots:
   void presetErrorsNameFileLineAndExpectation_data() {
     QTest::addColumn<QString>("json");
     QTest::addColumn<QString>("expected");
-    const QString head = QStringLiteral("{\n  \"format\": \"lacrima-presets\",\n  \"version\": 1,\n  \"presets\": [\n");
-    const QString pose = QStringLiteral("    { \"id\": \"a\", \"name\": \"A\", \"category\": \"C\",\n      \"values\": %1 }\n  ]\n}\n");
-    QTest::newRow("unknown FAP") << head + pose.arg(QStringLiteral("{ \"opn_jaw\": 10 }"))
-                                 << QStringLiteral("bad.json:6:19: presets[0].values.opn_jaw: unknown FAP name; expected a name");
-    QTest::newRow("out of range") << head + pose.arg(QStringLiteral("{ \"open_jaw\": -5 }"))
-                                  << QStringLiteral("bad.json:6:19: presets[0].values.open_jaw: expected a number in [0, 10800]");
-    QTest::newRow("fractional tears") << head + pose.arg(QStringLiteral("{ \"tears_l_eye\": 2.5 }"))
-                                      << QStringLiteral("presets[0].values.tears_l_eye: expected a whole number in [0, 100000]");
-    QTest::newRow("not a number") << head + pose.arg(QStringLiteral("{ \"open_jaw\": \"wide\" }"))
-                                  << QStringLiteral("bad.json:6:19: presets[0].values.open_jaw: expected a finite number, got \"wide\"");
-    QTest::newRow("syntax") << head + QStringLiteral("    { \"id\": \"a\" \"name\": \"A\" }\n  ]\n}\n")
+    const QString head = QStringLiteral(
+        "{\n  \"format\": \"lacrima-presets\",\n  \"version\": 1,\n  \"presets\": [\n");
+    const QString pose = QStringLiteral(
+        "    { \"id\": \"a\", \"name\": \"A\", \"category\": \"C\",\n      \"values\": %1 }\n  "
+        "]\n}\n");
+    QTest::newRow("unknown FAP")
+        << head + pose.arg(QStringLiteral("{ \"opn_jaw\": 10 }"))
+        << QStringLiteral(
+               "bad.json:6:19: presets[0].values.opn_jaw: unknown FAP name; expected a name");
+    QTest::newRow("out of range")
+        << head + pose.arg(QStringLiteral("{ \"open_jaw\": -5 }"))
+        << QStringLiteral(
+               "bad.json:6:19: presets[0].values.open_jaw: expected a number in [0, 10800]");
+    QTest::newRow("fractional tears")
+        << head + pose.arg(QStringLiteral("{ \"tears_l_eye\": 2.5 }"))
+        << QStringLiteral("presets[0].values.tears_l_eye: expected a whole number in [0, 100000]");
+    QTest::newRow("not a number")
+        << head + pose.arg(QStringLiteral("{ \"open_jaw\": \"wide\" }"))
+        << QStringLiteral(
+               "bad.json:6:19: presets[0].values.open_jaw: expected a finite number, got \"wide\"");
+    QTest::newRow("syntax") << head +
+                                   QStringLiteral("    { \"id\": \"a\" \"name\": \"A\" }\n  ]\n}\n")
                             << QStringLiteral("bad.json:5:17: invalid JSON");
-    QTest::newRow("no format") << QStringLiteral("{ \"version\": 1, \"presets\": [] }")
-                               << QStringLiteral("bad.json:1:1: missing field \"format\"; this is not a Lacrima presets file");
+    QTest::newRow("no format")
+        << QStringLiteral("{ \"version\": 1, \"presets\": [] }")
+        << QStringLiteral(
+               "bad.json:1:1: missing field \"format\"; this is not a Lacrima presets file");
     QTest::newRow("both values and keys")
-        << head + QStringLiteral("    { \"id\": \"a\", \"name\": \"A\", \"category\": \"C\", \"values\": {\"open_jaw\": 1},\n"
-                                 "      \"keys\": [] }\n  ]\n}\n")
-        << QStringLiteral("bad.json:5:5: presets[0]: expected exactly one of \"values\" (a pose) and \"keys\" (a sequence)");
-    QTest::newRow("bad id") << head + QStringLiteral("    { \"id\": \"Big Smile\", \"name\": \"A\", \"category\": \"C\", \"values\": {\"open_jaw\": 1} }\n  ]\n}\n")
-                            << QStringLiteral("bad.json:5:7: presets[0].id: expected lower-case letters, digits and '-'");
+        << head + QStringLiteral(
+                      "    { \"id\": \"a\", \"name\": \"A\", \"category\": \"C\", \"values\": "
+                      "{\"open_jaw\": 1},\n"
+                      "      \"keys\": [] }\n  ]\n}\n")
+        << QStringLiteral(
+               "bad.json:5:5: presets[0]: expected exactly one of \"values\" (a pose) and \"keys\" "
+               "(a sequence)");
+    QTest::newRow("bad id")
+        << head + QStringLiteral(
+                      "    { \"id\": \"Big Smile\", \"name\": \"A\", \"category\": \"C\", "
+                      "\"values\": {\"open_jaw\": 1} }\n  ]\n}\n")
+        << QStringLiteral(
+               "bad.json:5:7: presets[0].id: expected lower-case letters, digits and '-'");
     QTest::newRow("keys out of order")
-        << head + QStringLiteral("    { \"id\": \"s\", \"name\": \"S\", \"category\": \"C\", \"keys\": [\n"
-                                 "      { \"time\": 0, \"values\": {\"open_jaw\": 1} },\n"
-                                 "      { \"time\": 0, \"values\": {\"open_jaw\": 2} } ] }\n  ]\n}\n")
-        << QStringLiteral("bad.json:7:9: presets[0].keys[1].time: expected a time after the previous key's 0 s, got 0");
-    QTest::newRow("duplicate id")
-        << head + QStringLiteral("    { \"id\": \"a\", \"name\": \"A\", \"category\": \"C\", \"values\": {\"open_jaw\": 1} },\n"
-                                 "    { \"id\": \"a\", \"name\": \"B\", \"category\": \"C\", \"values\": {\"open_jaw\": 1} }\n  ]\n}\n")
-        << QStringLiteral("bad.json:6:7: presets[1].id: expected a unique id");
-    QTest::newRow("unknown field") << head + QStringLiteral("    { \"id\": \"a\", \"nmae\": \"A\" }\n  ]\n}\n")
-                                   << QStringLiteral("bad.json:5:18: presets[0].nmae: unknown field; expected one of id, name");
+        << head + QStringLiteral(
+                      "    { \"id\": \"s\", \"name\": \"S\", \"category\": \"C\", \"keys\": [\n"
+                      "      { \"time\": 0, \"values\": {\"open_jaw\": 1} },\n"
+                      "      { \"time\": 0, \"values\": {\"open_jaw\": 2} } ] }\n  ]\n}\n")
+        << QStringLiteral(
+               "bad.json:7:9: presets[0].keys[1].time: expected a time after the previous key's 0 "
+               "s, got 0");
+    QTest::newRow("duplicate id") << head +
+                                         QStringLiteral(
+                                             "    { \"id\": \"a\", \"name\": \"A\", \"category\": "
+                                             "\"C\", \"values\": {\"open_jaw\": 1} },\n"
+                                             "    { \"id\": \"a\", \"name\": \"B\", \"category\": "
+                                             "\"C\", \"values\": {\"open_jaw\": 1} }\n  ]\n}\n")
+                                  << QStringLiteral(
+                                         "bad.json:6:7: presets[1].id: expected a unique id");
+    QTest::newRow("unknown field")
+        << head + QStringLiteral("    { \"id\": \"a\", \"nmae\": \"A\" }\n  ]\n}\n")
+        << QStringLiteral(
+               "bad.json:5:18: presets[0].nmae: unknown field; expected one of id, name");
   }
 
   void presetErrorsNameFileLineAndExpectation() {
@@ -352,7 +404,9 @@ private slots:
       editing::PresetLibrary::load("/nonexistent/presets.json");
       QFAIL("loaded a missing file");
     } catch (const FileError& e) {
-      QVERIFY2(QString::fromUtf8(e.what()).startsWith(QStringLiteral("/nonexistent/presets.json: cannot open")), e.what());
+      QVERIFY2(QString::fromUtf8(e.what()).startsWith(
+                   QStringLiteral("/nonexistent/presets.json: cannot open")),
+               e.what());
     }
   }
 
@@ -366,14 +420,18 @@ private slots:
       QCOMPARE(kept.back(), 399);
       QVERIFY(editing::reductionError(animation, kept) <= tolerance);
       // Check the guarantee the way the editor plays it: bake the reduced keys.
-      editing::FapImportResult imported = editing::importAnimation(animation, editing::FapImportOptions{tolerance});
+      editing::FapImportResult imported =
+          editing::importAnimation(animation, editing::FapImportOptions{tolerance});
       QCOMPARE(imported.keys, static_cast<int>(kept.size()));
       const FapAnimation baked = imported.document.bake();
       QCOMPARE(baked.frameCount(), animation.frameCount());
       for (int i = 0; i < animation.frameCount(); ++i)
         for (int c = 0; c < kChannelCount; ++c)
           QVERIFY2(std::abs(baked.frames[i][c] - animation.frames[i][c]) <= tolerance + 1e-4,
-                   qPrintable(QStringLiteral("frame %1 channel %2 tolerance %3").arg(i).arg(c + 1).arg(tolerance)));
+                   qPrintable(QStringLiteral("frame %1 channel %2 tolerance %3")
+                                  .arg(i)
+                                  .arg(c + 1)
+                                  .arg(tolerance)));
       qInfo("tolerance %g: %zu of 400 frames kept", tolerance, kept.size());
       if (tolerance >= 10.0) QVERIFY(kept.size() < 150);
     }
@@ -388,7 +446,8 @@ private slots:
     for (int i = 0; i <= 100; ++i) {
       const double v = i <= 40 ? 10.0 * i : i <= 70 ? 400.0 - 5.0 * (i - 40) : 250.0;
       a.frames[static_cast<std::size_t>(i)][channelIndex(3)] = static_cast<float>(v);
-      a.frames[static_cast<std::size_t>(i)][channelIndex(69)] = i < 50 ? 0.0f : 30.0f;  // a jump at 50
+      a.frames[static_cast<std::size_t>(i)][channelIndex(69)] =
+          i < 50 ? 0.0f : 30.0f;  // a jump at 50
     }
     const std::vector<int> kept = editing::reduceKeyFrames(a, 0.0);
     QCOMPARE(kept, (std::vector<int>{0, 40, 49, 50, 70, 100}));
@@ -461,7 +520,8 @@ private slots:
     const FapAnimation original = syntheticAnimation(300, 11);
     const std::string in = dir.filePath(QStringLiteral("in.fap")).toStdString();
     FapWriter::save(original, in);
-    const editing::FapImportResult imported = editing::importFap(in, editing::FapImportOptions{0.5});
+    const editing::FapImportResult imported =
+        editing::importFap(in, editing::FapImportOptions{0.5});
     QVERIFY(imported.keys < 300);
     const std::string out = dir.filePath(QStringLiteral("out.fap")).toStdString();
     editing::exportFap(imported.document, out, {});
@@ -470,24 +530,27 @@ private slots:
     QCOMPARE(b.frameCount(), a.frameCount());
     // Within 0.5 before the writer rounds; integer files come back within one unit.
     for (int i = 0; i < a.frameCount(); ++i)
-      for (int c = 0; c < kChannelCount; ++c) QVERIFY(std::abs(a.frames[i][c] - b.frames[i][c]) <= 1.0f);
+      for (int c = 0; c < kChannelCount; ++c)
+        QVERIFY(std::abs(a.frames[i][c] - b.frames[i][c]) <= 1.0f);
   }
 
   void aBakedKeyedAnimationReducesBackToFewKeys() {
     // The demo: a dozen smooth keys baked to ~300 integer frames. Linear keys within a unit
     // need far fewer keys than frames, though more than the smooth originals.
     QTemporaryDir dir;
-    const ProjectDocument demo = ProjectDocument::load(LACRIMA_SOURCE_DIR "/media/demo/crying.json");
+    const ProjectDocument demo =
+        ProjectDocument::load(LACRIMA_SOURCE_DIR "/media/demo/crying.json");
     const std::string baked = dir.filePath(QStringLiteral("demo.fap")).toStdString();
     editing::exportFap(demo, baked, {});
     for (const double tolerance : {0.5, 1.0, 4.0}) {
-      const editing::FapImportResult imported = editing::importFap(baked, editing::FapImportOptions{tolerance});
+      const editing::FapImportResult imported =
+          editing::importFap(baked, editing::FapImportOptions{tolerance});
       QVERIFY(imported.maxError <= tolerance);
       // Integer rounding puts a half-unit staircase on every smooth curve: from one unit up,
       // the keys follow the motion, not the rounding.
       if (tolerance >= 1.0) QVERIFY(imported.keys * 4 < imported.frames);
-      qInfo("demo baked to %d frames -> %d keys at tolerance %g (%zu keys in the project)", imported.frames,
-            imported.keys, tolerance, demo.keys.keys().size());
+      qInfo("demo baked to %d frames -> %d keys at tolerance %g (%zu keys in the project)",
+            imported.frames, imported.keys, tolerance, demo.keys.keys().size());
     }
   }
 
@@ -505,7 +568,8 @@ private slots:
     QTemporaryDir dir;
     const editing::FapImportResult imported = editing::importFap(path);
     const std::string out = dir.filePath(QStringLiteral("out.fap")).toStdString();
-    editing::exportFap(imported.document, out, editing::FapExportOptions{imported.document.fps, false});
+    editing::exportFap(imported.document, out,
+                       editing::FapExportOptions{imported.document.fps, false});
     const FapAnimation a = FapReader::readFile(path).animation;
     const FapAnimation b = FapReader::readFile(out).animation;
     QCOMPARE(b.frameCount(), a.frameCount());
@@ -516,16 +580,18 @@ private slots:
         QCOMPARE(b.frames[i][channelIndex(fap)], std::round(a.frames[i][channelIndex(fap)]));
     // What key reduction makes of a real file, within its guarantee.
     for (const double tolerance : {0.5, 2.0, 10.0}) {
-      const editing::FapImportResult reduced = editing::importFap(path, editing::FapImportOptions{tolerance});
+      const editing::FapImportResult reduced =
+          editing::importFap(path, editing::FapImportOptions{tolerance});
       QVERIFY(reduced.maxError <= tolerance);
-      qInfo("%s: %d frames -> %d keys at tolerance %g (largest error %g)", qPrintable(sample), reduced.frames,
-            reduced.keys, tolerance, reduced.maxError);
+      qInfo("%s: %d frames -> %d keys at tolerance %g (largest error %g)", qPrintable(sample),
+            reduced.frames, reduced.keys, tolerance, reduced.maxError);
     }
   }
 
   void importOfABrokenFileNamesTheLine() {
     QTemporaryDir dir;
-    const std::string path = writeTemp(dir, QStringLiteral("broken.fap"), "2.1 x 22 2\n1 0 1\n0 5\n");
+    const std::string path =
+        writeTemp(dir, QStringLiteral("broken.fap"), "2.1 x 22 2\n1 0 1\n0 5\n");
     try {
       editing::importFap(path);
       QFAIL("imported a broken file");
@@ -606,16 +672,19 @@ private slots:
     const QString file = dir.filePath(QStringLiteral("session-1.json"));
     QFile out(file);
     QVERIFY(out.open(QIODevice::WriteOnly));
-    out.write("{\"format\": \"lacrima-recovery\", \"version\": 1, \"sourcePath\": \"\", \"savedAt\": \"\",\n"
-              " \"project\": {\"format\": \"lacrima-project\", \"version\": 1,\n"
-              "  \"keys\": [{\"time\": 0, \"values\": {\"opn_jaw\": 1}}]}}\n");
+    out.write(
+        "{\"format\": \"lacrima-recovery\", \"version\": 1, \"sourcePath\": \"\", \"savedAt\": "
+        "\"\",\n"
+        " \"project\": {\"format\": \"lacrima-project\", \"version\": 1,\n"
+        "  \"keys\": [{\"time\": 0, \"values\": {\"opn_jaw\": 1}}]}}\n");
     out.close();
     try {
       editing::RecoveryStore::read(file);
       QFAIL("a recovery file with an unknown FAP name was read");
     } catch (const FileError& e) {
       QCOMPARE(QString::fromUtf8(e.what()),
-               file + QStringLiteral(":3:35: project.keys[0].values.opn_jaw: unknown FAP name; did you mean open_jaw?"));
+               file + QStringLiteral(":3:35: project.keys[0].values.opn_jaw: unknown FAP name; did "
+                                     "you mean open_jaw?"));
     }
   }
 

@@ -3,8 +3,8 @@
 // xvfb-run (OGRE needs X); skips when the default head is not fetched.
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/EditorModel.h>
-#include <lacrima/editor/MainWindow.h>
 #include <lacrima/editing/FrameStepClock.h>
+#include <lacrima/editor/MainWindow.h>
 #include <lacrima/editor/PreviewPanel.h>
 #include <lacrima/rigging/DefaultHead.h>
 
@@ -37,7 +37,7 @@ double changedFraction(const QImage& a, const QImage& b) {
 class EditorPreviewTest : public QObject {
   Q_OBJECT
 
-private:
+ private:
   QTemporaryDir recovery_;
 
   EditorOptions options() const {
@@ -48,7 +48,7 @@ private:
     return o;
   }
 
-private slots:
+ private slots:
   void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
 
   void slidersPoseTheFace() {
@@ -84,7 +84,8 @@ private slots:
     QCOMPARE(window.preview()->particleCount(), frozen);
     // Playing steps them once per playback frame.
     window.model().setCurrentTime(2.0);
-    window.model().setChannels({{kTearLeftFap, 80}, {kTearRightFap, 80}}, QStringLiteral("more tears"));
+    window.model().setChannels({{kTearLeftFap, 80}, {kTearRightFap, 80}},
+                               QStringLiteral("more tears"));
     window.model().setCurrentTime(0.0);
     window.clock().play();
     QTRY_VERIFY(window.model().currentTime() > 0.5);

@@ -3,14 +3,14 @@
 #include <lacrima/common/FapReader.h>
 #include <lacrima/common/FapTable.h>
 #include <lacrima/common/FapWriter.h>
-#include <lacrima/editor/ChannelRow.h>
 #include <lacrima/editing/EditorModel.h>
+#include <lacrima/editing/FrameStepClock.h>
+#include <lacrima/editing/RecoveryStore.h>
+#include <lacrima/editor/ChannelRow.h>
 #include <lacrima/editor/KeyListPanel.h>
 #include <lacrima/editor/MainWindow.h>
-#include <lacrima/editing/FrameStepClock.h>
 #include <lacrima/editor/PresetPanel.h>
 #include <lacrima/editor/RecoveryBanner.h>
-#include <lacrima/editing/RecoveryStore.h>
 #include <lacrima/editor/SliderPanel.h>
 #include <lacrima/editor/TimelineWidget.h>
 #include <lacrima/editor/ZeroSlider.h>
@@ -47,12 +47,15 @@ EditorOptions testOptions(const QString& recoveryDir) {
 // Drags a slider from its zero mark to `fraction` of its width (0 = left end, 1 = right end).
 void dragSlider(ZeroSlider* slider, double fraction) {
   const int y = slider->height() / 2;
-  const int zero = static_cast<int>(6 + (0.0 - slider->minimum()) / (slider->maximum() - slider->minimum()) * (slider->width() - 12));
+  const int zero =
+      static_cast<int>(6 + (0.0 - slider->minimum()) / (slider->maximum() - slider->minimum()) *
+                               (slider->width() - 12));
   const int target = static_cast<int>(6 + fraction * (slider->width() - 12));
   QTest::mousePress(slider, Qt::LeftButton, {}, QPoint(zero, y));
   for (int step = 1; step <= 8; ++step) {
-    QMouseEvent move(QEvent::MouseMove, QPointF(zero + (target - zero) * step / 8.0, y), slider->mapToGlobal(QPointF(0, 0)),
-                     Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+    QMouseEvent move(QEvent::MouseMove, QPointF(zero + (target - zero) * step / 8.0, y),
+                     slider->mapToGlobal(QPointF(0, 0)), Qt::NoButton, Qt::LeftButton,
+                     Qt::NoModifier);
     QCoreApplication::sendEvent(slider, &move);
   }
   QTest::mouseRelease(slider, Qt::LeftButton, {}, QPoint(target, y));
@@ -71,14 +74,14 @@ void setSpin(QSpinBox* spin, int value) {
 class EditorWindowTest : public QObject {
   Q_OBJECT
 
-private:
+ private:
   QTemporaryDir recoveryDir_;
   std::unique_ptr<MainWindow> window_;
 
   MainWindow& window() { return *window_; }
   editing::EditorModel& model() { return window_->model(); }
 
-private slots:
+ private slots:
   void initTestCase() {
     QStandardPaths::setTestModeEnabled(true);
     QCoreApplication::setOrganizationName(QStringLiteral("lacrima-test"));
@@ -108,8 +111,9 @@ private slots:
       QVERIFY(row);
       QCOMPARE(row->slider()->minimum(), fapInfo(fap).sliderMin);
       QCOMPARE(row->slider()->maximum(), fapInfo(fap).sliderMax);
-      QVERIFY(row->slider()->toolTip().contains(QString::fromUtf8(fapInfo(fap).description.data(),
-                                                                   static_cast<qsizetype>(fapInfo(fap).description.size()))));
+      QVERIFY(row->slider()->toolTip().contains(
+          QString::fromUtf8(fapInfo(fap).description.data(),
+                            static_cast<qsizetype>(fapInfo(fap).description.size()))));
     }
     QVERIFY(panel->visemePicker());
     QCOMPARE(panel->visemePicker()->count(), 15);
@@ -142,16 +146,17 @@ private slots:
     ChannelRow* jaw = window().sliders()->row(3);
     ChannelRow* tears = window().sliders()->row(69);
     setSpin(jaw->spinBox(), 220);
-    setSpin(jaw->spinBox(), 0);  // keyed at 0 s with 0
+    setSpin(jaw->spinBox(), 0);                             // keyed at 0 s with 0
     QTest::mouseClick(tears->keyToggle(), Qt::LeftButton);  // keys tears_l_eye = 0 at 0 s
     QVERIFY(model().keyedAtCurrentTime().test(channelIndex(69)));
     QTest::keyClick(window().timeline(), Qt::Key_Right);  // next frame...
-    model().setCurrentTime(1.0);                           // ...and to 1 s
+    model().setCurrentTime(1.0);                          // ...and to 1 s
     setSpin(jaw->spinBox(), 440);
     setSpin(tears->spinBox(), 44);
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("jaw.fap"));
-    QVERIFY2(window().exportFap(path, editing::FapExportOptions{}), qPrintable(window().lastError()));
+    QVERIFY2(window().exportFap(path, editing::FapExportOptions{}),
+             qPrintable(window().lastError()));
     const FapAnimation animation = FapReader::readFile(path.toStdString()).animation;
     QCOMPARE(animation.frameCount(), 23);
     QCOMPARE(animation.fps, 22.0);
@@ -206,7 +211,8 @@ private slots:
     window().action(QStringLiteral("edit.symmetric"))->trigger();
     QVERIFY(model().symmetricEdit());
     dragSlider(window().sliders()->row(19)->slider(), 0.75);  // close_t_l_eyelid
-    QCOMPARE(window().sliders()->row(20)->spinBox()->value(), window().sliders()->row(19)->spinBox()->value());
+    QCOMPARE(window().sliders()->row(20)->spinBox()->value(),
+             window().sliders()->row(19)->spinBox()->value());
     QVERIFY(window().sliders()->row(19)->spinBox()->value() > 400);
     QCOMPARE(model().undoStack()->count(), 1);
   }
@@ -240,7 +246,8 @@ private slots:
     QTest::mouseClick(window().sliders()->row(31)->resetButton(), Qt::LeftButton);
     QCOMPARE(model().currentValue(31), 0.0f);
     QCOMPARE(model().currentValue(32), 200.0f);
-    QTest::mouseClick(window().sliders()->groupResetButton(static_cast<int>(FapGroup::Eyebrows)), Qt::LeftButton);
+    QTest::mouseClick(window().sliders()->groupResetButton(static_cast<int>(FapGroup::Eyebrows)),
+                      Qt::LeftButton);
     QCOMPARE(model().currentValue(32), 0.0f);
     QCOMPARE(model().currentValue(33), 0.0f);
     QCOMPARE(model().undoStack()->count(), 5);  // three sets, one reset, one group reset
@@ -249,7 +256,7 @@ private slots:
   void highLevelPickersSetTheirCodes() {
     QComboBox* expression = window().sliders()->expressionPicker();
     expression->setCurrentIndex(3);
-    emit expression->activated(3);  // what a user's pick sends
+    emit expression->activated(3);            // what a user's pick sends
     QCOMPARE(model().currentValue(2), 3.0f);  // anger
     QComboBox* viseme = window().sliders()->visemePicker();
     viseme->setCurrentIndex(10);
@@ -276,8 +283,9 @@ private slots:
     const QPoint from = timeline->keyPosition(1).toPoint();
     QTest::mousePress(timeline, Qt::LeftButton, {}, from);
     for (int dx = 10; dx <= 60; dx += 10) {
-      QMouseEvent move(QEvent::MouseMove, QPointF(from.x() + dx, from.y()), timeline->mapToGlobal(QPointF(from.x() + dx, from.y())),
-                       Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+      QMouseEvent move(QEvent::MouseMove, QPointF(from.x() + dx, from.y()),
+                       timeline->mapToGlobal(QPointF(from.x() + dx, from.y())), Qt::NoButton,
+                       Qt::LeftButton, Qt::NoModifier);
       QCoreApplication::sendEvent(timeline, &move);
     }
     QTest::mouseRelease(timeline, Qt::LeftButton, {}, QPoint(from.x() + 60, from.y()));
@@ -318,7 +326,10 @@ private slots:
     QVERIFY(window().saveTo(path));
     QVERIFY(!window().isWindowModified());
     QCOMPARE(model().document().name, std::string("take"));
-    QVERIFY(QSettings().value(QStringLiteral("files/recent")).toStringList().contains(QFileInfo(path).absoluteFilePath()));
+    QVERIFY(QSettings()
+                .value(QStringLiteral("files/recent"))
+                .toStringList()
+                .contains(QFileInfo(path).absoluteFilePath()));
     QVERIFY(ProjectDocument::load(path.toStdString()) == model().document());
     // Open it in a fresh document: identical, clean.
     window().newDocument();
@@ -335,7 +346,8 @@ private slots:
     original.fps = 22;
     original.frames.assign(120, FapValues{});
     for (int i = 0; i < 120; ++i) {
-      original.frames[i][channelIndex(3)] = static_cast<float>(std::lround(300 * std::sin(i * 0.1)) + 300);
+      original.frames[i][channelIndex(3)] =
+          static_cast<float>(std::lround(300 * std::sin(i * 0.1)) + 300);
       original.frames[i][channelIndex(70)] = static_cast<float>(i / 3);
     }
     original.animated.set(channelIndex(3));
@@ -347,14 +359,16 @@ private slots:
     QVERIFY(window().isWindowModified());  // an import is unsaved work
     const QString out = dir.filePath(QStringLiteral("out.fap"));
     QVERIFY(window().exportFap(out, editing::FapExportOptions{}));
-    QVERIFY(FapReader::readFile(in.toStdString()).animation.frames == FapReader::readFile(out.toStdString()).animation.frames);
+    QVERIFY(FapReader::readFile(in.toStdString()).animation.frames ==
+            FapReader::readFile(out.toStdString()).animation.frames);
     // With reduction: fewer keys, same file within a unit.
     QVERIFY(window().importFap(in, 0.5));
     QVERIFY(model().document().keys.keys().size() < 120);
     QVERIFY(window().exportFap(out, editing::FapExportOptions{}));
     const FapAnimation back = FapReader::readFile(out.toStdString()).animation;
     for (int i = 0; i < 120; ++i)
-      for (int c = 0; c < kChannelCount; ++c) QVERIFY(std::abs(back.frames[i][c] - original.frames[i][c]) <= 1.0f);
+      for (int c = 0; c < kChannelCount; ++c)
+        QVERIFY(std::abs(back.frames[i][c] - original.frames[i][c]) <= 1.0f);
   }
 
   void autosaveIsRecoveredAfterACrash() {
@@ -395,7 +409,8 @@ private slots:
     editor.show();
     editor.model().setChannel(31, 100);
     QTRY_VERIFY(editor.recovery().hasFile());
-    QVERIFY(editing::RecoveryStore::read(editor.recovery().filePath()) == editor.model().document());
+    QVERIFY(editing::RecoveryStore::read(editor.recovery().filePath()) ==
+            editor.model().document());
     // Undoing back to the saved state leaves nothing to recover.
     editor.model().undoStack()->undo();
     QTRY_VERIFY(!editor.recovery().hasFile());

@@ -63,8 +63,10 @@ HeadMesh syntheticHead(const std::string& texturePath) {
   for (int row = 0; row < 3; ++row) {
     for (int col = 0; col < 4; ++col) {
       const int v = row * 4 + col;
-      head.positions.col(v) = Eigen::Vector3f(0.25f * static_cast<float>(col), 0.5f * static_cast<float>(row), 0.0f);
-      head.uvs.col(v) = Eigen::Vector2f(static_cast<float>(col) / 3.0f, 1.0f - static_cast<float>(row) / 2.0f);
+      head.positions.col(v) =
+          Eigen::Vector3f(0.25f * static_cast<float>(col), 0.5f * static_cast<float>(row), 0.0f);
+      head.uvs.col(v) =
+          Eigen::Vector2f(static_cast<float>(col) / 3.0f, 1.0f - static_cast<float>(row) / 2.0f);
     }
   }
   for (int row = 0; row < 2; ++row) {
@@ -83,7 +85,8 @@ HeadMesh syntheticHead(const std::string& texturePath) {
   head.positions.col(16) = Eigen::Vector3f(0.5f, 0.9f, 0.3f);
   head.positions.col(17) = Eigen::Vector3f(0.6f, 0.9f, 0.3f);
   head.positions.col(18) = Eigen::Vector3f(0.55f, 1.0f, 0.32f);
-  for (int v = 12; v < 19; ++v) head.uvs.col(v) = Eigen::Vector2f(0.1f * static_cast<float>(v - 12), 0.25f);
+  for (int v = 12; v < 19; ++v)
+    head.uvs.col(v) = Eigen::Vector2f(0.1f * static_cast<float>(v - 12), 0.25f);
   head.submeshes = {skin, lashes, cornea};
 
   HeadMaterial skinMaterial;
@@ -113,7 +116,7 @@ PoseSet syntheticPoses() {
   VertexPose& jaw = poses.poses[channelIndex(kOpenJaw)];
   jaw.vertices = {0, 1, 2, 12, 13, 1};
   jaw.offsets.resize(3, 6);
-  jaw.offsets << 0, 0, 0, 0, 0, 1e-5f,  //
+  jaw.offsets << 0, 0, 0, 0, 0, 1e-5f,                 //
       -3e-4f, -2e-4f, -1e-4f, -5e-5f, -5e-5f, -1e-4f,  //
       1e-5f, 2e-5f, 0, 0, 0, 3e-5f;
   VertexPose& pupil = poses.poses[channelIndex(kDilateLeftPupil)];
@@ -132,7 +135,8 @@ PoseSet syntheticPoses() {
 }
 
 const std::vector<int> kExportedFaps = {kOpenJaw, kDilateLeftPupil, kRaiseLeftInnerBrow};
-const QStringList kExportedNames = {"fap03_open_jaw", "fap29_dilate_l_pupil", "fap31_raise_l_i_eyebrow"};
+const QStringList kExportedNames = {"fap03_open_jaw", "fap29_dilate_l_pupil",
+                                    "fap31_raise_l_i_eyebrow"};
 
 // What an exported pose must hold, computed independently of the exporter: entries per vertex
 // summed, times 1024.
@@ -185,15 +189,19 @@ Ogre::MeshPtr loadMesh(const QString& dir, const std::string& name) {
 }
 
 // `components` floats per vertex of the element with `semantic`, read from the vertex buffer.
-std::vector<float> readElement(const Ogre::VertexData& data, Ogre::VertexElementSemantic semantic, int components) {
+std::vector<float> readElement(const Ogre::VertexData& data, Ogre::VertexElementSemantic semantic,
+                               int components) {
   std::vector<float> values;
   const Ogre::VertexElement* element = data.vertexDeclaration->findElementBySemantic(semantic);
   if (!element) return values;
-  const Ogre::HardwareVertexBufferSharedPtr& buffer = data.vertexBufferBinding->getBuffer(element->getSource());
-  const auto* base = static_cast<const unsigned char*>(buffer->lock(Ogre::HardwareBuffer::HBL_READ_ONLY));
+  const Ogre::HardwareVertexBufferSharedPtr& buffer =
+      data.vertexBufferBinding->getBuffer(element->getSource());
+  const auto* base =
+      static_cast<const unsigned char*>(buffer->lock(Ogre::HardwareBuffer::HBL_READ_ONLY));
   for (std::size_t v = 0; v < data.vertexCount; ++v) {
     float value[4];
-    std::memcpy(value, base + v * buffer->getVertexSize() + element->getOffset(), sizeof(float) * static_cast<std::size_t>(components));
+    std::memcpy(value, base + v * buffer->getVertexSize() + element->getOffset(),
+                sizeof(float) * static_cast<std::size_t>(components));
     values.insert(values.end(), value, value + components);
   }
   buffer->unlock();
@@ -238,14 +246,17 @@ struct Glb {
   QJsonObject json;
   QByteArray bin;
 
-  QJsonObject at(const char* array, int index) const { return json[array].toArray()[index].toObject(); }
+  QJsonObject at(const char* array, int index) const {
+    return json[array].toArray()[index].toObject();
+  }
 
   // The elements of accessor `index`, honouring the buffer view's stride.
   template <typename T>
   std::vector<T> read(int index) const {
     const QJsonObject accessor = at("accessors", index);
     const QJsonObject view = at("bufferViews", accessor["bufferView"].toInt());
-    static const std::map<QString, int> kComponents = {{"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4}};
+    static const std::map<QString, int> kComponents = {
+        {"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4}};
     const int components = kComponents.at(accessor["type"].toString());
     const int elementSize = components * static_cast<int>(sizeof(T));
     const int stride = view.contains("byteStride") ? view["byteStride"].toInt() : elementSize;
@@ -254,7 +265,8 @@ struct Glb {
     for (int i = 0; i < accessor["count"].toInt(); ++i) {
       for (int c = 0; c < components; ++c) {
         T value;
-        std::memcpy(&value, bin.constData() + start + i * stride + c * static_cast<int>(sizeof(T)), sizeof(T));
+        std::memcpy(&value, bin.constData() + start + i * stride + c * static_cast<int>(sizeof(T)),
+                    sizeof(T));
         values.push_back(value);
       }
     }
@@ -300,7 +312,8 @@ void parseGlb(const QByteArray& file, Glb& glb) {
   for (const QJsonValue& value : glb.json["bufferViews"].toArray()) {
     const QJsonObject view = value.toObject();
     QCOMPARE(view["byteOffset"].toInt() % 4, 0);
-    QVERIFY(view["byteOffset"].toInt() + view["byteLength"].toInt() <= buffers[0].toObject()["byteLength"].toInt());
+    QVERIFY(view["byteOffset"].toInt() + view["byteLength"].toInt() <=
+            buffers[0].toObject()["byteLength"].toInt());
   }
   static const std::map<int, int> kComponentSize = {{5123, 2}, {5125, 4}, {5126, 4}};
   static const std::map<QString, int> kComponents = {{"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}};
@@ -312,7 +325,8 @@ void parseGlb(const QByteArray& file, Glb& glb) {
     const int stride = view.contains("byteStride") ? view["byteStride"].toInt() : elementSize;
     QCOMPARE(accessor["byteOffset"].toInt() % size, 0);
     QVERIFY(accessor["count"].toInt() >= 1);
-    QVERIFY(accessor["byteOffset"].toInt() + stride * (accessor["count"].toInt() - 1) + elementSize <=
+    QVERIFY(accessor["byteOffset"].toInt() + stride * (accessor["count"].toInt() - 1) +
+                elementSize <=
             view["byteLength"].toInt());
   }
 }
@@ -325,7 +339,8 @@ void checkMinMax(const Glb& glb, int index) {
   const int components = static_cast<int>(accessor["min"].toArray().size());
   for (int c = 0; c < components; ++c) {
     float lo = values[static_cast<std::size_t>(c)], hi = lo;
-    for (std::size_t i = static_cast<std::size_t>(c); i < values.size(); i += static_cast<std::size_t>(components)) {
+    for (std::size_t i = static_cast<std::size_t>(c); i < values.size();
+         i += static_cast<std::size_t>(components)) {
       lo = std::min(lo, values[i]);
       hi = std::max(hi, values[i]);
     }
@@ -348,7 +363,9 @@ std::vector<float> expectedDeltas(const HeadMesh& head, const PoseSet& poses, in
   std::vector<float> deltas(3 * static_cast<std::size_t>(sub.vertexCount), 0.0f);
   for (const auto& [v, offset] : expectedOffsets(poses, fap)) {
     if (v < sub.firstVertex || v >= sub.firstVertex + sub.vertexCount) continue;
-    for (int c = 0; c < 3; ++c) deltas[3 * static_cast<std::size_t>(v - sub.firstVertex) + static_cast<std::size_t>(c)] = offset[c];
+    for (int c = 0; c < 3; ++c)
+      deltas[3 * static_cast<std::size_t>(v - sub.firstVertex) + static_cast<std::size_t>(c)] =
+          offset[c];
   }
   return deltas;
 }
@@ -361,7 +378,8 @@ HeadMesh largeHead() {
   HeadMesh head;
   head.positions.resize(3, n);
   for (int v = 0; v < n; ++v)
-    head.positions.col(v) = Eigen::Vector3f(static_cast<float>(v % 100), static_cast<float>(v / 100), static_cast<float>(v % 7));
+    head.positions.col(v) = Eigen::Vector3f(static_cast<float>(v % 100),
+                                            static_cast<float>(v / 100), static_cast<float>(v % 7));
   head.normals = Eigen::Matrix3Xf::Zero(3, n);
   head.normals.row(2).setOnes();
   HeadSubmesh small{"small", -1, 0, 3, {{0, 1, 2}}};
@@ -377,7 +395,7 @@ HeadMesh largeHead() {
 class RigExportTest : public QObject {
   Q_OBJECT
 
-private slots:
+ private slots:
   void poseNames();
   void meshRoundTrip();
   void exportInsideRunningOgre();
@@ -420,7 +438,8 @@ void RigExportTest::meshRoundTrip() {
     QCOMPARE(readElement(shared, Ogre::VES_TEXTURE_COORDINATES, 2), columns(head.uvs, 0, 19));
     // Positions alone in their buffer: software pose blending rewrites only that one.
     const auto* position = shared.vertexDeclaration->findElementBySemantic(Ogre::VES_POSITION);
-    QCOMPARE(shared.vertexBufferBinding->getBuffer(position->getSource())->getVertexSize(), std::size_t{12});
+    QCOMPARE(shared.vertexBufferBinding->getBuffer(position->getSource())->getVertexSize(),
+             std::size_t{12});
 
     QCOMPARE(mesh->getNumSubMeshes(), std::size_t{3});
     const char* materialNames[] = {"head/skin", "head/lashes", "head/clear"};
@@ -467,7 +486,9 @@ void RigExportTest::meshRoundTrip() {
     // Bounds hold the neutral head, open_jaw at its largest slider value, and the left
     // eye turned so its cornea points along +x.
     const Ogre::AxisAlignedBox& bounds = mesh->getBounds();
-    auto contains = [&](const Eigen::Vector3f& p) { return bounds.contains(Ogre::Vector3(p.x(), p.y(), p.z())); };
+    auto contains = [&](const Eigen::Vector3f& p) {
+      return bounds.contains(Ogre::Vector3(p.x(), p.y(), p.z()));
+    };
     for (int v = 0; v < 19; ++v) QVERIFY(contains(head.positions.col(v)));
     const float jawMax = static_cast<float>(fapInfo(kOpenJaw).sliderMax);
     for (const auto& [v, offset] : expectedOffsets(poses, kOpenJaw))
@@ -531,7 +552,8 @@ void RigExportTest::exportInsideRunningOgre() {
            Ogre::ColourValue(0.1f, 0.2f, 0.3f));
   {
     // Loaded into the application material's group: a .mesh looks its materials up there.
-    Ogre::ResourceGroupManager::getSingleton().addResourceLocation(str(target.path()), "FileSystem", Ogre::RGN_DEFAULT);
+    Ogre::ResourceGroupManager::getSingleton().addResourceLocation(str(target.path()), "FileSystem",
+                                                                   Ogre::RGN_DEFAULT);
     const Ogre::MeshPtr mesh = meshes.load("head.mesh", Ogre::RGN_DEFAULT);
     QCOMPARE(mesh->getPoseList().size(), kExportedFaps.size());
     QCOMPARE(mesh->getNumSubMeshes(), std::size_t{3});
@@ -569,14 +591,19 @@ void RigExportTest::glbRoundTrip() {
     QCOMPARE(primitive["material"].toInt(), sub.material);
     QCOMPARE(primitive["mode"].toInt(), 4);
     checkMinMax(glb, attributes["POSITION"].toInt());
-    QCOMPARE(glb.read<float>(attributes["POSITION"].toInt()), columns(head.positions, sub.firstVertex, sub.vertexCount));
-    compareFloats(glb.read<float>(attributes["NORMAL"].toInt()), columns(head.normals, sub.firstVertex, sub.vertexCount));
+    QCOMPARE(glb.read<float>(attributes["POSITION"].toInt()),
+             columns(head.positions, sub.firstVertex, sub.vertexCount));
+    compareFloats(glb.read<float>(attributes["NORMAL"].toInt()),
+                  columns(head.normals, sub.firstVertex, sub.vertexCount));
     // Not flipped: HeadMesh uvs already have glTF's upper-left origin.
-    QCOMPARE(glb.read<float>(attributes["TEXCOORD_0"].toInt()), columns(head.uvs, sub.firstVertex, sub.vertexCount));
+    QCOMPARE(glb.read<float>(attributes["TEXCOORD_0"].toInt()),
+             columns(head.uvs, sub.firstVertex, sub.vertexCount));
     QCOMPARE(glb.at("accessors", primitive["indices"].toInt())["componentType"].toInt(), 5123);
-    QCOMPARE(glb.read<std::uint16_t>(primitive["indices"].toInt()).size(), sub.triangles.size() * 3);
+    QCOMPARE(glb.read<std::uint16_t>(primitive["indices"].toInt()).size(),
+             sub.triangles.size() * 3);
     std::vector<std::uint32_t> indices;
-    for (std::uint16_t i : glb.read<std::uint16_t>(primitive["indices"].toInt())) indices.push_back(i);
+    for (std::uint16_t i : glb.read<std::uint16_t>(primitive["indices"].toInt()))
+      indices.push_back(i);
     QCOMPARE(indices, flatten(sub.triangles, sub.firstVertex));
     // Every primitive has every target; zeros where the pose does not reach.
     const QJsonArray targets = primitive["targets"].toArray();
@@ -584,7 +611,8 @@ void RigExportTest::glbRoundTrip() {
     for (int t = 0; t < 3; ++t) {
       const int accessor = targets[t].toObject()["POSITION"].toInt();
       checkMinMax(glb, accessor);
-      compareFloats(glb.read<float>(accessor), expectedDeltas(head, poses, kExportedFaps[static_cast<std::size_t>(t)], s));
+      compareFloats(glb.read<float>(accessor),
+                    expectedDeltas(head, poses, kExportedFaps[static_cast<std::size_t>(t)], s));
     }
   }
 
@@ -595,18 +623,23 @@ void RigExportTest::glbRoundTrip() {
   QCOMPARE(static_cast<float>(pbr["baseColorFactor"].toArray()[0].toDouble()), 0.9f);
   QCOMPARE(pbr["metallicFactor"].toDouble(), 0.0);
   QVERIFY(!skin.contains("alphaMode"));
-  const QJsonObject image = glb.at("images", glb.at("textures", pbr["baseColorTexture"].toObject()["index"].toInt())["source"].toInt());
+  const QJsonObject image = glb.at(
+      "images",
+      glb.at("textures", pbr["baseColorTexture"].toObject()["index"].toInt())["source"].toInt());
   QCOMPARE(image["mimeType"].toString(), QString("image/png"));
   const QJsonObject imageView = glb.at("bufferViews", image["bufferView"].toInt());
-  const QImage embedded = QImage::fromData(glb.bin.mid(imageView["byteOffset"].toInt(), imageView["byteLength"].toInt()), "PNG");
-  QCOMPARE(embedded.convertToFormat(QImage::Format_RGBA8888), QImage(texture).convertToFormat(QImage::Format_RGBA8888));
+  const QImage embedded = QImage::fromData(
+      glb.bin.mid(imageView["byteOffset"].toInt(), imageView["byteLength"].toInt()), "PNG");
+  QCOMPARE(embedded.convertToFormat(QImage::Format_RGBA8888),
+           QImage(texture).convertToFormat(QImage::Format_RGBA8888));
   QCOMPARE(glb.at("materials", 1)["alphaMode"].toString(), QString("BLEND"));
   const QJsonObject cornea = glb.at("materials", 2);
   QCOMPARE(cornea["alphaMode"].toString(), QString("BLEND"));
   QVERIFY(cornea["pbrMetallicRoughness"].toObject()["roughnessFactor"].toDouble() <= 0.05 + 1e-9);
 
   // assimp reads it as three meshes with three morph targets each.
-  std::unique_ptr<const aiScene, decltype(&aiReleaseImport)> scene(aiImportFile(path.toUtf8().constData(), 0), &aiReleaseImport);
+  std::unique_ptr<const aiScene, decltype(&aiReleaseImport)> scene(
+      aiImportFile(path.toUtf8().constData(), 0), &aiReleaseImport);
   QVERIFY2(scene, aiGetErrorString());
   QCOMPARE(scene->mNumMeshes, 3u);
   for (unsigned s = 0; s < 3; ++s) {
@@ -618,7 +651,8 @@ void RigExportTest::glbRoundTrip() {
       const Eigen::Vector3f p = head.positions.col(sub.firstVertex + static_cast<int>(v));
       QCOMPARE(Eigen::Vector3f(m->mVertices[v].x, m->mVertices[v].y, m->mVertices[v].z), p);
       // assimp's origin is the lower left corner: it flips glTF's v on import.
-      QCOMPARE(m->mTextureCoords[0][v].y, 1.0f - head.uvs(1, sub.firstVertex + static_cast<int>(v)));
+      QCOMPARE(m->mTextureCoords[0][v].y,
+               1.0f - head.uvs(1, sub.firstVertex + static_cast<int>(v)));
     }
     QCOMPARE(m->mNumAnimMeshes, 3u);
     for (unsigned t = 0; t < 3; ++t) {
@@ -650,8 +684,9 @@ void RigExportTest::indexWidths() {
     Ogre::MaterialManager::getSingleton().create("BaseWhite", kGroup);
     const Ogre::MeshPtr mesh = loadMesh(target.path(), "large.mesh");
     QCOMPARE(mesh->sharedVertexData->vertexCount, std::size_t{70000});
-    const Ogre::HardwareIndexBuffer::IndexType expected[] = {
-        Ogre::HardwareIndexBuffer::IT_16BIT, Ogre::HardwareIndexBuffer::IT_32BIT, Ogre::HardwareIndexBuffer::IT_32BIT};
+    const Ogre::HardwareIndexBuffer::IndexType expected[] = {Ogre::HardwareIndexBuffer::IT_16BIT,
+                                                             Ogre::HardwareIndexBuffer::IT_32BIT,
+                                                             Ogre::HardwareIndexBuffer::IT_32BIT};
     for (unsigned short s = 0; s < 3; ++s) {
       QCOMPARE(mesh->getSubMesh(s)->indexData->indexBuffer->getType(), expected[s]);
       QCOMPARE(readIndices(*mesh->getSubMesh(s)->indexData), flatten(head.submeshes[s].triangles));
@@ -681,20 +716,27 @@ void RigExportTest::indexWidths() {
 void RigExportTest::glbNormalsAreUnit() {
   QTemporaryDir target;
   HeadMesh head = syntheticHead("");
-  head.normals.col(0) *= 3.0f;      // glTF rejects non-unit normals...
-  head.normals.col(1).setZero();    // ...and a degenerate one has no direction at all
+  head.normals.col(0) *= 3.0f;    // glTF rejects non-unit normals...
+  head.normals.col(1).setZero();  // ...and a degenerate one has no direction at all
   const Eigen::Vector3f expected0 = head.normals.col(0).normalized();
   exporters::exportGlb(head, syntheticPoses(), str(target.filePath("head.glb")));
   Glb glb;
   parseGlb(readAll(target.filePath("head.glb")), glb);
   if (QTest::currentTestFailed()) return;
-  const QJsonObject attributes =
-      glb.json["meshes"].toArray()[0].toObject()["primitives"].toArray()[0].toObject()["attributes"].toObject();
+  const QJsonObject attributes = glb.json["meshes"]
+                                     .toArray()[0]
+                                     .toObject()["primitives"]
+                                     .toArray()[0]
+                                     .toObject()["attributes"]
+                                     .toObject();
   const std::vector<float> normals = glb.read<float>(attributes["NORMAL"].toInt());
-  compareFloats({normals[0], normals[1], normals[2]}, {expected0.x(), expected0.y(), expected0.z()});
+  compareFloats({normals[0], normals[1], normals[2]},
+                {expected0.x(), expected0.y(), expected0.z()});
   compareFloats({normals[3], normals[4], normals[5]}, {0.0f, 0.0f, 1.0f});
   for (std::size_t v = 0; v < normals.size() / 3; ++v)
-    QVERIFY(std::abs(Eigen::Vector3f(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]).norm() - 1.0f) < 1e-6f);
+    QVERIFY(
+        std::abs(Eigen::Vector3f(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]).norm() -
+                 1.0f) < 1e-6f);
 }
 
 void RigExportTest::zeroPoses() {
@@ -708,7 +750,11 @@ void RigExportTest::zeroPoses() {
     const Ogre::MeshPtr mesh = loadMesh(target.path(), "still.mesh");
     QCOMPARE(mesh->getPoseList().size(), std::size_t{0});
     QVERIFY(mesh->hasAnimation("fap"));
-    QCOMPARE(mesh->getAnimation("fap")->getVertexTrack(0)->getVertexPoseKeyFrame(0)->getPoseReferences().size(),
+    QCOMPARE(mesh->getAnimation("fap")
+                 ->getVertexTrack(0)
+                 ->getVertexPoseKeyFrame(0)
+                 ->getPoseReferences()
+                 .size(),
              std::size_t{0});
     QCOMPARE(mesh->getNumSubMeshes(), std::size_t{3});
     QCOMPARE(mesh->getSubMesh(0)->getMaterialName(), std::string("still/skin"));
@@ -719,7 +765,8 @@ void RigExportTest::zeroPoses() {
   const QJsonObject mesh = glb.json["meshes"].toArray()[0].toObject();
   QVERIFY(!mesh.contains("weights"));
   QVERIFY(!mesh.contains("extras"));
-  for (const QJsonValue& primitive : mesh["primitives"].toArray()) QVERIFY(!primitive.toObject().contains("targets"));
+  for (const QJsonValue& primitive : mesh["primitives"].toArray())
+    QVERIFY(!primitive.toObject().contains("targets"));
   QVERIFY(!glb.json.contains("images"));  // the head has no texture
   std::unique_ptr<const aiScene, decltype(&aiReleaseImport)> scene(
       aiImportFile(str(target.filePath("still.glb")).c_str(), 0), &aiReleaseImport);
@@ -735,9 +782,11 @@ void RigExportTest::missingFolderThrowsAndWritesNothing() {
   const HeadMesh head = syntheticHead(str(texture));
   const QString meshPath = target.filePath("missing/head.mesh");
   const QString glbPath = target.filePath("missing/head.glb");
-  const QString meshError = fileErrorOf([&] { exporters::exportOgreMesh(head, syntheticPoses(), str(meshPath)); });
+  const QString meshError =
+      fileErrorOf([&] { exporters::exportOgreMesh(head, syntheticPoses(), str(meshPath)); });
   QVERIFY2(meshError.contains(meshPath), qPrintable(meshError));
-  const QString glbError = fileErrorOf([&] { exporters::exportGlb(head, syntheticPoses(), str(glbPath)); });
+  const QString glbError =
+      fileErrorOf([&] { exporters::exportGlb(head, syntheticPoses(), str(glbPath)); });
   QVERIFY2(glbError.contains(glbPath), qPrintable(glbError));
   QCOMPARE(entries(target.path()), QStringList());
   QCOMPARE(entries(source.path()), QStringList({"skin.png"}));
@@ -747,9 +796,12 @@ void RigExportTest::missingTextureThrowsAndWritesNothing() {
   QTemporaryDir source, target;
   const QString texture = source.filePath("absent.png");
   const HeadMesh head = syntheticHead(str(texture));
-  const QString meshError = fileErrorOf([&] { exporters::exportOgreMesh(head, syntheticPoses(), str(target.filePath("head.mesh"))); });
+  const QString meshError = fileErrorOf([&] {
+    exporters::exportOgreMesh(head, syntheticPoses(), str(target.filePath("head.mesh")));
+  });
   QVERIFY2(meshError.contains(texture) && meshError.contains("texture"), qPrintable(meshError));
-  const QString glbError = fileErrorOf([&] { exporters::exportGlb(head, syntheticPoses(), str(target.filePath("head.glb"))); });
+  const QString glbError = fileErrorOf(
+      [&] { exporters::exportGlb(head, syntheticPoses(), str(target.filePath("head.glb"))); });
   QVERIFY2(glbError.contains(texture), qPrintable(glbError));
   QCOMPARE(entries(target.path()), QStringList());
 }
@@ -760,7 +812,8 @@ void RigExportTest::badRigThrowsAndWritesNothing() {
   const QString meshPath = target.filePath("head.mesh");
   const QString glbPath = target.filePath("head.glb");
   auto expectRejected = [&](const PoseSet& poses, const QString& reason) {
-    const QString meshError = fileErrorOf([&] { exporters::exportOgreMesh(head, poses, str(meshPath)); });
+    const QString meshError =
+        fileErrorOf([&] { exporters::exportOgreMesh(head, poses, str(meshPath)); });
     QVERIFY2(meshError.startsWith(meshPath) && meshError.contains(reason), qPrintable(meshError));
     const QString glbError = fileErrorOf([&] { exporters::exportGlb(head, poses, str(glbPath)); });
     QVERIFY2(glbError.startsWith(glbPath) && glbError.contains(reason), qPrintable(glbError));
@@ -784,8 +837,10 @@ void RigExportTest::badRigThrowsAndWritesNothing() {
 
   HeadMesh broken = head;
   broken.submeshes[1].triangles.emplace_back(12, 13, 3);  // vertex 3 belongs to the skin
-  const QString error = fileErrorOf([&] { exporters::exportGlb(broken, syntheticPoses(), str(glbPath)); });
-  QVERIFY2(error.contains("sub-mesh 'eyelashes' has a triangle outside its vertices 12..15"), qPrintable(error));
+  const QString error =
+      fileErrorOf([&] { exporters::exportGlb(broken, syntheticPoses(), str(glbPath)); });
+  QVERIFY2(error.contains("sub-mesh 'eyelashes' has a triangle outside its vertices 12..15"),
+           qPrintable(error));
 
   QCOMPARE(entries(target.path()), QStringList());
 }
@@ -803,7 +858,8 @@ void RigExportTest::texturesAlreadyInPlaceAndNameClashes() {
   // Exported into the folder that already holds a/skin.png: that file is used in place.
   const QByteArray before = readAll(a.filePath("skin.png"));
   exporters::exportOgreMesh(head, syntheticPoses(), str(a.filePath("head.mesh")));
-  QCOMPARE(entries(a.path()), QStringList({"head.material", "head.mesh", "skin.png", "skin_2.png"}));
+  QCOMPARE(entries(a.path()),
+           QStringList({"head.material", "head.mesh", "skin.png", "skin_2.png"}));
   QCOMPARE(readAll(a.filePath("skin.png")), before);
   QCOMPARE(readAll(a.filePath("skin_2.png")), readAll(b.filePath("skin.png")));
   const QByteArray script = readAll(a.filePath("head.material"));

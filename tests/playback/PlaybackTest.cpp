@@ -7,15 +7,15 @@
 #include <lacrima/common/HeadMesh.h>
 #include <lacrima/playback/Playback.h>
 #include <lacrima/rigging/DefaultHead.h>
-#include <lacrima/tears/TrailBuilder.h>
 #include <lacrima/tears/SurfaceMesher.h>
+#include <lacrima/tears/TrailBuilder.h>
 
 #include <Eigen/Geometry>
 #include <QTemporaryDir>
 #include <QtTest>
 
-#include <fstream>
 #include <array>
+#include <fstream>
 #include <map>
 
 using namespace lacrima;
@@ -39,9 +39,10 @@ class PlaybackTest : public QObject {
   std::unique_ptr<HeadRig> rig_;
   QTemporaryDir dir_;
 
-private slots:
+ private slots:
   void initTestCase() {
-    if (!rigging::defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable())
+      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
     rig_ = loadDefaultHeadRig();
     QVERIFY(rig_ && rig_->blender);
     QVERIFY(dir_.isValid());
@@ -73,12 +74,15 @@ private slots:
     long long before = scrubbed.framesSimulated();
     scrubbed.seek(seconds(25) + 0.01);  // between frames 25 and 26
     QCOMPARE(scrubbed.currentFrame(), 25);
-    QCOMPARE(scrubbed.framesSimulated() - before, 6LL);  // restored before frame 20, replayed 20..25
-    QVERIFY2(sameParticles(*scrubbed.view().particles, reference[25]), "restoring a checkpoint changed the tears");
+    QCOMPARE(scrubbed.framesSimulated() - before,
+             6LL);  // restored before frame 20, replayed 20..25
+    QVERIFY2(sameParticles(*scrubbed.view().particles, reference[25]),
+             "restoring a checkpoint changed the tears");
     before = scrubbed.framesSimulated();
     scrubbed.seek(seconds(60));  // on from the restored state
     QCOMPARE(scrubbed.framesSimulated() - before, 35LL);
-    QVERIFY2(sameParticles(*scrubbed.view().particles, reference[60]), "playing on after a restore changed the tears");
+    QVERIFY2(sameParticles(*scrubbed.view().particles, reference[60]),
+             "playing on after a restore changed the tears");
     scrubbed.seek(seconds(47));
     QVERIFY(sameParticles(*scrubbed.view().particles, reference[47]));
     scrubbed.seek(seconds(12));
@@ -86,7 +90,8 @@ private slots:
     QVERIFY(sameParticles(*scrubbed.view().particles, reference[47]));
     scrubbed.reset();  // the same simulation object, back to no tears
     scrubbed.seek(seconds(60));
-    QVERIFY2(sameParticles(*scrubbed.view().particles, reference[60]), "a reset left something of the old tears");
+    QVERIFY2(sameParticles(*scrubbed.view().particles, reference[60]),
+             "a reset left something of the old tears");
   }
 
   // The eyes are part of the tears' collision surface: tears welling up at the upper lid, over
@@ -102,10 +107,12 @@ private slots:
       const HeadSubmesh* eye = rig_->head.findSubmesh(e == 0 ? "eye_l" : "eye_r");
       QVERIFY(eye);
       Eigen::AlignedBox3d box;
-      for (int v = eye->firstVertex; v < eye->firstVertex + eye->vertexCount; ++v) box.extend(rig_->head.positions.col(v).cast<double>());
+      for (int v = eye->firstVertex; v < eye->firstVertex + eye->vertexCount; ++v)
+        box.extend(rig_->head.positions.col(v).cast<double>());
       const double radius = 0.5 * std::max(box.sizes().x(), box.sizes().y());
-      balls[static_cast<std::size_t>(e)] = {Eigen::Vector3d(box.center().x(), box.center().y(), box.max().z() - radius),
-                                            Eigen::Vector3d(box.center().x(), box.center().y(), box.max().z()), radius};
+      balls[static_cast<std::size_t>(e)] = {
+          Eigen::Vector3d(box.center().x(), box.center().y(), box.max().z() - radius),
+          Eigen::Vector3d(box.center().x(), box.center().y(), box.max().z()), radius};
     }
     QVERIFY(!eyeTriangles(*rig_).empty());
     TearSources sources;
@@ -121,7 +128,8 @@ private slots:
       if (!v.particles) continue;
       for (const Eigen::Vector3d& x : v.particles->position) {
         for (const Ball& b : balls)
-          QVERIFY2((x - b.centre).norm() > 0.9 * b.radius, qPrintable(QString("frame %1: a tear particle inside an eyeball").arg(f)));
+          QVERIFY2((x - b.centre).norm() > 0.9 * b.radius,
+                   qPrintable(QString("frame %1: a tear particle inside an eyeball").arg(f)));
         ++checked;
       }
     }
@@ -176,7 +184,8 @@ private slots:
 
     const QString bad = dir_.filePath("bad.fap");
     std::string mask;
-    for (int fap = 1; fap <= 68; ++fap) mask += std::string(fap > 1 ? " " : "") + (fap == 3 ? "1" : "0");
+    for (int fap = 1; fap <= 68; ++fap)
+      mask += std::string(fap > 1 ? " " : "") + (fap == 3 ? "1" : "0");
     // Line 3, the first value line, has a word where open_jaw's value should be.
     const std::string text = "2.1 bad 22 2\n" + mask + "\n0 wide\n";
     writeText(bad, text);
@@ -195,7 +204,9 @@ private slots:
     QCOMPARE(playback.currentFrame(), 20);
 
     const QString badProject = dir_.filePath("bad.json");
-    writeText(badProject, "{\n  \"format\": \"lacrima-project\",\n  \"version\": 1,\n  \"fps\": 22,\n  \"keys\": [ }\n");
+    writeText(badProject,
+              "{\n  \"format\": \"lacrima-project\",\n  \"version\": 1,\n  \"fps\": 22,\n  "
+              "\"keys\": [ }\n");
     try {
       playback.open(badProject.toStdString());
       QFAIL("a malformed project was accepted");
@@ -366,7 +377,8 @@ private slots:
   // Bringing your own head: a missing mesh is an error naming it.
   void missingHeadFileIsNamed() {
     try {
-      loadHeadRig(dir_.filePath("nohead.obj").toStdString(), dir_.filePath("nohead.fdp.json").toStdString());
+      loadHeadRig(dir_.filePath("nohead.obj").toStdString(),
+                  dir_.filePath("nohead.fdp.json").toStdString());
       QFAIL("a missing head file was accepted");
     } catch (const FileError& e) {
       QVERIFY(QString(e.what()).contains("nohead.obj"));

@@ -36,7 +36,8 @@ inline FapAnimation makeAnimation(int frames, const std::function<void(int, FapV
 // frame `start` to frame `stop` (exclusive).
 inline FapAnimation cryingAnimation(int frames, int perEye, int start = 0, int stop = 1 << 30) {
   return makeAnimation(frames, [=](int f, FapValues& v) {
-    channel(v, "open_jaw") = static_cast<float>(std::round(300.0 * std::sin(f * 0.15) * std::sin(f * 0.15)));
+    channel(v, "open_jaw") =
+        static_cast<float>(std::round(300.0 * std::sin(f * 0.15) * std::sin(f * 0.15)));
     channel(v, "raise_l_i_eyebrow") = static_cast<float>(std::min(f, 40) * 5);
     const float tears = f >= start && f < stop ? static_cast<float>(perEye) : 0.0f;
     channel(v, "tears_l_eye") = tears;
@@ -47,7 +48,8 @@ inline FapAnimation cryingAnimation(int frames, int perEye, int start = 0, int s
 // The face moves, no tear channel is ever non-zero.
 inline FapAnimation dryAnimation(int frames) {
   return makeAnimation(frames, [](int f, FapValues& v) {
-    channel(v, "open_jaw") = static_cast<float>(std::round(400.0 * std::sin(f * 0.2) * std::sin(f * 0.2)));
+    channel(v, "open_jaw") =
+        static_cast<float>(std::round(400.0 * std::sin(f * 0.2) * std::sin(f * 0.2)));
     channel(v, "raise_l_cornerlip") = static_cast<float>(-2 * f);
   });
 }

@@ -20,17 +20,20 @@ const QString kProject = QStringLiteral(LACRIMA_SOURCE_DIR "/media/demo/crying.j
 const QString kCommitted = QStringLiteral(LACRIMA_SOURCE_DIR "/media/demo/crying.fap");
 
 float value(const FapAnimation& a, int frame, const char* name) {
-  return a.frames[static_cast<std::size_t>(frame)][static_cast<std::size_t>(channelIndex(*fapByName(name)))];
+  return a.frames[static_cast<std::size_t>(frame)]
+                 [static_cast<std::size_t>(channelIndex(*fapByName(name)))];
 }
 
-int frameAt(const FapAnimation& a, double seconds) { return static_cast<int>(seconds * a.fps + 0.5); }
+int frameAt(const FapAnimation& a, double seconds) {
+  return static_cast<int>(seconds * a.fps + 0.5);
+}
 
 }  // namespace
 
 class DemoAnimationTest : public QObject {
   Q_OBJECT
 
-private slots:
+ private slots:
   void committedFileIsAFreshConversion() {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
@@ -38,13 +41,15 @@ private slots:
     QProcess fap;
     fap.start(QStringLiteral(LACRIMA_BIN_DIR "/lacrima-fap"), {"convert", kProject, "-o", fresh});
     QVERIFY(fap.waitForFinished(60000));
-    QVERIFY2(fap.exitStatus() == QProcess::NormalExit && fap.exitCode() == 0, fap.readAllStandardError().constData());
+    QVERIFY2(fap.exitStatus() == QProcess::NormalExit && fap.exitCode() == 0,
+             fap.readAllStandardError().constData());
     QFile a(kCommitted), b(fresh);
     QVERIFY2(a.open(QIODevice::ReadOnly), "media/demo/crying.fap is missing");
     QVERIFY(b.open(QIODevice::ReadOnly));
-    QVERIFY2(a.readAll() == b.readAll(),
-             "media/demo/crying.fap differs from a fresh conversion of crying.json; regenerate it with "
-             "lacrima-fap convert media/demo/crying.json -o media/demo/crying.fap");
+    QVERIFY2(
+        a.readAll() == b.readAll(),
+        "media/demo/crying.fap differs from a fresh conversion of crying.json; regenerate it with "
+        "lacrima-fap convert media/demo/crying.json -o media/demo/crying.fap");
   }
 
   void tellsTheStory() {

@@ -3,8 +3,8 @@
 // tears; a bad file gives an error dialog and keeps the animation; drops open files; toggles
 // and parameters reach the playback.
 #include <lacrima/player/PlayerWindow.h>
-#include <lacrima/viewport/EffectsPanel.h>
 #include <lacrima/player/TearParametersPanel.h>
+#include <lacrima/viewport/EffectsPanel.h>
 
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/viewport/FaceViewport.h>
@@ -38,9 +38,10 @@ class PlayerWindowTest : public QObject {
 
   QToolButton* button(const char* name) { return window_->findChild<QToolButton*>(name); }
 
-private slots:
+ private slots:
   void initTestCase() {
-    if (!rigging::defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable())
+      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
     window_ = std::make_unique<PlayerWindow>(playback::loadDefaultHeadRig());
     window_->resize(1100, 700);
     window_->show();
@@ -61,8 +62,9 @@ private slots:
     QVERIFY(window_->playing());
     QTRY_VERIFY_WITH_TIMEOUT(window_->playback().currentFrame() >= 5, 20000);
     QVERIFY(window_->viewport().renderCount() > 0);
-    qInfo("playing: frame %d after %lld renders, %.1f fps on screen", window_->playback().currentFrame(),
-          window_->viewport().renderCount(), window_->renderedFramesPerSecond());
+    qInfo("playing: frame %d after %lld renders, %.1f fps on screen",
+          window_->playback().currentFrame(), window_->viewport().renderCount(),
+          window_->renderedFramesPerSecond());
     QVERIFY(window_->timeline().value() > 0);
 
     QTest::mouseClick(button("resetButton"), Qt::LeftButton);
@@ -117,8 +119,12 @@ private slots:
   void dropOpensFile() {
     const QString short_ = dir_.filePath("short.fap");
     std::string mask;
-    for (int fap = 1; fap <= 68; ++fap) mask += std::string(fap > 1 ? " " : "") + (fap == 19 ? "1" : "0");
-    std::ofstream(short_.toStdString()) << "2.1 short 22 3\n" << mask << "\n0 100\n" << mask << "\n1 200\n" << mask << "\n2 300\n";
+    for (int fap = 1; fap <= 68; ++fap)
+      mask += std::string(fap > 1 ? " " : "") + (fap == 19 ? "1" : "0");
+    std::ofstream(short_.toStdString()) << "2.1 short 22 3\n"
+                                        << mask << "\n0 100\n"
+                                        << mask << "\n1 200\n"
+                                        << mask << "\n2 300\n";
     QMimeData mime;
     mime.setUrls({QUrl::fromLocalFile(short_)});
     QDragEnterEvent enter(QPoint(50, 50), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);

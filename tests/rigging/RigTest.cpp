@@ -2,19 +2,19 @@
 // the exported files and the lacrima-rig command.
 #include <lacrima/common/FapTable.h>
 #include <lacrima/common/PoseSet.h>
+#include <lacrima/exporters/GlbExport.h>
+#include <lacrima/exporters/RigExport.h>
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/rigging/DijkstraGeodesics.h>
 #include <lacrima/rigging/FeaturePointFile.h>
-#include <lacrima/exporters/GlbExport.h>
 #include <lacrima/rigging/MeshImport.h>
 #include <lacrima/rigging/RigBuilder.h>
 #include <lacrima/rigging/RigDescription.h>
-#include <lacrima/exporters/RigExport.h>
 #include <lacrima/rigging/SurfaceGraph.h>
 
-#include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -35,7 +35,8 @@ using namespace lacrima;
 namespace {
 
 const QString kDefaultFdp = QStringLiteral(LACRIMA_SOURCE_DIR "/media/default-head.fdp.json");
-const QString kIctMesh = QStringLiteral(LACRIMA_SHARED_DIR "/heads/ict-facekit/generic_neutral_mesh.obj");
+const QString kIctMesh =
+    QStringLiteral(LACRIMA_SHARED_DIR "/heads/ict-facekit/generic_neutral_mesh.obj");
 const QString kIctFdp = QStringLiteral(LACRIMA_SOURCE_DIR "/tests/rigging/ict-facekit.fdp.json");
 const QString kRigTool = QStringLiteral(LACRIMA_BIN_DIR "/lacrima-rig");
 
@@ -73,8 +74,8 @@ std::map<int, Eigen::Vector3f> dense(const VertexPose& pose) {
 }  // namespace
 
 // QSKIP ends only the function it is written in, so the check must expand inside each test.
-#define REQUIRE_DEFAULT_HEAD()                                                             \
-  do {                                                                                     \
+#define REQUIRE_DEFAULT_HEAD()                                                                \
+  do {                                                                                        \
     if (!head_) QSKIP("default head not in the cache (run packaging/fetch-default-head.sh)"); \
   } while (false)
 
@@ -90,14 +91,14 @@ class RigTest : public QObject {
   const rigging::BuiltRig& rig() { return *rig_; }
   Eigen::Vector3d point(const char* id) { return rig().featurePoints.at(id); }
 
-
-private slots:
+ private slots:
   void initTestCase() {
     QVERIFY(tmp_.isValid());
     if (!rigging::defaultHeadAvailable()) return;
     head_ = std::make_unique<HeadMesh>(rigging::loadDefaultHead());
     Warnings warnings;
-    fdp_ = std::make_unique<rigging::FeaturePointFile>(rigging::readFeaturePointFile(kDefaultFdp.toStdString(), &warnings));
+    fdp_ = std::make_unique<rigging::FeaturePointFile>(
+        rigging::readFeaturePointFile(kDefaultFdp.toStdString(), &warnings));
     rigging::validateFeaturePoints(*fdp_, *head_, &warnings);
     for (const Diagnostic& w : warnings) qWarning("%s", w.toString().c_str());
     QVERIFY2(warnings.empty(), "the default head's feature-point file is complete");
@@ -122,8 +123,11 @@ private slots:
       const Eigen::Vector3d moved = rigging::featurePointDisplacement(rig(), id, fap, 1024.0);
       const Eigen::Vector3d expected = x0 * info.positiveMotion.cast<double>();
       QVERIFY2((moved - expected).norm() < 1e-4 * x0,
-               qPrintable(QString("FAP %1 (%2): moved %3, expected %4").arg(fap).arg(id.c_str())
-                              .arg(moved.norm()).arg(x0)));
+               qPrintable(QString("FAP %1 (%2): moved %3, expected %4")
+                              .arg(fap)
+                              .arg(id.c_str())
+                              .arg(moved.norm())
+                              .arg(x0)));
       ++checked;
     }
     QVERIFY(checked >= 55);
@@ -142,17 +146,22 @@ private slots:
       }
       for (const auto& [v, w] : rig().bindings.at(id)) {
         Q_UNUSED(w);
-        QVERIFY2(weight.count(v) && weight[v] == 1.0f, qPrintable(QString("weight 1 at %1").arg(id.c_str())));
+        QVERIFY2(weight.count(v) && weight[v] == 1.0f,
+                 qPrintable(QString("weight 1 at %1").arg(id.c_str())));
       }
       if (fdp_->points.at(id).at.submesh != "skin") continue;  // tongue points: own surface
       std::vector<int> sources;
       for (const auto& [v, w] : rig().bindings.at(id)) sources.push_back(v);
       const Eigen::VectorXd d = rigging::dijkstraDistances(
-          skin, Eigen::Map<const Eigen::VectorXi>(sources.data(), static_cast<Eigen::Index>(sources.size())));
+          skin, Eigen::Map<const Eigen::VectorXi>(sources.data(),
+                                                  static_cast<Eigen::Index>(sources.size())));
       for (const auto& [v, w] : weight) {
         if (head().submeshOfVertex(v) != 0) continue;  // attachments and the jaw copy weights
         QVERIFY2(d[v] < radius, qPrintable(QString("%1: vertex %2 at %3 >= radius %4")
-                                               .arg(id.c_str()).arg(v).arg(d[v]).arg(radius)));
+                                               .arg(id.c_str())
+                                               .arg(v)
+                                               .arg(d[v])
+                                               .arg(radius)));
       }
     }
   }
@@ -167,12 +176,13 @@ private slots:
     int upperLip = 0;
     for (int v = skin.firstVertex; v < skin.firstVertex + skin.vertexCount; ++v) {
       const Eigen::Vector3d p = head().positions.col(v).cast<double>();
-      if (std::abs(p.x()) >= 0.75 * point("8.3").x() || p.y() < point("2.2").y() || p.y() > point("9.15").y() ||
-          p.z() < point("8.3").z())
+      if (std::abs(p.x()) >= 0.75 * point("8.3").x() || p.y() < point("2.2").y() ||
+          p.y() > point("9.15").y() || p.z() < point("8.3").z())
         continue;
       ++upperLip;
       const auto hit = moved.find(v);
-      QVERIFY2(hit == moved.end() || hit->second.norm() == 0.0f, qPrintable(QString("upper-lip vertex %1").arg(v)));
+      QVERIFY2(hit == moved.end() || hit->second.norm() == 0.0f,
+               qPrintable(QString("upper-lip vertex %1").arg(v)));
     }
     QVERIFY(upperLip > 30);
   }
@@ -193,7 +203,8 @@ private slots:
         continue;
       ++lowerLid;
       const auto hit = moved.find(v);
-      QVERIFY2(hit == moved.end() || hit->second.norm() == 0.0f, qPrintable(QString("lower-lid vertex %1").arg(v)));
+      QVERIFY2(hit == moved.end() || hit->second.norm() == 0.0f,
+               qPrintable(QString("lower-lid vertex %1").arg(v)));
     }
     QVERIFY(lowerLid > 10);
   }
@@ -228,14 +239,19 @@ private slots:
       }
       QVERIFY2(!left.empty(), qPrintable(QString("FAP %1 has a pose").arg(fap)));
       QVERIFY2(worst <= 0.01f * largest,
-               qPrintable(QString("FAP %1 vs %2: worst difference %3 of %4").arg(fap).arg(partner).arg(worst).arg(largest)));
+               qPrintable(QString("FAP %1 vs %2: worst difference %3 of %4")
+                              .arg(fap)
+                              .arg(partner)
+                              .arg(worst)
+                              .arg(largest)));
     }
   }
 
   void fapuArePlausible() {
     REQUIRE_DEFAULT_HEAD();
     const FapuSet& f = rig().fapu;
-    qInfo("FAPU (dm): IRISD0 %g ES0 %g ENS0 %g MNS0 %g MW0 %g", f.irisd0, f.es0, f.ens0, f.mns0, f.mw0);
+    qInfo("FAPU (dm): IRISD0 %g ES0 %g ENS0 %g MNS0 %g MW0 %g", f.irisd0, f.es0, f.ens0, f.mns0,
+          f.mw0);
     QVERIFY(f.irisd0 > 0.05 && f.irisd0 < 0.15);  // an eye opening of 5-15 mm
     QVERIFY(f.es0 > 0.5 && f.es0 < 0.75);         // pupils 5-7.5 cm apart
     QVERIFY(f.ens0 > 0.3 && f.ens0 < 0.7);
@@ -248,13 +264,15 @@ private slots:
     REQUIRE_DEFAULT_HEAD();
     const PoseBlender blender(head(), rig().poses);
     FapValues values{};
-    values[static_cast<std::size_t>(channelIndex(49))] = static_cast<float>(60.0 * M_PI / 180.0 / 1e-5);
+    values[static_cast<std::size_t>(channelIndex(49))] =
+        static_cast<float>(60.0 * M_PI / 180.0 / 1e-5);
     Eigen::Matrix3Xf positions, normals;
     blender.blend(values, positions, normals);
     const Eigen::Vector3f pivot = rig().neckPivot.cast<float>();
     float worst = 0, turned = 0;
     for (int v = 0; v < head().vertexCount(); ++v) {
-      worst = std::max(worst, std::abs((positions.col(v) - pivot).norm() - (head().positions.col(v) - pivot).norm()));
+      worst = std::max(worst, std::abs((positions.col(v) - pivot).norm() -
+                                       (head().positions.col(v) - pivot).norm()));
       turned = std::max(turned, (positions.col(v) - head().positions.col(v)).norm());
     }
     QVERIFY2(worst < 1e-4f, qPrintable(QString("distance to the pivot changed by %1").arg(worst)));
@@ -280,13 +298,16 @@ private slots:
 
   void rigJsonDescribesTheRig() {
     REQUIRE_DEFAULT_HEAD();
-    const QJsonObject doc = QJsonDocument::fromJson(QByteArray::fromStdString(rigging::rigDescriptionJson(head(), rig()))).object();
+    const QJsonObject doc = QJsonDocument::fromJson(QByteArray::fromStdString(
+                                                        rigging::rigDescriptionJson(head(), rig())))
+                                .object();
     QCOMPARE(doc.value("format").toString(), QString("lacrima-rig"));
     QVERIFY(doc.value("fapu").toObject().value("ES0").toDouble() > 0);
     QVERIFY(doc.value("feature_points").toObject().contains("3.3"));
     QCOMPARE(doc.value("neck_pivot").toArray().size(), 3);
     // Tear sources: skin vertices just under the lower lids.
-    for (const auto& [side, tear, lid] : {std::tuple{"left", &rig().tearLeft, "3.3"}, std::tuple{"right", &rig().tearRight, "3.4"}}) {
+    for (const auto& [side, tear, lid] : {std::tuple{"left", &rig().tearLeft, "3.3"},
+                                          std::tuple{"right", &rig().tearRight, "3.4"}}) {
       QVERIFY(doc.value("tear_sources").toObject().contains(side));
       QCOMPARE(head().submeshOfVertex(tear->vertex), 0);
       QVERIFY(tear->position.y() < point(lid).y());
@@ -302,27 +323,31 @@ private slots:
     Warnings warnings;
     rigging::BuiltRig rig;
     const std::string error = fileErrorOf([&] {
-      const rigging::FeaturePointFile fdp = rigging::readFeaturePointFile(kIctFdp.toStdString(), &warnings);
+      const rigging::FeaturePointFile fdp =
+          rigging::readFeaturePointFile(kIctFdp.toStdString(), &warnings);
       rigging::validateFeaturePoints(fdp, mesh, &warnings);
       rig = rigging::buildRig(mesh, fdp);
     });
     QVERIFY2(error.empty(), error.c_str());
-    qInfo("ICT head imported and rigged in %lld ms (%d vertices)", static_cast<long long>(timer.elapsed()),
-          mesh.vertexCount());
+    qInfo("ICT head imported and rigged in %lld ms (%d vertices)",
+          static_cast<long long>(timer.elapsed()), mesh.vertexCount());
     for (const Diagnostic& w : warnings) qInfo("fdp: %s", w.toString().c_str());
     QVERIFY(rig.fapu.es0 > 0 && rig.fapu.mw0 > 0 && rig.fapu.irisd0 > 0);
     for (int fap : {3, 4, 5, 19, 20, 31, 53}) {
       const FapInfo& info = fapInfo(fap);
       const double x0 = rig.fapu.unitValue(info.unit) * 1024.0;
-      const Eigen::Vector3d moved = rigging::featurePointDisplacement(rig, std::string(info.featurePoint), fap, 1024.0);
-      QVERIFY2((moved - x0 * info.positiveMotion.cast<double>()).norm() < 1e-4 * x0, qPrintable(QString("FAP %1").arg(fap)));
+      const Eigen::Vector3d moved =
+          rigging::featurePointDisplacement(rig, std::string(info.featurePoint), fap, 1024.0);
+      QVERIFY2((moved - x0 * info.positiveMotion.cast<double>()).norm() < 1e-4 * x0,
+               qPrintable(QString("FAP %1").arg(fap)));
     }
     QVERIFY(!rig.input.eyeLeft.vertices.empty() && !rig.input.eyeRight.vertices.empty());
   }
 
   void loaderErrorsNameThePoint() {
     const QString path = QDir(tmp_.path()).filePath("bad.fdp.json");
-    const QByteArray head = R"({"format": "lacrima-fdp", "version": 1, "submeshes": {"skin": ["skin"]}, "points": {)";
+    const QByteArray head =
+        R"({"format": "lacrima-fdp", "version": 1, "submeshes": {"skin": ["skin"]}, "points": {)";
     const QByteArray required =
         R"("2.2": {"submesh": "skin", "vertex": 0}, "3.1": {"submesh": "skin", "vertex": 1},
            "3.2": {"submesh": "skin", "vertex": 2}, "3.3": {"submesh": "skin", "vertex": 3},
@@ -340,24 +365,37 @@ private slots:
       });
     };
     const std::string missing = errorFor(required);
-    QVERIFY2(missing.find("9.15") != std::string::npos && missing.find("missing") != std::string::npos, missing.c_str());
-    const std::string unknown = errorFor(required + R"(, "9.15": {"submesh": "nose", "vertex": 0})");
-    QVERIFY2(unknown.find("\"9.15\"") != std::string::npos && unknown.find("unknown sub-mesh \"nose\"") != std::string::npos,
+    QVERIFY2(
+        missing.find("9.15") != std::string::npos && missing.find("missing") != std::string::npos,
+        missing.c_str());
+    const std::string unknown =
+        errorFor(required + R"(, "9.15": {"submesh": "nose", "vertex": 0})");
+    QVERIFY2(unknown.find("\"9.15\"") != std::string::npos &&
+                 unknown.find("unknown sub-mesh \"nose\"") != std::string::npos,
              unknown.c_str());
     const std::string range = errorFor(required + R"(, "9.15": {"submesh": "skin", "vertex": 4})");
-    QVERIFY2(range.find("\"9.15\".vertex") != std::string::npos && range.find("0..3") != std::string::npos, range.c_str());
-    const std::string bary = errorFor(required + R"(, "9.15": {"submesh": "skin", "triangle": 0, "barycentric": [0.5, 0.5, 0.5]})");
+    QVERIFY2(range.find("\"9.15\".vertex") != std::string::npos &&
+                 range.find("0..3") != std::string::npos,
+             range.c_str());
+    const std::string bary =
+        errorFor(required +
+                 R"(, "9.15": {"submesh": "skin", "triangle": 0, "barycentric": [0.5, 0.5, 0.5]})");
     QVERIFY2(bary.find("\"9.15\".barycentric") != std::string::npos, bary.c_str());
     QVERIFY(errorFor(required + R"(, "9.15": {"submesh": "skin", "vertex": 2})").empty());
     // Errors found while reading and while validating both name the line and column.
-    const std::string located = errorFor(required + ",\n  \"9.15\": {\"submesh\": \"skin\", \"vertex\": 4}");
-    QVERIFY2(located.starts_with(path.toStdString() + ":6:31: points.\"9.15\".vertex: index 4 out of range"),
+    const std::string located =
+        errorFor(required + ",\n  \"9.15\": {\"submesh\": \"skin\", \"vertex\": 4}");
+    QVERIFY2(located.starts_with(path.toStdString() +
+                                 ":6:31: points.\"9.15\".vertex: index 4 out of range"),
              located.c_str());
     writeFile(path, head + "\n  \"3.1\": {\"submesh\": \"skin\", \"vertex\": -1}}}");
-    QCOMPARE(fileErrorOf([&] { rigging::readFeaturePointFile(path.toStdString()); }),
-             path.toStdString() + ":2:30: points.\"3.1\".vertex: expected a whole number in [0, 2147483647], got -1");
+    QCOMPARE(
+        fileErrorOf([&] { rigging::readFeaturePointFile(path.toStdString()); }),
+        path.toStdString() +
+            ":2:30: points.\"3.1\".vertex: expected a whole number in [0, 2147483647], got -1");
     writeFile(path, "{\"format\": \"lacrima-fdp\",\n  \"version\": 1,,}");
-    const std::string syntax = fileErrorOf([&] { rigging::readFeaturePointFile(path.toStdString()); });
+    const std::string syntax =
+        fileErrorOf([&] { rigging::readFeaturePointFile(path.toStdString()); });
     QVERIFY2(syntax.find(path.toStdString() + ":2:") != std::string::npos, syntax.c_str());
   }
 
@@ -376,7 +414,8 @@ private slots:
     const QString bad = QDir(tmp_.path()).filePath("broken.fdp.json");
     writeFile(bad, "{\"format\": \"lacrima-fdp\", \"version\": 1}");
     QProcess broken;
-    broken.start(kRigTool, {"--mesh", QDir(tmp_.path()).filePath("none.obj"), "--fdp", bad, "--report"});
+    broken.start(kRigTool,
+                 {"--mesh", QDir(tmp_.path()).filePath("none.obj"), "--fdp", bad, "--report"});
     QVERIFY(broken.waitForFinished(30000));
     QCOMPARE(broken.exitCode(), 1);
     QVERIFY(broken.readAllStandardError().contains("error"));

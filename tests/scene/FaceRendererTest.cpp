@@ -51,12 +51,15 @@ class FaceRendererTest : public QObject {
     }
     return found;
   }
-  Eigen::Vector3d eyeCentre(int e) const { return eyes_[static_cast<std::size_t>(e)].centre.cast<double>(); }
+  Eigen::Vector3d eyeCentre(int e) const {
+    return eyes_[static_cast<std::size_t>(e)].centre.cast<double>();
+  }
   double eyeRadius(int e) const { return eyes_[static_cast<std::size_t>(e)].radius; }
 
-private slots:
+ private slots:
   void initTestCase() {
-    if (!rigging::defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable())
+      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
     head_ = std::make_unique<HeadMesh>(rigging::loadDefaultHead());
     for (int e = 0; e < 2; ++e) {
       const auto sphere = scene::eyeSphere(*head_, e == 0 ? "eye_l" : "eye_r");
@@ -78,12 +81,14 @@ private slots:
     const QPointF left = renderer_->project(eyeCentre(0)), right = renderer_->project(eyeCentre(1));
     QVERIFY(left.x() > right.x());
     QVERIFY(left.y() > 0 && left.y() < 240 && right.y() > 0 && right.y() < 240);
-    const QPointF chin = renderer_->project(skinPoint(Eigen::Vector3d(0, head_->boundsMin().y() + 0.6, 1.2)));
+    const QPointF chin =
+        renderer_->project(skinPoint(Eigen::Vector3d(0, head_->boundsMin().y() + 0.6, 1.2)));
     QVERIFY(chin.y() > left.y() + 100);
     // The face is drawn where project() says: the skin between the eyes is much brighter than the
     // backdrop in the corner, and the backdrop is a dark neutral grey, lighter at the top.
     const MeanColour face = meanColour(image, 0.5 * (left + right) + QPointF(0, 20), 3);
-    const MeanColour corner = meanColour(image, QPointF(5, 5), 3), bottom = meanColour(image, QPointF(5, 474), 3);
+    const MeanColour corner = meanColour(image, QPointF(5, 5), 3),
+                     bottom = meanColour(image, QPointF(5, 474), 3);
     QVERIFY2(face.luminance() > corner.luminance() + 60, "no skin where the face should be");
     QVERIFY(corner.luminance() < 80 && corner.luminance() > bottom.luminance());
     QVERIFY(std::abs(corner.r - corner.b) < 12);
@@ -102,10 +107,13 @@ private slots:
     const QPointF left = renderer_->project(eyeCentre(0)), right = renderer_->project(eyeCentre(1));
     const double eyeY = std::min(left.y(), right.y());
     const double middle = 0.5 * (left.x() + right.x()), spacing = left.x() - right.x();
-    const double eyeRadiusPixels = (renderer_->project(eyeCentre(0) + Eigen::Vector3d(0, eyeRadius(0), 0)) - left).manhattanLength();
+    const double eyeRadiusPixels =
+        (renderer_->project(eyeCentre(0) + Eigen::Vector3d(0, eyeRadius(0), 0)) - left)
+            .manhattanLength();
     int leftSide = 0, rightSide = 0, lowDown = 0;
     for (const QPoint& p : tears) {
-      QVERIFY2(p.y() > eyeY, qPrintable(QString("tear pixel (%1, %2) above the eyes").arg(p.x()).arg(p.y())));
+      QVERIFY2(p.y() > eyeY,
+               qPrintable(QString("tear pixel (%1, %2) above the eyes").arg(p.x()).arg(p.y())));
       QVERIFY2(std::abs(p.x() - middle) < 1.2 * spacing,
                qPrintable(QString("tear pixel (%1, %2) far from the face").arg(p.x()).arg(p.y())));
       (p.x() > middle ? leftSide : rightSide)++;
@@ -136,7 +144,8 @@ private slots:
     const QImage with = render(view);
     const std::vector<QPoint> changed = differingPixels(with, without, 10);
     QVERIFY2(changed.size() > 30, "particle spheres do not show");
-    const double eyeY = std::min(renderer_->project(eyeCentre(0)).y(), renderer_->project(eyeCentre(1)).y());
+    const double eyeY =
+        std::min(renderer_->project(eyeCentre(0)).y(), renderer_->project(eyeCentre(1)).y());
     for (const QPoint& p : changed) QVERIFY(p.y() > eyeY);
   }
 
@@ -147,19 +156,24 @@ private slots:
     for (int e = 0; e < 2; ++e) {
       const double r = eyeRadius(e);
       const double outwards = e == 0 ? 1 : -1;
-      for (const Eigen::Vector3d& offset : {Eigen::Vector3d(0, -1.3 * r, r), Eigen::Vector3d(outwards * 1.3 * r, -0.3 * r, 0.6 * r)}) {
+      for (const Eigen::Vector3d& offset :
+           {Eigen::Vector3d(0, -1.3 * r, r),
+            Eigen::Vector3d(outwards * 1.3 * r, -0.3 * r, 0.6 * r)}) {
         const QPointF at = renderer_->project(skinPoint(eyeCentre(e) + offset));
         const MeanColour before = meanColour(a, at, 2), after = meanColour(b, at, 2);
-        qInfo("eye %d at (%.0f, %.0f): redness %.3f -> %.3f, luminance %.1f -> %.1f", e, at.x(), at.y(),
-              before.redness(), after.redness(), before.luminance(), after.luminance());
-        QVERIFY2(after.redness() > before.redness() * 1.08, "the skin around the eye did not redden");
-        QVERIFY2(after.luminance() < before.luminance() - 3, "the skin around the eye did not darken");
+        qInfo("eye %d at (%.0f, %.0f): redness %.3f -> %.3f, luminance %.1f -> %.1f", e, at.x(),
+              at.y(), before.redness(), after.redness(), before.luminance(), after.luminance());
+        QVERIFY2(after.redness() > before.redness() * 1.08,
+                 "the skin around the eye did not redden");
+        QVERIFY2(after.luminance() < before.luminance() - 3,
+                 "the skin around the eye did not darken");
       }
     }
     // Far from the eyes nothing moves: the forehead and the chin stay exactly as they were.
     const Eigen::Vector3d mid = 0.5 * (eyeCentre(0) + eyeCentre(1));
-    for (const Eigen::Vector3d& far : {Eigen::Vector3d(mid.x(), mid.y() + 6 * eyeRadius(0), mid.z() + eyeRadius(0)),
-                                      Eigen::Vector3d(mid.x() + 2.5 * eyeRadius(0), mid.y() - 8 * eyeRadius(0), mid.z())}) {
+    for (const Eigen::Vector3d& far :
+         {Eigen::Vector3d(mid.x(), mid.y() + 6 * eyeRadius(0), mid.z() + eyeRadius(0)),
+          Eigen::Vector3d(mid.x() + 2.5 * eyeRadius(0), mid.y() - 8 * eyeRadius(0), mid.z())}) {
       const QPointF at = renderer_->project(skinPoint(far));
       const MeanColour before = meanColour(a, at, 2), after = meanColour(b, at, 2);
       QCOMPARE(after.r, before.r);
@@ -179,7 +193,8 @@ private slots:
         changedLeft += channelDifference(a, b, int(left.x()) + dx, int(left.y()) + dy);
         changedRight += channelDifference(a, b, int(right.x()) + dx, int(right.y()) + dy);
       }
-    qInfo("wet left eye: mean channel change %.2f (right eye %.2f)", changedLeft / 225, changedRight / 225);
+    qInfo("wet left eye: mean channel change %.2f (right eye %.2f)", changedLeft / 225,
+          changedRight / 225);
     QVERIFY2(changedLeft / 225 > 3, "the wet overlay did not change the left eye");
     QCOMPARE(changedRight, 0.0);  // only the eye that is wet
   }

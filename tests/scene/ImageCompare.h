@@ -38,7 +38,8 @@ struct MeanColour {
 inline MeanColour meanColour(const QImage& image, QPointF centre, int half) {
   MeanColour m;
   int n = 0;
-  const int cx = static_cast<int>(std::lround(centre.x())), cy = static_cast<int>(std::lround(centre.y()));
+  const int cx = static_cast<int>(std::lround(centre.x())),
+            cy = static_cast<int>(std::lround(centre.y()));
   for (int y = std::max(0, cy - half); y <= std::min(image.height() - 1, cy + half); ++y)
     for (int x = std::max(0, cx - half); x <= std::min(image.width() - 1, cx + half); ++x) {
       const uchar* p = image.constScanLine(y) + 4 * x;

@@ -36,9 +36,10 @@ class OverlayTest : public QObject {
     return best;
   }
 
-private slots:
+ private slots:
   void initTestCase() {
-    if (!rigging::defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable())
+      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
     head_ = std::make_unique<HeadMesh>(rigging::loadDefaultHead());
     const auto l = eyeSphere(*head_, "eye_l"), r = eyeSphere(*head_, "eye_r");
     QVERIFY(l && r);
@@ -54,15 +55,23 @@ private slots:
     for (const EyeSphere& eye : {left_, right_}) {
       const float r = eye.radius;
       // Lower lid and outer corner: full weight.
-      QCOMPARE(w.periocular[std::size_t(skinVertexNear(eye.centre + Eigen::Vector3f(0, -1.2f * r, r)))], 1.0f);
+      QCOMPARE(
+          w.periocular[std::size_t(skinVertexNear(eye.centre + Eigen::Vector3f(0, -1.2f * r, r)))],
+          1.0f);
       // Top of the head, chin, back of the head: none.
-      QCOMPARE(w.periocular[std::size_t(skinVertexNear(eye.centre + Eigen::Vector3f(0, 7 * r, 0)))], 0.0f);
-      QCOMPARE(w.periocular[std::size_t(skinVertexNear(eye.centre + Eigen::Vector3f(0, -8 * r, 0)))], 0.0f);
-      QCOMPARE(w.periocular[std::size_t(skinVertexNear(eye.centre + Eigen::Vector3f(0, 0, -8 * r)))], 0.0f);
+      QCOMPARE(w.periocular[std::size_t(skinVertexNear(eye.centre + Eigen::Vector3f(0, 7 * r, 0)))],
+               0.0f);
+      QCOMPARE(
+          w.periocular[std::size_t(skinVertexNear(eye.centre + Eigen::Vector3f(0, -8 * r, 0)))],
+          0.0f);
+      QCOMPARE(
+          w.periocular[std::size_t(skinVertexNear(eye.centre + Eigen::Vector3f(0, 0, -8 * r)))],
+          0.0f);
     }
     // Only skin carries weights.
     const HeadSubmesh* eye = head_->findSubmesh("eye_l");
-    for (int v = eye->firstVertex; v < eye->firstVertex + eye->vertexCount; ++v) QCOMPARE(w.periocular[std::size_t(v)], 0.0f);
+    for (int v = eye->firstVertex; v < eye->firstVertex + eye->vertexCount; ++v)
+      QCOMPARE(w.periocular[std::size_t(v)], 0.0f);
     for (float x : w.periocular) QVERIFY(x >= 0 && x <= 1);
   }
 
@@ -70,9 +79,13 @@ private slots:
     const OverlayVertexWeights w = overlayVertexWeights(*head_);
     for (const EyeSphere& eye : {left_, right_}) {
       const float outwards = eye.centre.x() > 0 ? 1.0f : -1.0f;
-      const int cheek = skinVertexNear(eye.centre + Eigen::Vector3f(0.3f * eye.radius * outwards, -2.4f * eye.radius, eye.radius));
+      const int cheek =
+          skinVertexNear(eye.centre + Eigen::Vector3f(0.3f * eye.radius * outwards,
+                                                      -2.4f * eye.radius, eye.radius));
       QVERIFY2(w.cheek[std::size_t(cheek)] > 0.8f, "no blush on the cheekbone");
-      QCOMPARE(w.cheek[std::size_t(skinVertexNear(eye.centre + Eigen::Vector3f(0, 5 * eye.radius, eye.radius)))], 0.0f);
+      QCOMPARE(w.cheek[std::size_t(
+                   skinVertexNear(eye.centre + Eigen::Vector3f(0, 5 * eye.radius, eye.radius)))],
+               0.0f);
     }
   }
 
@@ -86,7 +99,8 @@ private slots:
       const Eigen::Vector2f uv = head_->uvs.col(v) * 256.0f;
       return QColor(mask.pixel(std::clamp(int(uv.x()), 0, 255), std::clamp(int(uv.y()), 0, 255)));
     };
-    const int lid = skinVertexNear(left_.centre + Eigen::Vector3f(0, -1.2f * left_.radius, left_.radius));
+    const int lid =
+        skinVertexNear(left_.centre + Eigen::Vector3f(0, -1.2f * left_.radius, left_.radius));
     const int top = skinVertexNear(left_.centre + Eigen::Vector3f(0, 7 * left_.radius, 0));
     QVERIFY2(at(lid).red() > 200, "the lower lid is not in the redness mask");
     QCOMPARE(at(top).red(), 0);
@@ -104,9 +118,10 @@ private slots:
 
   void headsWithoutEyesGetNoMask() {
     HeadMesh bare = *head_;
-    bare.submeshes.erase(std::remove_if(bare.submeshes.begin(), bare.submeshes.end(),
-                                        [](const HeadSubmesh& s) { return s.name.rfind("eye_", 0) == 0; }),
-                         bare.submeshes.end());
+    bare.submeshes.erase(
+        std::remove_if(bare.submeshes.begin(), bare.submeshes.end(),
+                       [](const HeadSubmesh& s) { return s.name.rfind("eye_", 0) == 0; }),
+        bare.submeshes.end());
     const OverlayVertexWeights w = overlayVertexWeights(bare);
     for (float x : w.periocular) QCOMPARE(x, 0.0f);
     const QImage mask = paintOverlayMask(bare, w, 64);
@@ -121,8 +136,8 @@ private slots:
     for (int y = 0; y < 64; y += 7)
       for (int x = 0; x < 64; x += 7) {
         const QColor c = irritated.pixelColor(x, y);
-        QVERIFY(c.red() < 220 && c.green() < 180);                                // darker
-        QVERIFY(double(c.red()) / c.green() > 220.0 / 180.0 * 1.15);              // redder
+        QVERIFY(c.red() < 220 && c.green() < 180);                    // darker
+        QVERIFY(double(c.red()) / c.green() > 220.0 / 180.0 * 1.15);  // redder
       }
     QImage eye(64, 64, QImage::Format_RGBA8888);
     eye.fill(QColor(235, 232, 228));  // sclera
@@ -144,8 +159,7 @@ private slots:
     quad.positions = Eigen::Matrix3Xf::Zero(3, 4);
     quad.normals = Eigen::Matrix3Xf::Zero(3, 4);
     quad.uvs.resize(2, 4);
-    quad.uvs << 0.25f, 0.75f, 0.75f, 0.25f,
-                0.25f, 0.25f, 0.75f, 0.75f;
+    quad.uvs << 0.25f, 0.75f, 0.75f, 0.25f, 0.25f, 0.25f, 0.75f, 0.75f;
     HeadSubmesh sub;
     sub.name = "skin";
     sub.vertexCount = 4;
@@ -159,20 +173,22 @@ private slots:
       }
     const QImage padded = padUvIslands(texture, quad, sub, 2);
     QCOMPARE(padded.size(), texture.size());
-    QCOMPARE(padded.pixelColor(8, 8), QColor(0, 200, 0));   // inside: untouched
-    QCOMPARE(padded.pixelColor(4, 8), QColor(0, 200, 0));   // the painted border: replaced
+    QCOMPARE(padded.pixelColor(8, 8), QColor(0, 200, 0));  // inside: untouched
+    QCOMPARE(padded.pixelColor(4, 8), QColor(0, 200, 0));  // the painted border: replaced
     QCOMPARE(padded.pixelColor(11, 11), QColor(0, 200, 0));
-    QCOMPARE(padded.pixelColor(2, 8), QColor(0, 200, 0));   // grown outwards
-    QCOMPARE(padded.pixelColor(0, 0), QColor(0, 0, 255));   // far outside: kept
+    QCOMPARE(padded.pixelColor(2, 8), QColor(0, 200, 0));  // grown outwards
+    QCOMPARE(padded.pixelColor(0, 0), QColor(0, 0, 255));  // far outside: kept
     // The real head: the skin texture keeps its colours inside the islands.
     const HeadSubmesh* skin = head_->findSubmesh("skin");
-    const QImage original(QString::fromStdString(head_->materials[std::size_t(skin->material)].diffuseTexture));
+    const QImage original(
+        QString::fromStdString(head_->materials[std::size_t(skin->material)].diffuseTexture));
     QVERIFY(!original.isNull());
     const QImage skinPadded = padUvIslands(original, *head_, *skin);
     const QImage reference = original.convertToFormat(QImage::Format_RGBA8888);
     int same = 0, total = 0;
     for (const Eigen::Vector3i& t : skin->triangles) {
-      const Eigen::Vector2f uv = (head_->uvs.col(t[0]) + head_->uvs.col(t[1]) + head_->uvs.col(t[2])) / 3.0f;
+      const Eigen::Vector2f uv =
+          (head_->uvs.col(t[0]) + head_->uvs.col(t[1]) + head_->uvs.col(t[2])) / 3.0f;
       const int x = std::clamp(int(uv.x() * reference.width()), 0, reference.width() - 1);
       const int y = std::clamp(int(uv.y() * reference.height()), 0, reference.height() - 1);
       same += skinPadded.pixelColor(x, y) == reference.pixelColor(x, y);
@@ -191,7 +207,8 @@ private slots:
     double facingSum = 0;
     for (int v = skin->firstVertex; v < skin->firstVertex + skin->vertexCount; ++v) {
       dark += ao[std::size_t(v)] < 0.8f;
-      if (head_->normals(2, v) > 0.8f && head_->positions(2, v) > left_.centre.z()) {  // the front of the face
+      if (head_->normals(2, v) > 0.8f &&
+          head_->positions(2, v) > left_.centre.z()) {  // the front of the face
         facingSum += ao[std::size_t(v)];
         ++facing;
       }
@@ -199,7 +216,10 @@ private slots:
     QVERIFY(dark > 20);
     QVERIFY(facingSum / facing > 0.93);
     // The forehead is open: not occluded.
-    QVERIFY(ao[std::size_t(skinVertexNear(left_.centre + Eigen::Vector3f(-left_.centre.x(), 5 * left_.radius, left_.radius)))] > 0.95f);
+    QVERIFY(
+        ao[std::size_t(skinVertexNear(
+            left_.centre + Eigen::Vector3f(-left_.centre.x(), 5 * left_.radius, left_.radius)))] >
+        0.95f);
     // The back of the mouth is darker than the front teeth.
     const HeadSubmesh* teeth = head_->findSubmesh("teeth_upper");
     float front = 0, back = 1;

@@ -1,7 +1,8 @@
 // lacrima-scene-shots: renders the default head crying at 1280x720 into PNGs (for judging the
 // look) and measures how long a render takes at 1280x720 and 640x480. Needs an X display
 // (xvfb-run -a). Usage:
-//   lacrima-scene-shots [OUT_DIR] [--timing | --quick-timing] [--particles] [--no-trails] [--no-surface]
+//   lacrima-scene-shots [OUT_DIR] [--timing | --quick-timing] [--particles] [--no-trails]
+//   [--no-surface]
 //                       [--simulate N]
 // OUT_DIR defaults to the current folder. The tears are SyntheticTears (drops and trails placed
 // on the cheeks); --simulate N runs the tear simulation instead for N frames at 22 fps with 100
@@ -41,7 +42,8 @@ double median(std::vector<double> v) {
   return v.empty() ? 0 : v[v.size() / 2];
 }
 
-void measure(scene::FaceRenderer& renderer, const playback::FrameView& frame, QSize size, int samples, int runs = 15) {
+void measure(scene::FaceRenderer& renderer, const playback::FrameView& frame, QSize size,
+             int samples, int runs = 15) {
   renderer.resize(size);
   renderer.setSamples(samples);
   std::vector<double> total, render, readback, upload;
@@ -60,9 +62,12 @@ void measure(scene::FaceRenderer& renderer, const playback::FrameView& frame, QS
     total.push_back(t.upload + t.render + t.readback);
   }
   const double cpu = (processCpuMilliseconds() - cpuStart) / runs;
-  std::printf("%dx%d, %dx MSAA: %.1f ms per frame wall (upload %.2f, render %.1f, read-back %.1f; medians of %d), "
-              "%.1f ms CPU per frame (all threads)\n",
-              size.width(), size.height(), samples, median(total), median(upload), median(render), median(readback), runs, cpu);
+  std::printf(
+      "%dx%d, %dx MSAA: %.1f ms per frame wall (upload %.2f, render %.1f, read-back %.1f; medians "
+      "of %d), "
+      "%.1f ms CPU per frame (all threads)\n",
+      size.width(), size.height(), samples, median(total), median(upload), median(render),
+      median(readback), runs, cpu);
 }
 
 // The viewport widget at `size`: each frame a new revision is shown and the event loop runs
@@ -82,12 +87,15 @@ void measureViewport(const playback::FrameView& frame, QSize size, int runs = 40
     view.revision = 1000 + i;
     const long long before = widget.renderCount();
     widget.showFrame(view);
-    while (widget.renderCount() == before) QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+    while (widget.renderCount() == before)
+      QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
     render.push_back(widget.lastRenderMilliseconds());
   }
   const double cpu = (processCpuMilliseconds() - cpuStart) / runs;
-  std::printf("viewport %dx%d: %.1f ms per frame wall (render + swap, median of %d), %.1f ms CPU per frame, %lld renders\n",
-              size.width(), size.height(), median(render), runs, cpu, widget.renderCount() - rendersBefore);
+  std::printf(
+      "viewport %dx%d: %.1f ms per frame wall (render + swap, median of %d), %.1f ms CPU per "
+      "frame, %lld renders\n",
+      size.width(), size.height(), median(render), runs, cpu, widget.renderCount() - rendersBefore);
 }
 
 // The real simulation, surface and trails after `frames` frames.
@@ -112,18 +120,28 @@ int main(int argc, char** argv) {
   QApplication app(argc, argv);
   const QStringList args = app.arguments().mid(1);
   QString out = QStringLiteral(".");
-  bool timing = false, quick = false, viewportOnly = false, particles = false, noTrails = false, noSurface = false;
+  bool timing = false, quick = false, viewportOnly = false, particles = false, noTrails = false,
+       noSurface = false;
   int simulate = 0, runs = 80;
   for (int i = 0; i < args.size(); ++i) {
-    if (args[i] == QLatin1String("--timing")) timing = true;
-    else if (args[i] == QLatin1String("--quick-timing")) timing = quick = true;
-    else if (args[i] == QLatin1String("--viewport-timing")) timing = viewportOnly = true;
-    else if (args[i] == QLatin1String("--particles")) particles = true;
-    else if (args[i] == QLatin1String("--no-trails")) noTrails = true;
-    else if (args[i] == QLatin1String("--no-surface")) noSurface = true;
-    else if (args[i] == QLatin1String("--simulate") && i + 1 < args.size()) simulate = args[++i].toInt();
-    else if (args[i] == QLatin1String("--runs") && i + 1 < args.size()) runs = std::max(1, args[++i].toInt());
-    else out = args[i];
+    if (args[i] == QLatin1String("--timing"))
+      timing = true;
+    else if (args[i] == QLatin1String("--quick-timing"))
+      timing = quick = true;
+    else if (args[i] == QLatin1String("--viewport-timing"))
+      timing = viewportOnly = true;
+    else if (args[i] == QLatin1String("--particles"))
+      particles = true;
+    else if (args[i] == QLatin1String("--no-trails"))
+      noTrails = true;
+    else if (args[i] == QLatin1String("--no-surface"))
+      noSurface = true;
+    else if (args[i] == QLatin1String("--simulate") && i + 1 < args.size())
+      simulate = args[++i].toInt();
+    else if (args[i] == QLatin1String("--runs") && i + 1 < args.size())
+      runs = std::max(1, args[++i].toInt());
+    else
+      out = args[i];
   }
   QDir().mkpath(out);
   if (!rigging::defaultHeadAvailable()) {
@@ -146,16 +164,19 @@ int main(int argc, char** argv) {
   if (particles) frame.particles = particleSet;
   if (noTrails) frame.trails = nullptr;
   if (noSurface) frame.surface = nullptr;
-  std::printf("tears: %d particles, surface %d triangles, trails %d triangles\n", particleSet->size(),
-              frame.surface ? frame.surface->triangleCount() : 0, frame.trails ? frame.trails->triangleCount() : 0);
+  std::printf("tears: %d particles, surface %d triangles, trails %d triangles\n",
+              particleSet->size(), frame.surface ? frame.surface->triangleCount() : 0,
+              frame.trails ? frame.trails->triangleCount() : 0);
 
   QElapsedTimer startup;
   startup.start();
   const auto runtime = scene::OgreRuntime::acquire();
   const qint64 ogreMs = startup.elapsed();
   scene::FaceRenderer renderer(head, QSize(1280, 720));
-  std::printf("start-up: OGRE and the shaders %lld ms, the head (textures, masks, layers, buffers) %lld ms\n", ogreMs,
-              startup.elapsed() - ogreMs);
+  std::printf(
+      "start-up: OGRE and the shaders %lld ms, the head (textures, masks, layers, buffers) %lld "
+      "ms\n",
+      ogreMs, startup.elapsed() - ogreMs);
   renderer.setSamples(4);
   frame.overlays.redness = 1.0;
   frame.overlays.wetEyes = {1.0, 1.0};
@@ -176,7 +197,8 @@ int main(int argc, char** argv) {
   renderer.show(calm);
   const QString third = out + QStringLiteral("/neutral.png");
   renderer.render().save(third);
-  if (!quick) std::printf("wrote %s, %s, %s\n", qPrintable(first), qPrintable(second), qPrintable(third));
+  if (!quick)
+    std::printf("wrote %s, %s, %s\n", qPrintable(first), qPrintable(second), qPrintable(third));
 
   if (!timing) return 0;
   renderer.resetView();

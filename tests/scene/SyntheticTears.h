@@ -35,9 +35,9 @@ struct SkinHit {
 };
 
 class SyntheticTears {
-public:
+ public:
   struct Options {
-    double runLength = 0.55;   // head units the running drop has slid below the lid
+    double runLength = 0.55;  // head units the running drop has slid below the lid
     int runningDropParticles = 420;
     int poolParticles = 200;
   };
@@ -50,7 +50,8 @@ public:
     trails_ = std::make_unique<tears::TrailBuilder>(skinTriangles_);
 
     std::array<std::vector<Eigen::Vector3d>, 2> slidingOffsets;
-    for (int e = 0; e < 2; ++e) eyes_[static_cast<std::size_t>(e)] = eyeOf(e == 0 ? "eye_l" : "eye_r");
+    for (int e = 0; e < 2; ++e)
+      eyes_[static_cast<std::size_t>(e)] = eyeOf(e == 0 ? "eye_l" : "eye_r");
 
     // The running drop slides from the lid down its path, leaving the trail.
     constexpr int kSteps = 60;
@@ -60,7 +61,8 @@ public:
       for (int e = 0; e < 2; ++e) {
         auto hit = pathPoint(e, s);
         if (!hit) continue;
-        addDrop(sliding, *hit, 0.55 * radiusFor(options.runningDropParticles), 1.25, e, nextIdBase(e), options.runningDropParticles);
+        addDrop(sliding, *hit, 0.55 * radiusFor(options.runningDropParticles), 1.25, e,
+                nextIdBase(e), options.runningDropParticles);
       }
       tears::UniformGrid grid;
       grid.build(sliding.position, params_.h);
@@ -70,7 +72,8 @@ public:
     // Pools on the lower lids.
     for (int e = 0; e < 2; ++e)
       if (auto hit = pathPoint(e, 0.0))
-        addDrop(particles_, *hit, radiusFor(options.poolParticles), 0.6, e, nextIdBase(e) + 100000, options.poolParticles);
+        addDrop(particles_, *hit, radiusFor(options.poolParticles), 0.6, e, nextIdBase(e) + 100000,
+                options.poolParticles);
 
     tears::UniformGrid grid;
     grid.build(particles_.position, params_.h);
@@ -105,7 +108,7 @@ public:
     return castDown(x, y);
   }
 
-private:
+ private:
   std::pair<Eigen::Vector3d, double> eyeOf(const char* name) const {
     const HeadSubmesh* sub = head_.findSubmesh(name);
     const auto cols = head_.positions.middleCols(sub->firstVertex, sub->vertexCount);
@@ -117,7 +120,8 @@ private:
 
   double radiusFor(int particles) const {
     // A half-ellipsoid lattice drop: volume ~ particles x spacing^3 (the lattice's spacing).
-    return std::cbrt(3.0 * particles * std::pow(0.7 * params_.spacing, 3) / (2.0 * 3.14159265 * 0.6));
+    return std::cbrt(3.0 * particles * std::pow(0.7 * params_.spacing, 3) /
+                     (2.0 * 3.14159265 * 0.6));
   }
 
   // The front-most skin point along a ray going -z through (x, y).
@@ -158,8 +162,8 @@ private:
   // The lattice is 0.7 times the rest spacing with the mass scaled to match (the same water
   // and density, a smoother surface than a coarse lattice's bumps; a relaxed simulated drop is
   // smooth too).
-  void addDrop(tears::ParticleSet& set, const SkinHit& at, double r, double stretch, int eye, std::uint64_t idBase,
-               int maxParticles) const {
+  void addDrop(tears::ParticleSet& set, const SkinHit& at, double r, double stretch, int eye,
+               std::uint64_t idBase, int maxParticles) const {
     const Eigen::Vector3d n = at.normal;
     Eigen::Vector3d down = Eigen::Vector3d(0, -1, 0) - n * (-n.y());
     down.normalize();
@@ -173,9 +177,11 @@ private:
       for (int j = -reach; j <= reach && added < maxParticles; ++j)
         for (int i = -reach; i <= reach && added < maxParticles; ++i) {
           const double a = i * sp, d = j * sp, h = k * sp;
-          const double q = (a / r) * (a / r) + (d / (stretch * r)) * (d / (stretch * r)) + (h / (0.6 * r)) * (h / (0.6 * r));
+          const double q = (a / r) * (a / r) + (d / (stretch * r)) * (d / (stretch * r)) +
+                           (h / (0.6 * r)) * (h / (0.6 * r));
           if (q > 1) continue;
-          const Eigen::Vector3d x = at.point + a * across + d * down + (h + params_.particleRadius) * n;
+          const Eigen::Vector3d x =
+              at.point + a * across + d * down + (h + params_.particleRadius) * n;
           const int index = set.add(x, mass, id++, eye == 0 ? tears::Eye::Left : tears::Eye::Right);
           auto below = castDown(x.x(), x.y());
           if (below) {

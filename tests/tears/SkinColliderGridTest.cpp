@@ -44,13 +44,16 @@ std::unique_ptr<SkinCollider> colliderFor(const Scene& s) {
   return std::make_unique<SkinCollider>(s.vertices, s.triangles, envelope, kRadius, kBand, kProbe);
 }
 
-bool sameBits(const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return std::memcmp(a.data(), b.data(), sizeof(double) * 3) == 0; }
+bool sameBits(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::memcmp(a.data(), b.data(), sizeof(double) * 3) == 0;
+}
 
 bool sameHit(bool foundA, const SkinHit& a, bool foundB, const SkinHit& b) {
   if (foundA != foundB) return false;
   if (!foundA) return true;
-  return a.triangle == b.triangle && sameBits(a.point, b.point) && sameBits(a.barycentric, b.barycentric) &&
-         a.interior == b.interior && std::memcmp(&a.distance, &b.distance, sizeof(double)) == 0;
+  return a.triangle == b.triangle && sameBits(a.point, b.point) &&
+         sameBits(a.barycentric, b.barycentric) && a.interior == b.interior &&
+         std::memcmp(&a.distance, &b.distance, sizeof(double)) == 0;
 }
 
 }  // namespace
@@ -58,14 +61,15 @@ bool sameHit(bool foundA, const SkinHit& a, bool foundB, const SkinHit& b) {
 class SkinColliderGridTest : public QObject {
   Q_OBJECT
 
-private slots:
+ private slots:
   void nearestIsUnchangedBySkipping() {
     const Scene scene = stressSheet();
     auto warm = colliderFor(scene), cold = colliderFor(scene);
     CollisionCounters warmCounters, coldCounters;
     std::mt19937_64 rng(99);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    const Eigen::Vector3d lo = scene.box.min().array() - 0.1, size = scene.box.sizes().array() + 0.2;
+    const Eigen::Vector3d lo = scene.box.min().array() - 0.1,
+                          size = scene.box.sizes().array() + 0.2;
     const double radii[] = {kRadius + kBand, kRadius + kProbe, 3 * kRadius + 0.02};
     int found = 0;
     const int queries = 40 * kBatch;
@@ -74,7 +78,8 @@ private slots:
       // Half the points near the sheet (contacts), half anywhere in the box.
       Eigen::Vector3d x = lo + Eigen::Vector3d(unit(rng), unit(rng), unit(rng)).cwiseProduct(size);
       if (q % 2 == 0) {
-        const Eigen::Vector3d v = scene.vertices.col(static_cast<Eigen::Index>(unit(rng) * static_cast<double>(scene.vertices.cols() - 1)));
+        const Eigen::Vector3d v = scene.vertices.col(
+            static_cast<Eigen::Index>(unit(rng) * static_cast<double>(scene.vertices.cols() - 1)));
         x = v + 0.04 * Eigen::Vector3d(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5);
       }
       const double r = radii[q % 3];
@@ -99,7 +104,8 @@ private slots:
     // Warm the grid up on this pose.
     for (int q = 0; q < 2 * kBatch; ++q) {
       SkinHit hit;
-      warm->nearest(scene.box.center() + Eigen::Vector3d(unit(rng), unit(rng), unit(rng)), kRadius + kProbe, hit, warmCounters);
+      warm->nearest(scene.box.center() + Eigen::Vector3d(unit(rng), unit(rng), unit(rng)),
+                    kRadius + kProbe, hit, warmCounters);
     }
     const Eigen::Vector3d normalish(0, 0.34, 0.94);  // the sheet faces +z, tilted up
     long long swept = 0;
@@ -109,8 +115,10 @@ private slots:
       std::vector<Eigen::Vector3d> previous;
       const int n = kBatch / 3;  // at most a ray and a sphere query each
       for (int i = 0; i < n; ++i) {
-        const Eigen::Vector3d v = scene.vertices.col(static_cast<Eigen::Index>((unit(rng) + 1) * 0.5 * static_cast<double>(scene.vertices.cols() - 1)));
-        const Eigen::Vector3d start = v + normalish * (0.05 + 0.1 * (unit(rng) + 1)) + 0.05 * Eigen::Vector3d(unit(rng), unit(rng), 0);
+        const Eigen::Vector3d v = scene.vertices.col(static_cast<Eigen::Index>(
+            (unit(rng) + 1) * 0.5 * static_cast<double>(scene.vertices.cols() - 1)));
+        const Eigen::Vector3d start = v + normalish * (0.05 + 0.1 * (unit(rng) + 1)) +
+                                      0.05 * Eigen::Vector3d(unit(rng), unit(rng), 0);
         a.add(start, 1.0, static_cast<std::uint64_t>(i), Eye::Left);
         previous.push_back(start);
         // Fast particles: through the sheet, or past it, or hardly moving.
@@ -124,7 +132,8 @@ private slots:
       for (int i = 0; i < n; ++i) {
         const auto s = static_cast<std::size_t>(i);
         QVERIFY2(sameBits(a.position[s], b.position[s]) && sameBits(a.velocity[s], b.velocity[s]) &&
-                     a.contact[s].triangle == b.contact[s].triangle && sameBits(a.contact[s].barycentric, b.contact[s].barycentric) &&
+                     a.contact[s].triangle == b.contact[s].triangle &&
+                     sameBits(a.contact[s].barycentric, b.contact[s].barycentric) &&
                      std::memcmp(&a.clearance[s], &b.clearance[s], sizeof(double)) == 0,
                  qPrintable(QString("batch %1 particle %2 differs").arg(batch).arg(i)));
         swept += a.contact[s].triangle >= 0 ? 1 : 0;

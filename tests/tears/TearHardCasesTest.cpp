@@ -27,8 +27,9 @@ TearSettings with(std::initializer_list<std::pair<const char*, double>> values) 
 class TearHardCasesTest : public QObject {
   Q_OBJECT
 
-private:
-  void runCase(const TearSettings& settings, int left, int right, int frames, SimulationOptions options = {}) {
+ private:
+  void runCase(const TearSettings& settings, int left, int right, int frames,
+               SimulationOptions options = {}) {
     const SyntheticSkin sheet = makeCheekSheet();
     for (PressureMethod solver : kSolvers) {
       options.pressureSolver = solver;
@@ -51,7 +52,7 @@ private:
     return o;
   }
 
-private slots:
+ private slots:
   void defaults() { runCase({}, 50, 50, 66); }
   void adhesion20() { runCase(with({{"adhesion", 20}}), 50, 50, 66); }
   // The 2009 system was unstable here (particles pulled through the mesh or launched).
@@ -113,12 +114,14 @@ private slots:
     const SyntheticSkin sheet = makeCheekSheet();
     auto sim = makeSheetSimulation(sheet, {}, optionsFor(solver));
     const double jump = 8 * sim->particleRadius();
-    const Eigen::Vector3d normal = Eigen::AngleAxisd(-20 * M_PI / 180, Eigen::Vector3d::UnitX()) * Eigen::Vector3d::UnitZ();
+    const Eigen::Vector3d normal =
+        Eigen::AngleAxisd(-20 * M_PI / 180, Eigen::Vector3d::UnitX()) * Eigen::Vector3d::UnitZ();
     auto surfaceAt = [&](int f) -> Eigen::Matrix3Xf {
       if (f < 20) return sheet.positions;
       if (f < 30) return movedSheet(sheet, jump * normal);
       if (f < 40) return movedSheet(sheet, -jump * normal);
-      return movedSheet(sheet, Eigen::Vector3d::Zero(), Eigen::AngleAxisd(10 * M_PI / 180, Eigen::Vector3d::UnitY()));
+      return movedSheet(sheet, Eigen::Vector3d::Zero(),
+                        Eigen::AngleAxisd(10 * M_PI / 180, Eigen::Vector3d::UnitY()));
     };
     InvariantChecker checker(sheet, 0.45);
     runAndCheck(*sim, sheet, 50, 50, 60, -1, surfaceAt, &checker);
@@ -129,9 +132,15 @@ private slots:
     for (int i = 0; i < p.size(); ++i) {
       // Nearest sheet vertex as a proxy for the nearest surface point (edge 0.05 dm).
       Eigen::Index nearest = 0;
-      (final.cast<double>().colwise() - p.position[static_cast<std::size_t>(i)]).colwise().squaredNorm().minCoeff(&nearest);
-      const Eigen::Vector3d n = Eigen::AngleAxisd(10 * M_PI / 180, Eigen::Vector3d::UnitY()) * normal;
-      if ((p.position[static_cast<std::size_t>(i)] - final.col(nearest).cast<double>()).dot(n) < -0.02) ++behind;
+      (final.cast<double>().colwise() - p.position[static_cast<std::size_t>(i)])
+          .colwise()
+          .squaredNorm()
+          .minCoeff(&nearest);
+      const Eigen::Vector3d n =
+          Eigen::AngleAxisd(10 * M_PI / 180, Eigen::Vector3d::UnitY()) * normal;
+      if ((p.position[static_cast<std::size_t>(i)] - final.col(nearest).cast<double>()).dot(n) <
+          -0.02)
+        ++behind;
     }
     QCOMPARE(behind, 0);
   }
@@ -143,7 +152,9 @@ private slots:
     QFETCH(int, solver);
     const SyntheticSkin sheet = makeCheekSheet();
     const double speed = 0.2;  // dm/s
-    auto surfaceAt = [&](int f) { return movedSheet(sheet, Eigen::Vector3d(speed * f * kFrameDt, 0, 0)); };
+    auto surfaceAt = [&](int f) {
+      return movedSheet(sheet, Eigen::Vector3d(speed * f * kFrameDt, 0, 0));
+    };
     auto meanX = [](const TearSimulation& sim) {
       double sum = 0;
       for (const auto& x : sim.particles().position) sum += x.x();

@@ -40,11 +40,13 @@ Eigen::AlignedBox3d eyeBounds(const HeadMesh& head, const char* name) {
 }
 
 // Closest point of triangle abc to p (brute-force reference, by projection and edge clamping).
-Eigen::Vector3d closestPoint(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                             const Eigen::Vector3d& c) {
+Eigen::Vector3d closestPoint(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                             const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
   const Eigen::Vector3d n = (b - a).cross(c - a).normalized();
   const Eigen::Vector3d q = p - (p - a).dot(n) * n;  // in the plane
-  const auto inside = [&](const Eigen::Vector3d& u, const Eigen::Vector3d& w) { return (w - u).cross(q - u).dot(n) >= 0; };
+  const auto inside = [&](const Eigen::Vector3d& u, const Eigen::Vector3d& w) {
+    return (w - u).cross(q - u).dot(n) >= 0;
+  };
   if (inside(a, b) && inside(b, c) && inside(c, a)) return q;
   const auto onSegment = [&](const Eigen::Vector3d& u, const Eigen::Vector3d& w) {
     const double s = std::clamp((p - u).dot(w - u) / (w - u).squaredNorm(), 0.0, 1.0);
@@ -61,7 +63,7 @@ Eigen::Vector3d closestPoint(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
 class TearHeadTest : public QObject {
   Q_OBJECT
 
-private:
+ private:
   std::unique_ptr<HeadMesh> head_;
   Eigen::AlignedBox3d skinBox_, allowed_;
   double eyeLevel_ = 0;  // lower edge of the lower eyeball (head units)
@@ -70,18 +72,21 @@ private:
   void checkFrame(const TearSimulation& sim, int frame) {
     const ParticleSet& p = sim.particles();
     const QByteArray where = QByteArray("frame ") + QByteArray::number(frame);
-    QVERIFY2(sim.count(Eye::Left) == kPerEye && sim.count(Eye::Right) == kPerEye, where + ": wrong particle count");
+    QVERIFY2(sim.count(Eye::Left) == kPerEye && sim.count(Eye::Right) == kPerEye,
+             where + ": wrong particle count");
     for (int i = 0; i < p.size(); ++i) {
       const auto s = static_cast<std::size_t>(i);
       QVERIFY2(p.position[s].allFinite() && p.velocity[s].allFinite() && std::isfinite(p.mass[s]),
                where + ": non-finite particle state");
-      QVERIFY2(allowed_.contains(p.position[s]), where + ": a particle left the box around the head");
+      QVERIFY2(allowed_.contains(p.position[s]),
+               where + ": a particle left the box around the head");
     }
   }
 
-private slots:
+ private slots:
   void initTestCase() {
-    if (!rigging::defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable())
+      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
     head_ = std::make_unique<HeadMesh>(rigging::loadDefaultHead());
     const HeadSubmesh* skin = head_->findSubmesh("skin");
     QVERIFY(skin && head_->findSubmesh("eye_l") && head_->findSubmesh("eye_r"));
@@ -91,7 +96,8 @@ private slots:
     allowed_ = skinBox_;
     allowed_.min().array() -= 0.35;
     allowed_.max().array() += 0.35;
-    eyeLevel_ = std::min(eyeBounds(*head_, "eye_l").min().y(), eyeBounds(*head_, "eye_r").min().y());
+    eyeLevel_ =
+        std::min(eyeBounds(*head_, "eye_l").min().y(), eyeBounds(*head_, "eye_r").min().y());
   }
 
   void defaultSourcesSitWhereTheRigPutsThem() {
@@ -99,10 +105,12 @@ private slots:
     // IRISD0 / 4, nearest skin vertex): the same place to within 2 mm (0.02 dm), on the skin,
     // facing forward; and sources the caller gives are used as they are.
     Warnings warnings;
-    const rigging::FeaturePointFile fdp = rigging::readFeaturePointFile(LACRIMA_SOURCE_DIR "/media/default-head.fdp.json", &warnings);
+    const rigging::FeaturePointFile fdp =
+        rigging::readFeaturePointFile(LACRIMA_SOURCE_DIR "/media/default-head.fdp.json", &warnings);
     rigging::validateFeaturePoints(fdp, *head_, &warnings);
     const rigging::BuiltRig rig = rigging::buildRig(*head_, fdp);
-    for (auto [eye, rigSource] : {std::pair{Eye::Left, rig.tearLeft}, std::pair{Eye::Right, rig.tearRight}}) {
+    for (auto [eye, rigSource] :
+         {std::pair{Eye::Left, rig.tearLeft}, std::pair{Eye::Right, rig.tearRight}}) {
       const Eigen::Vector3d own = TearSimulation::defaultTearSource(*head_, eye);
       const double gap = (own - rigSource.position).norm();
       qInfo("%s eye: default source %.4f %.4f %.4f, the rig's %.4f %.4f %.4f (%.2f mm apart)",
@@ -141,11 +149,16 @@ private slots:
     int checked = 0, found = 0;
     for (int q = 0; q < 400; ++q) {
       // A random skin triangle on the front of the face, then a point off it.
-      const Eigen::Vector3i& t = skin->triangles[static_cast<std::size_t>(unit(random) * skin->triangles.size())];
+      const Eigen::Vector3i& t =
+          skin->triangles[static_cast<std::size_t>(unit(random) * skin->triangles.size())];
       const Eigen::Vector3d n = (v(t[1]) - v(t[0])).cross(v(t[2]) - v(t[0])).normalized();
-      if (!n.allFinite() || n.z() < 0.3 || v(t[0]).y() < skinBox_.min().y() + 0.3 * skinBox_.sizes().y()) continue;
-      const Eigen::Vector3d x = (v(t[0]) + v(t[1]) + v(t[2])) / 3 + unit(random) * radius * n +
-                                0.5 * radius * Eigen::Vector3d(unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5);
+      if (!n.allFinite() || n.z() < 0.3 ||
+          v(t[0]).y() < skinBox_.min().y() + 0.3 * skinBox_.sizes().y())
+        continue;
+      const Eigen::Vector3d x =
+          (v(t[0]) + v(t[1]) + v(t[2])) / 3 + unit(random) * radius * n +
+          0.5 * radius *
+              Eigen::Vector3d(unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5);
       double best = std::numeric_limits<double>::infinity();
       for (const auto& u : surface) {
         const Eigen::Vector3d a = v(u[0]), b = v(u[1]), c = v(u[2]);
@@ -158,18 +171,19 @@ private slots:
       const SkinPoint hit = sim->nearestSkinPoint(x, radius);
       ++checked;
       if (best >= radius) {
-        QVERIFY2(!hit.found() || hit.distance >= radius * (1 - 1e-9), "found a point beyond the radius");
+        QVERIFY2(!hit.found() || hit.distance >= radius * (1 - 1e-9),
+                 "found a point beyond the radius");
         continue;
       }
       ++found;
-      QVERIFY2(hit.found(), QByteArray("query ") + QByteArray::number(q) + ": nothing found, brute force " +
-                                QByteArray::number(best));
-      QVERIFY2(std::abs(hit.distance - best) < 1e-9, QByteArray("query ") + QByteArray::number(q) + ": distance " +
-                                                        QByteArray::number(hit.distance) + ", brute force " +
-                                                        QByteArray::number(best));
+      QVERIFY2(hit.found(), QByteArray("query ") + QByteArray::number(q) +
+                                ": nothing found, brute force " + QByteArray::number(best));
+      QVERIFY2(std::abs(hit.distance - best) < 1e-9,
+               QByteArray("query ") + QByteArray::number(q) + ": distance " +
+                   QByteArray::number(hit.distance) + ", brute force " + QByteArray::number(best));
     }
-    qInfo("%d queries, %d with skin in reach, %lld ODE calls, %lld answered by a scan", checked, found,
-          sim->counters().odeQueries, sim->counters().bruteForceQueries);
+    qInfo("%d queries, %d with skin in reach, %lld ODE calls, %lld answered by a scan", checked,
+          found, sim->counters().odeQueries, sim->counters().bruteForceQueries);
     QVERIFY(found > 100);
   }
 
@@ -188,9 +202,10 @@ private slots:
       const auto s = static_cast<std::size_t>(i);
       if (p.position[s].y() < eyeLevel_ && p.contact[s].triangle >= 0) ++belowOnSkin;
     }
-    qInfo("%d of %d particles below the eyes on the skin, %lld sub-steps, %lld recycled", belowOnSkin, p.size(),
-          sim->counters().substeps, sim->counters().recycled);
-    QVERIFY2(belowOnSkin > p.size() / 2, QByteArray::number(belowOnSkin) + " of " + QByteArray::number(p.size()) +
+    qInfo("%d of %d particles below the eyes on the skin, %lld sub-steps, %lld recycled",
+          belowOnSkin, p.size(), sim->counters().substeps, sim->counters().recycled);
+    QVERIFY2(belowOnSkin > p.size() / 2, QByteArray::number(belowOnSkin) + " of " +
+                                             QByteArray::number(p.size()) +
                                              " particles below the eyes on the skin");
   }
 
@@ -235,7 +250,8 @@ private slots:
         }
       }
       const Eigen::Vector3d n = head_->normals.col(nearest).cast<double>();
-      if ((p.position[s] - open.col(nearest).cast<double>()).dot(n) < -2 * sim->particleRadius()) ++behind;
+      if ((p.position[s] - open.col(nearest).cast<double>()).dot(n) < -2 * sim->particleRadius())
+        ++behind;
     }
     qInfo("%d of %d particles behind the skin, %lld swept out by the moving skin", behind, p.size(),
           sim->counters().sweptParticles);

@@ -16,11 +16,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <numbers>
 #include <random>
 #include <set>
-#include <cstring>
 
 using namespace lacrima::tears;
 using namespace lacrima::tears::testing;
@@ -43,19 +43,22 @@ struct Drop {
 
 // Particles of a cubic lattice of spacing h/2 inside a ball, slightly jittered (deterministic),
 // like a drop at rest.
-Drop latticeBall(int count, double h, const Eigen::Vector3d& centre = Eigen::Vector3d::Zero(), double jitter = 0.05) {
+Drop latticeBall(int count, double h, const Eigen::Vector3d& centre = Eigen::Vector3d::Zero(),
+                 double jitter = 0.05) {
   const double spacing = 0.5 * h;
   std::vector<Eigen::Vector3d> lattice;
   const int n = static_cast<int>(std::ceil(std::cbrt(count))) + 2;
   for (int i = -n; i <= n; ++i)
     for (int j = -n; j <= n; ++j)
       for (int k = -n; k <= n; ++k) lattice.emplace_back(i * spacing, j * spacing, k * spacing);
-  std::stable_sort(lattice.begin(), lattice.end(), [](const auto& a, const auto& b) { return a.squaredNorm() < b.squaredNorm(); });
+  std::stable_sort(lattice.begin(), lattice.end(),
+                   [](const auto& a, const auto& b) { return a.squaredNorm() < b.squaredNorm(); });
   Drop d;
   std::mt19937_64 random(7);
   std::uniform_real_distribution<double> u(-jitter * spacing, jitter * spacing);
   for (int p = 0; p < count; ++p)
-    d.x.push_back(centre + lattice[static_cast<std::size_t>(p)] + Eigen::Vector3d(u(random), u(random), u(random)));
+    d.x.push_back(centre + lattice[static_cast<std::size_t>(p)] +
+                  Eigen::Vector3d(u(random), u(random), u(random)));
   return d;
 }
 
@@ -65,11 +68,13 @@ QByteArray closedAndOriented(const TearSurface& s) {
   std::map<std::pair<int, int>, int> directed;
   const auto t = s.triangles();
   for (int i = 0; i < t.cols(); ++i) {
-    if (t(0, i) == t(1, i) || t(1, i) == t(2, i) || t(0, i) == t(2, i)) return "triangle with a repeated vertex";
+    if (t(0, i) == t(1, i) || t(1, i) == t(2, i) || t(0, i) == t(2, i))
+      return "triangle with a repeated vertex";
     for (int k = 0; k < 3; ++k) ++directed[{t(k, i), t((k + 1) % 3, i)}];
   }
   for (const auto& [edge, count] : directed) {
-    if (count != 1) return "directed edge used " + QByteArray::number(count) + " times (non-manifold or flipped)";
+    if (count != 1)
+      return "directed edge used " + QByteArray::number(count) + " times (non-manifold or flipped)";
     if (!directed.count({edge.second, edge.first})) return "open edge (a hole)";
   }
   return {};
@@ -79,7 +84,8 @@ double enclosedVolume(const TearSurface& s) {
   const auto p = s.positions();
   const auto t = s.triangles();
   double v = 0;
-  for (int i = 0; i < t.cols(); ++i) v += p.col(t(0, i)).dot(p.col(t(1, i)).cross(p.col(t(2, i)))) / 6.0;
+  for (int i = 0; i < t.cols(); ++i)
+    v += p.col(t(0, i)).dot(p.col(t(1, i)).cross(p.col(t(2, i)))) / 6.0;
   return v;
 }
 
@@ -87,7 +93,8 @@ double area(const TearSurface& s) {
   const auto p = s.positions();
   const auto t = s.triangles();
   double a = 0;
-  for (int i = 0; i < t.cols(); ++i) a += 0.5 * (p.col(t(1, i)) - p.col(t(0, i))).cross(p.col(t(2, i)) - p.col(t(0, i))).norm();
+  for (int i = 0; i < t.cols(); ++i)
+    a += 0.5 * (p.col(t(1, i)) - p.col(t(0, i))).cross(p.col(t(2, i)) - p.col(t(0, i))).norm();
   return a;
 }
 
@@ -125,7 +132,7 @@ VertexError vertexError(const SurfaceMesher& mesher, double iso) {
 class TearSurfaceTest : public QObject {
   Q_OBJECT
 
-private slots:
+ private slots:
   // Every case cuts exactly the edges whose corners differ in sign, each triangle has three
   // distinct edges, and complementary cases cut the same edges.
   void tableCutsExactlyTheSignChangingEdges() {
@@ -187,12 +194,16 @@ private slots:
     for (int v = 0; v < p.cols(); ++v) {
       QVERIFY(n.col(v).dot((p.col(v) - centre).normalized()) > 0.3);
       // Interpolated corner gradients against the field's gradient at the vertex itself.
-      const double cosine = std::clamp(n.col(v).dot(-mesher.field().gradient(p.col(v)).normalized()), -1.0, 1.0);
+      const double cosine =
+          std::clamp(n.col(v).dot(-mesher.field().gradient(p.col(v)).normalized()), -1.0, 1.0);
       const double degrees = std::acos(cosine) * 180 / std::numbers::pi;
       worst = std::max(worst, degrees);
       mean += degrees / static_cast<double>(p.cols());
     }
-    qInfo("normals %.2f degrees (mean), %.2f (worst) from the exact colour-field gradient at cube h/2", mean, worst);
+    qInfo(
+        "normals %.2f degrees (mean), %.2f (worst) from the exact colour-field gradient at cube "
+        "h/2",
+        mean, worst);
     QVERIFY2(mean < 3 && worst < 10, QByteArray::number(mean) + " " + QByteArray::number(worst));
     const VertexError e = vertexError(mesher, 0.5);
     // Linear interpolation of a smooth field: the error is second order in s.
@@ -207,7 +218,8 @@ private slots:
     Drop d;
     for (int i = 0; i < 120; ++i)
       for (int j = 0; j < 3; ++j)
-        d.x.emplace_back(0.001 + i * 0.25 * h + 0.1 * h * std::sin(i * 0.7), j * 0.45 * h + 0.02 * h * std::cos(i * 1.3),
+        d.x.emplace_back(0.001 + i * 0.25 * h + 0.1 * h * std::sin(i * 0.7),
+                         j * 0.45 * h + 0.02 * h * std::cos(i * 1.3),
                          0.15 * h * std::sin(i * 0.31));
     SurfaceMesher mesher;
     for (double s : {h / 2.7, h / 2, h / 3.3}) {
@@ -224,7 +236,8 @@ private slots:
   // order (linear interpolation of a smooth field): each halving of s cuts the error ~4x.
   void areaAndVolumeConverge() {
     const double h = 1.0, R = h * std::sqrt(1 - std::cbrt(0.5));
-    const double exactVolume = 4.0 / 3.0 * std::numbers::pi * R * R * R, exactArea = 4 * std::numbers::pi * R * R;
+    const double exactVolume = 4.0 / 3.0 * std::numbers::pi * R * R * R,
+                 exactArea = 4 * std::numbers::pi * R * R;
     Drop d;
     d.x = {Eigen::Vector3d(0.31, 0.17, -0.06)};
     SurfaceMesher mesher;
@@ -235,7 +248,8 @@ private slots:
       const double volumeError = std::abs(enclosedVolume(surface) - exactVolume) / exactVolume;
       const double areaError = std::abs(area(surface) - exactArea) / exactArea;
       if (previousVolume > 0) {
-        QVERIFY2(volumeError < previousVolume / 3, QByteArray::number(volumeError / previousVolume));
+        QVERIFY2(volumeError < previousVolume / 3,
+                 QByteArray::number(volumeError / previousVolume));
         QVERIFY2(areaError < previousArea / 3, QByteArray::number(areaError / previousArea));
       }
       previousVolume = volumeError;
@@ -305,7 +319,9 @@ private slots:
     const Eigen::Vector3i first = ((low.array() - h) / s).floor().cast<int>() - 1;
     const Eigen::Vector3i last = ((high.array() + h) / s).ceil().cast<int>() + 1;
     const Eigen::Vector3i n = last - first + Eigen::Vector3i::Ones();
-    const auto at = [&](int i, int j, int k) { return (static_cast<std::size_t>(i) * n.y() + j) * n.z() + k; };
+    const auto at = [&](int i, int j, int k) {
+      return (static_cast<std::size_t>(i) * n.y() + j) * n.z() + k;
+    };
     std::vector<double> value(static_cast<std::size_t>(n.prod()));
     std::vector<Eigen::Vector3d> gradient(value.size());
     for (int i = 0; i < n.x(); ++i)
@@ -323,7 +339,8 @@ private slots:
       if (const auto found = edgeVertex.find(key); found != edgeVertex.end()) return found->second;
       Eigen::Vector3i upper = lower;
       ++upper[axis];
-      const double a = value[at(lower.x(), lower.y(), lower.z())], b = value[at(upper.x(), upper.y(), upper.z())];
+      const double a = value[at(lower.x(), lower.y(), lower.z())],
+                   b = value[at(upper.x(), upper.y(), upper.z())];
       const double mu = (iso - a) / (b - a);
       Eigen::Vector3d p = (first + lower).cast<double>() * s;
       p[axis] += mu * s;
@@ -344,7 +361,8 @@ private slots:
         for (int k = 0; k + 1 < n.z(); ++k) {
           int configuration = 0;
           for (int c = 0; c < 8; ++c)
-            if (value[at(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2))] >= iso) configuration |= 1 << c;
+            if (value[at(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2))] >= iso)
+              configuration |= 1 << c;
           const MarchingCubesCase& cube = table[configuration];
           for (int t = 0; t < cube.triangleCount; ++t) {
             std::array<int, 3> triangle{};
@@ -352,7 +370,8 @@ private slots:
               const int edge = cube.edges[static_cast<std::size_t>(3 * t + v)];
               const int c = MarchingCubesTable::edgeLowerCorner(edge);
               triangle[static_cast<std::size_t>(v)] =
-                  vertexOn(Eigen::Vector3i(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2)), MarchingCubesTable::edgeAxis(edge));
+                  vertexOn(Eigen::Vector3i(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2)),
+                           MarchingCubesTable::edgeAxis(edge));
             }
             reference.insert(canonical(triangle));
           }
@@ -378,13 +397,15 @@ private slots:
       QVERIFY2(best < 1e-3 * s, QByteArray::number(best / s));
       QVERIFY(!used[r]);
       used[r] = 1;
-      QVERIFY2(nrm.col(v).dot(normal[r]) > 1 - 1e-6, QByteArray::number(nrm.col(v).dot(normal[r]), 'g', 12));
+      QVERIFY2(nrm.col(v).dot(normal[r]) > 1 - 1e-6,
+               QByteArray::number(nrm.col(v).dot(normal[r]), 'g', 12));
       QVERIFY(std::abs(field.value(p.col(v)) - iso) < 0.1);
     }
     std::set<std::array<int, 3>> meshed;
     const auto tri = surface.triangles();
     for (int t = 0; t < tri.cols(); ++t)
-      meshed.insert(canonical({match[static_cast<std::size_t>(tri(0, t))], match[static_cast<std::size_t>(tri(1, t))],
+      meshed.insert(canonical({match[static_cast<std::size_t>(tri(0, t))],
+                               match[static_cast<std::size_t>(tri(1, t))],
                                match[static_cast<std::size_t>(tri(2, t))]}));
     QVERIFY(meshed == reference);
 
@@ -394,9 +415,12 @@ private slots:
     const TearSurface& second = again.mesh(other, h, s, iso);
     QCOMPARE(second.vertexCount(), surface.vertexCount());
     QCOMPARE(second.triangleCount(), surface.triangleCount());
-    QVERIFY(std::memcmp(second.positions().data(), surface.positions().data(), sizeof(double) * 3 * surface.vertexCount()) == 0);
-    QVERIFY(std::memcmp(second.normals().data(), surface.normals().data(), sizeof(double) * 3 * surface.vertexCount()) == 0);
-    QVERIFY(std::memcmp(second.triangles().data(), surface.triangles().data(), sizeof(int) * 3 * surface.triangleCount()) == 0);
+    QVERIFY(std::memcmp(second.positions().data(), surface.positions().data(),
+                        sizeof(double) * 3 * surface.vertexCount()) == 0);
+    QVERIFY(std::memcmp(second.normals().data(), surface.normals().data(),
+                        sizeof(double) * 3 * surface.vertexCount()) == 0);
+    QVERIFY(std::memcmp(second.triangles().data(), surface.triangles().data(),
+                        sizeof(int) * 3 * surface.triangleCount()) == 0);
   }
 
   void degenerateInputsStayFiniteAndBounded() {
@@ -423,7 +447,8 @@ private slots:
       QVERIFY2(why.isEmpty(), why);
       const double R = h * std::sqrt(1 - std::cbrt(0.5));
       const auto p = s.positions();
-      for (int v = 0; v < p.cols(); ++v) QVERIFY(std::abs((p.col(v) - d.x[0]).norm() - R) < 0.05 * h);
+      for (int v = 0; v < p.cols(); ++v)
+        QVERIFY(std::abs((p.col(v) - d.x[0]).norm() - R) < 0.05 * h);
     }
     // Cube size at both ends of the parameter range relative to the kernel: cube_size 50 with
     // kernel 0.5 (s = 100 h), and cube_size 0.005 with kernel 50 (s = h / 10^4).
@@ -462,11 +487,14 @@ private slots:
     for (int count : {100, 1000}) {
       Drop d = latticeBall(count, h);
       SurfaceMesher reference;
-      const double referenceVolume = enclosedVolume(d.mesh(reference, h, 0.04 * L, 0.5, std::size_t{1} << 21));
+      const double referenceVolume =
+          enclosedVolume(d.mesh(reference, h, 0.04 * L, 0.5, std::size_t{1} << 21));
       QVERIFY(!reference.stats().capped);
-      qInfo("%d particles (reference: cube_size 0.04, %zu cubes, volume %.4g dm^3)", count, reference.stats().cubes,
-            referenceVolume);
-      qInfo("  cube_size   ms (median of 9)   cubes   triangles   mean |d|/h   max |d|/h   volume error");
+      qInfo("%d particles (reference: cube_size 0.04, %zu cubes, volume %.4g dm^3)", count,
+            reference.stats().cubes, referenceVolume);
+      qInfo(
+          "  cube_size   ms (median of 9)   cubes   triangles   mean |d|/h   max |d|/h   volume "
+          "error");
       double previousMean = 1e9;
       for (double cube : {1.0, 0.5, 0.25, 0.125, 0.0625}) {
         SurfaceMesher mesher;
@@ -477,11 +505,14 @@ private slots:
         }
         std::sort(ms.begin(), ms.end());
         const VertexError e = vertexError(mesher, 0.5);
-        const double volumeError = std::abs(enclosedVolume(mesher.surface()) - referenceVolume) / referenceVolume;
-        qInfo("  %9.4g   %16.3f   %5zu   %9d   %10.4f   %9.4f   %11.2f%%", cube, ms[4], mesher.stats().cubes,
-              mesher.surface().triangleCount(), e.mean / h, e.max / h, 100 * volumeError);
+        const double volumeError =
+            std::abs(enclosedVolume(mesher.surface()) - referenceVolume) / referenceVolume;
+        qInfo("  %9.4g   %16.3f   %5zu   %9d   %10.4f   %9.4f   %11.2f%%", cube, ms[4],
+              mesher.stats().cubes, mesher.surface().triangleCount(), e.mean / h, e.max / h,
+              100 * volumeError);
         QVERIFY(closedAndOriented(mesher.surface()).isEmpty());
-        if (cube <= 0.5) QVERIFY2(e.mean < previousMean, "vertex error does not fall with the cube size");
+        if (cube <= 0.5)
+          QVERIFY2(e.mean < previousMean, "vertex error does not fall with the cube size");
         previousMean = e.mean;
       }
     }

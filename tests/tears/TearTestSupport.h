@@ -17,7 +17,8 @@ namespace lacrima::tears::testing {
 
 inline constexpr double kFrameDt = 1.0 / 22.0;
 
-inline std::unique_ptr<TearSimulation> makeSheetSimulation(const SyntheticSkin& sheet, const TearSettings& settings = {},
+inline std::unique_ptr<TearSimulation> makeSheetSimulation(const SyntheticSkin& sheet,
+                                                           const TearSettings& settings = {},
                                                            SimulationOptions options = {}) {
   options.headHeight = 2.7;  // the sheet stands in for the default decimetre head
   auto sim = std::make_unique<TearSimulation>(sheet.positions, sheet.triangles, settings, options);
@@ -37,9 +38,10 @@ struct FrameReport {
 
 // Watches a simulation over many frames; remembers where each particle id was first seen.
 class InvariantChecker {
-public:
+ public:
   explicit InvariantChecker(const SyntheticSkin& sheet, double margin = 0.35) {
-    for (Eigen::Index i = 0; i < sheet.positions.cols(); ++i) box_.extend(sheet.positions.col(i).cast<double>());
+    for (Eigen::Index i = 0; i < sheet.positions.cols(); ++i)
+      box_.extend(sheet.positions.col(i).cast<double>());
     box_.min().array() -= margin;
     box_.max().array() += margin;
   }
@@ -52,13 +54,15 @@ public:
     FrameReport r;
     const ParticleSet& p = sim.particles();
     const double g = sim.parameters().gravity;
-    r.countOk = sim.count(Eye::Left) == left && sim.count(Eye::Right) == right && p.size() == left + right;
+    r.countOk =
+        sim.count(Eye::Left) == left && sim.count(Eye::Right) == right && p.size() == left + right;
     std::map<std::uint64_t, double> seen;
     for (int i = 0; i < p.size(); ++i) {
       const auto s = static_cast<std::size_t>(i);
       const Eigen::Vector3d& x = p.position[s];
       const Eigen::Vector3d& v = p.velocity[s];
-      r.finite = r.finite && x.allFinite() && v.allFinite() && std::isfinite(p.mass[s]) && p.mass[s] > 0;
+      r.finite =
+          r.finite && x.allFinite() && v.allFinite() && std::isfinite(p.mass[s]) && p.mass[s] > 0;
       r.inBox = r.inBox && box_.contains(x);
       auto it = firstHeight_.find(p.id[s]);
       const double first = it == firstHeight_.end() ? x.y() : it->second;
@@ -71,15 +75,15 @@ public:
     return r;
   }
 
-private:
+ private:
   Eigen::AlignedBox3d box_;
   std::map<std::uint64_t, double> firstHeight_;
 };
 
 // Runs `frames` frames with constant counts on a possibly moving sheet and checks every frame.
 // `energyFactor` <= 0 skips the energy bound (moving surfaces do work on the fluid).
-inline void runAndCheck(TearSimulation& sim, const SyntheticSkin& sheet, int left, int right, int frames,
-                        double energyFactor = 1.05,
+inline void runAndCheck(TearSimulation& sim, const SyntheticSkin& sheet, int left, int right,
+                        int frames, double energyFactor = 1.05,
                         const std::function<Eigen::Matrix3Xf(int)>& surfaceAt = {},
                         InvariantChecker* customChecker = nullptr) {
   InvariantChecker defaultChecker(sheet);
@@ -95,10 +99,11 @@ inline void runAndCheck(TearSimulation& sim, const SyntheticSkin& sheet, int lef
     if (energyFactor > 0) {
       // Tolerance: a particle's worth of free fall over the sheet's height, for pressure energy
       // stored at emission (particles appear in contact with their neighbours).
-      const double tolerance = (left + right) * sim.parameters().particleMass * sim.parameters().gravity * 0.05;
+      const double tolerance =
+          (left + right) * sim.parameters().particleMass * sim.parameters().gravity * 0.05;
       QVERIFY2(r.kinetic <= energyFactor * r.released + tolerance,
-               where + ": kinetic energy " + QByteArray::number(r.kinetic) + " exceeds what gravity released " +
-                   QByteArray::number(r.released));
+               where + ": kinetic energy " + QByteArray::number(r.kinetic) +
+                   " exceeds what gravity released " + QByteArray::number(r.released));
     }
   }
 }

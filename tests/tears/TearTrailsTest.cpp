@@ -24,7 +24,9 @@ const Eigen::AngleAxisd kLean(-20 * std::numbers::pi / 180, Eigen::Vector3d::Uni
 Eigen::Vector3d sheetPoint(double u, double v) {
   return kLean * Eigen::Vector3d(std::sin(u), v, std::cos(u) - 1);
 }
-Eigen::Vector3d sheetNormal(double u) { return kLean * Eigen::Vector3d(std::sin(u), 0, std::cos(u)); }
+Eigen::Vector3d sheetNormal(double u) {
+  return kLean * Eigen::Vector3d(std::sin(u), 0, std::cos(u));
+}
 // Distance from x to the (unmoved) cylinder.
 double distanceToSheet(const Eigen::Vector3d& x) {
   const Eigen::Vector3d p = kLean.inverse() * x;
@@ -35,8 +37,12 @@ double distanceToSheet(const Eigen::Vector3d& x) {
 struct Motion {
   Eigen::Vector3d centre, translation;
   Eigen::Matrix3d rotation;
-  Eigen::Vector3d apply(const Eigen::Vector3d& x) const { return centre + rotation * (x - centre) + translation; }
-  Eigen::Vector3d undo(const Eigen::Vector3d& x) const { return centre + rotation.transpose() * (x - translation - centre); }
+  Eigen::Vector3d apply(const Eigen::Vector3d& x) const {
+    return centre + rotation * (x - centre) + translation;
+  }
+  Eigen::Vector3d undo(const Eigen::Vector3d& x) const {
+    return centre + rotation.transpose() * (x - translation - centre);
+  }
 };
 
 // A drop of resting particles on the sheet at (u, v): a half-ball lattice of spacing h/2 over
@@ -48,7 +54,8 @@ struct DropSpec {
   Eye eye = Eye::Left;
 };
 
-void addDrop(ParticleSet& particles, const TrailSkin& skin, const DropSpec& d, const Motion* motion = nullptr) {
+void addDrop(ParticleSet& particles, const TrailSkin& skin, const DropSpec& d,
+             const Motion* motion = nullptr) {
   const Eigen::Vector3d c = sheetPoint(d.u, d.v), n = sheetNormal(d.u);
   const Eigen::Vector3d e1 = Eigen::Vector3d::UnitY().cross(n).normalized(), e2 = n.cross(e1);
   const double spacing = kH / 2;
@@ -56,7 +63,8 @@ void addDrop(ParticleSet& particles, const TrailSkin& skin, const DropSpec& d, c
   for (int i = -4; i <= 4; ++i)
     for (int j = -4; j <= 4; ++j)
       for (int k = 0; k <= 4; ++k) offsets.emplace_back(i * spacing, j * spacing, k * spacing);
-  std::stable_sort(offsets.begin(), offsets.end(), [](const auto& a, const auto& b) { return a.squaredNorm() < b.squaredNorm(); });
+  std::stable_sort(offsets.begin(), offsets.end(),
+                   [](const auto& a, const auto& b) { return a.squaredNorm() < b.squaredNorm(); });
   std::vector<int> all(static_cast<std::size_t>(skin.triangleCount()));
   std::iota(all.begin(), all.end(), 0);
   for (int p = 0; p < d.count; ++p) {
@@ -76,8 +84,9 @@ struct Scene {
   UniformGrid grid;
   Scene() { probe.bind(sheet.positions); }
 
-  const TrailMesh& step(TrailBuilder& trails, const std::vector<DropSpec>& drops, double dt = kFrameDt,
-                        const Eigen::Matrix3Xf* moved = nullptr, const Motion* motion = nullptr) {
+  const TrailMesh& step(TrailBuilder& trails, const std::vector<DropSpec>& drops,
+                        double dt = kFrameDt, const Eigen::Matrix3Xf* moved = nullptr,
+                        const Motion* motion = nullptr) {
     particles.clear();
     for (const DropSpec& d : drops) addDrop(particles, probe, d, motion);
     grid.build(particles.position, kH);
@@ -108,7 +117,7 @@ void checkOnSheet(const TrailMesh& mesh, const Motion* motion = nullptr) {
 class TearTrailsTest : public QObject {
   Q_OBJECT
 
-private slots:
+ private slots:
   void nothingWetNoWork() {
     Scene scene;
     TrailBuilder trails(scene.sheet.triangles);
@@ -142,8 +151,10 @@ private slots:
                   Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitY()).toRotationMatrix()};
     const Eigen::Matrix3Xd before = p;
     const std::size_t sectionsBefore = trails.sections().size();
-    const Eigen::Matrix3Xf moved = movedSheet(scene.sheet, motion.translation, Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitY()));
-    const TrailMesh& after = scene.step(trails, {{0.3, 0.8 - 0.005 * (frames - 1), 30, 1}}, 0.0, &moved, &motion);
+    const Eigen::Matrix3Xf moved = movedSheet(scene.sheet, motion.translation,
+                                              Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitY()));
+    const TrailMesh& after =
+        scene.step(trails, {{0.3, 0.8 - 0.005 * (frames - 1), 30, 1}}, 0.0, &moved, &motion);
     QCOMPARE(trails.sections().size(), sectionsBefore);
     for (int v = 0; v < before.cols(); ++v)
       QVERIFY((after.positions().col(v) - motion.apply(before.col(v))).norm() < 1e-5);
@@ -178,11 +189,13 @@ private slots:
       for (const TrailSegment& segment : trails.segments()) {
         const Eigen::Vector3d forward = x.col(3 * segment.to + 1) - x.col(3 * segment.from + 1);
         for (int side : {0, 2})
-          QVERIFY((x.col(3 * segment.to + side) - x.col(3 * segment.from + side)).dot(forward) >= -1e-12);
+          QVERIFY((x.col(3 * segment.to + side) - x.col(3 * segment.from + side)).dot(forward) >=
+                  -1e-12);
       }
       // Only pivot triangles (no area) are left out: the strip covers the turn.
       const int expected = 4 * static_cast<int>(trails.segments().size());
-      qInfo("%g degrees: %d of %d triangles drawn", degrees, trails.mesh().triangleCount(), expected);
+      qInfo("%g degrees: %d of %d triangles drawn", degrees, trails.mesh().triangleCount(),
+            expected);
       QVERIFY(trails.mesh().triangleCount() >= expected - 4);
       if (QTest::currentTestFailed()) qWarning("turn of %g degrees", degrees);
       QVERIFY(!QTest::currentTestFailed());
@@ -198,7 +211,8 @@ private slots:
     // The drop parts: two halves, keeping their particle ids, drifting apart as they slide on
     // (about 25 degrees either side of straight down).
     for (int f = 1; f <= 24; ++f)
-      scene.step(trails, {{-0.003 * f, v0 - 0.006 * f, 20, 1}, {0.003 * f, v0 - 0.006 * f, 20, 21}});
+      scene.step(trails,
+                 {{-0.003 * f, v0 - 0.006 * f, 20, 1}, {0.003 * f, v0 - 0.006 * f, 20, 21}});
     QCOMPARE(trails.trackedDrops(), 2);
     QVERIFY(trails.branches() >= 1);
     // Some section starts two segments: the branch point shared by both parts.
@@ -215,7 +229,8 @@ private slots:
     TrailBuilder trails(scene.sheet.triangles);
     // Two drops converge while sliding (about 25 degrees either side of straight down) ...
     for (int f = 0; f < 10; ++f)
-      scene.step(trails, {{-0.07 + 0.004 * f, 0.8 - 0.008 * f, 20, 1}, {0.07 - 0.004 * f, 0.8 - 0.008 * f, 20, 101}});
+      scene.step(trails, {{-0.07 + 0.004 * f, 0.8 - 0.008 * f, 20, 1},
+                          {0.07 - 0.004 * f, 0.8 - 0.008 * f, 20, 101}});
     QCOMPARE(trails.trackedDrops(), 2);
     const std::size_t segmentsBefore = trails.segments().size();
     // ... and run on as one drop made of both sets of particles.
@@ -263,7 +278,8 @@ private slots:
     settings.maxSections = 20;
     TrailBuilder trails(scene.sheet.triangles, settings);
     for (int f = 0; f < 120; ++f) {
-      scene.step(trails, {{0.3, 1.0 - 0.012 * f, 25, 1}, {-0.3, 1.0 - 0.012 * f, 25, 101, Eye::Right}});
+      scene.step(trails,
+                 {{0.3, 1.0 - 0.012 * f, 25, 1}, {-0.3, 1.0 - 0.012 * f, 25, 101, Eye::Right}});
       QVERIFY(trails.sections().size() <= 20);
       QVERIFY(trails.segments().size() <= 20);
     }

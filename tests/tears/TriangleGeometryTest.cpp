@@ -24,7 +24,8 @@ bool sameBits(const Eigen::Vector3d& x, const Eigen::Vector3d& y) {
 }
 
 bool sameBits(const TrianglePoint& x, const TrianglePoint& y) {
-  return sameBits(x.point, y.point) && sameBits(x.barycentric, y.barycentric) && x.interior == y.interior;
+  return sameBits(x.point, y.point) && sameBits(x.barycentric, y.barycentric) &&
+         x.interior == y.interior;
 }
 
 using Vec = Eigen::Matrix<long double, 3, 1>;
@@ -39,12 +40,13 @@ long double segmentDistance(const Vec& p, const Vec& a, const Vec& b) {
 }
 
 // Distance from p to the triangle: to the plane where p projects inside, else to the nearest edge.
-long double bruteDistance(const Eigen::Vector3d& pd, const Eigen::Vector3d& ad, const Eigen::Vector3d& bd,
-                          const Eigen::Vector3d& cd) {
+long double bruteDistance(const Eigen::Vector3d& pd, const Eigen::Vector3d& ad,
+                          const Eigen::Vector3d& bd, const Eigen::Vector3d& cd) {
   const Vec p = wide(pd), a = wide(ad), b = wide(bd), c = wide(cd);
   const Vec n = (b - a).cross(c - a);
   const Vec q = p - n * ((p - a).dot(n) / n.squaredNorm());
-  const bool inside = (b - a).cross(q - a).dot(n) >= 0 && (c - b).cross(q - b).dot(n) >= 0 && (a - c).cross(q - c).dot(n) >= 0;
+  const bool inside = (b - a).cross(q - a).dot(n) >= 0 && (c - b).cross(q - b).dot(n) >= 0 &&
+                      (a - c).cross(q - c).dot(n) >= 0;
   if (inside) return (p - q).norm();
   return std::min({segmentDistance(p, a, b), segmentDistance(p, b, c), segmentDistance(p, c, a)});
 }
@@ -53,7 +55,9 @@ SkinFace faceOf(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen:
   const Eigen::Vector3d cross = (b - a).cross(c - a);
   const double area2 = cross.squaredNorm();
   const bool degenerate = !(area2 > 0);
-  return makeSkinFace(a, b, c, degenerate ? Eigen::Vector3d::Zero() : Eigen::Vector3d(cross / std::sqrt(area2)), degenerate);
+  return makeSkinFace(
+      a, b, c, degenerate ? Eigen::Vector3d::Zero() : Eigen::Vector3d(cross / std::sqrt(area2)),
+      degenerate);
 }
 
 }  // namespace
@@ -61,22 +65,27 @@ SkinFace faceOf(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen:
 class TriangleGeometryTest : public QObject {
   Q_OBJECT
 
-private slots:
+ private slots:
   void facesMatchCornersOnRandomTriangles() {
     std::mt19937_64 rng(20240611);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     const std::array<double, 4> scales{1e-4, 1e-2, 1.0, 3e2};
     int interior = 0, rim = 0, checkedDistance = 0;
     for (double scale : scales) {
-      const Eigen::Vector3d offset(unit(rng) * 10 * scale, unit(rng) * 10 * scale, unit(rng) * 10 * scale);
+      const Eigen::Vector3d offset(unit(rng) * 10 * scale, unit(rng) * 10 * scale,
+                                   unit(rng) * 10 * scale);
       for (int n = 0; n < 4000; ++n) {
-        auto point = [&] { return Eigen::Vector3d(offset + scale * Eigen::Vector3d(unit(rng), unit(rng), unit(rng))); };
+        auto point = [&] {
+          return Eigen::Vector3d(offset + scale * Eigen::Vector3d(unit(rng), unit(rng), unit(rng)));
+        };
         const Eigen::Vector3d a = point(), b = point(), c = point();
         const SkinFace face = faceOf(a, b, c);
         for (int k = 0; k < 8; ++k) {
           // Points near the plane (contacts) and well off it, inside and outside the face.
-          const Eigen::Vector3d p = (k < 4 ? a + 0.3 * (b - a) * unit(rng) + 0.7 * (c - a) * std::abs(unit(rng)) : point()) +
-                                    (k % 2 ? 0.05 : 1.0) * scale * Eigen::Vector3d(unit(rng), unit(rng), unit(rng));
+          const Eigen::Vector3d p =
+              (k < 4 ? a + 0.3 * (b - a) * unit(rng) + 0.7 * (c - a) * std::abs(unit(rng))
+                     : point()) +
+              (k % 2 ? 0.05 : 1.0) * scale * Eigen::Vector3d(unit(rng), unit(rng), unit(rng));
           const TrianglePoint fast = closestPointOnFace(p, face);
           // The corner-based entry forms the edges itself: a face must give the same bits.
           const TrianglePoint ref = closestPointOnTriangle(p, a, b, c);
@@ -88,7 +97,8 @@ private slots:
           const double area = 0.5 * (b - a).cross(c - a).norm();
           if (area > 1e-3 * longest * longest) {
             const long double brute = bruteDistance(p, a, b, c);
-            QVERIFY(std::abs(static_cast<long double>((p - fast.point).norm()) - brute) <= 1e-9L * scale);
+            QVERIFY(std::abs(static_cast<long double>((p - fast.point).norm()) - brute) <=
+                    1e-9L * scale);
             ++checkedDistance;
           }
           QVERIFY(std::abs(fast.barycentric.sum() - 1.0) < 1e-9);
@@ -110,17 +120,19 @@ private slots:
       const Eigen::Vector3d d(unit(rng), unit(rng), unit(rng));
       const Eigen::Vector3d e(unit(rng), unit(rng), unit(rng));
       const std::array<std::array<Eigen::Vector3d, 3>, 6> shapes{{
-          {a, a, a},                                   // one point
-          {a, a, a + d},                               // two corners coincide
-          {a, a + d, a + 0.37 * d},                    // collinear: zero area
-          {a, a + d, a + 2.0 * d},                     // collinear, c beyond b
-          {a, a + d, a + 1e-9 * e},                    // needle: one edge almost nothing
-          {a, a + d, a + 0.5 * d + 1e-12 * e},         // sliver: almost collinear
+          {a, a, a},                            // one point
+          {a, a, a + d},                        // two corners coincide
+          {a, a + d, a + 0.37 * d},             // collinear: zero area
+          {a, a + d, a + 2.0 * d},              // collinear, c beyond b
+          {a, a + d, a + 1e-9 * e},             // needle: one edge almost nothing
+          {a, a + d, a + 0.5 * d + 1e-12 * e},  // sliver: almost collinear
       }};
       for (const auto& s : shapes) {
         const SkinFace face = faceOf(s[0], s[1], s[2]);
         for (int k = 0; k < 4; ++k) {
-          const Eigen::Vector3d p = s[0] + (k == 0 ? Eigen::Vector3d(0.5 * d) : Eigen::Vector3d(unit(rng), unit(rng), unit(rng)));
+          const Eigen::Vector3d p =
+              s[0] + (k == 0 ? Eigen::Vector3d(0.5 * d)
+                             : Eigen::Vector3d(unit(rng), unit(rng), unit(rng)));
           const TrianglePoint fast = closestPointOnFace(p, face);
           const TrianglePoint ref = closestPointOnTriangle(p, s[0], s[1], s[2]);
           // NaN included: a degenerate face must not turn one NaN pattern into another.
@@ -139,7 +151,8 @@ private slots:
     QVERIFY(sameBits(face.ab, Eigen::Vector3d(b - a)) && sameBits(face.ac, Eigen::Vector3d(c - a)));
     QVERIFY(!face.degenerate);
     QVERIFY(std::abs(face.normal.norm() - 1.0) < 1e-15);
-    QVERIFY(std::abs(face.normal.dot(b - a)) < 1e-15 && face.normal.z() > 0);  // counter-clockwise faces +z
+    QVERIFY(std::abs(face.normal.dot(b - a)) < 1e-15 &&
+            face.normal.z() > 0);  // counter-clockwise faces +z
     QVERIFY(faceOf(a, b, a + 0.5 * (b - a)).degenerate);
   }
 };

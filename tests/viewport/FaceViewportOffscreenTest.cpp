@@ -13,9 +13,10 @@ using namespace lacrima;
 class FaceViewportOffscreenTest : public QObject {
   Q_OBJECT
 
-private slots:
+ private slots:
   void initTestCase() {
-    if (QGuiApplication::platformName() == QLatin1String("xcb")) QSKIP("checks the non-X11 fallback");
+    if (QGuiApplication::platformName() == QLatin1String("xcb"))
+      QSKIP("checks the non-X11 fallback");
   }
 
   void neverTouchesOgre() {

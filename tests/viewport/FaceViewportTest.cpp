@@ -35,14 +35,17 @@ class FaceViewportTest : public QObject {
     }
   }
   void send(QEvent::Type type, QPoint at, Qt::MouseButton button, Qt::MouseButtons buttons) {
-    QMouseEvent event(type, QPointF(at), QPointF(viewport_->mapToGlobal(at)), button, buttons, Qt::NoModifier);
+    QMouseEvent event(type, QPointF(at), QPointF(viewport_->mapToGlobal(at)), button, buttons,
+                      Qt::NoModifier);
     QCoreApplication::sendEvent(viewport_.get(), &event);
   }
 
-private slots:
+ private slots:
   void initTestCase() {
-    if (!rigging::defaultHeadAvailable()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
-    if (QGuiApplication::platformName() != QLatin1String("xcb")) QSKIP("needs the xcb platform (run under xvfb-run)");
+    if (!rigging::defaultHeadAvailable())
+      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (QGuiApplication::platformName() != QLatin1String("xcb"))
+      QSKIP("needs the xcb platform (run under xvfb-run)");
     head_ = std::make_unique<HeadMesh>(rigging::loadDefaultHead());
   }
 
@@ -83,7 +86,8 @@ private slots:
     const QImage first = viewport_->grabFrame();
     QCOMPARE(first.size(), QSize(480, 360));
     // The face is there: the middle is much brighter than the backdrop in a corner.
-    QVERIFY(meanColour(first, QPointF(240, 150), 4).luminance() > meanColour(first, QPointF(4, 4), 3).luminance() + 50);
+    QVERIFY(meanColour(first, QPointF(240, 150), 4).luminance() >
+            meanColour(first, QPointF(4, 4), 3).luminance() + 50);
 
     const long long before = viewport_->renderCount();
     send(QEvent::MouseButtonPress, QPoint(240, 180), Qt::LeftButton, Qt::LeftButton);
@@ -92,9 +96,11 @@ private slots:
     send(QEvent::MouseButtonRelease, QPoint(340, 160), Qt::LeftButton, Qt::NoButton);
     QTRY_VERIFY(viewport_->renderCount() > before);
     settle();
-    QVERIFY2(viewport_->renderCount() <= before + 2, "a drag of two moves rendered more than twice");
+    QVERIFY2(viewport_->renderCount() <= before + 2,
+             "a drag of two moves rendered more than twice");
     const QImage turned = viewport_->grabFrame();
-    QVERIFY2(differingPixels(first, turned, 10).size() > 2000, "orbiting did not change the picture");
+    QVERIFY2(differingPixels(first, turned, 10).size() > 2000,
+             "orbiting did not change the picture");
 
     send(QEvent::MouseButtonDblClick, QPoint(240, 180), Qt::LeftButton, Qt::LeftButton);
     settle();
@@ -111,8 +117,9 @@ private slots:
     QVERIFY(differingPixels(first, viewport_->grabFrame(), 10).size() > 2000);
     viewport_->resetView();
     settle();
-    QWheelEvent wheel(QPointF(240, 180), QPointF(viewport_->mapToGlobal(QPoint(240, 180))), QPoint(), QPoint(0, 240),
-                      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QWheelEvent wheel(QPointF(240, 180), QPointF(viewport_->mapToGlobal(QPoint(240, 180))),
+                      QPoint(), QPoint(0, 240), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase,
+                      false);
     QCoreApplication::sendEvent(viewport_.get(), &wheel);
     settle();
     const QImage closer = viewport_->grabFrame();
@@ -122,7 +129,8 @@ private slots:
     auto bright = [](const QImage& image) {
       int n = 0;
       for (int y = 0; y < image.height(); y += 4)
-        for (int x = 0; x < image.width(); x += 4) n += meanColour(image, QPointF(x, y), 0).luminance() > 120;
+        for (int x = 0; x < image.width(); x += 4)
+          n += meanColour(image, QPointF(x, y), 0).luminance() > 120;
       return n;
     };
     QVERIFY(bright(closer) > bright(first));
@@ -146,7 +154,8 @@ private slots:
       playback::FrameView view = frame(7);
       renderer.show(view);
       const QImage offscreen = renderer.render();
-      QVERIFY(meanColour(offscreen, QPointF(160, 100), 3).luminance() > meanColour(offscreen, QPointF(3, 3), 2).luminance() + 50);
+      QVERIFY(meanColour(offscreen, QPointF(160, 100), 3).luminance() >
+              meanColour(offscreen, QPointF(3, 3), 2).luminance() + 50);
       const QImage during = viewport_->grabFrame();
       QCOMPARE(differingPixels(before, during, 0).size(), std::size_t{0});
     }

@@ -9,7 +9,8 @@ namespace {
 
 std::string normalised(std::string_view text) {
   std::string out;
-  for (char c : text) out += c == ' ' ? '_' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (char c : text)
+    out += c == ' ' ? '_' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return out;
 }
 
@@ -53,9 +54,10 @@ ChannelFilter::ChannelFilter(std::string_view text) {
           word.to = std::max(a, b);
         } else {
           word.text = normalised(token);
-          word.groups = std::none_of(fapTable().begin(), fapTable().end(), [&](const FapInfo& info) {
-            return normalised(info.name).find(word.text) != std::string::npos;
-          });
+          word.groups =
+              std::none_of(fapTable().begin(), fapTable().end(), [&](const FapInfo& info) {
+                return normalised(info.name).find(word.text) != std::string::npos;
+              });
         }
         words.push_back(word);
       }
@@ -75,7 +77,8 @@ bool ChannelFilter::matches(const FapInfo& info) const {
       if (w.from <= w.to) return info.number >= w.from && info.number <= w.to;
       if (w.text == "left") return hasSide(name, 'l');
       if (w.text == "right") return hasSide(name, 'r');
-      return w.groups ? group.find(w.text) != std::string::npos : name.find(w.text) != std::string::npos;
+      return w.groups ? group.find(w.text) != std::string::npos
+                      : name.find(w.text) != std::string::npos;
     });
     if (all) return true;
   }

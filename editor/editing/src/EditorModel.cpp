@@ -14,7 +14,9 @@ namespace {
 // The project format's bound on channel values (ProjectDocument rejects larger ones).
 constexpr double kValueLimit = 1e7;
 
-QString channelName(int fap) { return QString::fromUtf8(fapInfo(fap).name.data(), static_cast<int>(fapInfo(fap).name.size())); }
+QString channelName(int fap) {
+  return QString::fromUtf8(fapInfo(fap).name.data(), static_cast<int>(fapInfo(fap).name.size()));
+}
 
 std::vector<double> timesOf(const std::vector<Keyframe>& keys) {
   std::vector<double> out;
@@ -109,7 +111,8 @@ int EditorModel::currentKeyIndex() const { return findKey(document_.keys, time_)
 
 ChannelMask EditorModel::keyedAtCurrentTime() const {
   const int index = currentKeyIndex();
-  return index < 0 ? ChannelMask{} : document_.keys.keys()[static_cast<std::size_t>(index)].channels;
+  return index < 0 ? ChannelMask{}
+                   : document_.keys.keys()[static_cast<std::size_t>(index)].channels;
 }
 
 // --- selection ----------------------------------------------------------------------------
@@ -150,8 +153,10 @@ void EditorModel::setFocusChannel(int fap) {
 
 float EditorModel::sanitised(int fap, double value) const {
   if (!std::isfinite(value)) value = 0.0;
-  if (isTearChannel(fap)) return static_cast<float>(std::clamp(std::round(value), 0.0, double(kMaxTearParticles)));
-  if (isHighLevelFap(fap)) return static_cast<float>(std::clamp(std::round(value), 0.0, double(fapInfo(fap).sliderMax)));
+  if (isTearChannel(fap))
+    return static_cast<float>(std::clamp(std::round(value), 0.0, double(kMaxTearParticles)));
+  if (isHighLevelFap(fap))
+    return static_cast<float>(std::clamp(std::round(value), 0.0, double(fapInfo(fap).sliderMax)));
   return static_cast<float>(std::clamp(value, -kValueLimit, kValueLimit));
 }
 
@@ -173,17 +178,20 @@ void EditorModel::pushKeyEdit(const KeyChange& change, const QString& text,
 }
 
 void EditorModel::setChannel(int fap, double value, int dragSession) {
-  setChannels({{fap, static_cast<float>(value)}}, QStringLiteral("Set %1").arg(channelName(fap)), dragSession);
+  setChannels({{fap, static_cast<float>(value)}}, QStringLiteral("Set %1").arg(channelName(fap)),
+              dragSession);
 }
 
-void EditorModel::setChannels(std::vector<ChannelValue> values, const QString& text, int dragSession) {
+void EditorModel::setChannels(std::vector<ChannelValue> values, const QString& text,
+                              int dragSession) {
   if (symmetric_) {
     const std::size_t given = values.size();
     for (std::size_t i = 0; i < given; ++i) {
       const auto partner = symmetricPartner(values[i].first, values[i].second);
       if (!partner) continue;
-      const bool listed = std::any_of(values.begin(), values.begin() + static_cast<long>(given),
-                                      [&](const ChannelValue& v) { return v.first == partner->first; });
+      const bool listed =
+          std::any_of(values.begin(), values.begin() + static_cast<long>(given),
+                      [&](const ChannelValue& v) { return v.first == partner->first; });
       if (!listed) values.push_back(*partner);
     }
   }
@@ -204,7 +212,8 @@ void EditorModel::resetChannels(std::span<const int> faps, const QString& text) 
   const ChannelMask keyed = keyedAtCurrentTime();
   std::vector<ChannelValue> zeros;
   for (int fap : faps)
-    if (isValidFap(fap) && (currentValue(fap) != 0.0f || keyed.test(channelIndex(fap)))) zeros.emplace_back(fap, 0.0f);
+    if (isValidFap(fap) && (currentValue(fap) != 0.0f || keyed.test(channelIndex(fap))))
+      zeros.emplace_back(fap, 0.0f);
   if (zeros.empty()) return;
   const bool symmetric = symmetric_;
   symmetric_ = false;  // a reset names every channel it resets
@@ -231,16 +240,19 @@ void EditorModel::addKey() {
   for (int fap = 1; fap <= kChannelCount; ++fap)
     if (animated_.test(channelIndex(fap))) key.set(fap, values_[channelIndex(fap)]);
   const std::vector<double> selection{time_};
-  pushKeyEdit(planReplace(document_.keys, {}, std::span<const Keyframe>(&key, 1)), tr("Add key"), selection);
+  pushKeyEdit(planReplace(document_.keys, {}, std::span<const Keyframe>(&key, 1)), tr("Add key"),
+              selection);
 }
 
 void EditorModel::deleteKeys(std::vector<double> times) {
   if (times.empty()) return;
   std::vector<double> remaining;
   for (double t : selection_)
-    if (std::none_of(times.begin(), times.end(), [&](double d) { return std::abs(d - t) < kSameKeyTime; }))
+    if (std::none_of(times.begin(), times.end(),
+                     [&](double d) { return std::abs(d - t) < kSameKeyTime; }))
       remaining.push_back(t);
-  const QString text = times.size() == 1 ? tr("Delete key") : tr("Delete %1 keys").arg(times.size());
+  const QString text =
+      times.size() == 1 ? tr("Delete key") : tr("Delete %1 keys").arg(times.size());
   pushKeyEdit(planReplace(document_.keys, times, {}), text, remaining);
 }
 
@@ -259,9 +271,11 @@ void EditorModel::moveKeys(std::vector<double> times, int frames) {
     if (index >= 0) moving.push_back(document_.keys.keys()[static_cast<std::size_t>(index)]);
   }
   if (moving.empty() || frames == 0) return;
-  std::sort(moving.begin(), moving.end(), [](const Keyframe& a, const Keyframe& b) { return a.time < b.time; });
+  std::sort(moving.begin(), moving.end(),
+            [](const Keyframe& a, const Keyframe& b) { return a.time < b.time; });
   // Never before 0 s: the block stops at the start.
-  const int earliestFrame = static_cast<int>(std::floor(moving.front().time * document_.fps + 1e-6));
+  const int earliestFrame =
+      static_cast<int>(std::floor(moving.front().time * document_.fps + 1e-6));
   frames = std::max(frames, -earliestFrame);
   if (frames == 0) return;
   const std::vector<double> from = timesOf(moving);
@@ -270,9 +284,11 @@ void EditorModel::moveKeys(std::vector<double> times, int frames) {
     Keyframe moved = key;
     moved.time = std::max(0.0, shiftedTime(key.time, frames));
     const int there = findKey(document_.keys, moved.time);
-    const bool stays = there >= 0 && std::none_of(from.begin(), from.end(), [&](double t) {
-      return std::abs(t - document_.keys.keys()[static_cast<std::size_t>(there)].time) < kSameKeyTime;
-    });
+    const bool stays =
+        there >= 0 && std::none_of(from.begin(), from.end(), [&](double t) {
+          return std::abs(t - document_.keys.keys()[static_cast<std::size_t>(there)].time) <
+                 kSameKeyTime;
+        });
     if (stays) moved = mergedOnto(document_.keys.keys()[static_cast<std::size_t>(there)], moved);
     written.push_back(moved);
   }
@@ -287,7 +303,8 @@ void EditorModel::pasteKeys(const std::vector<Keyframe>& clip, double at) {
     Keyframe placed = key;
     placed.time = snapTime(at + key.time);
     const int there = findKey(document_.keys, placed.time);
-    if (there >= 0) placed = mergedOnto(document_.keys.keys()[static_cast<std::size_t>(there)], placed);
+    if (there >= 0)
+      placed = mergedOnto(document_.keys.keys()[static_cast<std::size_t>(there)], placed);
     // Two clip keys snapping to one frame: the later one wins, as in a file.
     written.push_back(placed);
   }
@@ -339,7 +356,8 @@ void EditorModel::mirror() {
   std::vector<Keyframe> written;
   for (double t : selection_) {
     const int index = findKey(document_.keys, t);
-    if (index >= 0) written.push_back(mirrored(document_.keys.keys()[static_cast<std::size_t>(index)]));
+    if (index >= 0)
+      written.push_back(mirrored(document_.keys.keys()[static_cast<std::size_t>(index)]));
   }
   if (written.empty()) {
     const int index = currentKeyIndex();

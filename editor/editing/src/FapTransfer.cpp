@@ -44,9 +44,11 @@ FapImportResult importFap(const std::string& path, const FapImportOptions& optio
 FapExportResult exportFap(const ProjectDocument& document, const std::string& path,
                           const FapExportOptions& options) {
   if (!std::isfinite(options.fps) || options.fps <= 0.0)
-    throw FileError({path, 0, 0}, "export frame rate must be > 0, got " + std::to_string(options.fps));
+    throw FileError({path, 0, 0},
+                    "export frame rate must be > 0, got " + std::to_string(options.fps));
   if (document.keys.empty())
-    throw FileError({path, 0, 0}, "nothing to export: the project has no keys yet (press K to add one)");
+    throw FileError({path, 0, 0},
+                    "nothing to export: the project has no keys yet (press K to add one)");
   FapAnimation animation = document.keys.bake(options.fps);
   animation.name = document.name;
   FapExportResult result;

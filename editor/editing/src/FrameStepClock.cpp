@@ -7,7 +7,8 @@
 
 namespace lacrima::editing {
 
-FrameStepClock::FrameStepClock(EditorModel& model, QObject* parent) : QObject(parent), model_(model) {
+FrameStepClock::FrameStepClock(EditorModel& model, QObject* parent)
+    : QObject(parent), model_(model) {
   timer_.setTimerType(Qt::PreciseTimer);
   connect(&timer_, &QTimer::timeout, this, &FrameStepClock::advance);
   connect(&model_, &EditorModel::documentReset, this, &FrameStepClock::pause);

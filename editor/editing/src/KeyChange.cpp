@@ -31,9 +31,8 @@ constexpr std::size_t kRebuildThreshold = 16;
 
 int findKey(const KeyframeSequence& keys, double seconds) {
   const auto& all = keys.keys();
-  const auto it = std::partition_point(all.begin(), all.end(), [&](const Keyframe& k) {
-    return k.time <= seconds - kSameKeyTime;
-  });
+  const auto it = std::partition_point(
+      all.begin(), all.end(), [&](const Keyframe& k) { return k.time <= seconds - kSameKeyTime; });
   if (it == all.end() || !sameTime(it->time, seconds)) return -1;
   return static_cast<int>(it - all.begin());
 }

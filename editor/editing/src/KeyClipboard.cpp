@@ -13,7 +13,8 @@ std::vector<Keyframe> copyKeys(const KeyframeSequence& keys, std::span<const dou
     const int index = findKey(keys, t);
     if (index >= 0) out.push_back(keys.keys()[static_cast<std::size_t>(index)]);
   }
-  std::sort(out.begin(), out.end(), [](const Keyframe& a, const Keyframe& b) { return a.time < b.time; });
+  std::sort(out.begin(), out.end(),
+            [](const Keyframe& a, const Keyframe& b) { return a.time < b.time; });
   if (!out.empty()) {
     const double first = out.front().time;
     for (Keyframe& key : out) key.time -= first;
@@ -38,8 +39,8 @@ std::optional<std::vector<Keyframe>> keysFromMimeData(const QMimeData* data) {
   if (text.isEmpty() && data->hasText()) text = data->text().toUtf8();
   if (text.isEmpty() || !text.contains("lacrima-project")) return std::nullopt;
   try {
-    const ProjectDocument clip =
-        ProjectDocument::fromJson(std::string_view(text.constData(), static_cast<std::size_t>(text.size())), "clipboard");
+    const ProjectDocument clip = ProjectDocument::fromJson(
+        std::string_view(text.constData(), static_cast<std::size_t>(text.size())), "clipboard");
     if (clip.keys.empty()) return std::nullopt;
     return clip.keys.keys();
   } catch (const FileError&) {

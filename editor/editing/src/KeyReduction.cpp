@@ -21,7 +21,8 @@ std::vector<int> indicesOf(const ChannelMask& mask) {
 
 // e(i) for the span (a, b), computed with the same arithmetic as linear key playback
 // (Keyframes.cpp: value a + s * (b - a) with s from the key times, stored as float).
-double frameError(const FapAnimation& animation, const std::vector<int>& channels, int a, int b, int i) {
+double frameError(const FapAnimation& animation, const std::vector<int>& channels, int a, int b,
+                  int i) {
   const double ta = a / animation.fps;
   const double tb = b / animation.fps;
   const double t = i / animation.fps;

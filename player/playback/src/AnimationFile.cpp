@@ -10,13 +10,17 @@ namespace lacrima::playback {
 namespace {
 
 bool endsWith(std::string text, std::string_view suffix) {
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  return text.size() >= suffix.size() &&
+         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 }  // namespace
 
-bool isProjectPath(const std::string& path) { return endsWith(path, ".json") || endsWith(path, ".lacrima"); }
+bool isProjectPath(const std::string& path) {
+  return endsWith(path, ".json") || endsWith(path, ".lacrima");
+}
 
 AnimationFile readAnimationFile(const std::string& path) {
   AnimationFile file;
@@ -27,13 +31,15 @@ AnimationFile readAnimationFile(const std::string& path) {
     file.scene = document.scene;
     file.tearSources = document.tearSources;
     if (file.animation.frames.empty())
-      throw FileError({path, 0, 0}, "the project has no keys, so nothing to play; expected at least one key");
+      throw FileError({path, 0, 0},
+                      "the project has no keys, so nothing to play; expected at least one key");
   } else {
     FapReadResult read = FapReader::readFile(path);
     file.animation = std::move(read.animation);
     file.warnings = std::move(read.warnings);
     if (file.animation.frames.empty())
-      throw FileError({path, 0, 0}, "the file holds no frames; expected at least one mask and value line");
+      throw FileError({path, 0, 0},
+                      "the file holds no frames; expected at least one mask and value line");
   }
   return file;
 }

@@ -35,9 +35,9 @@ bool commandsTears(const FapValues& values) {
 
 // Everything that evolves with the tears; the face is re-blended from `values`.
 class FrameProducer::Checkpoint {
-public:
+ public:
   std::optional<tears::TearCheckpoint> simulation;  // absent: no tears had been simulated
-  int generation = 0;                                // of the simulation it was taken from
+  int generation = 0;                               // of the simulation it was taken from
   tears::TrailBuilder trails;
   bool trailsCurrent = false;
   FapValues values{};
@@ -164,7 +164,8 @@ struct FrameProducer::State {
       next.particles = &simulation->particles();
       next.particleRadius = simulation->particleRadius();
     }
-    if (scene.surface && surfaceCurrent && !mesher.surface().empty()) next.surface = &mesher.surface();
+    if (scene.surface && surfaceCurrent && !mesher.surface().empty())
+      next.surface = &mesher.surface();
     if (scene.trails && trailsCurrent && !trails.mesh().empty()) next.trails = &trails.mesh();
     next.overlays = overlays;
     next.textureBlending = scene.textureBlending;
@@ -231,7 +232,9 @@ const FrameView& FrameProducer::produce(const FapValues& values, double dt, doub
   return s.view;
 }
 
-const FrameView& FrameProducer::pose(const FapValues& values) { return pose(values, state_->progress); }
+const FrameView& FrameProducer::pose(const FapValues& values) {
+  return pose(values, state_->progress);
+}
 
 const FrameView& FrameProducer::pose(const FapValues& values, double progress) {
   State& s = *state_;
@@ -269,10 +272,13 @@ std::shared_ptr<const FrameProducer::Checkpoint> FrameProducer::checkpoint() con
 void FrameProducer::restore(const Checkpoint& checkpoint) {
   State& s = *state_;
   if (checkpoint.simulation && (!s.simulation || checkpoint.generation != s.generation))
-    throw std::invalid_argument("FrameProducer::restore: the checkpoint was taken before the tear parameters or "
-                                "sources changed");
-  if (checkpoint.simulation) s.simulation->restore(*checkpoint.simulation);
-  else s.restartSimulation();
+    throw std::invalid_argument(
+        "FrameProducer::restore: the checkpoint was taken before the tear parameters or "
+        "sources changed");
+  if (checkpoint.simulation)
+    s.simulation->restore(*checkpoint.simulation);
+  else
+    s.restartSimulation();
   s.trails = checkpoint.trails;
   s.trailsCurrent = checkpoint.trailsCurrent;
   s.progress = checkpoint.progress;

@@ -1,7 +1,7 @@
 // Loading and rigging a head in memory (HeadRig.h).
 #include <lacrima/common/Diagnostics.h>
-#include <lacrima/playback/HeadRig.h>
 #include <lacrima/common/MediaFiles.h>
+#include <lacrima/playback/HeadRig.h>
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/rigging/FeaturePointFile.h>
 #include <lacrima/rigging/MeshImport.h>
@@ -26,7 +26,8 @@ void rigHead(HeadRig& rig, const std::string& fdpPath) {
   try {
     rig.blender = std::make_unique<PoseBlender>(rig.head, rig.rig.poses);
   } catch (const std::invalid_argument& e) {
-    throw FileError({fdpPath, 0, 0}, std::string("the baked poses do not fit the head: ") + e.what());
+    throw FileError({fdpPath, 0, 0},
+                    std::string("the baked poses do not fit the head: ") + e.what());
   }
 }
 
@@ -34,9 +35,10 @@ void rigHead(HeadRig& rig, const std::string& fdpPath) {
 
 std::unique_ptr<HeadRig> loadDefaultHeadRig() {
   if (!rigging::defaultHeadAvailable())
-    throw FileError({rigging::defaultHeadPackageDir(), 0, 0},
-                    "the default head is not in the cache; fetch it with packaging/fetch-default-head.sh "
-                    "(packaging/lacrima.sh does), or bring your own with --mesh FILE --fdp FILE");
+    throw FileError(
+        {rigging::defaultHeadPackageDir(), 0, 0},
+        "the default head is not in the cache; fetch it with packaging/fetch-default-head.sh "
+        "(packaging/lacrima.sh does), or bring your own with --mesh FILE --fdp FILE");
   auto rig = std::make_unique<HeadRig>();
   rig->head = rigging::loadDefaultHead();
   rigHead(*rig, findMediaFile("default-head.fdp.json"));
@@ -59,7 +61,8 @@ std::unique_ptr<HeadRig> loadHeadRig(const std::string& meshPath, const std::str
 
 namespace {
 
-std::vector<Eigen::Vector3i> trianglesWithRole(const HeadRig& rig, std::initializer_list<std::string_view> wanted) {
+std::vector<Eigen::Vector3i> trianglesWithRole(const HeadRig& rig,
+                                               std::initializer_list<std::string_view> wanted) {
   std::vector<Eigen::Vector3i> triangles;
   for (const HeadSubmesh& s : rig.head.submeshes) {
     const auto role = rig.rig.roles.find(s.name);
@@ -72,8 +75,12 @@ std::vector<Eigen::Vector3i> trianglesWithRole(const HeadRig& rig, std::initiali
 
 }  // namespace
 
-std::vector<Eigen::Vector3i> skinTriangles(const HeadRig& rig) { return trianglesWithRole(rig, {"skin"}); }
+std::vector<Eigen::Vector3i> skinTriangles(const HeadRig& rig) {
+  return trianglesWithRole(rig, {"skin"});
+}
 
-std::vector<Eigen::Vector3i> eyeTriangles(const HeadRig& rig) { return trianglesWithRole(rig, {"eye_left", "eye_right"}); }
+std::vector<Eigen::Vector3i> eyeTriangles(const HeadRig& rig) {
+  return trianglesWithRole(rig, {"eye_left", "eye_right"});
+}
 
 }  // namespace lacrima::playback

@@ -14,12 +14,16 @@ double unit(double x) { return std::isfinite(x) ? std::clamp(x, 0.0, 1.0) : 0.0;
 
 }  // namespace
 
-OverlayWeights overlayWeights(const SceneSettings& scene, double progress, const tears::TearSimulation* simulation) {
+OverlayWeights overlayWeights(const SceneSettings& scene, double progress,
+                              const tears::TearSimulation* simulation) {
   OverlayWeights w;
   if (!scene.textureBlending) return w;
   std::array<tears::EyeWetness, 2> wet{};
-  if (simulation) wet = {simulation->wetness(tears::Eye::Left), simulation->wetness(tears::Eye::Right)};
-  w.redness = scene.redness == SceneSettings::Redness::Animation ? unit(progress) : unit(0.5 * (wet[0].skin + wet[1].skin));
+  if (simulation)
+    wet = {simulation->wetness(tears::Eye::Left), simulation->wetness(tears::Eye::Right)};
+  w.redness = scene.redness == SceneSettings::Redness::Animation
+                  ? unit(progress)
+                  : unit(0.5 * (wet[0].skin + wet[1].skin));
   w.wetEyes = {unit(wet[0].eye), unit(wet[1].eye)};
   w.blush = scene.blush ? w.redness : 0.0;
   return w;

@@ -22,6 +22,7 @@ class TearSimulation;
 namespace lacrima::playback {
 
 // `simulation` may be null (no tears have been simulated yet).
-OverlayWeights overlayWeights(const SceneSettings& scene, double progress, const tears::TearSimulation* simulation);
+OverlayWeights overlayWeights(const SceneSettings& scene, double progress,
+                              const tears::TearSimulation* simulation);
 
 }  // namespace lacrima::playback

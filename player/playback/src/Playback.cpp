@@ -26,7 +26,8 @@ struct Playback::State {
   double time = 0;
   long long simulated = 0;
 
-  State(const HeadRig& r, int checkpointInterval) : rig(r), interval(std::max(1, checkpointInterval)), producer(r) {}
+  State(const HeadRig& r, int checkpointInterval)
+      : rig(r), interval(std::max(1, checkpointInterval)), producer(r) {}
 
   double progressAt(double seconds) const {
     const double d = animation.duration();
@@ -53,8 +54,10 @@ struct Playback::State {
     }
     const double dt = 1.0 / animation.fps;
     for (; nextFrame <= frame; ++nextFrame) {
-      if (nextFrame % interval == 0 && !checkpoints.contains(nextFrame)) checkpoints[nextFrame] = producer.checkpoint();
-      producer.produce(animation.frames[static_cast<std::size_t>(nextFrame)], dt, progressAt(nextFrame / animation.fps));
+      if (nextFrame % interval == 0 && !checkpoints.contains(nextFrame))
+        checkpoints[nextFrame] = producer.checkpoint();
+      producer.produce(animation.frames[static_cast<std::size_t>(nextFrame)], dt,
+                       progressAt(nextFrame / animation.fps));
       ++simulated;
     }
   }
@@ -76,12 +79,14 @@ void Playback::open(const std::string& path) {
   state_->warnings = std::move(file.warnings);
 }
 
-void Playback::setAnimation(FapAnimation animation, const SceneSettings& scene, const TearSources& sources) {
+void Playback::setAnimation(FapAnimation animation, const SceneSettings& scene,
+                            const TearSources& sources) {
   if (animation.frames.empty()) throw std::invalid_argument("the animation has no frames");
   if (!(animation.fps > 0) || !std::isfinite(animation.fps))
     throw std::invalid_argument("the animation's frame rate is not a positive number");
   for (const auto& point : {sources.left, sources.right})
-    if (point && !point->allFinite()) throw std::invalid_argument("a tear source is not a finite point");
+    if (point && !point->allFinite())
+      throw std::invalid_argument("a tear source is not a finite point");
   State& s = *state_;
   s.producer.setScene(scene);  // throws for invalid tear parameters before anything changes
   s.animation = std::move(animation);

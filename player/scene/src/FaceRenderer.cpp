@@ -18,7 +18,8 @@ namespace {
 
 void checkSize(QSize size) {
   if (!isImageSizeInBounds(size))
-    throw std::invalid_argument("FaceRenderer: image size must be " + std::to_string(kMinImageSide) + ".." +
+    throw std::invalid_argument("FaceRenderer: image size must be " +
+                                std::to_string(kMinImageSide) + ".." +
                                 std::to_string(kMaxImageSide) + " pixels per side");
 }
 
@@ -45,15 +46,17 @@ struct FaceRenderer::State {
     releaseTarget();
     target = Ogre::TextureManager::getSingleton().createManual(
         runtime->uniqueName("render-target"), runtime->resourceGroup(), Ogre::TEX_TYPE_2D,
-        static_cast<Ogre::uint>(size.width()), static_cast<Ogre::uint>(size.height()), 0, Ogre::PF_BYTE_RGBA,
-        Ogre::TU_RENDERTARGET, nullptr, false, static_cast<Ogre::uint>(samples));
+        static_cast<Ogre::uint>(size.width()), static_cast<Ogre::uint>(size.height()), 0,
+        Ogre::PF_BYTE_RGBA, Ogre::TU_RENDERTARGET, nullptr, false,
+        static_cast<Ogre::uint>(samples));
     Ogre::RenderTarget* rt = target->getBuffer()->getRenderTarget();
     rt->setAutoUpdated(false);
     scene->attach(*rt);
   }
 };
 
-FaceRenderer::FaceRenderer(const HeadMesh& neutral, QSize size) : state_(std::make_unique<State>()) {
+FaceRenderer::FaceRenderer(const HeadMesh& neutral, QSize size)
+    : state_(std::make_unique<State>()) {
   checkSize(size);
   state_->runtime = OgreRuntime::acquire();
   state_->scene = std::make_unique<FaceScene>(state_->runtime, neutral);
@@ -99,8 +102,9 @@ QImage FaceRenderer::render() {
   s.times.render = millisecondsSince(start);
   start = SteadyClock::now();
   QImage image(s.size, QImage::Format_RGBA8888);
-  const Ogre::PixelBox box(static_cast<Ogre::uint32>(s.size.width()), static_cast<Ogre::uint32>(s.size.height()), 1,
-                           Ogre::PF_BYTE_RGBA, image.bits());
+  const Ogre::PixelBox box(static_cast<Ogre::uint32>(s.size.width()),
+                           static_cast<Ogre::uint32>(s.size.height()), 1, Ogre::PF_BYTE_RGBA,
+                           image.bits());
   rt->copyContentsToMemory(Ogre::Box(0, 0, static_cast<Ogre::uint32>(s.size.width()),
                                      static_cast<Ogre::uint32>(s.size.height())),
                            box, Ogre::RenderTarget::FB_AUTO);

@@ -31,10 +31,12 @@ namespace {
 // coloured vertices in clip space (identity view and projection) on the far plane, so it costs
 // no per-pixel work beyond the interpolation of a colour, and none where the head is: it is
 // drawn after the opaque head (queue kBackdropQueue) and fails the depth test there.
-std::unique_ptr<detail::StreamedGeometry> makeBackdrop(const std::string& name, const std::string& group) {
+std::unique_ptr<detail::StreamedGeometry> makeBackdrop(const std::string& name,
+                                                       const std::string& group) {
   using Attribute = detail::StreamedGeometry::Attribute;
-  static constexpr std::array kLayout{Attribute{Ogre::VET_FLOAT3, Ogre::VES_POSITION},
-                                      Attribute{Ogre::VET_FLOAT3, Ogre::VES_TEXTURE_COORDINATES, 0}};
+  static constexpr std::array kLayout{
+      Attribute{Ogre::VET_FLOAT3, Ogre::VES_POSITION},
+      Attribute{Ogre::VET_FLOAT3, Ogre::VES_TEXTURE_COORDINATES, 0}};
   auto backdrop = std::make_unique<detail::StreamedGeometry>(name, kLayout);
   constexpr int kColumns = 24, kRows = 14;
   auto smooth = [](double a, double b, double x) {
@@ -58,7 +60,8 @@ std::unique_ptr<detail::StreamedGeometry> makeBackdrop(const std::string& name, 
   std::uint32_t* index = backdrop->lockIndices(6 * kColumns * kRows);
   for (int row = 0; row < kRows; ++row)
     for (int column = 0; column < kColumns; ++column) {
-      const auto a = std::uint32_t(row * (kColumns + 1) + column), b = a + 1, c = a + kColumns + 1, d = c + 1;
+      const auto a = std::uint32_t(row * (kColumns + 1) + column), b = a + 1, c = a + kColumns + 1,
+                 d = c + 1;
       for (std::uint32_t k : {a, c, b, b, c, d}) *index++ = k;
     }
   backdrop->unlockIndices();
@@ -67,7 +70,8 @@ std::unique_ptr<detail::StreamedGeometry> makeBackdrop(const std::string& name, 
   backdrop->setUseIdentityProjection(true);
   backdrop->setUseIdentityView(true);
   backdrop->setRenderQueueGroup(detail::kBackdropQueue);
-  backdrop->setMaterial(Ogre::MaterialManager::getSingleton().getByName("Lacrima/Background", group));
+  backdrop->setMaterial(
+      Ogre::MaterialManager::getSingleton().getByName("Lacrima/Background", group));
   return backdrop;
 }
 
@@ -109,8 +113,10 @@ struct FaceScene::State {
   void applyCamera() {
     const Eigen::Vector3d eye = view.eye();
     const Eigen::Quaterniond q = view.orientation();
-    cameraNode->setPosition(Ogre::Vector3(Ogre::Real(eye.x()), Ogre::Real(eye.y()), Ogre::Real(eye.z())));
-    cameraNode->setOrientation(Ogre::Quaternion(Ogre::Real(q.w()), Ogre::Real(q.x()), Ogre::Real(q.y()), Ogre::Real(q.z())));
+    cameraNode->setPosition(
+        Ogre::Vector3(Ogre::Real(eye.x()), Ogre::Real(eye.y()), Ogre::Real(eye.z())));
+    cameraNode->setOrientation(Ogre::Quaternion(Ogre::Real(q.w()), Ogre::Real(q.x()),
+                                                Ogre::Real(q.y()), Ogre::Real(q.z())));
     camera->setFOVy(Ogre::Degree(Ogre::Real(view.fovYDegrees)));
     camera->setNearClipDistance(Ogre::Real(std::max(1e-4, 0.25 * view.minDistance)));
     camera->setFarClipDistance(Ogre::Real(4.0 * view.maxDistance + view.distance));
@@ -123,8 +129,8 @@ struct FaceScene::State {
     geometry.reset();
     head = &mesh;
     if (mesh.vertexCount() > 0 && mesh.triangleCount() > 0) {
-      auto built = std::make_unique<detail::HeadGeometry>(*scene, mesh, headOcclusion(mesh), runtime->uniqueName("head"),
-                                                          runtime->resourceGroup());
+      auto built = std::make_unique<detail::HeadGeometry>(
+          *scene, mesh, headOcclusion(mesh), runtime->uniqueName("head"), runtime->resourceGroup());
       look = std::make_unique<detail::HeadLook>(*runtime, mesh, *built);
       geometry = std::move(built);
       headNode->attachObject(&geometry->entity());
@@ -134,7 +140,8 @@ struct FaceScene::State {
   }
 };
 
-FaceScene::FaceScene(std::shared_ptr<OgreRuntime> runtime, const HeadMesh& head) : FaceScene(std::move(runtime)) {
+FaceScene::FaceScene(std::shared_ptr<OgreRuntime> runtime, const HeadMesh& head)
+    : FaceScene(std::move(runtime)) {
   state_->buildHead(head);
 }
 
@@ -153,8 +160,8 @@ FaceScene::FaceScene(std::shared_ptr<OgreRuntime> runtime) : state_(std::make_un
   s.backdropNode = s.scene->getRootSceneNode()->createChildSceneNode();
   s.backdropNode->attachObject(s.backdrop.get());
 
-  s.tears = std::make_unique<detail::TearLayers>(*s.scene, *s.tearNode, s.runtime->uniqueName("tears"),
-                                                 s.runtime->resourceGroup());
+  s.tears = std::make_unique<detail::TearLayers>(
+      *s.scene, *s.tearNode, s.runtime->uniqueName("tears"), s.runtime->resourceGroup());
   s.applyCamera();
 }
 
@@ -175,7 +182,8 @@ void FaceScene::show(const playback::FrameView& view) {
   const Eigen::Matrix3Xf& positions = view.positions ? *view.positions : head.positions;
   const Eigen::Matrix3Xf& normals = view.normals ? *view.normals : head.normals;
   if (positions.cols() != head.positions.cols() || normals.cols() != head.positions.cols())
-    throw std::invalid_argument("FaceScene::show: the frame has " + std::to_string(positions.cols()) + " positions and " +
+    throw std::invalid_argument("FaceScene::show: the frame has " +
+                                std::to_string(positions.cols()) + " positions and " +
                                 std::to_string(normals.cols()) + " normals, the head " +
                                 std::to_string(head.positions.cols()) + " vertices");
   s.geometry->update(positions, normals);
@@ -207,13 +215,18 @@ void FaceScene::setView(const OrbitView& view) {
   state_->applyCamera();
 }
 
-void FaceScene::resetView() { setView(state_->head ? OrbitView::framing(*state_->head) : State::defaultView()); }
+void FaceScene::resetView() {
+  setView(state_->head ? OrbitView::framing(*state_->head) : State::defaultView());
+}
 
 QPointF FaceScene::project(const Eigen::Vector3d& point, QSize size) const {
   const Ogre::Camera& camera = *state_->camera;
-  const Ogre::Vector4 clip = camera.getProjectionMatrix() * (camera.getViewMatrix() *
-      Ogre::Vector4(Ogre::Real(point.x()), Ogre::Real(point.y()), Ogre::Real(point.z()), 1));
-  if (!(clip.w > 0)) return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+  const Ogre::Vector4 clip =
+      camera.getProjectionMatrix() *
+      (camera.getViewMatrix() *
+       Ogre::Vector4(Ogre::Real(point.x()), Ogre::Real(point.y()), Ogre::Real(point.z()), 1));
+  if (!(clip.w > 0))
+    return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
   const double x = clip.x / clip.w, y = clip.y / clip.w;
   return {(x + 1) * 0.5 * size.width(), (1 - y) * 0.5 * size.height()};
 }

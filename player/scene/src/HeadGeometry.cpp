@@ -14,7 +14,8 @@ namespace lacrima::scene::detail {
 namespace {
 
 template <typename Index>
-Ogre::HardwareIndexBufferSharedPtr indexBuffer(const std::vector<Eigen::Vector3i>& triangles, int base,
+Ogre::HardwareIndexBufferSharedPtr indexBuffer(const std::vector<Eigen::Vector3i>& triangles,
+                                               int base,
                                                Ogre::HardwareIndexBuffer::IndexType type) {
   std::vector<Index> indices;
   indices.reserve(triangles.size() * 3);
@@ -28,8 +29,9 @@ Ogre::HardwareIndexBufferSharedPtr indexBuffer(const std::vector<Eigen::Vector3i
 
 }  // namespace
 
-HeadGeometry::HeadGeometry(Ogre::SceneManager& scene, const HeadMesh& head, const std::vector<float>& occlusion,
-                           const std::string& name, const std::string& group)
+HeadGeometry::HeadGeometry(Ogre::SceneManager& scene, const HeadMesh& head,
+                           const std::vector<float>& occlusion, const std::string& name,
+                           const std::string& group)
     : scene_(scene), vertexCount_(head.vertexCount()) {
   auto& buffers = Ogre::HardwareBufferManager::getSingleton();
   const auto n = static_cast<std::size_t>(head.vertexCount());
@@ -42,7 +44,8 @@ HeadGeometry::HeadGeometry(Ogre::SceneManager& scene, const HeadMesh& head, cons
   declaration->addElement(1, 0, Ogre::VET_FLOAT2, Ogre::VES_TEXTURE_COORDINATES, 0);
   declaration->addElement(1, 8, Ogre::VET_FLOAT1, Ogre::VES_TEXTURE_COORDINATES, 1);
 
-  dynamic_ = buffers.createVertexBuffer(6 * sizeof(float), n, Ogre::HardwareBuffer::HBU_DYNAMIC_WRITE_ONLY_DISCARDABLE);
+  dynamic_ = buffers.createVertexBuffer(6 * sizeof(float), n,
+                                        Ogre::HardwareBuffer::HBU_DYNAMIC_WRITE_ONLY_DISCARDABLE);
   std::vector<float> fixed(3 * n, 0.0f);
   const bool hasUvs = head.uvs.cols() == head.positions.cols();
   for (std::size_t v = 0; v < n; ++v) {
@@ -52,7 +55,8 @@ HeadGeometry::HeadGeometry(Ogre::SceneManager& scene, const HeadMesh& head, cons
     }
     fixed[3 * v + 2] = v < occlusion.size() ? occlusion[v] : 1.0f;
   }
-  auto staticBuffer = buffers.createVertexBuffer(3 * sizeof(float), n, Ogre::HardwareBuffer::HBU_STATIC_WRITE_ONLY);
+  auto staticBuffer =
+      buffers.createVertexBuffer(3 * sizeof(float), n, Ogre::HardwareBuffer::HBU_STATIC_WRITE_ONLY);
   staticBuffer->writeData(0, fixed.size() * sizeof(float), fixed.data(), true);
   binding_->setBinding(0, dynamic_);
   binding_->setBinding(1, staticBuffer);
@@ -75,9 +79,11 @@ HeadGeometry::HeadGeometry(Ogre::SceneManager& scene, const HeadMesh& head, cons
     sub->vertexData = OGRE_NEW Ogre::VertexData(declaration_, binding_);  // does not own them
     sub->vertexData->vertexStart = static_cast<std::size_t>(first);
     sub->vertexData->vertexCount = static_cast<std::size_t>(count);
-    sub->indexData->indexBuffer = count > 65535
-        ? indexBuffer<std::uint32_t>(source.triangles, first, Ogre::HardwareIndexBuffer::IT_32BIT)
-        : indexBuffer<std::uint16_t>(source.triangles, first, Ogre::HardwareIndexBuffer::IT_16BIT);
+    sub->indexData->indexBuffer =
+        count > 65535 ? indexBuffer<std::uint32_t>(source.triangles, first,
+                                                   Ogre::HardwareIndexBuffer::IT_32BIT)
+                      : indexBuffer<std::uint16_t>(source.triangles, first,
+                                                   Ogre::HardwareIndexBuffer::IT_16BIT);
     sub->indexData->indexStart = 0;
     sub->indexData->indexCount = source.triangles.size() * 3;
     subEntityOf_[s] = next++;
@@ -88,12 +94,14 @@ HeadGeometry::HeadGeometry(Ogre::SceneManager& scene, const HeadMesh& head, cons
   const Eigen::Vector3f pad = 0.5f * (high - low) + Eigen::Vector3f::Constant(1e-3f);
   low -= pad;
   high += pad;
-  mesh_->_setBounds(Ogre::AxisAlignedBox(low.x(), low.y(), low.z(), high.x(), high.y(), high.z()), false);
+  mesh_->_setBounds(Ogre::AxisAlignedBox(low.x(), low.y(), low.z(), high.x(), high.y(), high.z()),
+                    false);
   mesh_->_setBoundingSphereRadius(0.5f * (high - low).norm());
   mesh_->load();
 
-  update(head.positions, head.normals.cols() == head.positions.cols() ? head.normals
-                                                                       : Eigen::Matrix3Xf::Zero(3, head.positions.cols()));
+  update(head.positions, head.normals.cols() == head.positions.cols()
+                             ? head.normals
+                             : Eigen::Matrix3Xf::Zero(3, head.positions.cols()));
   entity_ = scene_.createEntity(mesh_);
 }
 
@@ -109,7 +117,8 @@ HeadGeometry::~HeadGeometry() {
 }
 
 void HeadGeometry::update(const Eigen::Matrix3Xf& positions, const Eigen::Matrix3Xf& normals) {
-  if (positions.cols() != vertexCount_ || normals.cols() != vertexCount_ || vertexCount_ == 0) return;
+  if (positions.cols() != vertexCount_ || normals.cols() != vertexCount_ || vertexCount_ == 0)
+    return;
   auto* out = static_cast<float*>(dynamic_->lock(Ogre::HardwareBuffer::HBL_DISCARD));
   const float* p = positions.data();
   const float* q = normals.data();

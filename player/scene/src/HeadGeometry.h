@@ -25,7 +25,7 @@ class SubEntity;
 namespace lacrima::scene::detail {
 
 class HeadGeometry {
-public:
+ public:
   HeadGeometry(Ogre::SceneManager& scene, const HeadMesh& head, const std::vector<float>& occlusion,
                const std::string& name, const std::string& group);
   ~HeadGeometry();
@@ -37,7 +37,7 @@ public:
   // The sub-entity drawing head sub-mesh `submesh`, nullptr when it has no triangles.
   Ogre::SubEntity* subEntity(std::size_t submesh) const;
 
-private:
+ private:
   Ogre::SceneManager& scene_;
   Ogre::MeshPtr mesh_;
   Ogre::VertexDeclaration* declaration_ = nullptr;  // shared by every sub-mesh's vertex window

@@ -31,7 +31,8 @@ QImage readTexture(const std::string& path) {
   QImage image = reader.read();
   if (image.isNull())
     Ogre::LogManager::getSingleton().logWarning("Lacrima: texture " + path + " unreadable (" +
-                                                reader.errorString().toStdString() + "); using plain colour");
+                                                reader.errorString().toStdString() +
+                                                "); using plain colour");
   return image;
 }
 
@@ -39,7 +40,8 @@ Ogre::Vector4 toOgre(const Eigen::Vector4f& v) { return {v.x(), v.y(), v.z(), v.
 
 }  // namespace
 
-HeadLook::HeadLook(OgreRuntime& runtime, const HeadMesh& head, HeadGeometry& geometry) : runtime_(runtime) {
+HeadLook::HeadLook(OgreRuntime& runtime, const HeadMesh& head, HeadGeometry& geometry)
+    : runtime_(runtime) {
   const std::string& group = runtime.resourceGroup();
   auto& materials = Ogre::MaterialManager::getSingleton();
   std::map<int, QImage> images;
@@ -65,22 +67,30 @@ HeadLook::HeadLook(OgreRuntime& runtime, const HeadMesh& head, HeadGeometry& geo
     if (!entity) continue;
     const HeadSubmesh& sub = head.submeshes[s];
     const HeadMaterial fallback;
-    const HeadMaterial& look = sub.material >= 0 && sub.material < static_cast<int>(head.materials.size())
-                                   ? head.materials[static_cast<std::size_t>(sub.material)]
-                                   : fallback;
+    const HeadMaterial& look =
+        sub.material >= 0 && sub.material < static_cast<int>(head.materials.size())
+            ? head.materials[static_cast<std::size_t>(sub.material)]
+            : fallback;
     Part part{entity, Role::Lit, -1};
-    if (sub.name == "skin") part.role = Role::Skin;
-    else if (sub.name == "eye_l" || sub.name == "eye_r") part.role = Role::Eye;
-    else if (sub.name == "cornea_l" || sub.name == "cornea_r") part.role = Role::Cornea;
-    else if (look.transparent) part.role = Role::Card;
+    if (sub.name == "skin")
+      part.role = Role::Skin;
+    else if (sub.name == "eye_l" || sub.name == "eye_r")
+      part.role = Role::Eye;
+    else if (sub.name == "cornea_l" || sub.name == "cornea_r")
+      part.role = Role::Cornea;
+    else if (look.transparent)
+      part.role = Role::Card;
     if (sub.name.ends_with("_l")) part.eye = 0;
     if (sub.name.ends_with("_r")) part.eye = 1;
 
-    static const std::map<Role, const char*> kBase{{Role::Skin, "Lacrima/Skin"}, {Role::Eye, "Lacrima/Eye"},
-                                                   {Role::Cornea, "Lacrima/Cornea"}, {Role::Card, "Lacrima/Card"},
+    static const std::map<Role, const char*> kBase{{Role::Skin, "Lacrima/Skin"},
+                                                   {Role::Eye, "Lacrima/Eye"},
+                                                   {Role::Cornea, "Lacrima/Cornea"},
+                                                   {Role::Card, "Lacrima/Card"},
                                                    {Role::Lit, "Lacrima/Lit"}};
     Ogre::MaterialPtr material =
-        materials.getByName(kBase.at(part.role), group)->clone(runtime.uniqueName("material/" + sub.name), true, group);
+        materials.getByName(kBase.at(part.role), group)
+            ->clone(runtime.uniqueName("material/" + sub.name), true, group);
     Ogre::Pass* pass = material->getTechnique(0)->getPass(0);
     const auto fragment = pass->getFragmentProgramParameters();
     switch (part.role) {
@@ -89,7 +99,8 @@ HeadLook::HeadLook(OgreRuntime& runtime, const HeadMesh& head, HeadGeometry& geo
         // redness layer is made from the padded texture so both stay aligned.
         const QImage skin = padUvIslands(imageOf(sub.material), head, sub);
         pass->getTextureUnitState(0)->setTexture(texture(skin, true));
-        pass->getTextureUnitState(1)->setTexture(texture(paintOverlayMask(head, overlayVertexWeights(head)), false));
+        pass->getTextureUnitState(1)->setTexture(
+            texture(paintOverlayMask(head, overlayVertexWeights(head)), false));
         pass->getTextureUnitState(2)->setTexture(texture(makeIrritatedSkin(skin), true));
         fragment->setNamedConstant("materialColour", toOgre(look.diffuse));
         break;
@@ -109,8 +120,9 @@ HeadLook::HeadLook(OgreRuntime& runtime, const HeadMesh& head, HeadGeometry& geo
       case Role::Lit:
         pass->getTextureUnitState(0)->setTexture(diffuseOf(sub.material));
         fragment->setNamedConstant("materialColour", toOgre(look.diffuse));
-        fragment->setNamedConstant("specularColour",
-                                   Ogre::Vector4(look.specular.x(), look.specular.y(), look.specular.z(), look.shininess));
+        fragment->setNamedConstant(
+            "specularColour",
+            Ogre::Vector4(look.specular.x(), look.specular.y(), look.specular.z(), look.shininess));
         break;
     }
     material->load();
@@ -139,19 +151,23 @@ HeadLook::~HeadLook() {
 }
 
 Ogre::TexturePtr HeadLook::texture(const QImage& image, bool mipmaps) {
-  Ogre::TexturePtr created = uploadTexture(image, runtime_.uniqueName("texture"), runtime_.resourceGroup(), mipmaps);
+  Ogre::TexturePtr created =
+      uploadTexture(image, runtime_.uniqueName("texture"), runtime_.resourceGroup(), mipmaps);
   textures_.push_back(created);
   return created;
 }
 
 void HeadLook::setOverlays(const playback::OverlayWeights& weights, bool enabled) {
-  auto unit = [enabled](double w) { return enabled && std::isfinite(w) ? static_cast<float>(std::clamp(w, 0.0, 1.0)) : 0.0f; };
+  auto unit = [enabled](double w) {
+    return enabled && std::isfinite(w) ? static_cast<float>(std::clamp(w, 0.0, 1.0)) : 0.0f;
+  };
   const float redness = unit(weights.redness), blush = unit(weights.blush);
   const float wet[2] = {unit(weights.wetEyes[0]), unit(weights.wetEyes[1])};
   for (const Part& part : parts_) {
     Ogre::Vector4 value(0, 0, 0, 0);
     if (part.role == Role::Skin) value = Ogre::Vector4(redness, 0, blush, 0);
-    if ((part.role == Role::Eye || part.role == Role::Cornea) && part.eye >= 0) value.y = wet[part.eye];
+    if ((part.role == Role::Eye || part.role == Role::Cornea) && part.eye >= 0)
+      value.y = wet[part.eye];
     part.entity->setCustomParameter(0, value);
   }
 }

@@ -31,7 +31,7 @@ namespace lacrima::scene::detail {
 class HeadGeometry;
 
 class HeadLook {
-public:
+ public:
   HeadLook(OgreRuntime& runtime, const HeadMesh& head, HeadGeometry& geometry);
   ~HeadLook();
   HeadLook(const HeadLook&) = delete;
@@ -40,7 +40,7 @@ public:
   // Weights in [0, 1] (clamped); `enabled` false sets them all to 0 (no overlay at all).
   void setOverlays(const playback::OverlayWeights& weights, bool enabled);
 
-private:
+ private:
   enum class Role { Skin, Eye, Cornea, Card, Lit };
   struct Part {
     Ogre::SubEntity* entity = nullptr;

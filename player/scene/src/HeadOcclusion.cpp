@@ -41,7 +41,8 @@ void skinCavities(const HeadMesh& head, const HeadSubmesh& skin, std::vector<flo
     mean /= count;
     edge /= count;
     if (!(edge > 0)) continue;
-    const float concavity = std::max(0.0f, (mean - p).dot(head.normals.col(static_cast<Eigen::Index>(v)))) / edge;
+    const float concavity =
+        std::max(0.0f, (mean - p).dot(head.normals.col(static_cast<Eigen::Index>(v)))) / edge;
     value[v] = std::clamp(1.0f - 1.3f * concavity, 0.5f, 1.0f);
   }
   std::vector<float> next(n);
@@ -56,16 +57,19 @@ void skinCavities(const HeadMesh& head, const HeadSubmesh& skin, std::vector<flo
     value.swap(next);
   }
   for (int v = skin.firstVertex; v < skin.firstVertex + skin.vertexCount; ++v)
-    occlusion[static_cast<std::size_t>(v)] = value[static_cast<std::size_t>(weld[static_cast<std::size_t>(v)])];
+    occlusion[static_cast<std::size_t>(v)] =
+        value[static_cast<std::size_t>(weld[static_cast<std::size_t>(v)])];
 }
 
-void eyeball(const HeadMesh& head, const HeadSubmesh& sub, const EyeSphere& eye, std::vector<float>& occlusion) {
+void eyeball(const HeadMesh& head, const HeadSubmesh& sub, const EyeSphere& eye,
+             std::vector<float>& occlusion) {
   // The lids' skin near the eye (within 2 radii of its centre): the eyeball darkens where it
   // slips under them.
   std::vector<Eigen::Vector3f> lids;
   if (const HeadSubmesh* skin = head.findSubmesh("skin"))
     for (int v = skin->firstVertex; v < skin->firstVertex + skin->vertexCount; ++v)
-      if ((head.positions.col(v) - eye.centre).norm() < 2 * eye.radius) lids.emplace_back(head.positions.col(v));
+      if ((head.positions.col(v) - eye.centre).norm() < 2 * eye.radius)
+        lids.emplace_back(head.positions.col(v));
   for (int v = sub.firstVertex; v < sub.firstVertex + sub.vertexCount; ++v) {
     const Eigen::Vector3f p = head.positions.col(v);
     const Eigen::Vector3f d = p - eye.centre;
@@ -85,7 +89,8 @@ std::vector<float> headOcclusion(const HeadMesh& head) {
   if (head.normals.cols() != head.positions.cols()) return occlusion;
   if (const HeadSubmesh* skin = head.findSubmesh("skin")) skinCavities(head, *skin, occlusion);
 
-  for (const auto& [eyeName, corneaName] : {std::pair{"eye_l", "cornea_l"}, std::pair{"eye_r", "cornea_r"}}) {
+  for (const auto& [eyeName, corneaName] :
+       {std::pair{"eye_l", "cornea_l"}, std::pair{"eye_r", "cornea_r"}}) {
     const auto sphere = eyeSphere(head, eyeName);
     if (!sphere) continue;
     for (const char* name : {eyeName, corneaName})

@@ -42,7 +42,8 @@ struct OgreRuntime::Parts {
   ~Parts() {
     // Resources first (their GL objects need the context), then the Root (windows, render
     // system, plugins), then the log the Root writes to while it shuts down.
-    if (root && groupCreated) Ogre::ResourceGroupManager::getSingleton().destroyResourceGroup(group);
+    if (root && groupCreated)
+      Ogre::ResourceGroupManager::getSingleton().destroyResourceGroup(group);
     root.reset();
     log.reset();
   }
@@ -64,8 +65,9 @@ bool OgreRuntime::running() {
 OgreRuntime::OgreRuntime() : parts_(std::make_unique<Parts>()) {
   const char* display = std::getenv("DISPLAY");
   if (!display || !*display)
-    throw std::runtime_error("3-D rendering needs an X display (OGRE renders through GLX): set DISPLAY, "
-                             "or run headless under xvfb-run -a");
+    throw std::runtime_error(
+        "3-D rendering needs an X display (OGRE renders through GLX): set DISPLAY, "
+        "or run headless under xvfb-run -a");
   if (Ogre::Root::getSingletonPtr())
     throw std::runtime_error("3-D rendering: another OGRE Root already runs in this process");
 
@@ -95,8 +97,8 @@ OgreRuntime::OgreRuntime() : parts_(std::make_unique<Parts>()) {
     groups.initialiseResourceGroup(p.group);
     detail::loadShaderLibrary(p.group, p.logPath);
   } catch (const Ogre::Exception& e) {
-    throw std::runtime_error("3-D rendering could not start: " + e.getDescription() + " (OGRE log: " +
-                             p.logPath + ")");
+    throw std::runtime_error("3-D rendering could not start: " + e.getDescription() +
+                             " (OGRE log: " + p.logPath + ")");
   }
 }
 

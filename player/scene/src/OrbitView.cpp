@@ -29,9 +29,11 @@ OrbitView OrbitView::framing(const HeadMesh& head) {
   const HeadSubmesh* right = head.findSubmesh("eye_r");
   double visibleHeight = 0;
   if (left && right && left->vertexCount > 0 && right->vertexCount > 0) {
-    const Eigen::Vector3d eyes = 0.5 * (boundsOf(head, *left).center() + boundsOf(head, *right).center());
+    const Eigen::Vector3d eyes =
+        0.5 * (boundsOf(head, *left).center() + boundsOf(head, *right).center());
     // Brows to chin: the eyes sit about 0.09 head heights above the middle of the face.
-    view.target = Eigen::Vector3d(eyes.x(), eyes.y() - 0.03 * height, 0.5 * (eyes.z() + all.center().z()));
+    view.target =
+        Eigen::Vector3d(eyes.x(), eyes.y() - 0.03 * height, 0.5 * (eyes.z() + all.center().z()));
     visibleHeight = 0.92 * height;
   } else {
     view.target = all.center();
@@ -40,7 +42,8 @@ OrbitView OrbitView::framing(const HeadMesh& head) {
   view.fovYDegrees = 28;
   view.yawDegrees = 16;
   view.pitchDegrees = 4;
-  view.distance = 0.5 * visibleHeight / std::tan(0.5 * view.fovYDegrees * kDegree) + 0.25 * all.sizes().z();
+  view.distance =
+      0.5 * visibleHeight / std::tan(0.5 * view.fovYDegrees * kDegree) + 0.25 * all.sizes().z();
   view.minDistance = 0.12 * view.distance;
   view.maxDistance = 8.0 * view.distance;
   return view;

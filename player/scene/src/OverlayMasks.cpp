@@ -16,13 +16,14 @@ float smoothstep(float edge0, float edge1, float x) {
 
 float periocularWeight(const Eigen::Vector3f& p, const EyeSphere& eye) {
   const Eigen::Vector3f d = p - eye.centre;
-  if (d.z() < -0.5f * eye.radius) return 0;  // behind the eyeball's front half: the socket, the scalp
+  if (d.z() < -0.5f * eye.radius)
+    return 0;  // behind the eyeball's front half: the socket, the scalp
   const Eigen::Vector3f scaled(d.x() / 1.35f, d.y() / (d.y() < 0 ? 1.6f : 0.85f), d.z() / 2.0f);
   return 1 - smoothstep(1.15f, 2.3f, scaled.norm() / eye.radius);
 }
 
-float cheekWeight(const Eigen::Vector3f& p, const Eigen::Vector3f& normal, const Eigen::Vector3f& cheek,
-                  float radius) {
+float cheekWeight(const Eigen::Vector3f& p, const Eigen::Vector3f& normal,
+                  const Eigen::Vector3f& cheek, float radius) {
   if (normal.z() < 0.2f) return 0;
   const Eigen::Vector3f d = p - cheek;
   const Eigen::Vector3f scaled(d.x() / 1.3f, d.y(), d.z());
@@ -31,13 +32,14 @@ float cheekWeight(const Eigen::Vector3f& p, const Eigen::Vector3f& normal, const
 
 // The front-most skin vertex within half an eye radius (in x and y) of `point`, or `point`
 // itself when the skin has no vertex there.
-Eigen::Vector3f frontMostSkinPoint(const HeadMesh& head, const HeadSubmesh& skin, const Eigen::Vector3f& point,
-                                   float reach) {
+Eigen::Vector3f frontMostSkinPoint(const HeadMesh& head, const HeadSubmesh& skin,
+                                   const Eigen::Vector3f& point, float reach) {
   Eigen::Vector3f best = point;
   float bestZ = -std::numeric_limits<float>::infinity();
   for (int v = skin.firstVertex; v < skin.firstVertex + skin.vertexCount; ++v) {
     const Eigen::Vector3f p = head.positions.col(v);
-    if (std::abs(p.x() - point.x()) < reach && std::abs(p.y() - point.y()) < reach && p.z() > bestZ) {
+    if (std::abs(p.x() - point.x()) < reach && std::abs(p.y() - point.y()) < reach &&
+        p.z() > bestZ) {
       bestZ = p.z();
       best = p;
     }
@@ -46,7 +48,8 @@ Eigen::Vector3f frontMostSkinPoint(const HeadMesh& head, const HeadSubmesh& skin
 }
 
 // Grows the painted region (coverage > 0) into unpainted texels by averaging painted neighbours.
-void dilate(std::vector<std::array<float, 2>>& texels, std::vector<std::uint8_t>& covered, int size, int rounds) {
+void dilate(std::vector<std::array<float, 2>>& texels, std::vector<std::uint8_t>& covered, int size,
+            int rounds) {
   std::vector<std::uint8_t> next;
   for (int round = 0; round < rounds; ++round) {
     next = covered;
@@ -67,7 +70,8 @@ void dilate(std::vector<std::array<float, 2>>& texels, std::vector<std::uint8_t>
             ++n;
           }
         if (n == 0) continue;
-        texels[static_cast<std::size_t>(i)] = {sum[0] / static_cast<float>(n), sum[1] / static_cast<float>(n)};
+        texels[static_cast<std::size_t>(i)] = {sum[0] / static_cast<float>(n),
+                                               sum[1] / static_cast<float>(n)};
         next[static_cast<std::size_t>(i)] = 1;
       }
     covered.swap(next);
@@ -94,7 +98,8 @@ OverlayVertexWeights overlayVertexWeights(const HeadMesh& head) {
   weights.periocular.assign(n, 0.0f);
   weights.cheek.assign(n, 0.0f);
   const HeadSubmesh* skin = head.findSubmesh("skin");
-  const std::array<std::optional<EyeSphere>, 2> eyes{eyeSphere(head, "eye_l"), eyeSphere(head, "eye_r")};
+  const std::array<std::optional<EyeSphere>, 2> eyes{eyeSphere(head, "eye_l"),
+                                                     eyeSphere(head, "eye_r")};
   if (!skin || (!eyes[0] && !eyes[1])) return weights;
 
   const Eigen::Vector3f middle = 0.5f * (head.boundsMin() + head.boundsMax());
@@ -103,7 +108,8 @@ OverlayVertexWeights overlayVertexWeights(const HeadMesh& head) {
     if (!eyes[e]) continue;
     const EyeSphere& eye = *eyes[e];
     const float outwards = eye.centre.x() >= middle.x() ? 1.0f : -1.0f;
-    const Eigen::Vector3f below = eye.centre + Eigen::Vector3f(0.25f * eye.radius * outwards, -2.4f * eye.radius, 0);
+    const Eigen::Vector3f below =
+        eye.centre + Eigen::Vector3f(0.25f * eye.radius * outwards, -2.4f * eye.radius, 0);
     cheeks[e] = frontMostSkinPoint(head, *skin, below, 0.5f * eye.radius);
   }
   // The nose tip: the front-most skin between the eyes' level and well below it, on the mid line.
@@ -116,7 +122,8 @@ OverlayVertexWeights overlayVertexWeights(const HeadMesh& head) {
     float bestZ = -std::numeric_limits<float>::infinity();
     for (int v = skin->firstVertex; v < skin->firstVertex + skin->vertexCount; ++v) {
       const Eigen::Vector3f p = head.positions.col(v);
-      if (std::abs(p.x() - midX) < 0.3f * r && p.y() < eyeY - r && p.y() > eyeY - 3.5f * r && p.z() > bestZ) {
+      if (std::abs(p.x() - midX) < 0.3f * r && p.y() < eyeY - r && p.y() > eyeY - 3.5f * r &&
+          p.z() > bestZ) {
         bestZ = p.z();
         nose = p;
       }
@@ -134,7 +141,9 @@ OverlayVertexWeights overlayVertexWeights(const HeadMesh& head) {
       around = std::max(around, periocularWeight(p, *eyes[e]));
       cheek = std::max(cheek, cheekWeight(p, normal, cheeks[e], eyes[e]->radius));
     }
-    if (nose) around = std::max(around, 0.7f * (1 - smoothstep(0.2f, 1.0f, (p - *nose).norm() / noseReach)));
+    if (nose)
+      around =
+          std::max(around, 0.7f * (1 - smoothstep(0.2f, 1.0f, (p - *nose).norm() / noseReach)));
     weights.periocular[static_cast<std::size_t>(v)] = around;
     weights.cheek[static_cast<std::size_t>(v)] = cheek;
   }
@@ -162,12 +171,17 @@ QImage paintOverlayMask(const HeadMesh& head, const OverlayVertexWeights& weight
       const auto v = static_cast<std::size_t>(t[k]);
       w[static_cast<std::size_t>(k)] = {weights.periocular[v], weights.cheek[v]};
     }
-    const float area = (uv[1] - uv[0]).x() * (uv[2] - uv[0]).y() - (uv[1] - uv[0]).y() * (uv[2] - uv[0]).x();
+    const float area =
+        (uv[1] - uv[0]).x() * (uv[2] - uv[0]).y() - (uv[1] - uv[0]).y() * (uv[2] - uv[0]).x();
     if (std::abs(area) < 1e-12f) continue;
-    const int x0 = std::max(0, static_cast<int>(std::floor(std::min({uv[0].x(), uv[1].x(), uv[2].x()}))));
-    const int x1 = std::min(size - 1, static_cast<int>(std::ceil(std::max({uv[0].x(), uv[1].x(), uv[2].x()}))));
-    const int y0 = std::max(0, static_cast<int>(std::floor(std::min({uv[0].y(), uv[1].y(), uv[2].y()}))));
-    const int y1 = std::min(size - 1, static_cast<int>(std::ceil(std::max({uv[0].y(), uv[1].y(), uv[2].y()}))));
+    const int x0 =
+        std::max(0, static_cast<int>(std::floor(std::min({uv[0].x(), uv[1].x(), uv[2].x()}))));
+    const int x1 = std::min(
+        size - 1, static_cast<int>(std::ceil(std::max({uv[0].x(), uv[1].x(), uv[2].x()}))));
+    const int y0 =
+        std::max(0, static_cast<int>(std::floor(std::min({uv[0].y(), uv[1].y(), uv[2].y()}))));
+    const int y1 = std::min(
+        size - 1, static_cast<int>(std::ceil(std::max({uv[0].y(), uv[1].y(), uv[2].y()}))));
     for (int y = y0; y <= y1; ++y)
       for (int x = x0; x <= x1; ++x) {
         const Eigen::Vector2f p(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
@@ -178,7 +192,8 @@ QImage paintOverlayMask(const HeadMesh& head, const OverlayVertexWeights& weight
         constexpr float kSlack = -1e-4f;
         if (b0 < kSlack || b1 < kSlack || b2 < kSlack) continue;
         const auto i = static_cast<std::size_t>(y * size + x);
-        texels[i] = {b0 * w[0][0] + b1 * w[1][0] + b2 * w[2][0], b0 * w[0][1] + b1 * w[1][1] + b2 * w[2][1]};
+        texels[i] = {b0 * w[0][0] + b1 * w[1][0] + b2 * w[2][0],
+                     b0 * w[0][1] + b1 * w[1][1] + b2 * w[2][1]};
         covered[i] = 1;
       }
   }

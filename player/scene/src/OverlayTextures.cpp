@@ -13,7 +13,8 @@ namespace {
 const std::array<float, 256>& linearTable() {
   static const std::array<float, 256> table = [] {
     std::array<float, 256> t{};
-    for (int i = 0; i < 256; ++i) t[static_cast<std::size_t>(i)] = std::pow(static_cast<float>(i) / 255.0f, 2.2f);
+    for (int i = 0; i < 256; ++i)
+      t[static_cast<std::size_t>(i)] = std::pow(static_cast<float>(i) / 255.0f, 2.2f);
     return t;
   }();
   return table;
@@ -25,7 +26,8 @@ uchar encode(float linear) {
   static const std::array<uchar, 4097> table = [] {
     std::array<uchar, 4097> t{};
     for (int i = 0; i <= 4096; ++i)
-      t[static_cast<std::size_t>(i)] = static_cast<uchar>(std::lround(std::pow(float(i) / 4096.0f, 1.0f / 2.2f) * 255.0f));
+      t[static_cast<std::size_t>(i)] =
+          static_cast<uchar>(std::lround(std::pow(float(i) / 4096.0f, 1.0f / 2.2f) * 255.0f));
     return t;
   }();
   return table[static_cast<std::size_t>(std::lround(std::clamp(linear, 0.0f, 1.0f) * 4096.0f))];
@@ -45,7 +47,9 @@ float valueNoise(float u, float v, int cells, int seed) {
   const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
   const float fx = x - static_cast<float>(x0), fy = y - static_cast<float>(y0);
   const float sx = fx * fx * (3 - 2 * fx), sy = fy * fy * (3 - 2 * fy);
-  auto at = [&](int i, int j) { return hash(((i % cells) + cells) % cells, ((j % cells) + cells) % cells, seed); };
+  auto at = [&](int i, int j) {
+    return hash(((i % cells) + cells) % cells, ((j % cells) + cells) % cells, seed);
+  };
   const float a = at(x0, y0), b = at(x0 + 1, y0), c = at(x0, y0 + 1), d = at(x0 + 1, y0 + 1);
   return (a + (b - a) * sx) + ((c + (d - c) * sx) - (a + (b - a) * sx)) * sy;
 }
@@ -98,9 +102,11 @@ QImage makeWetEye(const QImage& eyeDiffuse) {
     const float high = std::max({r, g, b}), low = std::min({r, g, b});
     const float saturation = high > 0 ? (high - low) / high : 0;
     // Sclera: bright and nearly grey.
-    const float sclera = std::clamp((0.30f - saturation) / 0.12f, 0.0f, 1.0f) * std::clamp((high - 0.25f) / 0.2f, 0.0f, 1.0f);
+    const float sclera = std::clamp((0.30f - saturation) / 0.12f, 0.0f, 1.0f) *
+                         std::clamp((high - 0.25f) / 0.2f, 0.0f, 1.0f);
     // Vessels: where two octaves of noise cross 0.5, thin lines; thicker at low frequency.
-    const float ridge = std::abs(valueNoise(u, v, 14, 7) - 0.5f) + 0.5f * std::abs(valueNoise(u, v, 37, 8) - 0.5f);
+    const float ridge =
+        std::abs(valueNoise(u, v, 14, 7) - 0.5f) + 0.5f * std::abs(valueNoise(u, v, 37, 8) - 0.5f);
     const float vessel = std::clamp(1.0f - ridge / 0.045f, 0.0f, 1.0f);
     const float pink = 0.55f * sclera;
     r = r * (1 - pink) + r * 0.98f * pink;
@@ -114,16 +120,20 @@ QImage makeWetEye(const QImage& eyeDiffuse) {
   });
 }
 
-QImage padUvIslands(const QImage& texture, const HeadMesh& head, const HeadSubmesh& submesh, int grow) {
+QImage padUvIslands(const QImage& texture, const HeadMesh& head, const HeadSubmesh& submesh,
+                    int grow) {
   QImage out = rgba(texture);
-  if (texture.isNull() || head.uvs.cols() != head.positions.cols() || submesh.triangles.empty()) return out;
+  if (texture.isNull() || head.uvs.cols() != head.positions.cols() || submesh.triangles.empty())
+    return out;
   const int w = out.width(), h = out.height();
   std::vector<std::uint8_t> covered(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0);
   for (const Eigen::Vector3i& t : submesh.triangles) {
     std::array<Eigen::Vector2f, 3> p;
     for (int k = 0; k < 3; ++k)
-      p[static_cast<std::size_t>(k)] = head.uvs.col(t[k]).cwiseProduct(Eigen::Vector2f(float(w), float(h)));
-    const float area = (p[1] - p[0]).x() * (p[2] - p[0]).y() - (p[1] - p[0]).y() * (p[2] - p[0]).x();
+      p[static_cast<std::size_t>(k)] =
+          head.uvs.col(t[k]).cwiseProduct(Eigen::Vector2f(float(w), float(h)));
+    const float area =
+        (p[1] - p[0]).x() * (p[2] - p[0]).y() - (p[1] - p[0]).y() * (p[2] - p[0]).x();
     if (std::abs(area) < 1e-12f) continue;
     const int x0 = std::max(0, int(std::floor(std::min({p[0].x(), p[1].x(), p[2].x()}))));
     const int x1 = std::min(w - 1, int(std::ceil(std::max({p[0].x(), p[1].x(), p[2].x()}))));
@@ -144,7 +154,8 @@ QImage padUvIslands(const QImage& texture, const HeadMesh& head, const HeadSubme
   std::vector<std::uint8_t> inner(covered.size(), 0);
   for (int y = 1; y < h - 1; ++y)
     for (int x = 1; x < w - 1; ++x)
-      inner[static_cast<std::size_t>(y * w + x)] = at(x, y) && at(x - 1, y) && at(x + 1, y) && at(x, y - 1) && at(x, y + 1);
+      inner[static_cast<std::size_t>(y * w + x)] =
+          at(x, y) && at(x - 1, y) && at(x + 1, y) && at(x, y - 1) && at(x, y + 1);
   covered.swap(inner);
   std::vector<std::uint8_t> next;
   for (int round = 0; round < grow + 1; ++round) {

@@ -24,7 +24,8 @@ const QString kMaterialDir = QStringLiteral(":/lacrima/scene/materials");
 QByteArray readResource(const QString& path) {
   QFile file(path);
   if (!file.open(QIODevice::ReadOnly))
-    throw std::runtime_error("Lacrima scene: built-in resource " + path.toStdString() + " is missing");
+    throw std::runtime_error("Lacrima scene: built-in resource " + path.toStdString() +
+                             " is missing");
   return file.readAll();
 }
 
@@ -50,11 +51,13 @@ QByteArray withIncludes(const QString& name, QStringList& seen) {
 std::vector<Ogre::HighLevelGpuProgramPtr> createPrograms(const std::string& group) {
   std::vector<Ogre::HighLevelGpuProgramPtr> created;
   auto& programs = Ogre::HighLevelGpuProgramManager::getSingleton();
-  const QStringList files = QDir(kShaderDir).entryList({QStringLiteral("*.vert"), QStringLiteral("*.frag")}, QDir::Files);
+  const QStringList files =
+      QDir(kShaderDir).entryList({QStringLiteral("*.vert"), QStringLiteral("*.frag")}, QDir::Files);
   for (const QString& file : files) {
     QStringList seen;
     const QByteArray source = withIncludes(file, seen);
-    const auto type = file.endsWith(QLatin1String(".vert")) ? Ogre::GPT_VERTEX_PROGRAM : Ogre::GPT_FRAGMENT_PROGRAM;
+    const auto type = file.endsWith(QLatin1String(".vert")) ? Ogre::GPT_VERTEX_PROGRAM
+                                                            : Ogre::GPT_FRAGMENT_PROGRAM;
     auto program = programs.createProgram(file.toStdString(), group, "glsl", type);
     program->setSource(source.toStdString());
     created.push_back(program);
@@ -74,11 +77,13 @@ std::vector<std::string> materialNames(const std::string& group) {
 
 std::vector<std::string> parseMaterials(const std::string& group) {
   const std::vector<std::string> before = materialNames(group);
-  const QStringList files = QDir(kMaterialDir).entryList({QStringLiteral("*.material")}, QDir::Files);
+  const QStringList files =
+      QDir(kMaterialDir).entryList({QStringLiteral("*.material")}, QDir::Files);
   for (const QString& file : files) {
     QByteArray text = readResource(kMaterialDir + '/' + file);
     Ogre::DataStreamPtr stream = std::make_shared<Ogre::MemoryDataStream>(
-        "media/materials/" + file.toStdString(), text.data(), static_cast<std::size_t>(text.size()), false, true);
+        "media/materials/" + file.toStdString(), text.data(), static_cast<std::size_t>(text.size()),
+        false, true);
     Ogre::ScriptCompilerManager::getSingleton().parseScript(stream, group);
   }
   std::vector<std::string> added;
@@ -93,20 +98,22 @@ void loadShaderLibrary(const std::string& group, const std::string& logPath) {
   const std::vector<Ogre::HighLevelGpuProgramPtr> programs = createPrograms(group);
   const std::vector<std::string> materials = parseMaterials(group);
   if (materials.empty())
-    throw std::runtime_error("Lacrima scene: media/materials defined no material (see the OGRE log " + logPath + ")");
+    throw std::runtime_error(
+        "Lacrima scene: media/materials defined no material (see the OGRE log " + logPath + ")");
   for (const std::string& name : materials) {
     Ogre::MaterialPtr material = Ogre::MaterialManager::getSingleton().getByName(name, group);
     material->load();
     if (material->getSupportedTechniques().empty())
       throw std::runtime_error("Lacrima scene: material " + name + " cannot be rendered: " +
-                               material->getUnsupportedTechniquesExplanation() + " (see the OGRE log " +
-                               logPath + ")");
+                               material->getUnsupportedTechniquesExplanation() +
+                               " (see the OGRE log " + logPath + ")");
   }
   for (const Ogre::HighLevelGpuProgramPtr& program : programs) {
     program->load();  // the ones no material uses were not compiled yet
     if (program->hasCompileError())
       throw std::runtime_error("Lacrima scene: shader media/shaders/" + program->getName() +
-                               " does not compile (the compiler's message is in the OGRE log " + logPath + ")");
+                               " does not compile (the compiler's message is in the OGRE log " +
+                               logPath + ")");
   }
 }
 

@@ -51,7 +51,8 @@ float* StreamedGeometry::lockVertices(int vertices) {
   }
   vertexData_->vertexStart = 0;
   vertexData_->vertexCount = static_cast<std::size_t>(std::max(vertices, 0));
-  return static_cast<float*>(vertices_->lock(0, needed * vertices_->getVertexSize(), Ogre::HardwareBuffer::HBL_DISCARD));
+  return static_cast<float*>(
+      vertices_->lock(0, needed * vertices_->getVertexSize(), Ogre::HardwareBuffer::HBL_DISCARD));
 }
 
 void StreamedGeometry::unlockVertices() { vertices_->unlock(); }
@@ -60,16 +61,19 @@ std::uint32_t* StreamedGeometry::lockIndices(int indices) {
   const auto needed = static_cast<std::size_t>(std::max(indices, 1));
   if (!indices_ || indices_->getNumIndexes() < needed) {
     indices_ = Ogre::HardwareBufferManager::getSingleton().createIndexBuffer(
-        Ogre::HardwareIndexBuffer::IT_32BIT, grown(indices_ ? indices_->getNumIndexes() : 0, needed),
+        Ogre::HardwareIndexBuffer::IT_32BIT,
+        grown(indices_ ? indices_->getNumIndexes() : 0, needed),
         Ogre::HardwareBuffer::HBU_DYNAMIC_WRITE_ONLY_DISCARDABLE);
     indexData_->indexBuffer = indices_;
   }
-  return static_cast<std::uint32_t*>(indices_->lock(0, needed * sizeof(std::uint32_t), Ogre::HardwareBuffer::HBL_DISCARD));
+  return static_cast<std::uint32_t*>(
+      indices_->lock(0, needed * sizeof(std::uint32_t), Ogre::HardwareBuffer::HBL_DISCARD));
 }
 
 void StreamedGeometry::unlockIndices() { indices_->unlock(); }
 
-void StreamedGeometry::setDrawn(int indices, const Eigen::Vector3f& low, const Eigen::Vector3f& high) {
+void StreamedGeometry::setDrawn(int indices, const Eigen::Vector3f& low,
+                                const Eigen::Vector3f& high) {
   indexData_->indexStart = 0;
   indexData_->indexCount = static_cast<std::size_t>(std::max(indices, 0));
   if (indices <= 0 || !indices_ || !vertices_) {
@@ -88,7 +92,9 @@ void StreamedGeometry::hide() {
 }
 
 Ogre::Real StreamedGeometry::getSquaredViewDepth(const Ogre::Camera* camera) const {
-  const Ogre::Vector3 centre = getParentNode() ? getParentNode()->_getDerivedPosition() + mBox.getCenter() : mBox.getCenter();
+  const Ogre::Vector3 centre = getParentNode()
+                                   ? getParentNode()->_getDerivedPosition() + mBox.getCenter()
+                                   : mBox.getCenter();
   return (camera->getDerivedPosition() - centre).squaredLength();
 }
 

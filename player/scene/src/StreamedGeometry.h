@@ -17,7 +17,7 @@
 namespace lacrima::scene::detail {
 
 class StreamedGeometry : public Ogre::SimpleRenderable {
-public:
+ public:
   struct Attribute {
     Ogre::VertexElementType type;
     Ogre::VertexElementSemantic semantic;
@@ -39,7 +39,7 @@ public:
   Ogre::Real getSquaredViewDepth(const Ogre::Camera* camera) const override;
   Ogre::Real getBoundingRadius() const override;
 
-private:
+ private:
   std::unique_ptr<Ogre::VertexData> vertexData_;
   std::unique_ptr<Ogre::IndexData> indexData_;
   Ogre::HardwareVertexBufferSharedPtr vertices_;

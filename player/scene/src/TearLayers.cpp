@@ -36,8 +36,8 @@ struct Bounds {
 // `across` is -1, 0, 1 for a trail section's left, middle and right point (TrailBuilder stores
 // three vertices per section in that order), so the film can thin out towards its edges.
 template <typename Positions, typename Normals, typename Triangles>
-void upload(StreamedGeometry& geometry, const Positions& positions, const Normals& normals, const double* wetness,
-            const Triangles& triangles) {
+void upload(StreamedGeometry& geometry, const Positions& positions, const Normals& normals,
+            const double* wetness, const Triangles& triangles) {
   const int n = static_cast<int>(positions.cols());
   const int t = static_cast<int>(triangles.cols());
   if (n == 0 || t == 0) {
@@ -50,8 +50,12 @@ void upload(StreamedGeometry& geometry, const Positions& positions, const Normal
     const Eigen::Vector3f p = positions.col(v).template cast<float>();
     const Eigen::Vector3f q = normals.col(v).template cast<float>();
     bounds.add(p);
-    *out++ = p.x(); *out++ = p.y(); *out++ = p.z();
-    *out++ = q.x(); *out++ = q.y(); *out++ = q.z();
+    *out++ = p.x();
+    *out++ = p.y();
+    *out++ = p.z();
+    *out++ = q.x();
+    *out++ = q.y();
+    *out++ = q.z();
     if (wetness) {
       *out++ = static_cast<float>(wetness[v]);
       *out++ = static_cast<float>(v % 3 - 1);
@@ -65,8 +69,9 @@ void upload(StreamedGeometry& geometry, const Positions& positions, const Normal
   geometry.setDrawn(3 * t, bounds.low, bounds.high);
 }
 
-std::unique_ptr<StreamedGeometry> makeLayer(std::span<const Attribute> layout, const std::string& name,
-                                            const char* material, const std::string& group, unsigned char queue,
+std::unique_ptr<StreamedGeometry> makeLayer(std::span<const Attribute> layout,
+                                            const std::string& name, const char* material,
+                                            const std::string& group, unsigned char queue,
                                             Ogre::SceneNode& node) {
   auto geometry = std::make_unique<StreamedGeometry>(name, layout);
   geometry->setMaterial(Ogre::MaterialManager::getSingleton().getByName(material, group));
@@ -77,11 +82,14 @@ std::unique_ptr<StreamedGeometry> makeLayer(std::span<const Attribute> layout, c
 
 }  // namespace
 
-TearLayers::TearLayers(Ogre::SceneManager&, Ogre::SceneNode& node, const std::string& prefix, const std::string& group)
+TearLayers::TearLayers(Ogre::SceneManager&, Ogre::SceneNode& node, const std::string& prefix,
+                       const std::string& group)
     : node_(node) {
-  surface_ = makeLayer(kSurfaceLayout, prefix + "/surface", "Lacrima/Tear", group, kTearQueue, node);
+  surface_ =
+      makeLayer(kSurfaceLayout, prefix + "/surface", "Lacrima/Tear", group, kTearQueue, node);
   trails_ = makeLayer(kTrailLayout, prefix + "/trails", "Lacrima/Trail", group, kTrailQueue, node);
-  particles_ = makeLayer(kImpostorLayout, prefix + "/particles", "Lacrima/Particle", group, Ogre::RENDER_QUEUE_MAIN, node);
+  particles_ = makeLayer(kImpostorLayout, prefix + "/particles", "Lacrima/Particle", group,
+                         Ogre::RENDER_QUEUE_MAIN, node);
   particles_->setCustomParameter(0, Ogre::Vector4(0, 0, 0, 0));
 }
 
@@ -103,7 +111,8 @@ void TearLayers::showTrails(const tears::TrailMesh* trails) {
     trails_->hide();
     return;
   }
-  upload(*trails_, trails->positions(), trails->normals(), trails->alpha().data(), trails->triangles());
+  upload(*trails_, trails->positions(), trails->normals(), trails->alpha().data(),
+         trails->triangles());
 }
 
 void TearLayers::showParticles(const tears::ParticleSet* particles, double radius) {
@@ -119,8 +128,11 @@ void TearLayers::showParticles(const tears::ParticleSet* particles, double radiu
     const Eigen::Vector3f c = centre.cast<float>();
     bounds.add(c);
     for (const auto& corner : kCorners) {
-      *out++ = c.x(); *out++ = c.y(); *out++ = c.z();
-      *out++ = corner[0]; *out++ = corner[1];
+      *out++ = c.x();
+      *out++ = c.y();
+      *out++ = c.z();
+      *out++ = corner[0];
+      *out++ = corner[1];
     }
   }
   particles_->unlockVertices();
@@ -132,7 +144,8 @@ void TearLayers::showParticles(const tears::ParticleSet* particles, double radiu
   particles_->unlockIndices();
   const auto r = static_cast<float>(radius);
   particles_->setCustomParameter(0, Ogre::Vector4(r, 0, 0, 0));
-  particles_->setDrawn(6 * n, bounds.low - Eigen::Vector3f::Constant(r), bounds.high + Eigen::Vector3f::Constant(r));
+  particles_->setDrawn(6 * n, bounds.low - Eigen::Vector3f::Constant(r),
+                       bounds.high + Eigen::Vector3f::Constant(r));
 }
 
 }  // namespace lacrima::scene::detail

@@ -30,8 +30,9 @@ inline constexpr unsigned char kTearQueue = 53;
 inline constexpr unsigned char kCardQueue = 54;
 
 class TearLayers {
-public:
-  TearLayers(Ogre::SceneManager& scene, Ogre::SceneNode& node, const std::string& namePrefix, const std::string& group);
+ public:
+  TearLayers(Ogre::SceneManager& scene, Ogre::SceneNode& node, const std::string& namePrefix,
+             const std::string& group);
   ~TearLayers();
   TearLayers(const TearLayers&) = delete;
   TearLayers& operator=(const TearLayers&) = delete;
@@ -40,7 +41,7 @@ public:
   void showTrails(const tears::TrailMesh* trails);
   void showParticles(const tears::ParticleSet* particles, double radius);
 
-private:
+ private:
   Ogre::SceneNode& node_;
   std::unique_ptr<StreamedGeometry> surface_, trails_, particles_;
 };

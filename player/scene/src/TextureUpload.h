@@ -11,6 +11,7 @@
 namespace lacrima::scene::detail {
 
 // A 2-D RGBA texture with a full mip chain (`mipmaps`) or one level (masks).
-Ogre::TexturePtr uploadTexture(const QImage& image, const std::string& name, const std::string& group, bool mipmaps);
+Ogre::TexturePtr uploadTexture(const QImage& image, const std::string& name,
+                               const std::string& group, bool mipmaps);
 
 }  // namespace lacrima::scene::detail

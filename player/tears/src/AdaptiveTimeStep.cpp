@@ -4,7 +4,8 @@
 
 namespace lacrima::tears {
 
-StepChoice AdaptiveTimeStep::choose(double h, double c, double u, double a, double k, double remaining) const {
+StepChoice AdaptiveTimeStep::choose(double h, double c, double u, double a, double k,
+                                    double remaining) const {
   StepChoice choice{remaining, StepLimit::Frame};
   auto consider = [&](double dt, StepLimit why) {
     if (dt < choice.dt) choice = {dt, why};

@@ -37,7 +37,8 @@ bool CellIndex::inBox(int cx, int cy, int cz) const {
 
 std::uint64_t CellIndex::keyOf(int cx, int cy, int cz) const {
   return (static_cast<std::uint64_t>(cx - low_.x()) * static_cast<std::uint64_t>(dims_.y()) +
-          static_cast<std::uint64_t>(cy - low_.y())) * static_cast<std::uint64_t>(dims_.z()) +
+          static_cast<std::uint64_t>(cy - low_.y())) *
+             static_cast<std::uint64_t>(dims_.z()) +
          static_cast<std::uint64_t>(cz - low_.z());
 }
 
@@ -88,7 +89,8 @@ void CellIndex::build(std::span<const Eigen::Vector3d> x, double edge) {
   for (int shift = 0; shift < keyBits; shift += digitBits) {
     count.assign(radix + 1, 0);
     for (std::size_t i = 0; i < n; ++i) ++count[((key_[i] >> shift) & (radix - 1)) + 1];
-    if (count[1 + ((key_[0] >> shift) & (radix - 1))] == n) continue;  // one digit value: no-op pass
+    if (count[1 + ((key_[0] >> shift) & (radix - 1))] == n)
+      continue;  // one digit value: no-op pass
     for (std::size_t d = 0; d < radix; ++d) count[d + 1] += count[d];
     for (std::size_t i = 0; i < n; ++i) {
       const std::uint32_t slot = count[(key_[i] >> shift) & (radix - 1)]++;
@@ -150,7 +152,8 @@ Eigen::Vector3i CellIndex::cellCoordinates(std::size_t c) const {
 }
 
 CellIndex::Range CellIndex::row(int cx, int cy, int cz) const {
-  if (cx < low_.x() || cy < low_.y() || cx >= low_.x() + dims_.x() || cy >= low_.y() + dims_.y()) return {};
+  if (cx < low_.x() || cy < low_.y() || cx >= low_.x() + dims_.x() || cy >= low_.y() + dims_.y())
+    return {};
   const int z0 = std::max(cz - 1, low_.z()), z1 = std::min(cz + 1, low_.z() + dims_.z() - 1);
   if (z0 > z1) return {};
   // The cells z0..z1 are consecutive keys: find the first occupied one, then extend over the

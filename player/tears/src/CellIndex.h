@@ -20,7 +20,7 @@
 namespace lacrima::tears {
 
 class CellIndex {
-public:
+ public:
   // Sorts `positions` into cells of edge `edge`.
   void build(std::span<const Eigen::Vector3d> positions, double edge);
 
@@ -50,7 +50,7 @@ public:
   };
   Range row(int cx, int cy, int cz) const;
 
-private:
+ private:
   bool inBox(int cx, int cy, int cz) const;
   std::uint64_t keyOf(int cx, int cy, int cz) const;
   std::int64_t findKey(std::uint64_t key) const;
@@ -60,9 +60,9 @@ private:
 
   std::vector<int> order_;
   std::vector<double> sx_, sy_, sz_;
-  std::vector<std::uint64_t> cellKey_;     // per occupied cell, increasing
-  std::vector<std::uint32_t> cellStart_;   // size cells + 1
-  std::vector<std::uint64_t> slotKey_;     // hash table: key + 1 (0 = empty)
+  std::vector<std::uint64_t> cellKey_;    // per occupied cell, increasing
+  std::vector<std::uint32_t> cellStart_;  // size cells + 1
+  std::vector<std::uint64_t> slotKey_;    // hash table: key + 1 (0 = empty)
   std::vector<std::uint32_t> slotCell_;
   int slotBits_ = 0;
 

@@ -16,7 +16,8 @@ namespace {
 Float4 squaredNorms(Float4 d0, Float4 d1, Float4 d2, Float4 d3) {
   const __m128 xy01 = _mm_unpacklo_ps(d0, d1), xy23 = _mm_unpacklo_ps(d2, d3);
   const __m128 zw01 = _mm_unpackhi_ps(d0, d1), zw23 = _mm_unpackhi_ps(d2, d3);
-  const Float4 x = _mm_movelh_ps(xy01, xy23), y = _mm_movehl_ps(xy23, xy01), z = _mm_movelh_ps(zw01, zw23);
+  const Float4 x = _mm_movelh_ps(xy01, xy23), y = _mm_movehl_ps(xy23, xy01),
+               z = _mm_movelh_ps(zw01, zw23);
   return x * x + y * y + z * z;
 }
 
@@ -80,9 +81,12 @@ void DensitySolver::accumulate(const VerletPairs& candidates, ActivePairs& activ
     std::uint32_t k = candidates.begin(i);
     const std::uint32_t end = candidates.end(i);
     for (; k + 4 <= end; k += 4) {
-      const std::uint32_t j0 = partner[k], j1 = partner[k + 1], j2 = partner[k + 2], j3 = partner[k + 3];
-      const Float4 d0 = xi - load4(x + 4 * std::size_t{j0}), d1 = xi - load4(x + 4 * std::size_t{j1});
-      const Float4 d2 = xi - load4(x + 4 * std::size_t{j2}), d3 = xi - load4(x + 4 * std::size_t{j3});
+      const std::uint32_t j0 = partner[k], j1 = partner[k + 1], j2 = partner[k + 2],
+                          j3 = partner[k + 3];
+      const Float4 d0 = xi - load4(x + 4 * std::size_t{j0}),
+                   d1 = xi - load4(x + 4 * std::size_t{j1});
+      const Float4 d2 = xi - load4(x + 4 * std::size_t{j2}),
+                   d3 = xi - load4(x + 4 * std::size_t{j3});
       const Float4 r2 = squaredNorms(d0, d1, d2, d3);
       const Float4 q = positivePart(h2v - r2);
       Float4 w = wScalev * q * q * q;
@@ -106,16 +110,20 @@ void DensitySolver::accumulate(const VerletPairs& candidates, ActivePairs& activ
       emit(j3, d3, r2[3], (kept >> 3) & 1);
     }
     float rhoi = rho[si] + ((rhoLanes[0] + rhoLanes[1]) + (rhoLanes[2] + rhoLanes[3]));
-    for (; k < end; ++k) visit(xi, mi, rhoi, partner[k], !(strayI || (Strays && stray[partner[k]] != 0)));
+    for (; k < end; ++k)
+      visit(xi, mi, rhoi, partner[k], !(strayI || (Strays && stray[partner[k]] != 0)));
     if constexpr (Strays)
-      for (; nextStray < strayPairs.size() && strayPairs[nextStray].lower == static_cast<std::uint32_t>(i); ++nextStray)
+      for (; nextStray < strayPairs.size() &&
+             strayPairs[nextStray].lower == static_cast<std::uint32_t>(i);
+           ++nextStray)
         visit(xi, mi, rhoi, strayPairs[nextStray].higher, true);
     rho[si] = rhoi;
     active.start[si + 1] = written;
   }
 }
 
-void DensitySolver::compute(ParticleSet& p, const VerletPairs& candidates, ActivePairs& active) const {
+void DensitySolver::compute(ParticleSet& p, const VerletPairs& candidates,
+                            ActivePairs& active) const {
   const int n = p.size();
   const auto un = static_cast<std::size_t>(n);
   const double h2d = h_ * h_;
@@ -141,7 +149,8 @@ void DensitySolver::compute(ParticleSet& p, const VerletPairs& candidates, Activ
   const Eigen::Vector3d origin = p.position[0];
   for (std::size_t i = 0; i < un; ++i) {
     const Eigen::Vector3d r = p.position[i] - origin;
-    store4(&position_[4 * i], Float4{static_cast<float>(r.x()), static_cast<float>(r.y()), static_cast<float>(r.z()), 0.0f});
+    store4(&position_[4 * i], Float4{static_cast<float>(r.x()), static_cast<float>(r.y()),
+                                     static_cast<float>(r.z()), 0.0f});
     m_[i] = static_cast<float>(p.mass[i]);
     rho_[i] = m_[i] * w0;
   }

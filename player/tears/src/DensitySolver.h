@@ -19,14 +19,14 @@
 namespace lacrima::tears {
 
 class DensitySolver {
-public:
+ public:
   explicit DensitySolver(double h) : h_(h), w_(h) {}
   // Filters the candidates (with this sub-step's strays, PairList.h) to the pairs closer than h,
   // into `active` with their offset and r^2 (the force pass takes square roots for kept pairs
   // only), and sums the density over them.
   void compute(ParticleSet& particles, const VerletPairs& candidates, ActivePairs& active) const;
 
-private:
+ private:
   template <bool Strays>
   void accumulate(const VerletPairs& candidates, ActivePairs& active) const;
 

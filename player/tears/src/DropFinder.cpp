@@ -19,7 +19,8 @@ void DropFinder::find(const ParticleSet& particles, const UniformGrid& grid) {
     while (!stack_.empty()) {
       const std::size_t c = stack_.back();
       stack_.pop_back();
-      for (std::uint32_t s = index.cellStart(c); s < index.cellStart(c + 1); ++s) particles_.push_back(order[s]);
+      for (std::uint32_t s = index.cellStart(c); s < index.cellStart(c + 1); ++s)
+        particles_.push_back(order[s]);
       const Eigen::Vector3i cell = index.cellCoordinates(c);
       for (int dx = -1; dx <= 1; ++dx)
         for (int dy = -1; dy <= 1; ++dy)

@@ -33,24 +33,29 @@ const std::vector<Eigen::Vector3d>& Emitter::latticeWithin(double radius) {
   for (int i = -n; i <= n; ++i)
     for (int j = -n; j <= n; ++j)
       for (int k = -n; k <= n; ++k)
-        if (i * i + j * j + k * k <= latticeRadius_ * latticeRadius_) lattice_.emplace_back(i, j, k);
+        if (i * i + j * j + k * k <= latticeRadius_ * latticeRadius_)
+          lattice_.emplace_back(i, j, k);
   // Nearest first; ties in a fixed lexicographic order, so the sequence is reproducible.
-  std::sort(lattice_.begin(), lattice_.end(), [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-    const double na = a.squaredNorm(), nb = b.squaredNorm();
-    if (na != nb) return na < nb;
-    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
-  });
+  std::sort(lattice_.begin(), lattice_.end(),
+            [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+              const double na = a.squaredNorm(), nb = b.squaredNorm();
+              if (na != nb) return na < nb;
+              return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+            });
   return lattice_;
 }
 
-std::vector<Emitter::Placement> Emitter::place(const ParticleSet& p, int count, const EmissionSite& site) {
+std::vector<Emitter::Placement> Emitter::place(const ParticleSet& p, int count,
+                                               const EmissionSite& site) {
   std::vector<Placement> placements;
   const bool halfSpace = site.normal.squaredNorm() > 0;
   // Lattice points needed if the source region were empty, plus room for what is already there.
   const double occupiedMinimum = 0.75 * spacing_;
   std::vector<Eigen::Vector3d> nearby;
   auto radiusFor = [&](std::size_t points) {
-    return std::cbrt(3.0 * static_cast<double>(points) / ((halfSpace ? 2.0 : 4.0) * std::numbers::pi)) + 2.0;
+    return std::cbrt(3.0 * static_cast<double>(points) /
+                     ((halfSpace ? 2.0 : 4.0) * std::numbers::pi)) +
+           2.0;
   };
   double searchRadius = radiusFor(static_cast<std::size_t>(count));
   for (const auto& x : p.position)
@@ -89,10 +94,12 @@ void Emitter::spawn(ParticleSet& p, Eye eye, int count, const EmissionSite& site
   for (const Placement& a : place(p, count, site)) p.add(a.position, mass_, a.id, eye);
 }
 
-void Emitter::respawn(ParticleSet& p, Eye eye, std::span<const int> slots, const EmissionSite& site) {
+void Emitter::respawn(ParticleSet& p, Eye eye, std::span<const int> slots,
+                      const EmissionSite& site) {
   if (slots.empty()) return;
   const std::vector<Placement> placements = place(p, static_cast<int>(slots.size()), site);
-  for (std::size_t k = 0; k < slots.size(); ++k) p.reset(slots[k], placements[k].position, mass_, placements[k].id, eye);
+  for (std::size_t k = 0; k < slots.size(); ++k)
+    p.reset(slots[k], placements[k].position, mass_, placements[k].id, eye);
 }
 
 }  // namespace lacrima::tears

@@ -20,12 +20,12 @@ namespace lacrima::tears {
 
 // Where an eye's particles appear this frame.
 struct EmissionSite {
-  Eigen::Vector3d base;      // the first particle's position
-  Eigen::Vector3d normal;    // skin normal at the source (unit), or zero when no skin is near
+  Eigen::Vector3d base;    // the first particle's position
+  Eigen::Vector3d normal;  // skin normal at the source (unit), or zero when no skin is near
 };
 
 class Emitter {
-public:
+ public:
   Emitter(double spacing, double mass) : spacing_(spacing), mass_(mass) {}
 
   // Removes the `count` oldest particles of `eye` (smallest ids). Returns how many were removed.
@@ -35,11 +35,12 @@ public:
   // Re-emits the particles in `slots` (escaped ones) as new particles of `eye` at `site`, in
   // place: no other particle changes index, so the solver's pair list stays usable (the moved
   // ones become strays, PairList.h).
-  void respawn(ParticleSet& particles, Eye eye, std::span<const int> slots, const EmissionSite& site);
+  void respawn(ParticleSet& particles, Eye eye, std::span<const int> slots,
+               const EmissionSite& site);
 
   std::uint64_t nextId() const { return nextId_; }
 
-private:
+ private:
   const std::vector<Eigen::Vector3d>& latticeWithin(double radius);
   // Where `count` new particles go and their ids, chosen against the particles as they are.
   struct Placement {

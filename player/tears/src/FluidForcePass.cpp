@@ -1,5 +1,5 @@
-#include "Float4.h"
 #include "FluidForcePass.h"
+#include "Float4.h"
 #include "PairDirection.h"
 
 #include <algorithm>
@@ -36,9 +36,9 @@ float largestClosingSpeed2(const float* approach, const float* r2s, std::size_t 
 // branches, which GCC vectorises with SSE2 (restrict: the arrays never overlap). Taking the
 // square root and the division here, four pairs per instruction, saves about a tenth of the
 // pair loop's instructions against doing them per pair inside it (callgrind).
-void pairFactors(const float* __restrict r2s, std::size_t count, float h, float h2, float spiky, float visc,
-                 float poly6, float* __restrict radial, float* __restrict lapVisc, float* __restrict gradColour,
-                 float* __restrict lapColour) {
+void pairFactors(const float* __restrict r2s, std::size_t count, float h, float h2, float spiky,
+                 float visc, float poly6, float* __restrict radial, float* __restrict lapVisc,
+                 float* __restrict gradColour, float* __restrict lapColour) {
   for (std::size_t k = 0; k < count; ++k) {
     const float r2 = r2s[k];
     const float r = std::sqrt(r2);
@@ -69,8 +69,8 @@ void FluidForcePass::accumulate(const ActivePairs& pairs, int n, std::uint64_t c
   const float* r2s = pairs.r2.data();
   const float* velocity = velocity_.data();
   const float* scalars = scalars_.data();  // per particle: m, p, 1 / rho, V (one SSE load)
-  float* acc = acc_.data();          // acceleration, then the viscosity weight sum in lane 3
-  float* weighted = weighted4_.data();  // weighted velocity, then the colour Laplacian in lane 3
+  float* acc = acc_.data();                // acceleration, then the viscosity weight sum in lane 3
+  float* weighted = weighted4_.data();     // weighted velocity, then the colour Laplacian in lane 3
   float* gradient = gradient4_.data();
   float* approach = approach_.data();
   const float* radial = radial_.data();
@@ -114,7 +114,8 @@ void FluidForcePass::accumulate(const ActivePairs& pairs, int n, std::uint64_t c
           // Coincident (radial is 0 there): a fixed, antisymmetric direction from the ids.
           const Eigen::Vector3d e = pairDirection(ids[si], ids[j]);
           const float a = -shared * atZero_;
-          f = Float4{a * static_cast<float>(e.x()), a * static_cast<float>(e.y()), a * static_cast<float>(e.z()), 0.0f};
+          f = Float4{a * static_cast<float>(e.x()), a * static_cast<float>(e.y()),
+                     a * static_cast<float>(e.z()), 0.0f};
         }
         ai -= mj * f;
         store4(acc + j4, load4(acc + j4) + mi * f + Float4{0, 0, 0, wiPart});
@@ -142,7 +143,8 @@ void FluidForcePass::accumulate(const ActivePairs& pairs, int n, std::uint64_t c
   }
 }
 
-double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs, const Viscosity_Mueller2003& viscosity, bool colour) {
+double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs,
+                           const Viscosity_Mueller2003& viscosity, bool colour) {
   const int n = p.size();
   const auto un = static_cast<std::size_t>(n);
   velocity_.resize(4 * un);
@@ -164,7 +166,8 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs, const Viscosity_M
   bool anyPressure = false;
   for (std::size_t i = 0; i < un; ++i) {
     const Eigen::Vector3d& v = p.velocity[i];
-    store4(&velocity_[4 * i], Float4{static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z()), 0.0f});
+    store4(&velocity_[4 * i], Float4{static_cast<float>(v.x()), static_cast<float>(v.y()),
+                                     static_cast<float>(v.z()), 0.0f});
     const float m = static_cast<float>(p.mass[i]), pi = static_cast<float>(p.pressure[i]);
     const float invRho = 1.0f / static_cast<float>(p.density[i]), volume = m * invRho;
     weighted4_[4 * i + 3] = volume * selfLaplacian;
@@ -174,13 +177,15 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs, const Viscosity_M
   const std::size_t pairCount = n > 0 ? pairs.start[un] : 0;
   for (auto* v : {&approach_, &radial_, &lapVisc_, &gradColour_, &lapColour_})
     if (v->size() < pairCount) v->resize(pairs.partner.size());
-  pairFactors(pairs.r2.data(), pairCount, h_, h2_, spiky_, visc_, poly6_, radial_.data(), lapVisc_.data(),
-              gradColour_.data(), lapColour_.data());
+  pairFactors(pairs.r2.data(), pairCount, h_, h2_, spiky_, visc_, poly6_, radial_.data(),
+              lapVisc_.data(), gradColour_.data(), lapColour_.data());
 
   if (colour)
-    anyPressure ? accumulate<true, true>(pairs, n, p.id.data()) : accumulate<true, false>(pairs, n, p.id.data());
+    anyPressure ? accumulate<true, true>(pairs, n, p.id.data())
+                : accumulate<true, false>(pairs, n, p.id.data());
   else
-    anyPressure ? accumulate<false, true>(pairs, n, p.id.data()) : accumulate<false, false>(pairs, n, p.id.data());
+    anyPressure ? accumulate<false, true>(pairs, n, p.id.data())
+                : accumulate<false, false>(pairs, n, p.id.data());
   const float closing2 = largestClosingSpeed2(approach_.data(), pairs.r2.data(), pairCount);
 
   weightSum_.resize(un);

@@ -36,7 +36,7 @@
 namespace lacrima::tears {
 
 class FluidForcePass {
-public:
+ public:
   explicit FluidForcePass(double h) : spikyKernel_(h), viscosityKernel_(h), poly6Kernel_(h) {}
 
   // Adds pressure to particles.acceleration, fills particles.viscosityRate, weightSum() and
@@ -46,26 +46,27 @@ public:
   // sliding as a whole at any speed is as stable as one at rest), and pairs that slide past or
   // separate compress nothing.
   // Reads the velocities: call it before they change in this sub-step.
-  double run(ParticleSet& particles, ActivePairs& pairs, const Viscosity_Mueller2003& viscosity, bool colourField);
+  double run(ParticleSet& particles, ActivePairs& pairs, const Viscosity_Mueller2003& viscosity,
+             bool colourField);
   std::span<const double> weightSum() const { return weightSum_; }
   std::span<const Eigen::Vector3d> weightedVelocity() const { return weighted_; }
   // grad c_i and lap c_i of the last run with colourField (empty otherwise).
   std::span<const Eigen::Vector3d> colourGradient() const { return gradient_; }
   std::span<const double> colourLaplacian() const { return laplacian_; }
 
-private:
+ private:
   template <bool Colour, bool Pressure>
   void accumulate(const ActivePairs& pairs, int n, std::uint64_t const* ids);
 
-  SpikyKernel spikyKernel_;        // pressure
+  SpikyKernel spikyKernel_;  // pressure
   ViscosityKernel viscosityKernel_;
-  Poly6Kernel poly6Kernel_;        // colour field
+  Poly6Kernel poly6Kernel_;  // colour field
   std::vector<double> weightSum_, laplacian_;
   std::vector<Eigen::Vector3d> gradient_, weighted_;
   // Float state per particle: velocity (x, y, z, 0 as 4 floats) and m, p, 1 / rho, V (4 floats:
-  // one load per partner); sums per particle: acceleration (x, y, z, viscosity weight sum), weighted velocity
-  // (x, y, z, colour Laplacian) and colour gradient (x, y, z, 0). Groups of 4 floats are one
-  // SSE register, so a scattered vector update is one load, one add and one store.
+  // one load per partner); sums per particle: acceleration (x, y, z, viscosity weight sum),
+  // weighted velocity (x, y, z, colour Laplacian) and colour gradient (x, y, z, 0). Groups of 4
+  // floats are one SSE register, so a scattered vector update is one load, one add and one store.
   std::vector<float> velocity_, scalars_;
   std::vector<float> acc_, weighted4_, gradient4_;
   // Per-pair kernel factors, from r alone (one flat, vectorised loop over the pairs), and

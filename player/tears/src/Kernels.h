@@ -13,7 +13,7 @@ namespace lacrima::tears {
 // it depends on r^2 only (no square root). Its gradient vanishes at r = 0, which is why pressure
 // uses the spiky kernel instead.
 class Poly6Kernel {
-public:
+ public:
   explicit Poly6Kernel(double h)
       : h2_(h * h),
         w_(315.0 / (64.0 * std::numbers::pi * pow9(h))),
@@ -42,7 +42,7 @@ public:
     return grad_ * (h2_ - r2) * (3.0 * h2_ - 7.0 * r2);
   }
 
-private:
+ private:
   static double pow9(double h) {
     const double h3 = h * h * h;
     return h3 * h3 * h3;
@@ -54,7 +54,7 @@ private:
 // grad W = -45 / (pi h^6) (h - r)^2 r_hat. Its gradient does not vanish near r = 0, so close
 // particles keep repelling instead of clustering.
 class SpikyKernel {
-public:
+ public:
   explicit SpikyKernel(double h) : h_(h), grad_(-45.0 / (std::numbers::pi * pow6(h))) {}
 
   // Magnitude factor g with grad W = g * r_vec (r > 0); 0 outside the support.
@@ -74,7 +74,7 @@ public:
     return -grad_ / 3.0 * d * d * d;
   }
 
-private:
+ private:
   static double pow6(double h) {
     const double h3 = h * h * h;
     return h3 * h3;
@@ -85,8 +85,9 @@ private:
 // Müller's viscosity kernel, used for its Laplacian only: lap W = 45 / (pi h^6) (h - r), which is
 // positive everywhere in the support, so viscosity always damps relative velocity.
 class ViscosityKernel {
-public:
-  explicit ViscosityKernel(double h) : h_(h), lap_(45.0 / (std::numbers::pi * h * h * h * h * h * h)) {}
+ public:
+  explicit ViscosityKernel(double h)
+      : h_(h), lap_(45.0 / (std::numbers::pi * h * h * h * h * h * h)) {}
   double laplacian(double r) const { return r >= h_ ? 0.0 : lap_ * (h_ - r); }
   // lap W = laplacianCoefficient() (h - r), for fused loops.
   double laplacianCoefficient() const { return lap_; }
@@ -95,10 +96,11 @@ public:
   double value(double r) const {
     if (r >= h_ || r <= 0.0) return 0.0;
     const double q = r / h_;
-    return 15.0 / (2.0 * std::numbers::pi * h_ * h_ * h_) * (-0.5 * q * q * q + q * q + 0.5 / q - 1.0);
+    return 15.0 / (2.0 * std::numbers::pi * h_ * h_ * h_) *
+           (-0.5 * q * q * q + q * q + 0.5 / q - 1.0);
   }
 
-private:
+ private:
   double h_, lap_;
 };
 
@@ -106,9 +108,10 @@ private:
 //                                                   { 2(h-r)^3 r^3 - h^6/64  if 0 < 2r <= h
 // Repulsive (negative) at short range, attractive beyond h/2, so cohesion does not clump.
 class CohesionKernel {
-public:
+ public:
   explicit CohesionKernel(double h)
-      : h_(h), h6_over_64_(h * h * h * h * h * h / 64.0),
+      : h_(h),
+        h6_over_64_(h * h * h * h * h * h / 64.0),
         c_(32.0 / (std::numbers::pi * h * h * h * h * h * h * h * h * h)) {}
   double value(double r) const {
     if (r >= h_ || r <= 0.0) return 0.0;
@@ -116,7 +119,7 @@ public:
     return 2.0 * r > h_ ? c_ * a : c_ * (2.0 * a - h6_over_64_);
   }
 
-private:
+ private:
   double h_, h6_over_64_, c_;
 };
 

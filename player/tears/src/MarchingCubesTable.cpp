@@ -57,7 +57,8 @@ bool triangulate(const std::vector<int>& loop, std::vector<std::array<int, 3>>& 
     for (int k = 2; k < n - 1 && ok; ++k) ok = diagonalOk(apex, (apex + k) % n);
     if (!ok) continue;
     for (int k = 1; k + 1 < n; ++k)
-      out.push_back({loop[static_cast<std::size_t>(apex)], loop[static_cast<std::size_t>((apex + k) % n)],
+      out.push_back({loop[static_cast<std::size_t>(apex)],
+                     loop[static_cast<std::size_t>((apex + k) % n)],
                      loop[static_cast<std::size_t>((apex + k + 1) % n)]});
     return true;
   }
@@ -69,7 +70,8 @@ bool triangulate(const std::vector<int>& loop, std::vector<std::array<int, 3>>& 
     std::vector<int> left(loop.begin(), loop.begin() + k + 1);
     std::vector<int> right(loop.begin() + k, loop.end());
     right.push_back(loop.front());
-    std::vector<std::array<int, 3>> trial{{loop[0], loop[static_cast<std::size_t>(k)], loop.back()}};
+    std::vector<std::array<int, 3>> trial{
+        {loop[0], loop[static_cast<std::size_t>(k)], loop.back()}};
     if (left.size() >= 3 && !triangulate(left, trial)) continue;
     if (right.size() >= 3 && !triangulate(right, trial)) continue;
     out.insert(out.end(), trial.begin(), trial.end());
@@ -94,25 +96,31 @@ MarchingCubesCase generate(int configuration) {
         int j = i;
         while (inside(q[static_cast<std::size_t>((j + 1) % 4)])) j = (j + 1) % 4;
         const int entry = edgeBetween(previous, q[static_cast<std::size_t>(i)]);
-        const int exit = edgeBetween(q[static_cast<std::size_t>(j)], q[static_cast<std::size_t>((j + 1) % 4)]);
-        if (next[static_cast<std::size_t>(exit)] != -1) throw std::logic_error("marching cubes: edge leaves twice");
+        const int exit =
+            edgeBetween(q[static_cast<std::size_t>(j)], q[static_cast<std::size_t>((j + 1) % 4)]);
+        if (next[static_cast<std::size_t>(exit)] != -1)
+          throw std::logic_error("marching cubes: edge leaves twice");
         next[static_cast<std::size_t>(exit)] = entry;
       }
     }
   MarchingCubesCase result;
   std::array<bool, 12> used{};
   for (int start = 0; start < 12; ++start) {
-    if (next[static_cast<std::size_t>(start)] < 0 || used[static_cast<std::size_t>(start)]) continue;
+    if (next[static_cast<std::size_t>(start)] < 0 || used[static_cast<std::size_t>(start)])
+      continue;
     std::vector<int> loop;
     for (int e = start; !used[static_cast<std::size_t>(e)]; e = next[static_cast<std::size_t>(e)]) {
       used[static_cast<std::size_t>(e)] = true;
       loop.push_back(e);
-      if (next[static_cast<std::size_t>(e)] < 0) throw std::logic_error("marching cubes: open contour");
+      if (next[static_cast<std::size_t>(e)] < 0)
+        throw std::logic_error("marching cubes: open contour");
     }
     std::vector<std::array<int, 3>> triangles;
-    if (loop.size() < 3 || !triangulate(loop, triangles)) throw std::logic_error("marching cubes: untriangulable loop");
+    if (loop.size() < 3 || !triangulate(loop, triangles))
+      throw std::logic_error("marching cubes: untriangulable loop");
     for (const auto& t : triangles) {
-      if (result.triangleCount >= MarchingCubesCase::kMaxTriangles) throw std::logic_error("marching cubes: too many triangles");
+      if (result.triangleCount >= MarchingCubesCase::kMaxTriangles)
+        throw std::logic_error("marching cubes: too many triangles");
       // The loop runs with the inside on its left seen from outside the cube, which makes it
       // clockwise seen from outside the fluid: store the triangles reversed.
       const auto base = static_cast<std::size_t>(3 * result.triangleCount++);

@@ -30,7 +30,7 @@ struct MarchingCubesCase {
 };
 
 class MarchingCubesTable {
-public:
+ public:
   static const MarchingCubesTable& instance();
 
   const MarchingCubesCase& operator[](int configuration) const {
@@ -41,7 +41,7 @@ public:
   static int edgeUpperCorner(int edge) { return edgeLowerCorner(edge) | (1 << edgeAxis(edge)); }
   static int edgeAxis(int edge) { return edge >> 2; }
 
-private:
+ private:
   MarchingCubesTable();
   std::array<MarchingCubesCase, 256> cases_;
 };

@@ -16,7 +16,8 @@ bool inGrownBox(const Eigen::Vector3d& x, const Eigen::Vector3d& min, double edg
 }  // namespace
 
 int Octree::leafCount() const {
-  return static_cast<int>(std::count_if(nodes_.begin(), nodes_.end(), [](const Node& n) { return n.leaf; }));
+  return static_cast<int>(
+      std::count_if(nodes_.begin(), nodes_.end(), [](const Node& n) { return n.leaf; }));
 }
 
 void Octree::find(std::span<const Eigen::Vector3d> x, double h, NeighbourList& out) {
@@ -57,7 +58,8 @@ void Octree::find(std::span<const Eigen::Vector3d> x, double h, NeighbourList& o
 }
 
 // `candidates` are the particles within h of this node (its grown box).
-void Octree::split(int index, std::vector<int>& candidates, std::span<const Eigen::Vector3d> x, double h) {
+void Octree::split(int index, std::vector<int>& candidates, std::span<const Eigen::Vector3d> x,
+                   double h) {
   const Node node = nodes_[static_cast<std::size_t>(index)];
   if (node.edge <= nodeSize_ * (1 + 1e-9)) {
     Node& leaf = nodes_[static_cast<std::size_t>(index)];
@@ -69,7 +71,8 @@ void Octree::split(int index, std::vector<int>& candidates, std::span<const Eige
   }
   const double half = 0.5 * node.edge;
   for (int c = 0; c < 8; ++c) {
-    const Eigen::Vector3d min = node.min + half * Eigen::Vector3d(c & 1, (c >> 1) & 1, (c >> 2) & 1);
+    const Eigen::Vector3d min =
+        node.min + half * Eigen::Vector3d(c & 1, (c >> 1) & 1, (c >> 2) & 1);
     std::vector<int> inside;
     for (int p : candidates)
       if (inGrownBox(x[static_cast<std::size_t>(p)], min, half, h)) inside.push_back(p);

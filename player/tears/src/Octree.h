@@ -11,14 +11,14 @@
 namespace lacrima::tears {
 
 class Octree final : public NeighbourSearch {
-public:
+ public:
   explicit Octree(double nodeSize) : nodeSize_(nodeSize) {}
   void find(std::span<const Eigen::Vector3d> positions, double h, NeighbourList& out) override;
 
   int nodeCount() const { return static_cast<int>(nodes_.size()); }
   int leafCount() const;
 
-private:
+ private:
   struct Node {
     Eigen::Vector3d min;
     double edge = 0;

@@ -13,7 +13,7 @@ namespace lacrima::tears {
 // ODE's per-thread collision data; ODE is used from the constructing thread only (Debian's
 // build has no thread-local storage, so trimesh queries from two threads would corrupt it).
 class OdeLibrary {
-public:
+ public:
   OdeLibrary();
   ~OdeLibrary();
   OdeLibrary(const OdeLibrary&) = delete;
@@ -22,7 +22,7 @@ public:
 
 template <typename Id, void (*Destroy)(Id)>
 class OdeHandle {
-public:
+ public:
   OdeHandle() = default;
   explicit OdeHandle(Id id) : id_(id) {}
   ~OdeHandle() { reset(); }
@@ -43,7 +43,7 @@ public:
     if (id_) Destroy(std::exchange(id_, nullptr));
   }
 
-private:
+ private:
   Id id_ = nullptr;
 };
 

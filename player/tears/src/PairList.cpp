@@ -1,5 +1,5 @@
-#include "Float4.h"
 #include "PairList.h"
+#include "Float4.h"
 
 #include <algorithm>
 #include <array>
@@ -65,9 +65,11 @@ void VerletPairs::build(const CellIndex& index, double h, double skin) {
     }
     for (std::uint32_t s = index.cellStart(c); s < index.cellStart(c + 1); ++s) {
       const float xi = fx[s], yi = fy[s], zi = fz[s];
-      const Float4 x4{xi, xi, xi, xi}, y4{yi, yi, yi, yi}, z4{zi, zi, zi, zi}, r4{r2max, r2max, r2max, r2max};
+      const Float4 x4{xi, xi, xi, xi}, y4{yi, yi, yi, yi}, z4{zi, zi, zi, zi},
+          r4{r2max, r2max, r2max, r2max};
       auto scan = [&](std::uint32_t begin, std::uint32_t end) {
-        if (partner_.size() < written + (end - begin)) partner_.resize(2 * (written + (end - begin)));
+        if (partner_.size() < written + (end - begin))
+          partner_.resize(2 * (written + (end - begin)));
         std::uint32_t* dst = partner_.data();
         // Four distances at a time, then a branch-free append of each: most candidates fail
         // the test, unpredictably.
@@ -91,7 +93,8 @@ void VerletPairs::build(const CellIndex& index, double h, double skin) {
         }
       };
       scan(s + 1, ownEnd);
-      for (int r = 0; r < rowCount; ++r) scan(rows[static_cast<std::size_t>(r)].begin, rows[static_cast<std::size_t>(r)].end);
+      for (int r = 0; r < rowCount; ++r)
+        scan(rows[static_cast<std::size_t>(r)].begin, rows[static_cast<std::size_t>(r)].end);
       start_[s + 1] = static_cast<std::uint32_t>(written);
     }
   }
@@ -133,7 +136,8 @@ bool VerletPairs::refresh(const CellIndex& index, std::span<const Eigen::Vector3
   const std::size_t n = x.size();
   LargestTwo still;
   bool finite = true;
-  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()),
+                  high = -low;
   for (std::size_t i = 0; i < n; ++i) {
     const Eigen::Vector3d d = x[i] - anchor_[i];
     const double d2 = d.squaredNorm();
@@ -158,8 +162,10 @@ bool VerletPairs::refresh(const CellIndex& index, std::span<const Eigen::Vector3
   Eigen::Vector3d median;
   for (int axis = 0; axis < 3; ++axis) {
     medianScratch_.clear();
-    for (std::size_t i = 0; i < n; i += stride) medianScratch_.push_back(x[i][axis] - anchor_[i][axis]);
-    const auto middle = medianScratch_.begin() + static_cast<std::ptrdiff_t>(medianScratch_.size() / 2);
+    for (std::size_t i = 0; i < n; i += stride)
+      medianScratch_.push_back(x[i][axis] - anchor_[i][axis]);
+    const auto middle =
+        medianScratch_.begin() + static_cast<std::ptrdiff_t>(medianScratch_.size() / 2);
     std::nth_element(medianScratch_.begin(), middle, medianScratch_.end());
     median[axis] = *middle;
   }
@@ -189,7 +195,8 @@ bool VerletPairs::refresh(const CellIndex& index, std::span<const Eigen::Vector3
   }
   for (std::size_t a = 0; a < strayList_.size(); ++a)
     for (std::size_t b = a + 1; b < strayList_.size(); ++b)
-      if ((x[strayList_[a]] - x[strayList_[b]]).squaredNorm() < reach2) strayPairs_.push_back({strayList_[a], strayList_[b]});
+      if ((x[strayList_[a]] - x[strayList_[b]]).squaredNorm() < reach2)
+        strayPairs_.push_back({strayList_[a], strayList_[b]});
   std::sort(strayPairs_.begin(), strayPairs_.end());
   return true;
 }

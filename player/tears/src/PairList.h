@@ -41,7 +41,7 @@
 namespace lacrima::tears {
 
 class VerletPairs {
-public:
+ public:
   // `index` was built over these positions, which are in its sorted order.
   void build(const CellIndex& index, double h, double skin);
   // From full lists (any structure): pairs i < j, no skin (valid for the current positions only).
@@ -72,13 +72,13 @@ public:
   const std::vector<Pair>& strayPairs() const { return strayPairs_; }
   int strayCount() const { return strayCount_; }
 
-private:
+ private:
   void clearStrays();
 
-  std::vector<std::uint32_t> start_;    // size n + 1
-  std::vector<std::uint32_t> partner_;  // j > i
-  std::vector<Eigen::Vector3d> anchor_; // positions at the build
-  std::vector<float> fx_, fy_, fz_;     // build scratch: sorted positions in float
+  std::vector<std::uint32_t> start_;     // size n + 1
+  std::vector<std::uint32_t> partner_;   // j > i
+  std::vector<Eigen::Vector3d> anchor_;  // positions at the build
+  std::vector<float> fx_, fy_, fz_;      // build scratch: sorted positions in float
   double h_ = 0, skin_ = 0;
   bool valid_ = false;
   std::vector<std::uint8_t> stray_;
@@ -94,8 +94,8 @@ private:
 struct ActivePairs {
   std::vector<std::uint32_t> start;  // size n + 1
   std::vector<std::uint32_t> partner;
-  std::vector<float> offset;         // 4 per pair: x_i - x_j, then 0 (one SSE register)
-  std::vector<float> r2;             // |x_i - x_j|^2
+  std::vector<float> offset;  // 4 per pair: x_i - x_j, then 0 (one SSE register)
+  std::vector<float> r2;      // |x_i - x_j|^2
 
   int particleCount() const { return static_cast<int>(start.empty() ? 0 : start.size() - 1); }
   std::size_t pairCount() const { return partner.size(); }

@@ -92,7 +92,8 @@ ScaledParameters ScaledParameters::from(const TearSettings& in, const UnitScale&
   p.stiffness = c0 * c0 * in.pressure / kDefaultPressure;
   p.soundSpeed = std::sqrt(p.stiffness);
   p.kinematicViscosity = in.viscosity * L * L;
-  p.tensionSigma = in.tension / kDefaultTension * 0.5 * kTensionCompression * c0 * c0 * kDrop100Radius2009 * L * (in.kernel / 0.5);
+  p.tensionSigma = in.tension / kDefaultTension * 0.5 * kTensionCompression * c0 * c0 *
+                   kDrop100Radius2009 * L * (in.kernel / 0.5);
   p.tensionGamma = in.tension / kDefaultTension * kAkinciFraction * c0 * c0 / p.h;
   p.adhesion = in.adhesion * U;
   p.friction = in.friction / (kFrictionReferenceSpeed * U);

@@ -6,14 +6,18 @@
 
 namespace lacrima::tears {
 
-std::unique_ptr<PressureSolver> PressureSolver::create(PressureMethod method, const ScaledParameters& p,
-                                                       const TearSettings& settings, const SimulationOptions& options) {
+std::unique_ptr<PressureSolver> PressureSolver::create(PressureMethod method,
+                                                       const ScaledParameters& p,
+                                                       const TearSettings& settings,
+                                                       const SimulationOptions& options) {
   if (method == PressureMethod::Wcsph)
-    return std::make_unique<PressureSolver_WCSPH>(p.stiffness, p.restDensity, p.soundSpeed, options.clampNegativePressure);
+    return std::make_unique<PressureSolver_WCSPH>(p.stiffness, p.restDensity, p.soundSpeed,
+                                                  options.clampNegativePressure);
   // The pressure parameter sets how tight the solves are: ten times the default pressure, ten
   // times tighter (SimulationOptions::dfsphTolerance).
   DivergenceFreeSettings dfsph;
-  const double stiffness = settings.pressure > 0 ? TearSettings{}.pressure / settings.pressure : 1e3;
+  const double stiffness =
+      settings.pressure > 0 ? TearSettings{}.pressure / settings.pressure : 1e3;
   dfsph.densityTolerance = std::clamp(options.dfsphTolerance * stiffness, 1e-4, 0.1);
   dfsph.divergenceTolerance = dfsph.densityTolerance;
   dfsph.maxIterations = std::max(2, options.dfsphMaxIterations);

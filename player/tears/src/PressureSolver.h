@@ -30,11 +30,13 @@ struct PressureHistory {
 };
 
 class PressureSolver {
-public:
+ public:
   virtual ~PressureSolver() = default;
   // The method the options name, tuned by the tear parameters.
-  static std::unique_ptr<PressureSolver> create(PressureMethod method, const ScaledParameters& parameters,
-                                                const TearSettings& settings, const SimulationOptions& options);
+  static std::unique_ptr<PressureSolver> create(PressureMethod method,
+                                                const ScaledParameters& parameters,
+                                                const TearSettings& settings,
+                                                const SimulationOptions& options);
 
   // The speed of sound of the CFL condition (0: the method has no equation of state).
   virtual double soundSpeed() const = 0;
@@ -44,8 +46,8 @@ public:
   // The acceleration that bounds the sub-step, given the largest one of the force pass.
   virtual double accelerationBound(double largestFluidAcceleration) const = 0;
   // `skin`: the collision surface, whose normals say which way a touching particle cannot go.
-  virtual void correctVelocities(ParticleSet& particles, const ActivePairs& pairs, double dt, const SkinView& skin,
-                                 TearCounters& counters) = 0;
+  virtual void correctVelocities(ParticleSet& particles, const ActivePairs& pairs, double dt,
+                                 const SkinView& skin, TearCounters& counters) = 0;
 
   virtual PressureHistory history() const { return {}; }
   virtual void restoreHistory(const PressureHistory&) {}

@@ -1,6 +1,6 @@
+#include "PressureSolver_DFSPH.h"
 #include "Float4.h"
 #include "PairDirection.h"
-#include "PressureSolver_DFSPH.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,11 +32,15 @@ void PressureSolver_DFSPH::prepare(const ParticleSet& p, const ActivePairs& pair
   }
   // Coincident pairs (rare): a fixed direction from the ids, pointing from j to i.
   for (int i = 0; i < n; ++i)
-    for (std::uint32_t k = pairs.start[static_cast<std::size_t>(i)]; k < pairs.start[static_cast<std::size_t>(i) + 1]; ++k)
+    for (std::uint32_t k = pairs.start[static_cast<std::size_t>(i)];
+         k < pairs.start[static_cast<std::size_t>(i) + 1]; ++k)
       if (r2s[k] <= 1e-18f) [[unlikely]] {
-        const Eigen::Vector3d e = pairDirection(p.id[static_cast<std::size_t>(i)], p.id[pairs.partner[k]]);
+        const Eigen::Vector3d e =
+            pairDirection(p.id[static_cast<std::size_t>(i)], p.id[pairs.partner[k]]);
         store4(g + 4 * static_cast<std::size_t>(k),
-               Float4{static_cast<float>(e.x()), static_cast<float>(e.y()), static_cast<float>(e.z()), 0.0f} * atZero);
+               Float4{static_cast<float>(e.x()), static_cast<float>(e.y()),
+                      static_cast<float>(e.z()), 0.0f} *
+                   atZero);
       }
 
   // alpha_i = 1 / (|S_i|^2 + Q_i), S_i = sum_j m_j g_ij, Q_i = sum_j m_i m_j |g_ij|^2.
@@ -76,7 +80,8 @@ void PressureSolver_DFSPH::loadVelocities(const ParticleSet& p) {
   velocity_.resize(4 * un);
   for (std::size_t i = 0; i < un; ++i) {
     const Eigen::Vector3d& v = p.velocity[i];
-    store4(&velocity_[4 * i], Float4{static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z()), 0.0f});
+    store4(&velocity_[4 * i], Float4{static_cast<float>(v.x()), static_cast<float>(v.y()),
+                                     static_cast<float>(v.z()), 0.0f});
   }
   start_ = velocity_;
 }
@@ -182,8 +187,10 @@ int PressureSolver_DFSPH::solveDensity(ParticleSet& p, const ActivePairs& pairs,
       total += excess;
       kappa_[i] = excess * invDt * alpha_[i];
     }
-    if ((iteration >= 2 && total <= settings_.densityTolerance * n) || iteration >= settings_.maxIterations) {
-      stats_.densityCapped = iteration >= settings_.maxIterations && total > settings_.densityTolerance * n;
+    if ((iteration >= 2 && total <= settings_.densityTolerance * n) ||
+        iteration >= settings_.maxIterations) {
+      stats_.densityCapped =
+          iteration >= settings_.maxIterations && total > settings_.densityTolerance * n;
       break;
     }
     applyKappa(pairs, n);
@@ -204,25 +211,28 @@ int PressureSolver_DFSPH::solveDensity(ParticleSet& p, const ActivePairs& pairs,
   return iteration;
 }
 
-void PressureSolver_DFSPH::computePressures(ParticleSet& p, const ActivePairs& pairs, double remaining,
-                                           TearCounters& counters) {
+void PressureSolver_DFSPH::computePressures(ParticleSet& p, const ActivePairs& pairs,
+                                            double remaining, TearCounters& counters) {
   std::fill(p.pressure.begin(), p.pressure.end(), 0.0);
   prepare(p, pairs);
-  const double expected = history_.lastSubstep > 0 ? std::min(history_.lastSubstep, remaining) : remaining;
+  const double expected =
+      history_.lastSubstep > 0 ? std::min(history_.lastSubstep, remaining) : remaining;
   counters.divergenceIterations += solveDivergence(p, pairs, expected);
   counters.solverCapped += stats_.divergenceCapped;
 }
 
 double PressureSolver_DFSPH::accelerationBound(double largestFluidAcceleration) const {
-  return history_.lastNetAcceleration >= 0 ? history_.lastNetAcceleration : largestFluidAcceleration;
+  return history_.lastNetAcceleration >= 0 ? history_.lastNetAcceleration
+                                           : largestFluidAcceleration;
 }
 
-void PressureSolver_DFSPH::correctVelocities(ParticleSet& p, const ActivePairs& pairs, double dt, const SkinView& skin,
-                                            TearCounters& counters) {
+void PressureSolver_DFSPH::correctVelocities(ParticleSet& p, const ActivePairs& pairs, double dt,
+                                             const SkinView& skin, TearCounters& counters) {
   contactNormal_.resize(p.velocity.size());
   for (std::size_t i = 0; i < contactNormal_.size(); ++i) {
     const int t = p.contact[i].triangle;
-    contactNormal_[i] = t >= 0 ? skin.faces[static_cast<std::size_t>(t)].normal : Eigen::Vector3d::Zero();
+    contactNormal_[i] =
+        t >= 0 ? skin.faces[static_cast<std::size_t>(t)].normal : Eigen::Vector3d::Zero();
   }
   counters.densityIterations += solveDensity(p, pairs, dt, contactNormal_);
   counters.solverCapped += stats_.densityCapped;

@@ -54,7 +54,7 @@ struct DivergenceFreeStats {
 };
 
 class PressureSolver_DFSPH final : public PressureSolver {
-public:
+ public:
   PressureSolver_DFSPH(double h, const DivergenceFreeSettings& settings);
 
   // No equation of state: no sound speed in the CFL condition.
@@ -68,8 +68,8 @@ public:
   // acceleration stands in for it (the force pass's before there is any).
   double accelerationBound(double largestFluidAcceleration) const override;
   // The density solve, with the skin normals under touching particles.
-  void correctVelocities(ParticleSet& particles, const ActivePairs& pairs, double dt, const SkinView& skin,
-                         TearCounters& counters) override;
+  void correctVelocities(ParticleSet& particles, const ActivePairs& pairs, double dt,
+                         const SkinView& skin, TearCounters& counters) override;
   PressureHistory history() const override { return history_; }
   void restoreHistory(const PressureHistory& history) override { history_ = history; }
 
@@ -88,7 +88,7 @@ public:
   const DivergenceFreeStats& stats() const { return stats_; }
   const DivergenceFreeSettings& settings() const { return settings_; }
 
-private:
+ private:
   // One Jacobi sweep: error[i] from the current float velocities (rate of density change).
   void densityRates(const ActivePairs& pairs, int n);
   // v_i -= sum_j m_j (kappa_i + kappa_j) g_ij over the pairs.

@@ -4,7 +4,8 @@
 
 namespace lacrima::tears {
 
-void PressureSolver_WCSPH::computePressures(ParticleSet& p, const ActivePairs&, double, TearCounters&) {
+void PressureSolver_WCSPH::computePressures(ParticleSet& p, const ActivePairs&, double,
+                                            TearCounters&) {
   for (int i = 0; i < p.size(); ++i) {
     const auto s = static_cast<std::size_t>(i);
     const double pressure = k_ * (p.density[s] - rho0_);

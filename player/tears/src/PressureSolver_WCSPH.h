@@ -17,18 +17,21 @@
 namespace lacrima::tears {
 
 class PressureSolver_WCSPH final : public PressureSolver {
-public:
+ public:
   PressureSolver_WCSPH(double stiffness, double restDensity, double soundSpeed, bool clampNegative)
       : k_(stiffness), rho0_(restDensity), c_(soundSpeed), clampNegative_(clampNegative) {}
 
   double soundSpeed() const override { return c_; }
   void computePressures(ParticleSet& particles, const ActivePairs& pairs, double remaining,
                         TearCounters& counters) override;
-  double accelerationBound(double largestFluidAcceleration) const override { return largestFluidAcceleration; }
+  double accelerationBound(double largestFluidAcceleration) const override {
+    return largestFluidAcceleration;
+  }
   // Nothing to correct: the pressure force is in the accelerations already.
-  void correctVelocities(ParticleSet&, const ActivePairs&, double, const SkinView&, TearCounters&) override {}
+  void correctVelocities(ParticleSet&, const ActivePairs&, double, const SkinView&,
+                         TearCounters&) override {}
 
-private:
+ private:
   double k_, rho0_, c_;
   bool clampNegative_;
 };

@@ -17,7 +17,8 @@ constexpr int kEnvelopeVertices = 8;
 constexpr int kQueriesBeforeGrid = 1024;
 
 bool finite(const dContactGeom& c) {
-  return std::isfinite(c.depth) && std::isfinite(c.pos[0]) && std::isfinite(c.pos[1]) && std::isfinite(c.pos[2]);
+  return std::isfinite(c.depth) && std::isfinite(c.pos[0]) && std::isfinite(c.pos[1]) &&
+         std::isfinite(c.pos[2]);
 }
 
 }  // namespace
@@ -25,8 +26,11 @@ bool finite(const dContactGeom& c) {
 SkinCollider::SkinCollider(const Eigen::Matrix3Xd& vertices, std::vector<Eigen::Vector3i> triangles,
                            const Eigen::AlignedBox3d& envelope, double particleRadius,
                            double contactBand, double probeRadius)
-    : vertices_(vertices), triangles_(std::move(triangles)), radius_(particleRadius),
-      band_(contactBand), probe_(probeRadius) {
+    : vertices_(vertices),
+      triangles_(std::move(triangles)),
+      radius_(particleRadius),
+      band_(contactBand),
+      probe_(probeRadius) {
   const auto n = static_cast<std::size_t>(vertices.cols());
   for (const auto& t : triangles_)
     if (t.minCoeff() < 0 || static_cast<std::size_t>(t.maxCoeff()) >= n)
@@ -49,7 +53,8 @@ SkinCollider::SkinCollider(const Eigen::Matrix3Xd& vertices, std::vector<Eigen::
   std::vector<int> fill(vertexStart.begin(), vertexStart.end() - 1);
   for (std::size_t t = 0; t < triangles_.size(); ++t)
     for (int k = 0; k < 3; ++k)
-      vertexTriangles[static_cast<std::size_t>(fill[static_cast<std::size_t>(triangles_[t][k])]++)] = static_cast<int>(t);
+      vertexTriangles[static_cast<std::size_t>(
+          fill[static_cast<std::size_t>(triangles_[t][k])]++)] = static_cast<int>(t);
   ringStart_.assign(triangles_.size() + 1, 0);
   ringTriangles_.reserve(vertexTriangles.size() * 3);
   std::vector<int> ring;
@@ -57,7 +62,8 @@ SkinCollider::SkinCollider(const Eigen::Matrix3Xd& vertices, std::vector<Eigen::
     ring.clear();
     for (int k = 0; k < 3; ++k) {
       const auto v = static_cast<std::size_t>(triangles_[t][k]);
-      ring.insert(ring.end(), vertexTriangles.begin() + vertexStart[v], vertexTriangles.begin() + vertexStart[v + 1]);
+      ring.insert(ring.end(), vertexTriangles.begin() + vertexStart[v],
+                  vertexTriangles.begin() + vertexStart[v + 1]);
     }
     std::sort(ring.begin(), ring.end());
     ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
@@ -68,10 +74,12 @@ SkinCollider::SkinCollider(const Eigen::Matrix3Xd& vertices, std::vector<Eigen::
   odeVertices_.assign(3 * (n + kEnvelopeVertices), 0.0);
   for (int c = 0; c < kEnvelopeVertices; ++c) {
     const Eigen::Vector3d corner = envelope.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c));
-    for (int a = 0; a < 3; ++a) odeVertices_[3 * (n + static_cast<std::size_t>(c)) + static_cast<std::size_t>(a)] = corner[a];
+    for (int a = 0; a < 3; ++a)
+      odeVertices_[3 * (n + static_cast<std::size_t>(c)) + static_cast<std::size_t>(a)] = corner[a];
   }
   for (std::size_t v = 0; v < n; ++v)
-    for (int a = 0; a < 3; ++a) odeVertices_[3 * v + static_cast<std::size_t>(a)] = vertices(a, static_cast<Eigen::Index>(v));
+    for (int a = 0; a < 3; ++a)
+      odeVertices_[3 * v + static_cast<std::size_t>(a)] = vertices(a, static_cast<Eigen::Index>(v));
   odeIndices_.reserve(3 * triangles_.size());
   for (const auto& t : triangles_)
     for (int a = 0; a < 3; ++a) odeIndices_.push_back(static_cast<dTriIndex>(t[a]));
@@ -96,10 +104,12 @@ void SkinCollider::computeNormals(const Eigen::Matrix3Xd& v, std::vector<Eigen::
   degenerate.resize(triangles_.size());
   for (std::size_t t = 0; t < triangles_.size(); ++t) {
     const auto& tri = triangles_[t];
-    const Eigen::Vector3d cross = (v.col(tri[1]) - v.col(tri[0])).cross(v.col(tri[2]) - v.col(tri[0]));
+    const Eigen::Vector3d cross =
+        (v.col(tri[1]) - v.col(tri[0])).cross(v.col(tri[2]) - v.col(tri[0]));
     const double area2 = cross.squaredNorm();
     degenerate[t] = !(area2 > degenerateArea2_);  // NaN counts as degenerate
-    normals[t] = degenerate[t] ? Eigen::Vector3d::Zero() : Eigen::Vector3d(cross / std::sqrt(area2));
+    normals[t] =
+        degenerate[t] ? Eigen::Vector3d::Zero() : Eigen::Vector3d(cross / std::sqrt(area2));
   }
 }
 
@@ -107,8 +117,8 @@ void SkinCollider::refreshFaces() {
   faces_.resize(triangles_.size());
   for (std::size_t t = 0; t < triangles_.size(); ++t) {
     const auto& tri = triangles_[t];
-    faces_[t] = makeSkinFace(vertices_.col(tri[0]), vertices_.col(tri[1]), vertices_.col(tri[2]), normals_[t],
-                             degenerate_[t] != 0);
+    faces_[t] = makeSkinFace(vertices_.col(tri[0]), vertices_.col(tri[1]), vertices_.col(tri[2]),
+                             normals_[t], degenerate_[t] != 0);
   }
   gridBuilt_ = false;  // built on demand, for this pose
   queriesThisPose_ = 0;
@@ -127,7 +137,8 @@ bool SkinCollider::gridReady() {
 
 void SkinCollider::writeOdeVertices(const Eigen::Matrix3Xd& v, CollisionCounters& counters) {
   for (Eigen::Index c = 0; c < v.cols(); ++c)
-    for (int a = 0; a < 3; ++a) odeVertices_[3 * static_cast<std::size_t>(c) + static_cast<std::size_t>(a)] = v(a, c);
+    for (int a = 0; a < 3; ++a)
+      odeVertices_[3 * static_cast<std::size_t>(c) + static_cast<std::size_t>(a)] = v(a, c);
   // Refit only: a rebuilt (or re-preprocessed) data object would assert in ODE.
   dGeomTriMeshDataUpdate(data_.get());
   ++counters.trimeshUpdates;
@@ -150,12 +161,14 @@ void SkinCollider::restoreSurface(const Surface& surface, CollisionCounters& cou
   writeOdeVertices(vertices_, counters);
 }
 
-Eigen::Vector3d SkinCollider::pointAt(int t, const Eigen::Vector3d& b, const Eigen::Matrix3Xd& v) const {
+Eigen::Vector3d SkinCollider::pointAt(int t, const Eigen::Vector3d& b,
+                                      const Eigen::Matrix3Xd& v) const {
   const auto& tri = triangles_[static_cast<std::size_t>(t)];
   return b[0] * v.col(tri[0]) + b[1] * v.col(tri[1]) + b[2] * v.col(tri[2]);
 }
 
-bool SkinCollider::consider(const Eigen::Vector3d& x, int t, double radius, SkinHit& hit, bool found) const {
+bool SkinCollider::consider(const Eigen::Vector3d& x, int t, double radius, SkinHit& hit,
+                            bool found) const {
   if (t < 0 || t >= triangleCount()) return false;
   const SkinFace& face = faces_[static_cast<std::size_t>(t)];
   if (face.degenerate) return false;
@@ -163,7 +176,8 @@ bool SkinCollider::consider(const Eigen::Vector3d& x, int t, double radius, Skin
   if ((x - cp.point).dot(face.normal) < 0) return false;  // behind: not ours
   const double distance = (x - cp.point).norm();
   if (!(distance <= radius)) return false;
-  if (found && !(distance < hit.distance || (distance == hit.distance && t < hit.triangle))) return false;
+  if (found && !(distance < hit.distance || (distance == hit.distance && t < hit.triangle)))
+    return false;
   hit = {t, cp.point, cp.barycentric, cp.interior, distance};
   return true;
 }
@@ -177,13 +191,15 @@ bool SkinCollider::contactAround(const Eigen::Vector3d& x, int from, SkinHit& hi
   bool found = false;
   const auto f = static_cast<std::size_t>(from);
   for (int a = ringStart_[f]; a < ringStart_[f + 1]; ++a)
-    if (consider(x, ringTriangles_[static_cast<std::size_t>(a)], radius_ + band_, hit, found)) found = true;
+    if (consider(x, ringTriangles_[static_cast<std::size_t>(a)], radius_ + band_, hit, found))
+      found = true;
   // Over a face, not at a rim of the ring: a contact as good as the global search's. At an edge
   // or vertex of the ring, a triangle further out might be closer: leave it to ODE.
   return found && hit.interior;
 }
 
-bool SkinCollider::nearest(const Eigen::Vector3d& x, double radius, SkinHit& hit, CollisionCounters& counters) {
+bool SkinCollider::nearest(const Eigen::Vector3d& x, double radius, SkinHit& hit,
+                           CollisionCounters& counters) {
   // Nothing consider() accepts within the radius: ODE's list could not hold one either.
   if (gridReady() && !anyWithin(x, radius)) return false;
   bool found = false;
@@ -192,12 +208,14 @@ bool SkinCollider::nearest(const Eigen::Vector3d& x, double radius, SkinHit& hit
     dGeomSphereSetRadius(sphere_.get(), r);
     dGeomSetPosition(sphere_.get(), x.x(), x.y(), x.z());
     ++counters.odeQueries;
-    const int n = dCollide(sphere_.get(), mesh_.get(), kMaxContacts, contacts_.data(), sizeof(dContactGeom));
+    const int n =
+        dCollide(sphere_.get(), mesh_.get(), kMaxContacts, contacts_.data(), sizeof(dContactGeom));
     for (int c = 0; c < n; ++c) {
       const dContactGeom& contact = contacts_[static_cast<std::size_t>(c)];
       if (finite(contact) && consider(x, contact.side2, radius, hit, found)) found = true;
     }
-    if (n < kMaxContacts) return found;  // complete: every triangle reaching into the sphere was listed
+    if (n < kMaxContacts)
+      return found;  // complete: every triangle reaching into the sphere was listed
     // Saturated: ODE stops at the buffer's size, listing triangles in its tree's order, not by
     // distance, so a closer one may be missing. Anything closer than the best so far lies in
     // the sphere of that radius: ask again with it.
@@ -217,7 +235,8 @@ bool SkinCollider::rayFirstHit(const Eigen::Vector3d& from, const Eigen::Vector3
   const double length = d.norm();
   if (!(length > 0)) return false;
   // No triangle's box meets the segment's: no crossing for ODE to find.
-  if (gridReady() && !grid_.any(from.cwiseMin(to), from.cwiseMax(to), [](int) { return true; })) return false;
+  if (gridReady() && !grid_.any(from.cwiseMin(to), from.cwiseMax(to), [](int) { return true; }))
+    return false;
   const Eigen::Vector3d dir = d / length;
   dGeomRaySetLength(ray_.get(), length);
   dGeomRaySet(ray_.get(), from.x(), from.y(), from.z(), dir.x(), dir.y(), dir.z());
@@ -252,7 +271,8 @@ void SkinCollider::makeContact(int i, ParticleSet& p, const SkinHit& hit) {
   p.clearance[s] = 0;
 }
 
-double SkinCollider::moveSurface(const Eigen::Matrix3Xd& next, ParticleSet& p, CollisionCounters& counters) {
+double SkinCollider::moveSurface(const Eigen::Matrix3Xd& next, ParticleSet& p,
+                                 CollisionCounters& counters) {
   double maxDisplacement = 0;
   for (Eigen::Index c = 0; c < next.cols(); ++c)
     maxDisplacement = std::max(maxDisplacement, (next.col(c) - vertices_.col(c)).norm());
@@ -285,7 +305,8 @@ double SkinCollider::moveSurface(const Eigen::Matrix3Xd& next, ParticleSet& p, C
       const Eigen::Vector3d q0 = pointAt(t, p.contact[s].barycentric, vertices_);
       const Eigen::Vector3d o = p.position[s] - q0;
       const double height = o.dot(normals_[st]);
-      p.position[s] = pointAt(t, p.contact[s].barycentric, next) + (o - height * normals_[st]) + height * nextNormals[st];
+      p.position[s] = pointAt(t, p.contact[s].barycentric, next) + (o - height * normals_[st]) +
+                      height * nextNormals[st];
       continue;
     }
     if (sweeping && p.clearance[s] < maxDisplacement) {
@@ -295,7 +316,8 @@ double SkinCollider::moveSurface(const Eigen::Matrix3Xd& next, ParticleSet& p, C
         if (!nextDegenerate[st]) {
           const Eigen::Vector3d o = p.position[s] - hit.point;
           const double height = o.dot(normals_[st]);
-          const Eigen::Vector3d from = pointAt(hit.triangle, hit.barycentric, next) + (o - height * normals_[st]) + height * nextNormals[st];
+          const Eigen::Vector3d from = pointAt(hit.triangle, hit.barycentric, next) +
+                                       (o - height * normals_[st]) + height * nextNormals[st];
           anchors.push_back({i, from});
         }
       }
@@ -327,12 +349,14 @@ double SkinCollider::moveSurface(const Eigen::Matrix3Xd& next, ParticleSet& p, C
   return maxDisplacement;
 }
 
-void SkinCollider::resolve(ParticleSet& p, std::span<const Eigen::Vector3d> previous, CollisionCounters& counters) {
+void SkinCollider::resolve(ParticleSet& p, std::span<const Eigen::Vector3d> previous,
+                           CollisionCounters& counters) {
   for (int i = 0; i < p.size(); ++i) {
     const auto s = static_cast<std::size_t>(i);
     SkinContact& contact = p.contact[s];
     const Eigen::Vector3d moved = p.position[s] - previous[s];
-    const SkinFace* face = contact.triangle >= 0 ? &faces_[static_cast<std::size_t>(contact.triangle)] : nullptr;
+    const SkinFace* face =
+        contact.triangle >= 0 ? &faces_[static_cast<std::size_t>(contact.triangle)] : nullptr;
     if (face && !face->degenerate) {
       const TrianglePoint cp = closestPointOnFace(p.position[s], *face);
       if (cp.interior) {

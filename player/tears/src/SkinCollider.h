@@ -21,10 +21,10 @@
 // Contacts are tracked on their triangle by barycentric coordinates: while the particle's
 // projection stays inside that triangle, no ODE call is made, and when it slides onto one of the
 // triangles around it (sharing a vertex), that one is found from the mesh's adjacency, also
-// without ODE (ODE answers only when the particle ends up over none of them). When the face deforms between
-// frames, a tracked particle is carried with its triangle (same barycentric point, same height
-// along the new normal); a free particle near the skin is anchored to the nearest point of the
-// OLD surface, that anchor is moved with the surface, and a ray from the moved anchor to the
+// without ODE (ODE answers only when the particle ends up over none of them). When the face deforms
+// between frames, a tracked particle is carried with its triangle (same barycentric point, same
+// height along the new normal); a free particle near the skin is anchored to the nearest point of
+// the OLD surface, that anchor is moved with the surface, and a ray from the moved anchor to the
 // particle finds any triangle that swept through it (the jaw snapping open in one frame), which
 // then pushes the particle out along its normal. Free particles keep a conservative clearance
 // (lower bound on their distance to the skin) and are only queried once it is used up.
@@ -46,23 +46,24 @@
 namespace lacrima::tears {
 
 struct CollisionCounters {
-  long long odeQueries = 0;      // dCollide calls (sphere and ray)
-  long long trimeshUpdates = 0;  // dGeomTriMeshDataUpdate calls
-  long long sweptParticles = 0;  // free particles the moving skin swept through, pushed out
-  long long contactsTracked = 0; // contact tests answered from the cached triangle alone
-  long long bruteForceQueries = 0;  // nearest() answered by scanning every triangle (ODE's list was full)
+  long long odeQueries = 0;       // dCollide calls (sphere and ray)
+  long long trimeshUpdates = 0;   // dGeomTriMeshDataUpdate calls
+  long long sweptParticles = 0;   // free particles the moving skin swept through, pushed out
+  long long contactsTracked = 0;  // contact tests answered from the cached triangle alone
+  long long bruteForceQueries =
+      0;  // nearest() answered by scanning every triangle (ODE's list was full)
 };
 
 struct SkinHit {
   int triangle = -1;
-  Eigen::Vector3d point;        // closest point on the triangle
+  Eigen::Vector3d point;  // closest point on the triangle
   Eigen::Vector3d barycentric;
   bool interior = false;
-  double distance = 0;          // from the query point to `point`
+  double distance = 0;  // from the query point to `point`
 };
 
 class SkinCollider {
-public:
+ public:
   // vertices: 3 x n in the head frame; triangles index them (counter-clockwise outside).
   // envelope: the largest region the skin can ever occupy (ODE keeps the geom's bounding box
   // from build time, so it is built with unreferenced vertices at the envelope's corners).
@@ -78,7 +79,8 @@ public:
 
   // Moves the skin to `vertices`, carrying tracked particles and pushing out free particles the
   // skin swept through. Returns the largest vertex displacement.
-  double moveSurface(const Eigen::Matrix3Xd& vertices, ParticleSet& particles, CollisionCounters& counters);
+  double moveSurface(const Eigen::Matrix3Xd& vertices, ParticleSet& particles,
+                     CollisionCounters& counters);
   // Moves the skin without touching particles (first frame, or after the simulation was idle
   // and has no particles).
   void resetSurface(const Eigen::Matrix3Xd& vertices, CollisionCounters& counters);
@@ -86,7 +88,8 @@ public:
   // After a sub-step moved the particles from `previous`: keeps every particle outside the skin,
   // updates contacts (triangle, barycentric) and clearances, zeroes velocity into the skin, and
   // adds the distance slid along the skin to `travelled`.
-  void resolve(ParticleSet& particles, std::span<const Eigen::Vector3d> previous, CollisionCounters& counters);
+  void resolve(ParticleSet& particles, std::span<const Eigen::Vector3d> previous,
+               CollisionCounters& counters);
 
   // The surface state (vertices, normals), for checkpoints: restoring it refits ODE's trimesh to
   // those vertices, which makes every later query answer exactly as it did after the save (the
@@ -102,7 +105,7 @@ public:
   // Nearest skin point within `radius` of x (front side only).
   bool nearest(const Eigen::Vector3d& x, double radius, SkinHit& hit, CollisionCounters& counters);
 
-private:
+ private:
   void computeNormals(const Eigen::Matrix3Xd& v, std::vector<Eigen::Vector3d>& normals,
                       std::vector<std::uint8_t>& degenerate) const;
   void writeOdeVertices(const Eigen::Matrix3Xd& v, CollisionCounters& counters);
@@ -121,8 +124,10 @@ private:
   // the nearest of them within radius + band lies under x (interior), as after a slide onto a
   // neighbouring triangle.
   bool contactAround(const Eigen::Vector3d& x, int from, SkinHit& hit) const;
-  bool rayFirstHit(const Eigen::Vector3d& from, const Eigen::Vector3d& to, SkinHit& hit, CollisionCounters& counters);
-  Eigen::Vector3d pointAt(int t, const Eigen::Vector3d& barycentric, const Eigen::Matrix3Xd& v) const;
+  bool rayFirstHit(const Eigen::Vector3d& from, const Eigen::Vector3d& to, SkinHit& hit,
+                   CollisionCounters& counters);
+  Eigen::Vector3d pointAt(int t, const Eigen::Vector3d& barycentric,
+                          const Eigen::Matrix3Xd& v) const;
   void makeContact(int i, ParticleSet& particles, const SkinHit& hit);
 
   Eigen::Matrix3Xd vertices_;

@@ -21,7 +21,8 @@ void SkinContactForces::applyExternal(ParticleSet& p, const Eigen::Vector3d& g, 
   }
 }
 
-void SkinContactForces::constrain(ParticleSet& p, const SkinView& skin, const Eigen::Vector3d& g, double dt) const {
+void SkinContactForces::constrain(ParticleSet& p, const SkinView& skin, const Eigen::Vector3d& g,
+                                  double dt) const {
   if (dt <= 0) return;
   for (int i = 0; i < p.size(); ++i) {
     const auto s = static_cast<std::size_t>(i);

@@ -44,10 +44,14 @@ struct SkinView {
 };
 
 class SkinContactForces {
-public:
+ public:
   SkinContactForces(double adhesion, double friction, double restDensity, double referenceMass,
                     double particleRadius)
-      : adhesion_(adhesion), friction_(friction), rho0_(restDensity), m0_(referenceMass), radius_(particleRadius) {}
+      : adhesion_(adhesion),
+        friction_(friction),
+        rho0_(restDensity),
+        m0_(referenceMass),
+        radius_(particleRadius) {}
 
   // Adhesion acceleration magnitude for particle i (0 when not touching).
   double adhesionOf(const ParticleSet& particles, int i) const;
@@ -57,9 +61,10 @@ public:
 
   // For particles touching the skin: adhesion (it needs the contact normal), then the normal
   // velocity constraint, then friction.
-  void constrain(ParticleSet& particles, const SkinView& skin, const Eigen::Vector3d& gravity, double dt) const;
+  void constrain(ParticleSet& particles, const SkinView& skin, const Eigen::Vector3d& gravity,
+                 double dt) const;
 
-private:
+ private:
   double adhesion_, friction_, rho0_, m0_, radius_;
 };
 

@@ -5,8 +5,8 @@
 #include "SurfaceMesherKeyMap.h"
 #include "VectorState.h"
 
-#include <lacrima/tears/SurfaceMesher.h>
 #include <lacrima/common/Milliseconds.h>
+#include <lacrima/tears/SurfaceMesher.h>
 #include <lacrima/tears/TearSimulation.h>
 
 #include <algorithm>
@@ -23,12 +23,12 @@ using Int4 = int __attribute__((vector_size(16)));  // lane masks of Float4 comp
 using Lattice = Eigen::Matrix<std::int64_t, 3, 1>;
 
 constexpr int kShift = 2;  // 4^3 cubes: 8^3 ran as fast but doubles the memory of sparse drops
-constexpr int kBlock = 1 << kShift;                         // cubes per block edge
-constexpr int kBlockCorners = kBlock * kBlock * kBlock;     // corners owned by a block
-constexpr int kBlockFloats = 4 * kBlockCorners;            // value, then the gradient's x, y, z
-constexpr int kLines = (kBlock + 1) * (kBlock + 1);         // padded (x, y) lines of a block
+constexpr int kBlock = 1 << kShift;                            // cubes per block edge
+constexpr int kBlockCorners = kBlock * kBlock * kBlock;        // corners owned by a block
+constexpr int kBlockFloats = 4 * kBlockCorners;                // value, then the gradient's x, y, z
+constexpr int kLines = (kBlock + 1) * (kBlock + 1);            // padded (x, y) lines of a block
 constexpr std::uint16_t kFullLine = (1u << (kBlock + 1)) - 1;  // a padded line all inside
-constexpr unsigned kLowBits = (1u << kBlock) - 1;                   // the block's own corners of a line
+constexpr unsigned kLowBits = (1u << kBlock) - 1;              // the block's own corners of a line
 
 // The lattice may span at most 2^20 points per axis (as the cell-keyed mesher allowed), so block
 // keys, relative to the lowest block, pack into 3 x 21 bits.
@@ -37,7 +37,8 @@ constexpr int kKeyBits = 21;
 
 std::uint64_t pack(const Lattice& relative) {
   return (static_cast<std::uint64_t>(relative.x()) << (2 * kKeyBits)) |
-         (static_cast<std::uint64_t>(relative.y()) << kKeyBits) | static_cast<std::uint64_t>(relative.z());
+         (static_cast<std::uint64_t>(relative.y()) << kKeyBits) |
+         static_cast<std::uint64_t>(relative.z());
 }
 
 // floor and ceil of value / step; inline because the baseline x86-64 build calls libm for
@@ -78,7 +79,8 @@ std::array<EdgeStep, 12> edgeSteps() {
   std::array<EdgeStep, 12> steps{};
   for (int e = 0; e < 12; ++e) {
     const int k = MarchingCubesTable::edgeLowerCorner(e);
-    steps[static_cast<std::size_t>(e)] = {k & 1, (k >> 1) & 1, (k >> 2) & 1, MarchingCubesTable::edgeAxis(e)};
+    steps[static_cast<std::size_t>(e)] = {k & 1, (k >> 1) & 1, (k >> 2) & 1,
+                                          MarchingCubesTable::edgeAxis(e)};
   }
   return steps;
 }
@@ -86,7 +88,8 @@ std::array<EdgeStep, 12> edgeSteps() {
 }  // namespace
 
 SurfaceMesher::SurfaceMesher()
-    : field_(std::make_unique<SurfaceMesherField>()), blockMap_(std::make_unique<detail::SurfaceMesherKeyMap>()) {}
+    : field_(std::make_unique<SurfaceMesherField>()),
+      blockMap_(std::make_unique<detail::SurfaceMesherKeyMap>()) {}
 
 SurfaceMesher::~SurfaceMesher() = default;
 
@@ -106,14 +109,17 @@ const TearSurface& SurfaceMesher::update(TearSimulation& simulation, std::size_t
   return surface_;
 }
 
-const TearSurface& SurfaceMesher::build(std::span<const Eigen::Vector3d> positions, std::span<const double> masses,
-                                        const UniformGrid& grid, const SurfaceMesherSettings& settings) {
+const TearSurface& SurfaceMesher::build(std::span<const Eigen::Vector3d> positions,
+                                        std::span<const double> masses, const UniformGrid& grid,
+                                        const SurfaceMesherSettings& settings) {
   clearUpperVectorState();
   const auto start = SteadyClock::now();
   const double h = settings.kernelRadius;
-  if (!(h > 0) || !std::isfinite(h) || !(settings.cubeSize > 0) || !std::isfinite(settings.cubeSize) ||
-      !(settings.iso > 0) || !std::isfinite(settings.iso) || settings.maxCubes == 0)
-    throw std::invalid_argument("surface mesher: kernel radius, cube size, iso and maxCubes must be positive");
+  if (!(h > 0) || !std::isfinite(h) || !(settings.cubeSize > 0) ||
+      !std::isfinite(settings.cubeSize) || !(settings.iso > 0) || !std::isfinite(settings.iso) ||
+      settings.maxCubes == 0)
+    throw std::invalid_argument(
+        "surface mesher: kernel radius, cube size, iso and maxCubes must be positive");
   surface_.clear();
   stats_ = {};
   if (positions.empty()) return surface_;
@@ -123,7 +129,8 @@ const TearSurface& SurfaceMesher::build(std::span<const Eigen::Vector3d> positio
 
   // The box of the particles that carry volume.
   const auto weight = field_->sortedVolumes();
-  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()),
+                  high = -low;
   for (std::size_t t = 0; t < index.particleCount(); ++t) {
     if (weight[t] == 0) continue;
     const Eigen::Vector3d x(index.sortedX()[t], index.sortedY()[t], index.sortedZ()[t]);
@@ -181,7 +188,9 @@ const TearSurface& SurfaceMesher::build(std::span<const Eigen::Vector3d> positio
   return surface_;
 }
 
-std::int32_t SurfaceMesher::blockAt(const Lattice& block) const { return blockMap_->find(pack(block - blockBase_)); }
+std::int32_t SurfaceMesher::blockAt(const Lattice& block) const {
+  return blockMap_->find(pack(block - blockBase_));
+}
 
 // The blocks of every particle's support box, extended by one corner downwards, in particle
 // order (deterministic). Returns false once more than maxBlocks are found.
@@ -194,7 +203,8 @@ bool SurfaceMesher::collectBlocks(double s, std::size_t maxBlocks) {
   Lattice lastLow = Lattice::Constant(1), lastHigh = Lattice::Zero();  // an empty range
   for (std::size_t t = 0; t < index.particleCount(); ++t) {
     if (weight[t] == 0) continue;
-    const SupportBox box = supportOf({index.sortedX()[t], index.sortedY()[t], index.sortedZ()[t]}, h, s);
+    const SupportBox box =
+        supportOf({index.sortedX()[t], index.sortedY()[t], index.sortedZ()[t]}, h, s);
     if (box.empty()) continue;  // no lattice point within h: adds nothing
     Lattice bl, bh;
     for (int a = 0; a < 3; ++a) {
@@ -208,7 +218,9 @@ bool SurfaceMesher::collectBlocks(double s, std::size_t maxBlocks) {
       for (std::int64_t y = bl.y(); y <= bh.y(); ++y)
         for (std::int64_t z = bl.z(); z <= bh.z(); ++z) {
           const Lattice b(x, y, z);
-          if (!blockMap_->insert(pack(b - blockBase_), static_cast<std::int32_t>(block_.size())).second) continue;
+          if (!blockMap_->insert(pack(b - blockBase_), static_cast<std::int32_t>(block_.size()))
+                   .second)
+            continue;
           block_.push_back(b);
           if (block_.size() > maxBlocks) return false;
         }
@@ -220,7 +232,9 @@ void SurfaceMesher::linkBlocks() {
   neighbour_.resize(block_.size());
   for (std::size_t b = 0; b < block_.size(); ++b) {
     neighbour_[b][0] = static_cast<std::int32_t>(b);
-    for (int k = 1; k < 8; ++k) neighbour_[b][static_cast<std::size_t>(k)] = blockAt(block_[b] + Lattice(k & 1, (k >> 1) & 1, k >> 2));
+    for (int k = 1; k < 8; ++k)
+      neighbour_[b][static_cast<std::size_t>(k)] =
+          blockAt(block_[b] + Lattice(k & 1, (k >> 1) & 1, k >> 2));
   }
 }
 
@@ -248,14 +262,16 @@ void SurfaceMesher::splat(double s) {
       bl[a] = blockOf(box.low[a]);
       bh[a] = blockOf(box.high[a]);
     }
-    if (bl != lastLow || bh != lastHigh) {  // look the support's blocks up once per run of particles
+    if (bl != lastLow ||
+        bh != lastHigh) {  // look the support's blocks up once per run of particles
       lastLow = bl;
       lastHigh = bh;
       dims = bh - bl + Lattice::Ones();
       particleBlocks_.clear();
       for (std::int64_t bx = bl.x(); bx <= bh.x(); ++bx)
         for (std::int64_t by = bl.y(); by <= bh.y(); ++by)
-          for (std::int64_t bz = bl.z(); bz <= bh.z(); ++bz) particleBlocks_.push_back(blockAt(Lattice(bx, by, bz)));
+          for (std::int64_t bz = bl.z(); bz <= bh.z(); ++bz)
+            particleBlocks_.push_back(blockAt(Lattice(bx, by, bz)));
     }
     // Per axis and box point: offset from the particle in kernel units, block (relative to bl)
     // and block-local coordinate. Offsets are padded with four zeros for four-wide loads.
@@ -271,7 +287,8 @@ void SurfaceMesher::splat(double s) {
       for (std::int64_t k = 0; k < n[a]; ++k) {
         const std::int64_t lattice = box.low[a] + k;
         offset[static_cast<std::size_t>(a)][k] = first + static_cast<float>(k) * step;
-        axis[static_cast<std::size_t>(a)][k] = {static_cast<int>(blockOf(lattice) - bl[a]), local(lattice)};
+        axis[static_cast<std::size_t>(a)][k] = {static_cast<int>(blockOf(lattice) - bl[a]),
+                                                local(lattice)};
       }
       for (int k = 0; k < 4; ++k) offset[static_cast<std::size_t>(a)][n[a] + k] = 0.0f;
     }
@@ -283,9 +300,12 @@ void SurfaceMesher::splat(double s) {
         const float ey = offset[1][j];
         const float rest = 1.0f - ex * ex - ey * ey;
         if (rest <= 0) continue;
-        const std::size_t row = static_cast<std::size_t>((axis[0][i].block * dims.y() + axis[1][j].block) * dims.z());
-        const auto slot = static_cast<std::size_t>(cornerSlot(axis[0][i].local, axis[1][j].local, 0));
-        const Float4 rest4 = {rest, rest, rest, rest}, ex4 = {ex, ex, ex, ex}, ey4 = {ey, ey, ey, ey};
+        const std::size_t row =
+            static_cast<std::size_t>((axis[0][i].block * dims.y() + axis[1][j].block) * dims.z());
+        const auto slot =
+            static_cast<std::size_t>(cornerSlot(axis[0][i].local, axis[1][j].local, 0));
+        const Float4 rest4 = {rest, rest, rest, rest}, ex4 = {ex, ex, ex, ex},
+                     ey4 = {ey, ey, ey, ey};
         // The z run, one block at a time, four corners per step (contiguous in the block):
         // lanes past the run or outside the support add exact zeros.
         for (std::int64_t k = 0; k < n.z();) {
@@ -293,7 +313,8 @@ void SurfaceMesher::splat(double s) {
           std::int64_t end = k + 1;
           while (end < n.z() && axis[2][end].block == blockZ) ++end;
           const std::int32_t b = particleBlocks_[row + static_cast<std::size_t>(blockZ)];
-          float* base = &sum_[static_cast<std::size_t>(b) * kBlockFloats + slot + static_cast<std::size_t>(axis[2][k].local)];
+          float* base = &sum_[static_cast<std::size_t>(b) * kBlockFloats + slot +
+                              static_cast<std::size_t>(axis[2][k].local)];
           for (; k < end; k += 4, base += 4) {
             const Float4 ez = load4(&offset[2][k]);
             const Float4 d = rest4 - ez * ez;
@@ -335,10 +356,17 @@ void SurfaceMesher::classify(float iso) {
     for (int x = 0; x <= kBlock; ++x)
       for (int y = 0; y <= kBlock; ++y) {
         const int side = (x >> kShift) | ((y >> kShift) << 1);
-        const std::int32_t own = near[static_cast<std::size_t>(side)], above = near[static_cast<std::size_t>(side | 4)];
+        const std::int32_t own = near[static_cast<std::size_t>(side)],
+                           above = near[static_cast<std::size_t>(side | 4)];
         const int slot = (x & (kBlock - 1)) * kBlock + (y & (kBlock - 1));
-        unsigned bits = own >= 0 ? inside_[static_cast<std::size_t>(own) * kBlock * kBlock + static_cast<std::size_t>(slot)] : 0u;
-        if (above >= 0) bits |= (inside_[static_cast<std::size_t>(above) * kBlock * kBlock + static_cast<std::size_t>(slot)] & 1u) << kBlock;
+        unsigned bits = own >= 0 ? inside_[static_cast<std::size_t>(own) * kBlock * kBlock +
+                                           static_cast<std::size_t>(slot)]
+                                 : 0u;
+        if (above >= 0)
+          bits |= (inside_[static_cast<std::size_t>(above) * kBlock * kBlock +
+                           static_cast<std::size_t>(slot)] &
+                   1u)
+                  << kBlock;
         lines[x * (kBlock + 1) + y] = static_cast<std::uint16_t>(bits);
         any |= bits;
         all &= bits;
@@ -353,14 +381,16 @@ void SurfaceMesher::createVertices(double s, float iso) {
   edgeVertex_.resize(block_.size() * kBlockCorners * 3);
   normalFallback_.clear();
   anyFallback_ = false;
-  // Value and gradient sum of a corner (block-relative coordinates up to kBlock); zeros in a missing block.
+  // Value and gradient sum of a corner (block-relative coordinates up to kBlock); zeros in a
+  // missing block.
   const auto corner = [&](std::size_t b, int x, int y, int z) {
     const int side = (x >> kShift) | ((y >> kShift) << 1) | ((z >> kShift) << 2);
     const std::int32_t owner = neighbour_[b][static_cast<std::size_t>(side)];
     std::array<double, 4> v{};
     if (owner < 0) return v;
     const float* at = &sum_[static_cast<std::size_t>(owner) * kBlockFloats +
-                            static_cast<std::size_t>(cornerSlot(x & (kBlock - 1), y & (kBlock - 1), z & (kBlock - 1)))];
+                            static_cast<std::size_t>(
+                                cornerSlot(x & (kBlock - 1), y & (kBlock - 1), z & (kBlock - 1)))];
     for (int k = 0; k < 4; ++k) v[static_cast<std::size_t>(k)] = at[k * kBlockCorners];
     return v;
   };
@@ -370,13 +400,16 @@ void SurfaceMesher::createVertices(double s, float iso) {
     for (int x = 0; x < kBlock; ++x)
       for (int y = 0; y < kBlock; ++y) {
         const unsigned m = lines[x * (kBlock + 1) + y];
-        const std::array<unsigned, 3> crossing = {(m ^ lines[(x + 1) * (kBlock + 1) + y]) & kLowBits,
-                                                  (m ^ lines[x * (kBlock + 1) + y + 1]) & kLowBits, (m ^ (m >> 1)) & kLowBits};
+        const std::array<unsigned, 3> crossing = {
+            (m ^ lines[(x + 1) * (kBlock + 1) + y]) & kLowBits,
+            (m ^ lines[x * (kBlock + 1) + y + 1]) & kLowBits, (m ^ (m >> 1)) & kLowBits};
         for (int axis = 0; axis < 3; ++axis)
-          for (unsigned bits = crossing[static_cast<std::size_t>(axis)]; bits != 0; bits &= bits - 1) {
+          for (unsigned bits = crossing[static_cast<std::size_t>(axis)]; bits != 0;
+               bits &= bits - 1) {
             const int z = std::countr_zero(bits);
             const std::array<double, 4> lower = corner(b, x, y, z);
-            const std::array<double, 4> upper = corner(b, x + (axis == 0), y + (axis == 1), z + (axis == 2));
+            const std::array<double, 4> upper =
+                corner(b, x + (axis == 0), y + (axis == 1), z + (axis == 2));
             // One end is inside (>= iso) and the other outside (< iso), so the values differ and
             // mu is in [0, 1].
             const double a = lower[0], mu = (static_cast<double>(iso) - a) / (upper[0] - a);
@@ -386,14 +419,17 @@ void SurfaceMesher::createVertices(double s, float iso) {
             Eigen::Vector3d g;
             for (int k = 0; k < 3; ++k)
               g[k] = lower[static_cast<std::size_t>(k + 1)] +
-                     mu * (upper[static_cast<std::size_t>(k + 1)] - lower[static_cast<std::size_t>(k + 1)]);
+                     mu * (upper[static_cast<std::size_t>(k + 1)] -
+                           lower[static_cast<std::size_t>(k + 1)]);
             const double norm = g.norm();
             const auto id = static_cast<std::int32_t>(surface_.position_.size());
-            edgeVertex_[(b * kBlockCorners + static_cast<std::size_t>(cornerSlot(x, y, z))) * 3 + static_cast<std::size_t>(axis)] = id;
+            edgeVertex_[(b * kBlockCorners + static_cast<std::size_t>(cornerSlot(x, y, z))) * 3 +
+                        static_cast<std::size_t>(axis)] = id;
             surface_.position_.push_back(p);
             // The sum is ~0.1 on a surface; far below that its direction is single-precision noise.
             const bool usable = norm > 1e-6 && std::isfinite(norm);
-            surface_.normal_.push_back(usable ? Eigen::Vector3d(g / norm) : Eigen::Vector3d::Zero());
+            surface_.normal_.push_back(usable ? Eigen::Vector3d(g / norm)
+                                              : Eigen::Vector3d::Zero());
             normalFallback_.push_back(usable ? 0 : 1);
             anyFallback_ = anyFallback_ || !usable;
           }
@@ -413,7 +449,8 @@ void SurfaceMesher::march() {
     for (int x = 0; x < kBlock; ++x)
       for (int y = 0; y < kBlock; ++y) {
         const unsigned l0 = lines[x * (kBlock + 1) + y], l1 = lines[(x + 1) * (kBlock + 1) + y];
-        const unsigned l2 = lines[x * (kBlock + 1) + y + 1], l3 = lines[(x + 1) * (kBlock + 1) + y + 1];
+        const unsigned l2 = lines[x * (kBlock + 1) + y + 1],
+                       l3 = lines[(x + 1) * (kBlock + 1) + y + 1];
         // Cube z is all outside when no line has bit z or z + 1, all inside when every line has
         // both: only the other cubes of the row are looked at.
         const unsigned any = l0 | l1 | l2 | l3, all = l0 & l1 & l2 & l3;
@@ -422,21 +459,25 @@ void SurfaceMesher::march() {
           const int z = std::countr_zero(mixed);
           // Corner k of the cube: line (k & 3) (x + 1 for bit 0, y + 1 for bit 1), z + (k >> 2).
           const auto face = [&](int at) {
-            return ((l0 >> at) & 1u) | (((l1 >> at) & 1u) << 1) | (((l2 >> at) & 1u) << 2) | (((l3 >> at) & 1u) << 3);
+            return ((l0 >> at) & 1u) | (((l1 >> at) & 1u) << 1) | (((l2 >> at) & 1u) << 2) |
+                   (((l3 >> at) & 1u) << 3);
           };
           const unsigned configuration = face(z) | (face(z + 1) << 4);
           const MarchingCubesCase& c = table[static_cast<int>(configuration)];
           for (int t = 0; t < c.triangleCount; ++t) {
             Eigen::Vector3i triangle;
             for (int v = 0; v < 3; ++v) {
-              const EdgeStep& e = steps[static_cast<std::size_t>(c.edges[static_cast<std::size_t>(3 * t + v)])];
+              const EdgeStep& e =
+                  steps[static_cast<std::size_t>(c.edges[static_cast<std::size_t>(3 * t + v)])];
               const int px = x + e.dx, py = y + e.dy, pz = z + e.dz;
               const int side = (px >> kShift) | ((py >> kShift) << 1) | ((pz >> kShift) << 2);
               // A crossing edge's lower corner lies in an active block (the support boxes were
               // extended downwards), so the owner exists and has created the vertex.
               const auto owner = static_cast<std::size_t>(near[static_cast<std::size_t>(side)]);
               const int slot = cornerSlot(px & (kBlock - 1), py & (kBlock - 1), pz & (kBlock - 1));
-              triangle[v] = edgeVertex_[(owner * kBlockCorners + static_cast<std::size_t>(slot)) * 3 + static_cast<std::size_t>(e.axis)];
+              triangle[v] =
+                  edgeVertex_[(owner * kBlockCorners + static_cast<std::size_t>(slot)) * 3 +
+                              static_cast<std::size_t>(e.axis)];
             }
             surface_.triangle_.push_back(triangle);
           }
@@ -449,15 +490,18 @@ void SurfaceMesher::march() {
 void SurfaceMesher::fallbackNormals() {
   for (const Eigen::Vector3i& t : surface_.triangle_) {
     const Eigen::Vector3d& a = surface_.position_[static_cast<std::size_t>(t[0])];
-    const Eigen::Vector3d areaNormal = (surface_.position_[static_cast<std::size_t>(t[1])] - a)
-                                           .cross(surface_.position_[static_cast<std::size_t>(t[2])] - a);
+    const Eigen::Vector3d areaNormal =
+        (surface_.position_[static_cast<std::size_t>(t[1])] - a)
+            .cross(surface_.position_[static_cast<std::size_t>(t[2])] - a);
     for (int k = 0; k < 3; ++k)
-      if (normalFallback_[static_cast<std::size_t>(t[k])]) surface_.normal_[static_cast<std::size_t>(t[k])] += areaNormal;
+      if (normalFallback_[static_cast<std::size_t>(t[k])])
+        surface_.normal_[static_cast<std::size_t>(t[k])] += areaNormal;
   }
   for (std::size_t v = 0; v < surface_.normal_.size(); ++v) {
     if (!normalFallback_[v]) continue;
     const double norm = surface_.normal_[v].norm();
-    surface_.normal_[v] = norm > 0 ? Eigen::Vector3d(surface_.normal_[v] / norm) : Eigen::Vector3d::UnitY();
+    surface_.normal_[v] =
+        norm > 0 ? Eigen::Vector3d(surface_.normal_[v] / norm) : Eigen::Vector3d::UnitY();
   }
 }
 

@@ -1,6 +1,6 @@
+#include "SurfaceMesherField.h"
 #include "Float4.h"
 #include "Kernels.h"
-#include "SurfaceMesherField.h"
 
 #include <algorithm>
 #include <array>
@@ -31,13 +31,16 @@ void SurfaceMesherField::forNeighbours(const Eigen::Vector3d& x, Visit&& visit) 
     }
 }
 
-void SurfaceMesherField::bind(std::span<const Eigen::Vector3d> positions, std::span<const double> masses,
-                              const UniformGrid& grid, double h) {
-  if (!(h > 0) || !std::isfinite(h)) throw std::invalid_argument("colour field: kernel radius must be positive");
-  if (masses.size() != positions.size()) throw std::invalid_argument("colour field: one mass per particle");
+void SurfaceMesherField::bind(std::span<const Eigen::Vector3d> positions,
+                              std::span<const double> masses, const UniformGrid& grid, double h) {
+  if (!(h > 0) || !std::isfinite(h))
+    throw std::invalid_argument("colour field: kernel radius must be positive");
+  if (masses.size() != positions.size())
+    throw std::invalid_argument("colour field: one mass per particle");
   const CellIndex& index = grid.index();
   if (index.particleCount() != positions.size() || std::abs(index.edge() - h) > 1e-12 * h)
-    throw std::invalid_argument("colour field: the grid is not built over these particles with cell edge h");
+    throw std::invalid_argument(
+        "colour field: the grid is not built over these particles with cell edge h");
   index_ = &index;
   const Poly6Kernel kernel(h);
   h_ = h;
@@ -81,7 +84,8 @@ void SurfaceMesherField::bind(std::span<const Eigen::Vector3d> positions, std::s
     const Eigen::Vector3i cell = index.cellCoordinates(c);
     std::array<CellIndex::Range, 9> rows;
     for (int dx = -1, r = 0; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy, ++r) rows[static_cast<std::size_t>(r)] = index.row(cell.x() + dx, cell.y() + dy, cell.z());
+      for (int dy = -1; dy <= 1; ++dy, ++r)
+        rows[static_cast<std::size_t>(r)] = index.row(cell.x() + dx, cell.y() + dy, cell.z());
     for (std::uint32_t s = index.cellStart(c); s < index.cellStart(c + 1); ++s) {
       const Float4 xs = {fx_[s], fx_[s], fx_[s], fx_[s]}, ys = {fy_[s], fy_[s], fy_[s], fy_[s]},
                    zs = {fz_[s], fz_[s], fz_[s], fz_[s]};
@@ -109,7 +113,8 @@ void SurfaceMesherField::bind(std::span<const Eigen::Vector3d> positions, std::s
 
 double SurfaceMesherField::value(const Eigen::Vector3d& x) const {
   double c = 0;
-  forNeighbours(x, [&](std::uint32_t t, double, double, double, double d) { c += volume_[t] * d * d * d; });
+  forNeighbours(
+      x, [&](std::uint32_t t, double, double, double, double d) { c += volume_[t] * d * d * d; });
   return w_ * c;
 }
 

@@ -33,11 +33,11 @@
 namespace lacrima::tears {
 
 class SurfaceMesherField {
-public:
+ public:
   // `grid` must be built over `positions` with cell edge h and must outlive the queries.
   // Throws std::invalid_argument if it was not (other edge, other particle count).
-  void bind(std::span<const Eigen::Vector3d> positions, std::span<const double> masses, const UniformGrid& grid,
-            double h);
+  void bind(std::span<const Eigen::Vector3d> positions, std::span<const double> masses,
+            const UniformGrid& grid, double h);
 
   double kernelRadius() const { return h_; }
   double value(const Eigen::Vector3d& x) const;
@@ -50,7 +50,7 @@ public:
   // (0 for a particle that contributes nothing: non-positive mass, non-finite position).
   std::span<const float> sortedSplatWeights() const { return splat_; }
 
-private:
+ private:
   template <typename Visit>
   void forNeighbours(const Eigen::Vector3d& x, Visit&& visit) const;
 

@@ -11,7 +11,7 @@
 namespace lacrima::tears::detail {
 
 class SurfaceMesherKeyMap {
-public:
+ public:
   // Empties the map and makes room for `expected` keys without growing.
   void reset(std::size_t expected) {
     std::size_t capacity = 16;
@@ -53,7 +53,7 @@ public:
     }
   }
 
-private:
+ private:
   static int log2(std::size_t v) {
     int b = 0;
     while ((std::size_t{1} << b) < v) ++b;

@@ -4,7 +4,8 @@
 
 namespace lacrima::tears {
 
-std::unique_ptr<SurfaceTension> SurfaceTension::create(SurfaceTensionModel model, const ScaledParameters& p) {
+std::unique_ptr<SurfaceTension> SurfaceTension::create(SurfaceTensionModel model,
+                                                       const ScaledParameters& p) {
   if (model == SurfaceTensionModel::Akinci)
     return std::make_unique<SurfaceTension_Akinci2013>(p.h, p.tensionGamma, p.restDensity);
   return std::make_unique<SurfaceTension_Mueller2003>(p.h, p.tensionSigma);

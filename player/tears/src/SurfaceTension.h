@@ -18,15 +18,17 @@
 namespace lacrima::tears {
 
 class SurfaceTension {
-public:
+ public:
   virtual ~SurfaceTension() = default;
   // The model the options name, with the strength the tear parameters give it.
-  static std::unique_ptr<SurfaceTension> create(SurfaceTensionModel model, const ScaledParameters& parameters);
+  static std::unique_ptr<SurfaceTension> create(SurfaceTensionModel model,
+                                                const ScaledParameters& parameters);
 
   // Whether the force pass is to sum the colour field's gradient and Laplacian.
   virtual bool needsColourField() const = 0;
   // Adds the tension's accelerations for the sub-step's pairs; `pass` is the sub-step's force pass.
-  virtual void addAccelerations(ParticleSet& particles, const ActivePairs& pairs, const FluidForcePass& pass) = 0;
+  virtual void addAccelerations(ParticleSet& particles, const ActivePairs& pairs,
+                                const FluidForcePass& pass) = 0;
 };
 
 }  // namespace lacrima::tears

@@ -2,7 +2,8 @@
 
 namespace lacrima::tears {
 
-void SurfaceTension_Akinci2013::addAccelerations(ParticleSet& p, const ActivePairs& pairs, const FluidForcePass&) {
+void SurfaceTension_Akinci2013::addAccelerations(ParticleSet& p, const ActivePairs& pairs,
+                                                 const FluidForcePass&) {
   if (gamma_ <= 0) return;
   const auto n = static_cast<std::size_t>(p.size());
   normal_.assign(n, Eigen::Vector3d::Zero());

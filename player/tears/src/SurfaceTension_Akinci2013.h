@@ -1,8 +1,8 @@
 #pragma once
 // Surface tension of Akinci, Akinci & Teschner 2013 ("Versatile surface tension and adhesion for
 // SPH fluids"): cohesion between neighbours plus a term that minimises the surface's curvature,
-//   F_ij = K_ij (-gamma m_i m_j C(r) r_hat - gamma m_i (n_i - n_j)),  K_ij = 2 rho0 / (rho_i + rho_j),
-//   n_i = h sum_j m_j / rho_j grad W_poly6(x_i - x_j)      (scaled surface normal),
+//   F_ij = K_ij (-gamma m_i m_j C(r) r_hat - gamma m_i (n_i - n_j)),  K_ij = 2 rho0 / (rho_i +
+//   rho_j), n_i = h sum_j m_j / rho_j grad W_poly6(x_i - x_j)      (scaled surface normal),
 // a_i = sum_j F_ij / m_i, with the cohesion spline C (Kernels.h: repulsive below h / 2,
 // attractive beyond, so cohesion does not clump particles). K_ij strengthens the force where
 // the neighbourhood is thin, the surface. Its two passes over the pairs run after the force pass.
@@ -14,14 +14,15 @@
 namespace lacrima::tears {
 
 class SurfaceTension_Akinci2013 final : public SurfaceTension {
-public:
+ public:
   SurfaceTension_Akinci2013(double h, double gamma, double restDensity)
       : h_(h), w_(h), c_(h), gamma_(gamma), rho0_(restDensity) {}
 
   bool needsColourField() const override { return false; }
-  void addAccelerations(ParticleSet& particles, const ActivePairs& pairs, const FluidForcePass& pass) override;
+  void addAccelerations(ParticleSet& particles, const ActivePairs& pairs,
+                        const FluidForcePass& pass) override;
 
-private:
+ private:
   double h_;
   Poly6Kernel w_;
   CohesionKernel c_;

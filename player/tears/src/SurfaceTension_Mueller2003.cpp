@@ -2,7 +2,8 @@
 
 namespace lacrima::tears {
 
-void SurfaceTension_Mueller2003::addAccelerations(ParticleSet& p, const ActivePairs&, const FluidForcePass& pass) {
+void SurfaceTension_Mueller2003::addAccelerations(ParticleSet& p, const ActivePairs&,
+                                                  const FluidForcePass& pass) {
   if (sigma_ <= 0) return;
   const auto gradient = pass.colourGradient();
   const auto laplacian = pass.colourLaplacian();

@@ -12,13 +12,14 @@
 namespace lacrima::tears {
 
 class SurfaceTension_Mueller2003 final : public SurfaceTension {
-public:
+ public:
   SurfaceTension_Mueller2003(double h, double sigma) : h_(h), sigma_(sigma) {}
 
   bool needsColourField() const override { return sigma_ > 0; }
-  void addAccelerations(ParticleSet& particles, const ActivePairs& pairs, const FluidForcePass& pass) override;
+  void addAccelerations(ParticleSet& particles, const ActivePairs& pairs,
+                        const FluidForcePass& pass) override;
 
-private:
+ private:
   double h_;
   double sigma_;
 };

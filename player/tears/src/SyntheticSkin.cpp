@@ -11,9 +11,10 @@ SyntheticSkin makeCheekSheet(const CheekSheetOptions& o) {
   const int rows = std::max(2, static_cast<int>(std::ceil(o.height / o.edge))) + 1;
   const double tilt = o.tiltDegrees * std::numbers::pi / 180.0;
   const Eigen::AngleAxisd lean(-tilt, Eigen::Vector3d::UnitX());  // top moves towards -z
-  auto surfacePoint = [&](double u, double v) {  // u across, v up, both centred
+  auto surfacePoint = [&](double u, double v) {                   // u across, v up, both centred
     const double angle = u / o.cylinderRadius;
-    const Eigen::Vector3d flat(o.cylinderRadius * std::sin(angle), v, o.cylinderRadius * (std::cos(angle) - 1.0));
+    const Eigen::Vector3d flat(o.cylinderRadius * std::sin(angle), v,
+                               o.cylinderRadius * (std::cos(angle) - 1.0));
     return Eigen::Vector3d(lean * flat);
   };
 
@@ -43,7 +44,8 @@ SyntheticSkin makeCheekSheet(const CheekSheetOptions& o) {
   }
 
   Eigen::AlignedBox3d box;
-  for (Eigen::Index i = 0; i < sheet.positions.cols(); ++i) box.extend(sheet.positions.col(i).cast<double>());
+  for (Eigen::Index i = 0; i < sheet.positions.cols(); ++i)
+    box.extend(sheet.positions.col(i).cast<double>());
   sheet.centre = box.center();
   sheet.radius = 0.5 * box.sizes().y();
   // Sources 0.3 dm either side of the middle, 0.25 dm below the top edge, slightly in front.

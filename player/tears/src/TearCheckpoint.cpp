@@ -37,10 +37,11 @@ std::size_t TearCheckpoint::bytes() const {
   if (!state_) return 0;
   const ParticleSet& p = state_->particles;
   const std::size_t n = static_cast<std::size_t>(p.size());
-  const std::size_t perParticle = 3 * sizeof(Eigen::Vector3d) + 7 * sizeof(double) + sizeof(std::uint64_t) +
-                                  sizeof(Eye) + sizeof(SkinContact);
-  const std::size_t pairs = (n + 1 + state_->candidates.pairCount()) * sizeof(std::uint32_t) + n * sizeof(Eigen::Vector3d) +
-                            n * (sizeof(int) + 3 * sizeof(double)) + state_->cells.cellCount() * 4 * sizeof(std::uint64_t);
+  const std::size_t perParticle = 3 * sizeof(Eigen::Vector3d) + 7 * sizeof(double) +
+                                  sizeof(std::uint64_t) + sizeof(Eye) + sizeof(SkinContact);
+  const std::size_t pairs = (n + 1 + state_->candidates.pairCount()) * sizeof(std::uint32_t) +
+                            n * sizeof(Eigen::Vector3d) + n * (sizeof(int) + 3 * sizeof(double)) +
+                            state_->cells.cellCount() * 4 * sizeof(std::uint64_t);
   const std::size_t skin = static_cast<std::size_t>(state_->skin.vertices.size()) * sizeof(double) +
                            state_->skin.normals.size() * (sizeof(Eigen::Vector3d) + 1);
   return sizeof(State) + n * perParticle + pairs + skin;
@@ -49,8 +50,8 @@ std::size_t TearCheckpoint::bytes() const {
 TearCheckpoint TearSimulation::checkpoint() const {
   const Internals& in = *internals_;
   auto state = std::make_shared<TearCheckpoint::State>(TearCheckpoint::State{
-      instance_, particles_, in.candidates, in.cellIndex, in.emitter, in.collider->surface(), skinStale_, sources_, box_,
-      trailVolume_, in.pressure->history()});
+      instance_, particles_, in.candidates, in.cellIndex, in.emitter, in.collider->surface(),
+      skinStale_, sources_, box_, trailVolume_, in.pressure->history()});
   TearCheckpoint c;
   c.state_ = std::move(state);
   return c;
@@ -59,7 +60,8 @@ TearCheckpoint TearSimulation::checkpoint() const {
 void TearSimulation::restore(const TearCheckpoint& checkpoint) {
   if (checkpoint.empty()) throw std::invalid_argument("restoring an empty tear checkpoint");
   const TearCheckpoint::State& s = *checkpoint.state_;
-  if (s.instance != instance_) throw std::invalid_argument("the tear checkpoint was taken from another simulation");
+  if (s.instance != instance_)
+    throw std::invalid_argument("the tear checkpoint was taken from another simulation");
   Internals& in = *internals_;
   CollisionCounters c;
   in.collider->restoreSurface(s.skin, c);

@@ -39,21 +39,27 @@ std::uint64_t nextInstance() {
 
 TearSimulation::Internals::Internals(const ScaledParameters& p, const TearSettings& settings,
                                      const SimulationOptions& options, const UnitScale& scale)
-    : octree(p.nodeSize), density(p.h), viscosity(p.kinematicViscosity), forcePass(p.h),
+    : octree(p.nodeSize),
+      density(p.h),
+      viscosity(p.kinematicViscosity),
+      forcePass(p.h),
       contact(p.adhesion, p.friction, p.restDensity, p.particleMass, p.particleRadius),
-      massLoss(p.particleMass, options.trailDecayMetres * scale.headUnitsPerMetre, options.massFloor),
+      massLoss(p.particleMass, options.trailDecayMetres * scale.headUnitsPerMetre,
+               options.massFloor),
       emitter(p.spacing, p.particleMass),
       stepper(options.lambdaCfl, options.lambdaAcceleration, options.lambdaViscosity) {
   chooseMethods(p, settings, options);
 }
 
-void TearSimulation::Internals::chooseMethods(const ScaledParameters& p, const TearSettings& settings,
+void TearSimulation::Internals::chooseMethods(const ScaledParameters& p,
+                                              const TearSettings& settings,
                                               const SimulationOptions& options) {
   pressure = PressureSolver::create(options.pressureSolver, p, settings, options);
   tension = SurfaceTension::create(options.surfaceTension, p);
 }
 
-TearSimulation::TearSimulation(const Eigen::Matrix3Xf& rest, const std::vector<Eigen::Vector3i>& triangles,
+TearSimulation::TearSimulation(const Eigen::Matrix3Xf& rest,
+                               const std::vector<Eigen::Vector3i>& triangles,
                                const TearSettings& settings, const SimulationOptions& options)
     : instance_(nextInstance()), settings_(settings), options_(options) {
   if (triangles.empty()) throw std::invalid_argument("the skin has no triangles");
@@ -62,16 +68,20 @@ TearSimulation::TearSimulation(const Eigen::Matrix3Xf& rest, const std::vector<E
   std::map<int, int> compact;
   for (const auto& t : triangles) {
     for (int a = 0; a < 3; ++a) {
-      if (t[a] < 0 || t[a] >= rest.cols()) throw std::invalid_argument("skin triangle refers to a missing vertex");
-      if (compact.emplace(t[a], static_cast<int>(skinVertices_.size())).second) skinVertices_.push_back(t[a]);
+      if (t[a] < 0 || t[a] >= rest.cols())
+        throw std::invalid_argument("skin triangle refers to a missing vertex");
+      if (compact.emplace(t[a], static_cast<int>(skinVertices_.size())).second)
+        skinVertices_.push_back(t[a]);
     }
   }
-  for (const auto& t : triangles) skinTriangles_.emplace_back(compact[t[0]], compact[t[1]], compact[t[2]]);
+  for (const auto& t : triangles)
+    skinTriangles_.emplace_back(compact[t[0]], compact[t[1]], compact[t[2]]);
   skinPositions_.resize(3, static_cast<Eigen::Index>(skinVertices_.size()));
   for (std::size_t v = 0; v < skinVertices_.size(); ++v)
     skinPositions_.col(static_cast<Eigen::Index>(v)) = rest.col(skinVertices_[v]).cast<double>();
 
-  scale_ = UnitScale::fromHeadHeight(options_.headHeight > 0 ? options_.headHeight : heightOf(rest, skinVertices_));
+  scale_ = UnitScale::fromHeadHeight(options_.headHeight > 0 ? options_.headHeight
+                                                             : heightOf(rest, skinVertices_));
   params_ = ScaledParameters::from(settings_, scale_);
   internals_ = std::make_unique<Internals>(params_, settings_, options_, scale_);
 
@@ -94,31 +104,36 @@ TearSimulation::TearSimulation(const Eigen::Matrix3Xf& rest, const std::vector<E
   const Eigen::Vector3d grow = 0.5 * box_.sizes();
   envelope.min() -= grow;
   envelope.max() += grow;
-  internals_->collider = std::make_unique<SkinCollider>(skinPositions_, skinTriangles_, envelope, params_.particleRadius,
-                                                         params_.contactBand,
-                                                         std::max(0.0, options_.collisionProbeKernels) * params_.h);
+  internals_->collider = std::make_unique<SkinCollider>(
+      skinPositions_, skinTriangles_, envelope, params_.particleRadius, params_.contactBand,
+      std::max(0.0, options_.collisionProbeKernels) * params_.h);
 }
 
 TearSimulation::~TearSimulation() = default;
 
-std::unique_ptr<TearSimulation> TearSimulation::forHead(const HeadMesh& head, const TearSettings& settings,
-                                                        const SimulationOptions& options, const HeadTearOptions& headOptions) {
+std::unique_ptr<TearSimulation> TearSimulation::forHead(const HeadMesh& head,
+                                                        const TearSettings& settings,
+                                                        const SimulationOptions& options,
+                                                        const HeadTearOptions& headOptions) {
   const HeadSubmesh* skin = head.findSubmesh("skin");
   if (!skin) throw std::invalid_argument("the head has no 'skin' sub-mesh");
   std::vector<Eigen::Vector3i> surface = skin->triangles;
   if (headOptions.eyesCollide)
     for (const char* name : {"eye_l", "eye_r", "cornea_l", "cornea_r"})
-      if (const HeadSubmesh* eye = head.findSubmesh(name)) surface.insert(surface.end(), eye->triangles.begin(), eye->triangles.end());
+      if (const HeadSubmesh* eye = head.findSubmesh(name))
+        surface.insert(surface.end(), eye->triangles.begin(), eye->triangles.end());
   auto simulation = std::make_unique<TearSimulation>(head.positions, surface, settings, options);
   // The unit scale is the height of all collision vertices: the eyes lie inside the skin's.
-  for (auto [eye, given] : {std::pair{Eye::Left, &headOptions.leftSource}, std::pair{Eye::Right, &headOptions.rightSource}})
+  for (auto [eye, given] : {std::pair{Eye::Left, &headOptions.leftSource},
+                            std::pair{Eye::Right, &headOptions.rightSource}})
     simulation->setSource(eye, *given ? **given : defaultTearSource(head, eye));
   return simulation;
 }
 
 Eigen::Vector3d TearSimulation::defaultTearSource(const HeadMesh& head, Eye eye) {
   const HeadSubmesh* skin = head.findSubmesh("skin");
-  if (!skin || skin->triangles.empty()) throw std::invalid_argument("the head has no 'skin' sub-mesh");
+  if (!skin || skin->triangles.empty())
+    throw std::invalid_argument("the head has no 'skin' sub-mesh");
   const HeadSubmesh* ball = head.findSubmesh(eye == Eye::Left ? "eye_l" : "eye_r");
   if (!ball || ball->vertexCount == 0) {
     // No eye to go by: the constructor's rule for a head of this skin's size.
@@ -126,7 +141,8 @@ Eigen::Vector3d TearSimulation::defaultTearSource(const HeadMesh& head, Eye eye)
     for (const auto& t : skin->triangles)
       for (int a = 0; a < 3; ++a) bounds.extend(head.positions.col(t[a]).cast<double>());
     const double height = bounds.sizes().y(), side = eye == Eye::Left ? 1 : -1;
-    return {bounds.center().x() + side * 0.11 * height, bounds.max().y() - 0.35 * height, bounds.max().z()};
+    return {bounds.center().x() + side * 0.11 * height, bounds.max().y() - 0.35 * height,
+            bounds.max().z()};
   }
   // The eyeball: its mesh may be the front cap only, so the radius comes from the width and the
   // centre lies one radius behind the front-most point.
@@ -136,7 +152,8 @@ Eigen::Vector3d TearSimulation::defaultTearSource(const HeadMesh& head, Eye eye)
   const double radius = 0.5 * std::max(box.sizes().x(), box.sizes().y());
   const Eigen::Vector3d centre(box.center().x(), box.center().y(), box.max().z() - radius);
   const double below = 25 * std::numbers::pi / 180;
-  const Eigen::Vector3d target = centre + 1.1 * radius * Eigen::Vector3d(0, -std::sin(below), std::cos(below));
+  const Eigen::Vector3d target =
+      centre + 1.1 * radius * Eigen::Vector3d(0, -std::sin(below), std::cos(below));
   // The nearest skin vertex (first in triangle order on ties: deterministic).
   double best = std::numeric_limits<double>::infinity();
   Eigen::Vector3d source = target;
@@ -174,7 +191,8 @@ EyeWetness TearSimulation::wetness(Eye eye) const {
   EyeWetness w;
   w.count = count(eye);
   w.trailVolume = trailVolume_[static_cast<std::size_t>(eye)];
-  const double referenceVolume = options_.wetnessReferenceParticles * params_.particleMass / params_.restDensity;
+  const double referenceVolume =
+      options_.wetnessReferenceParticles * params_.particleMass / params_.restDensity;
   w.skin = 1.0 - std::exp(-w.trailVolume / referenceVolume);
   w.eye = std::min(1.0, w.count / options_.wetnessReferenceParticles);
   return w;
@@ -187,7 +205,8 @@ void TearSimulation::step(const Eigen::Matrix3Xf& positions, const FapValues& ch
 
 void TearSimulation::updateSkin(const Eigen::Matrix3Xf& positions) {
   for (std::size_t v = 0; v < skinVertices_.size(); ++v)
-    skinPositions_.col(static_cast<Eigen::Index>(v)) = positions.col(skinVertices_[v]).cast<double>();
+    skinPositions_.col(static_cast<Eigen::Index>(v)) =
+        positions.col(skinVertices_[v]).cast<double>();
   CollisionCounters c;
   if (skinStale_) {
     internals_->collider->resetSurface(skinPositions_, c);
@@ -203,7 +222,8 @@ SkinPoint TearSimulation::nearestSkinPoint(const Eigen::Vector3d& x, double radi
   SkinHit hit;
   CollisionCounters c;
   if (x.allFinite() && radius > 0 && internals_->collider->nearest(x, radius, hit, c))
-    result = {hit.triangle, hit.point, internals_->collider->faceNormal(hit.triangle), hit.distance};
+    result = {hit.triangle, hit.point, internals_->collider->faceNormal(hit.triangle),
+              hit.distance};
   addCollisionCounters(counters_, c);
   return result;
 }
@@ -223,12 +243,17 @@ EmissionSite TearSimulation::siteFor(Eye eye) {
   return site;
 }
 
-void TearSimulation::step(const Eigen::Matrix3Xf& positions, int leftCount, int rightCount, double dt) {
+void TearSimulation::step(const Eigen::Matrix3Xf& positions, int leftCount, int rightCount,
+                          double dt) {
   clearUpperVectorState();
   ++counters_.frames;
   times_ = {};
   const std::array<int, 2> target{clampCount(leftCount), clampCount(rightCount)};
-  if (positions.cols() < static_cast<Eigen::Index>(skinVertices_.empty() ? 0 : *std::max_element(skinVertices_.begin(), skinVertices_.end()) + 1))
+  if (positions.cols() <
+      static_cast<Eigen::Index>(
+          skinVertices_.empty()
+              ? 0
+              : *std::max_element(skinVertices_.begin(), skinVertices_.end()) + 1))
     throw std::invalid_argument("fewer head positions than the skin refers to");
 
   if (target[0] == 0 && target[1] == 0 && particles_.empty()) {
@@ -243,12 +268,15 @@ void TearSimulation::step(const Eigen::Matrix3Xf& positions, int leftCount, int 
     if (excess > 0) {
       double before = 0, after = 0;
       for (int i = 0; i < particles_.size(); ++i)
-        if (particles_.eye[static_cast<std::size_t>(i)] == eye) before += particles_.mass[static_cast<std::size_t>(i)];
+        if (particles_.eye[static_cast<std::size_t>(i)] == eye)
+          before += particles_.mass[static_cast<std::size_t>(i)];
       counters_.removed += internals_->emitter.removeOldest(particles_, eye, excess);
       internals_->candidates.invalidate();
       for (int i = 0; i < particles_.size(); ++i)
-        if (particles_.eye[static_cast<std::size_t>(i)] == eye) after += particles_.mass[static_cast<std::size_t>(i)];
-      trailVolume_[static_cast<std::size_t>(e)] += (before - after) / params_.restDensity;  // dried on the skin
+        if (particles_.eye[static_cast<std::size_t>(i)] == eye)
+          after += particles_.mass[static_cast<std::size_t>(i)];
+      trailVolume_[static_cast<std::size_t>(e)] +=
+          (before - after) / params_.restDensity;  // dried on the skin
     }
   }
   exposedGridStale_ = true;

@@ -26,13 +26,14 @@
 namespace lacrima::tears {
 
 struct TearSimulation::Internals {
-  Internals(const ScaledParameters& parameters, const TearSettings& settings, const SimulationOptions& options,
-            const UnitScale& scale);
+  Internals(const ScaledParameters& parameters, const TearSettings& settings,
+            const SimulationOptions& options, const UnitScale& scale);
   // (Re)creates the pressure solver and the surface tension the options name.
-  void chooseMethods(const ScaledParameters& parameters, const TearSettings& settings, const SimulationOptions& options);
+  void chooseMethods(const ScaledParameters& parameters, const TearSettings& settings,
+                     const SimulationOptions& options);
 
   std::unique_ptr<SkinCollider> collider;  // made once the simulation box is known
-  CellIndex cellIndex;     // cell edge h (1 + skin), orders the particles
+  CellIndex cellIndex;                     // cell edge h (1 + skin), orders the particles
   VerletPairs candidates;
   ActivePairs pairs;
   NeighbourList fullList;  // octree comparison path only

@@ -15,7 +15,8 @@ void TearSimulation::recycleEscaped(EmissionSites& sites) {
   for (auto& slots : escaped) slots.clear();
   for (int i = 0; i < particles_.size(); ++i) {
     const auto s = static_cast<std::size_t>(i);
-    if (!box_.contains(particles_.position[s])) escaped[static_cast<std::size_t>(particles_.eye[s])].push_back(i);
+    if (!box_.contains(particles_.position[s]))
+      escaped[static_cast<std::size_t>(particles_.eye[s])].push_back(i);
   }
   for (int e = 0; e < 2; ++e) {
     const auto& slots = escaped[static_cast<std::size_t>(e)];
@@ -24,7 +25,8 @@ void TearSimulation::recycleEscaped(EmissionSites& sites) {
       sites.site[static_cast<std::size_t>(e)] = siteFor(static_cast<Eye>(e));
       sites.known[static_cast<std::size_t>(e)] = true;
     }
-    internals_->emitter.respawn(particles_, static_cast<Eye>(e), slots, sites.site[static_cast<std::size_t>(e)]);
+    internals_->emitter.respawn(particles_, static_cast<Eye>(e), slots,
+                                sites.site[static_cast<std::size_t>(e)]);
     counters_.recycled += static_cast<long long>(slots.size());
   }
 }
@@ -79,17 +81,23 @@ void TearSimulation::simulate(double frameDt) {
     times_.density += millisecondsSince(start);
 
     start = SteadyClock::now();
-    std::fill(particles_.acceleration.begin(), particles_.acceleration.end(), Eigen::Vector3d::Zero());
-    const double relativeSpeed = in.forcePass.run(particles_, in.pairs, in.viscosity, in.tension->needsColourField());
+    std::fill(particles_.acceleration.begin(), particles_.acceleration.end(),
+              Eigen::Vector3d::Zero());
+    const double relativeSpeed =
+        in.forcePass.run(particles_, in.pairs, in.viscosity, in.tension->needsColourField());
     in.tension->addAccelerations(particles_, in.pairs, in.forcePass);
     double maxAcceleration2 = 0, maxRate = 0;
     for (int i = 0; i < particles_.size(); ++i) {
-      maxAcceleration2 = std::max(maxAcceleration2, particles_.acceleration[static_cast<std::size_t>(i)].squaredNorm());
+      maxAcceleration2 = std::max(
+          maxAcceleration2, particles_.acceleration[static_cast<std::size_t>(i)].squaredNorm());
       maxRate = std::max(maxRate, particles_.viscosityRate[static_cast<std::size_t>(i)]);
     }
-    const double longest = options_.maxSubstepSeconds > 0 ? std::min(remaining, options_.maxSubstepSeconds) : remaining;
+    const double longest = options_.maxSubstepSeconds > 0
+                               ? std::min(remaining, options_.maxSubstepSeconds)
+                               : remaining;
     StepChoice choice = in.stepper.choose(h, pressure.soundSpeed(), relativeSpeed,
-                                          pressure.accelerationBound(std::sqrt(maxAcceleration2)), maxRate, longest);
+                                          pressure.accelerationBound(std::sqrt(maxAcceleration2)),
+                                          maxRate, longest);
     if (longest < remaining && choice.limit == StepLimit::Frame) {
       // Capped by maxSubstepSeconds: even pieces of the frame, as for the other limits.
       choice.dt = remaining / std::ceil(remaining / longest * (1 - 1e-12));
@@ -105,7 +113,8 @@ void TearSimulation::simulate(double frameDt) {
       // and clamp what would make that step unstable; every clamp is counted.
       ++counters_.substepCapHits;
       choice.dt = std::min(minimumStep, remaining);
-      const double aLimit = in.stepper.lambdaAcceleration() * in.stepper.lambdaAcceleration() * h / (choice.dt * choice.dt);
+      const double aLimit = in.stepper.lambdaAcceleration() * in.stepper.lambdaAcceleration() * h /
+                            (choice.dt * choice.dt);
       for (auto& a : particles_.acceleration) {
         const double norm = a.norm();
         if (norm > aLimit) {
@@ -131,7 +140,8 @@ void TearSimulation::simulate(double frameDt) {
     }
     in.previous.assign(particles_.position.begin(), particles_.position.end());
     for (int i = 0; i < particles_.size(); ++i)
-      particles_.position[static_cast<std::size_t>(i)] += dt * particles_.velocity[static_cast<std::size_t>(i)];
+      particles_.position[static_cast<std::size_t>(i)] +=
+          dt * particles_.velocity[static_cast<std::size_t>(i)];
     times_.forces += millisecondsSince(start);
 
     start = SteadyClock::now();

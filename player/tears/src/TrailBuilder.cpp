@@ -14,30 +14,37 @@ namespace {
 constexpr std::size_t kMaxSeeds = 32;  // contact triangles of a drop used to start skin walks
 }  // namespace
 
-TrailBuilder::TrailBuilder(std::vector<Eigen::Vector3i> skinTriangles, const TrailSettings& settings)
+TrailBuilder::TrailBuilder(std::vector<Eigen::Vector3i> skinTriangles,
+                           const TrailSettings& settings)
     : skin_(std::move(skinTriangles)), settings_(settings) {
-  if (!(settings_.drySeconds > 0) || !(settings_.minimumStepKernels > 0) || settings_.maxSections < 2 ||
-      !(settings_.middleHeightFraction >= 0))
-    throw std::invalid_argument("trail settings: dry time and step must be positive, at least two sections");
+  if (!(settings_.drySeconds > 0) || !(settings_.minimumStepKernels > 0) ||
+      settings_.maxSections < 2 || !(settings_.middleHeightFraction >= 0))
+    throw std::invalid_argument(
+        "trail settings: dry time and step must be positive, at least two sections");
 }
 
-const TrailMesh& TrailBuilder::update(const TearSimulation& simulation, const Eigen::Matrix3Xf& headPositions, double dt) {
+const TrailMesh& TrailBuilder::update(const TearSimulation& simulation,
+                                      const Eigen::Matrix3Xf& headPositions, double dt) {
   const ParticleSet& particles = simulation.particles();
   // The simulation builds its grid on first use: only ask for it when there is something in it.
   const UniformGrid& grid = particles.empty() ? emptyGrid_ : simulation.grid();
-  return update(particles, grid, simulation.kernelRadius(), simulation.particleRadius(), headPositions, dt);
+  return update(particles, grid, simulation.kernelRadius(), simulation.particleRadius(),
+                headPositions, dt);
 }
 
-const TrailMesh& TrailBuilder::update(const ParticleSet& particles, const UniformGrid& grid, double h,
-                                      double particleRadius, const Eigen::Matrix3Xf& headPositions, double dt) {
+const TrailMesh& TrailBuilder::update(const ParticleSet& particles, const UniformGrid& grid,
+                                      double h, double particleRadius,
+                                      const Eigen::Matrix3Xf& headPositions, double dt) {
   if (particles.empty() && sections_.empty() && tracks_.empty()) {  // nothing wet: no work
     milliseconds_ = 0;
     return mesh_;
   }
   clearUpperVectorState();
   const auto start = SteadyClock::now();
-  if (headPositions.cols() <= skin_.maxVertex()) throw std::invalid_argument("trails: fewer head positions than the skin uses");
-  if (!(h > 0) || !std::isfinite(h)) throw std::invalid_argument("trails: kernel radius must be positive");
+  if (headPositions.cols() <= skin_.maxVertex())
+    throw std::invalid_argument("trails: fewer head positions than the skin uses");
+  if (!(h > 0) || !std::isfinite(h))
+    throw std::invalid_argument("trails: kernel radius must be positive");
   if (!(dt >= 0) || !std::isfinite(dt)) dt = 0;  // a bad frame time neither dries nor un-dries
   skin_.bind(headPositions);
   for (TrailSection& s : sections_) s.age += dt;
@@ -55,7 +62,8 @@ const TrailMesh& TrailBuilder::update(const ParticleSet& particles, const Unifor
 }
 
 // Matches this update's drops to last update's tracks by particle id and continues them.
-void TrailBuilder::advance(const ParticleSet& particles, const UniformGrid& grid, double h, double particleRadius) {
+void TrailBuilder::advance(const ParticleSet& particles, const UniformGrid& grid, double h,
+                           double particleRadius) {
   finder_.find(particles, grid);
   nextTracks_.clear();
   nextOwner_.clear();
@@ -66,9 +74,11 @@ void TrailBuilder::advance(const ParticleSet& particles, const UniformGrid& grid
     votes_.clear();  // (track, particles) — a drop rarely has more than two predecessors
     for (int i : finder_.particlesOf(drop)) {
       const std::uint64_t id = particles.id[static_cast<std::size_t>(i)];
-      const auto it = std::lower_bound(owner_.begin(), owner_.end(), std::pair<std::uint64_t, int>{id, -1});
+      const auto it =
+          std::lower_bound(owner_.begin(), owner_.end(), std::pair<std::uint64_t, int>{id, -1});
       if (it == owner_.end() || it->first != id) continue;
-      auto vote = std::find_if(votes_.begin(), votes_.end(), [&](const auto& v) { return v.first == it->second; });
+      auto vote = std::find_if(votes_.begin(), votes_.end(),
+                               [&](const auto& v) { return v.first == it->second; });
       if (vote == votes_.end())
         votes_.emplace_back(it->second, 1);
       else
@@ -99,15 +109,16 @@ void TrailBuilder::advance(const ParticleSet& particles, const UniformGrid& grid
     continueTrack(track, particles, drop, h, particleRadius, reshaped);
     const int index = static_cast<int>(nextTracks_.size());
     nextTracks_.push_back(track);
-    for (int i : finder_.particlesOf(drop)) nextOwner_.emplace_back(particles.id[static_cast<std::size_t>(i)], index);
+    for (int i : finder_.particlesOf(drop))
+      nextOwner_.emplace_back(particles.id[static_cast<std::size_t>(i)], index);
   }
   std::sort(nextOwner_.begin(), nextOwner_.end());
   tracks_.swap(nextTracks_);
   owner_.swap(nextOwner_);
 }
 
-void TrailBuilder::continueTrack(Track& track, const ParticleSet& particles, const FoundDrop& drop, double h,
-                                 double particleRadius, bool reshaped) {
+void TrailBuilder::continueTrack(Track& track, const ParticleSet& particles, const FoundDrop& drop,
+                                 double h, double particleRadius, bool reshaped) {
   seeds_.clear();
   for (int i : finder_.particlesOf(drop)) {
     const int t = particles.contact[static_cast<std::size_t>(i)].triangle;
@@ -144,7 +155,8 @@ void TrailBuilder::continueTrack(Track& track, const ParticleSet& particles, con
 
   // Left of the motion seen from outside: a = n x t.
   const Eigen::Vector3d a = n.cross(t);
-  double left = -std::numeric_limits<double>::infinity(), right = std::numeric_limits<double>::infinity(), top = 0;
+  double left = -std::numeric_limits<double>::infinity(),
+         right = std::numeric_limits<double>::infinity(), top = 0;
   for (int i : finder_.particlesOf(drop)) {
     const Eigen::Vector3d d = particles.position[static_cast<std::size_t>(i)] - c;
     const double across = d.dot(a);
@@ -167,7 +179,9 @@ void TrailBuilder::continueTrack(Track& track, const ParticleSet& particles, con
     // triangles fan out from it; the one left without area is not drawn).
     const TrailSection& last = sections_[static_cast<std::size_t>(track.lastSection)];
     for (int side : {0, 2})
-      if ((skin_.point(section.point[static_cast<std::size_t>(side)]) - skin_.point(last.point[static_cast<std::size_t>(side)])).dot(t) <= 0)
+      if ((skin_.point(section.point[static_cast<std::size_t>(side)]) -
+           skin_.point(last.point[static_cast<std::size_t>(side)]))
+              .dot(t) <= 0)
         section.point[static_cast<std::size_t>(side)] = last.point[static_cast<std::size_t>(side)];
   }
   const int index = static_cast<int>(sections_.size());
@@ -182,9 +196,12 @@ void TrailBuilder::continueTrack(Track& track, const ParticleSet& particles, con
 void TrailBuilder::dryAndCap() {
   const double dry = settings_.drySeconds;
   std::size_t removed = 0;
-  while (removed < segments_.size() && sections_[static_cast<std::size_t>(segments_[removed].to)].age >= dry) ++removed;
+  while (removed < segments_.size() &&
+         sections_[static_cast<std::size_t>(segments_[removed].to)].age >= dry)
+    ++removed;
   for (Track& track : tracks_)  // a drop resting longer than the drying time starts afresh
-    if (track.lastSection >= 0 && sections_[static_cast<std::size_t>(track.lastSection)].age >= dry) track.lastSection = -1;
+    if (track.lastSection >= 0 && sections_[static_cast<std::size_t>(track.lastSection)].age >= dry)
+      track.lastSection = -1;
 
   const auto maxSections = static_cast<std::size_t>(settings_.maxSections);
   std::size_t live = 0;
@@ -220,7 +237,8 @@ void TrailBuilder::dryAndCap() {
     segment.to = remap_[static_cast<std::size_t>(segment.to)];
   }
   for (Track& track : tracks_)
-    if (track.lastSection >= 0) track.lastSection = remap_[static_cast<std::size_t>(track.lastSection)];
+    if (track.lastSection >= 0)
+      track.lastSection = remap_[static_cast<std::size_t>(track.lastSection)];
 }
 
 void TrailBuilder::rebuildMesh() {

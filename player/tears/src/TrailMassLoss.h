@@ -7,14 +7,14 @@
 namespace lacrima::tears {
 
 class TrailMassLoss {
-public:
+ public:
   TrailMassLoss(double referenceMass, double decayLength, double floorFraction)
       : m0_(referenceMass), length_(decayLength), floor_(floorFraction) {}
   // Updates masses; returns the volume (mass / rho0) left in the trail per eye this call.
   void apply(ParticleSet& particles, double restDensity, double lostVolume[2]) const;
   double floorMass() const { return m0_ * floor_; }
 
-private:
+ private:
   double m0_, length_, floor_;
 };
 

@@ -21,7 +21,8 @@ TrailSkin::TrailSkin(std::vector<Eigen::Vector3i> triangles) : triangles_(std::m
   std::vector<int> fill(vertexStart_.begin(), vertexStart_.end() - 1);
   for (std::size_t i = 0; i < triangles_.size(); ++i)
     for (int k = 0; k < 3; ++k)
-      vertexTriangles_[static_cast<std::size_t>(fill[static_cast<std::size_t>(triangles_[i][k])]++)] = static_cast<int>(i);
+      vertexTriangles_[static_cast<std::size_t>(
+          fill[static_cast<std::size_t>(triangles_[i][k])]++)] = static_cast<int>(i);
 }
 
 Eigen::Vector3d TrailSkin::normal(int triangle) const {
@@ -37,7 +38,8 @@ Eigen::Vector3d TrailSkin::normal(int triangle) const {
 Eigen::Vector3d TrailSkin::point(const SkinAnchor& anchor) const {
   const Eigen::Vector3i& t = triangles_[static_cast<std::size_t>(anchor.triangle)];
   const Eigen::Vector3d& w = anchor.barycentric;
-  return w[0] * vertex(t[0]) + w[1] * vertex(t[1]) + w[2] * vertex(t[2]) + anchor.height * normal(anchor.triangle);
+  return w[0] * vertex(t[0]) + w[1] * vertex(t[1]) + w[2] * vertex(t[2]) +
+         anchor.height * normal(anchor.triangle);
 }
 
 SkinAnchor TrailSkin::closest(const Eigen::Vector3d& x, std::span<const int> seeds) const {
@@ -62,7 +64,8 @@ SkinAnchor TrailSkin::closest(const Eigen::Vector3d& x, std::span<const int> see
     const int current = best.triangle;
     const Eigen::Vector3i& t = triangles_[static_cast<std::size_t>(current)];
     for (int k = 0; k < 3; ++k)
-      for (int i = vertexStart_[static_cast<std::size_t>(t[k])]; i < vertexStart_[static_cast<std::size_t>(t[k]) + 1]; ++i)
+      for (int i = vertexStart_[static_cast<std::size_t>(t[k])];
+           i < vertexStart_[static_cast<std::size_t>(t[k]) + 1]; ++i)
         consider(vertexTriangles_[static_cast<std::size_t>(i)]);
     if (best.triangle == current) break;
   }

@@ -21,9 +21,9 @@ struct TrianglePoint {
 // ab = b - a and ac = c - a, formed by the caller (or once per pose). Always inlined: out of
 // line (GCC's choice at four call sites) the result goes through memory and the call costs
 // about a fifth of the test; inlined, the tracked-contact path keeps it in registers.
-[[gnu::always_inline]] inline TrianglePoint closestPointWithEdges(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-                                           const Eigen::Vector3d& b, const Eigen::Vector3d& c,
-                                           const Eigen::Vector3d& ab, const Eigen::Vector3d& ac) {
+[[gnu::always_inline]] inline TrianglePoint closestPointWithEdges(
+    const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+    const Eigen::Vector3d& c, const Eigen::Vector3d& ab, const Eigen::Vector3d& ac) {
   const Eigen::Vector3d ap = p - a;
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
   if (d1 <= 0 && d2 <= 0) return {a, {1, 0, 0}, false};
@@ -59,13 +59,15 @@ inline TrianglePoint closestPointOnTriangle(const Eigen::Vector3d& p, const Eige
   return closestPointWithEdges(p, a, b, c, ab, ac);
 }
 
-[[gnu::always_inline]] inline TrianglePoint closestPointOnFace(const Eigen::Vector3d& p, const SkinFace& f) {
+[[gnu::always_inline]] inline TrianglePoint closestPointOnFace(const Eigen::Vector3d& p,
+                                                               const SkinFace& f) {
   return closestPointWithEdges(p, f.a, f.b, f.c, f.ab, f.ac);
 }
 
 // The per-pose record of triangle (a, b, c) with the given normal and degeneracy.
-inline SkinFace makeSkinFace(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
-                             const Eigen::Vector3d& normal, bool degenerate) {
+inline SkinFace makeSkinFace(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                             const Eigen::Vector3d& c, const Eigen::Vector3d& normal,
+                             bool degenerate) {
   return {normal, a, b - a, c - a, b, c, degenerate};
 }
 

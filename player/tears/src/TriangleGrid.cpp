@@ -12,7 +12,8 @@ void TriangleGrid::build(std::span<const SkinFace> faces, double minimumCell) {
   offset_.resize(faces.size());
   all_.clear();
   exhaustive_ = false;
-  Eigen::Vector3d boundsLo = Eigen::Vector3d::Constant(HUGE_VAL), boundsHi = Eigen::Vector3d::Constant(-HUGE_VAL);
+  Eigen::Vector3d boundsLo = Eigen::Vector3d::Constant(HUGE_VAL),
+                  boundsHi = Eigen::Vector3d::Constant(-HUGE_VAL);
   double sideSum = 0;
   for (std::size_t t = 0; t < faces.size(); ++t) {
     const SkinFace& f = faces[t];
@@ -32,7 +33,8 @@ void TriangleGrid::build(std::span<const SkinFace> faces, double minimumCell) {
     cellTriangles_.clear();
     return;
   }
-  const double extent = (boundsHi - boundsLo).maxCoeff() + boundsLo.cwiseAbs().cwiseMax(boundsHi.cwiseAbs()).maxCoeff();
+  const double extent = (boundsHi - boundsLo).maxCoeff() +
+                        boundsLo.cwiseAbs().cwiseMax(boundsHi.cwiseAbs()).maxCoeff();
   // An infinite corner leaves no usable cells: every query then visits every triangle.
   exhaustive_ = !std::isfinite(extent);
   if (exhaustive_) return;

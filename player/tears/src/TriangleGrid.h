@@ -29,7 +29,7 @@
 namespace lacrima::tears {
 
 class TriangleGrid {
-public:
+ public:
   void build(std::span<const SkinFace> faces, double minimumCell);
 
   // Calls visit(t) for candidate triangles until visit returns true; returns whether one did.
@@ -40,23 +40,30 @@ public:
   // queries visit every triangle (no proof is possible).
   template <class Visit>
   bool any(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, Visit&& visit) const {
-    return walk(lo, hi, [&](std::size_t t) {
-      return (lo_[t].array() <= hi.array()).all() && (lo.array() <= hi_[t].array()).all();
-    }, visit);
+    return walk(
+        lo, hi,
+        [&](std::size_t t) {
+          return (lo_[t].array() <= hi.array()).all() && (lo.array() <= hi_[t].array()).all();
+        },
+        visit);
   }
   template <class Visit>
   bool anyNear(const Eigen::Vector3d& centre, double radius, Visit&& visit) const {
     const Eigen::Vector3d r = Eigen::Vector3d::Constant(radius);
     const double reach = radius + margin_;
-    return walk(centre - r, centre + r, [&](std::size_t t) {
-      // The plane first: on smooth skin it rejects nearly every triangle near a particle
-      // that is not touching. Then the widened box, which holds the triangle.
-      if (!(std::abs(normal_[t].dot(centre) - offset_[t]) <= reach)) return false;
-      return (lo_[t].array() <= centre.array() + radius).all() && (centre.array() - radius <= hi_[t].array()).all();
-    }, visit);
+    return walk(
+        centre - r, centre + r,
+        [&](std::size_t t) {
+          // The plane first: on smooth skin it rejects nearly every triangle near a particle
+          // that is not touching. Then the widened box, which holds the triangle.
+          if (!(std::abs(normal_[t].dot(centre) - offset_[t]) <= reach)) return false;
+          return (lo_[t].array() <= centre.array() + radius).all() &&
+                 (centre.array() - radius <= hi_[t].array()).all();
+        },
+        visit);
   }
 
-private:
+ private:
   // Cell coordinate of a point's offset along one axis, clamped to the grid (no floor(): on
   // baseline x86-64 it is a library call; offsets below zero clamp before the cast).
   int clampedCell(double offset, int axis) const {
@@ -64,7 +71,8 @@ private:
     if (!(c >= 0)) return 0;
     return c >= dims_[axis] ? dims_[axis] - 1 : static_cast<int>(c);
   }
-  bool cellRange(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, Eigen::Array3i& first, Eigen::Array3i& last) const;
+  bool cellRange(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, Eigen::Array3i& first,
+                 Eigen::Array3i& last) const;
   // Calls f(cell) for the cells of [first, last] in x-fastest order until f returns true;
   // returns whether it did.
   template <class F>
@@ -76,14 +84,15 @@ private:
     return false;
   }
   template <class Overlaps, class Visit>
-  bool walk(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, Overlaps&& overlaps, Visit&& visit) const;
+  bool walk(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, Overlaps&& overlaps,
+            Visit&& visit) const;
 
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero(), extent_ = Eigen::Vector3d::Zero();
   double inverseCell_ = 0;
   bool exhaustive_ = false;  // no grid (a non-finite skin): walk every triangle
   Eigen::Array3i dims_ = Eigen::Array3i::Zero();
-  std::vector<Eigen::Vector3d> lo_, hi_;        // widened triangle boxes
-  std::vector<Eigen::Vector3d> normal_;         // unit normals, and offsets n.a of the planes
+  std::vector<Eigen::Vector3d> lo_, hi_;  // widened triangle boxes
+  std::vector<Eigen::Vector3d> normal_;   // unit normals, and offsets n.a of the planes
   std::vector<double> offset_;
   double margin_ = 0;
   std::vector<int> cellStart_, cellTriangles_;  // CSR
@@ -92,8 +101,8 @@ private:
   std::vector<int> fill_;                       // build scratch: next free slot per cell
 };
 
-inline bool TriangleGrid::cellRange(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, Eigen::Array3i& first,
-                                    Eigen::Array3i& last) const {
+inline bool TriangleGrid::cellRange(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
+                                    Eigen::Array3i& first, Eigen::Array3i& last) const {
   if (dims_.minCoeff() <= 0) return false;
   const Eigen::Vector3d from = lo - origin_, to = hi - origin_;
   for (int a = 0; a < 3; ++a)
@@ -106,7 +115,8 @@ inline bool TriangleGrid::cellRange(const Eigen::Vector3d& lo, const Eigen::Vect
 }
 
 template <class Overlaps, class Visit>
-bool TriangleGrid::walk(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, Overlaps&& overlaps, Visit&& visit) const {
+bool TriangleGrid::walk(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, Overlaps&& overlaps,
+                        Visit&& visit) const {
   if (exhaustive_ || !lo.allFinite() || !hi.allFinite()) {
     for (int t : all_)
       if (visit(t)) return true;

@@ -10,7 +10,10 @@ namespace lacrima::tears {
 UniformGrid::UniformGrid() : index_(std::make_unique<CellIndex>()) {}
 UniformGrid::~UniformGrid() = default;
 UniformGrid::UniformGrid(const UniformGrid& other)
-    : index_(std::make_unique<CellIndex>(*other.index_)), found_(other.found_), start_(other.start_), rank_(other.rank_) {}
+    : index_(std::make_unique<CellIndex>(*other.index_)),
+      found_(other.found_),
+      start_(other.start_),
+      rank_(other.rank_) {}
 
 UniformGrid& UniformGrid::operator=(const UniformGrid& other) {
   *index_ = *other.index_;
@@ -67,14 +70,16 @@ void UniformGrid::find(std::span<const Eigen::Vector3d> x, double h, NeighbourLi
 
   // Back to particle order.
   rank_.resize(n);
-  for (std::size_t s = 0; s < n; ++s) rank_[static_cast<std::size_t>(order[s])] = static_cast<int>(s);
+  for (std::size_t s = 0; s < n; ++s)
+    rank_[static_cast<std::size_t>(order[s])] = static_cast<int>(s);
   out.offsets.resize(n + 1);
   out.indices.resize(written);
   out.offsets[0] = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const auto s = static_cast<std::size_t>(rank_[i]);
     const int begin = out.offsets[i];
-    std::copy(found_.begin() + start_[s], found_.begin() + start_[s + 1], out.indices.begin() + begin);
+    std::copy(found_.begin() + start_[s], found_.begin() + start_[s + 1],
+              out.indices.begin() + begin);
     out.offsets[i + 1] = begin + static_cast<int>(start_[s + 1] - start_[s]);
   }
 }
@@ -92,7 +97,8 @@ std::vector<int> UniformGrid::particlesInCell(const Eigen::Vector3i& cell) const
   const std::int64_t c = index_->findCell(cell);
   if (c < 0) return result;
   const auto order = index_->order();
-  for (std::uint32_t s = index_->cellStart(static_cast<std::size_t>(c)); s < index_->cellStart(static_cast<std::size_t>(c) + 1); ++s)
+  for (std::uint32_t s = index_->cellStart(static_cast<std::size_t>(c));
+       s < index_->cellStart(static_cast<std::size_t>(c) + 1); ++s)
     result.push_back(order[s]);
   return result;  // the radix sort is stable: particle order within a cell
 }

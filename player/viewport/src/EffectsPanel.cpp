@@ -21,10 +21,14 @@ QCheckBox* toggle(const QString& text, const QString& tip, QWidget* parent) {
 }  // namespace
 
 EffectsPanel::EffectsPanel(QWidget* parent) : QWidget(parent) {
-  particles_ = toggle(tr("Particles"), tr("Draw every tear particle as a small sphere (inspection)"), this);
-  surface_ = toggle(tr("Tear surface"), tr("The tears' liquid surface (marching cubes over the particles)"), this);
-  trails_ = toggle(tr("Wet trails"), tr("The thin wet film tears leave on the skin; dries over seconds"), this);
-  textureBlending_ = toggle(tr("Texture blending"), tr("Red, darker skin around the eyes, watery eyes, blush"), this);
+  particles_ =
+      toggle(tr("Particles"), tr("Draw every tear particle as a small sphere (inspection)"), this);
+  surface_ = toggle(tr("Tear surface"),
+                    tr("The tears' liquid surface (marching cubes over the particles)"), this);
+  trails_ = toggle(tr("Wet trails"),
+                   tr("The thin wet film tears leave on the skin; dries over seconds"), this);
+  textureBlending_ = toggle(tr("Texture blending"),
+                            tr("Red, darker skin around the eyes, watery eyes, blush"), this);
   blush_ = toggle(tr("Blush"), tr("Cheeks redden with the eyes"), this);
   redness_ = new QComboBox(this);
   redness_->addItem(tr("rises over the animation (2009)"));
@@ -48,8 +52,9 @@ EffectsPanel::EffectsPanel(QWidget* parent) : QWidget(parent) {
 }
 
 void EffectsPanel::display(const SceneSettings& scene) {
-  const QSignalBlocker blocks[] = {QSignalBlocker(particles_), QSignalBlocker(surface_), QSignalBlocker(trails_),
-                                   QSignalBlocker(textureBlending_), QSignalBlocker(blush_), QSignalBlocker(redness_)};
+  const QSignalBlocker blocks[] = {QSignalBlocker(particles_), QSignalBlocker(surface_),
+                                   QSignalBlocker(trails_),    QSignalBlocker(textureBlending_),
+                                   QSignalBlocker(blush_),     QSignalBlocker(redness_)};
   particles_->setChecked(scene.particles);
   surface_->setChecked(scene.surface);
   trails_->setChecked(scene.trails);
@@ -66,7 +71,8 @@ void EffectsPanel::applyTo(SceneSettings& scene) const {
   scene.trails = trails_->isChecked();
   scene.textureBlending = textureBlending_->isChecked();
   scene.blush = blush_->isChecked();
-  scene.redness = redness_->currentIndex() == 0 ? SceneSettings::Redness::Animation : SceneSettings::Redness::Tears;
+  scene.redness = redness_->currentIndex() == 0 ? SceneSettings::Redness::Animation
+                                                : SceneSettings::Redness::Tears;
 }
 
 }  // namespace lacrima::viewport

@@ -101,7 +101,9 @@ void FaceViewport::showMessage(const QString& text) {
   s.message->show();
 }
 
-QString FaceViewport::message() const { return state_->message ? state_->message->text() : QString(); }
+QString FaceViewport::message() const {
+  return state_->message ? state_->message->text() : QString();
+}
 
 bool FaceViewport::usesOgre() const { return state_->ogre; }
 
@@ -129,9 +131,9 @@ bool FaceViewport::ensureWindow() {
     Ogre::NameValuePairList misc;
     misc["externalWindowHandle"] = std::to_string(static_cast<unsigned long long>(winId()));
     misc["vsync"] = "false";
-    s.window = s.runtime->root().createRenderWindow(s.runtime->uniqueName("viewport"),
-                                                    static_cast<unsigned>(std::lround(width() * ratio)),
-                                                    static_cast<unsigned>(std::lround(height() * ratio)), false, &misc);
+    s.window = s.runtime->root().createRenderWindow(
+        s.runtime->uniqueName("viewport"), static_cast<unsigned>(std::lround(width() * ratio)),
+        static_cast<unsigned>(std::lround(height() * ratio)), false, &misc);
     s.window->setAutoUpdated(false);
     s.scene->attach(*s.window);
     s.dirty = true;
@@ -207,9 +209,11 @@ bool FaceViewport::renderNow(bool swap) {
 QImage FaceViewport::grabFrame() {
   State& s = *state_;
   if (!s.ogre || !renderNow(false)) return {};
-  const auto w = static_cast<Ogre::uint32>(s.window->getWidth()), h = static_cast<Ogre::uint32>(s.window->getHeight());
+  const auto w = static_cast<Ogre::uint32>(s.window->getWidth()),
+             h = static_cast<Ogre::uint32>(s.window->getHeight());
   QImage image(static_cast<int>(w), static_cast<int>(h), QImage::Format_RGBA8888);
-  s.window->copyContentsToMemory(Ogre::Box(0, 0, w, h), Ogre::PixelBox(w, h, 1, Ogre::PF_BYTE_RGBA, image.bits()),
+  s.window->copyContentsToMemory(Ogre::Box(0, 0, w, h),
+                                 Ogre::PixelBox(w, h, 1, Ogre::PF_BYTE_RGBA, image.bits()),
                                  Ogre::RenderTarget::FB_BACK);
   s.window->swapBuffers();
   return image;
@@ -238,7 +242,8 @@ void FaceViewport::resizeEvent(QResizeEvent* event) {
   State& s = *state_;
   if (!s.window) return;
   const qreal ratio = devicePixelRatioF();
-  s.window->resize(static_cast<unsigned>(std::lround(width() * ratio)), static_cast<unsigned>(std::lround(height() * ratio)));
+  s.window->resize(static_cast<unsigned>(std::lround(width() * ratio)),
+                   static_cast<unsigned>(std::lround(height() * ratio)));
   s.window->windowMovedOrResized();
   s.scene->setAspect(double(s.window->getWidth()) / double(std::max(1u, s.window->getHeight())));
   requestRender();

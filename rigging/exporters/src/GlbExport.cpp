@@ -35,8 +35,10 @@ std::string pngBytes(const std::string& path) {
   std::string bytes = readFileBytes(path, "texture");
   static constexpr char kPngSignature[] = "\x89PNG\r\n\x1a\n";
   if (bytes.compare(0, 8, kPngSignature, 8) == 0) return bytes;
-  const QImage image = QImage::fromData(QByteArray::fromRawData(bytes.data(), static_cast<qsizetype>(bytes.size())));
-  if (image.isNull()) throw FileError({path, 0, 0}, "cannot read texture: not an image format Qt can decode");
+  const QImage image =
+      QImage::fromData(QByteArray::fromRawData(bytes.data(), static_cast<qsizetype>(bytes.size())));
+  if (image.isNull())
+    throw FileError({path, 0, 0}, "cannot read texture: not an image format Qt can decode");
   QByteArray png;
   QBuffer buffer(&png);
   buffer.open(QIODevice::WriteOnly);
@@ -46,7 +48,9 @@ std::string pngBytes(const std::string& path) {
 
 // glTF roughness for a Blinn-Phong exponent s: GGX alpha = sqrt(2 / (s + 2)) matches the
 // highlight width, and glTF's roughness is sqrt(alpha).
-double roughnessOf(float shininess) { return std::pow(2.0 / (std::max(shininess, 0.0f) + 2.0), 0.25); }
+double roughnessOf(float shininess) {
+  return std::pow(2.0 / (std::max(shininess, 0.0f) + 2.0), 0.25);
+}
 
 // One primitive: a HeadSubmesh with triangles.
 struct Part {
@@ -55,19 +59,21 @@ struct Part {
 };
 
 class GlbBuilder {
-public:
+ public:
   GlbBuilder(const HeadMesh& head, const std::vector<ExportedPose>& poses)
       : head_(head), poses_(poses), normals_(head.normals) {
     for (const HeadSubmesh& s : head.submeshes) {
       if (!s.triangles.empty())
-        parts_.push_back({&s, static_cast<std::size_t>(s.firstVertex), static_cast<std::size_t>(s.vertexCount)});
+        parts_.push_back(
+            {&s, static_cast<std::size_t>(s.firstVertex), static_cast<std::size_t>(s.vertexCount)});
     }
     // glTF requires unit normals (validators reject anything else); HeadMesh promises them,
     // but a loader's degenerate or unnormalised ones must not make the whole file invalid.
     for (Eigen::Index v = 0; v < normals_.cols(); ++v) {
       const float length = normals_.col(v).norm();
-      normals_.col(v) = std::isfinite(length) && length > 0.0f ? Eigen::Vector3f(normals_.col(v) / length)
-                                                                : Eigen::Vector3f::UnitZ();
+      normals_.col(v) = std::isfinite(length) && length > 0.0f
+                            ? Eigen::Vector3f(normals_.col(v) / length)
+                            : Eigen::Vector3f::UnitZ();
     }
   }
 
@@ -88,7 +94,7 @@ public:
     return std::move(model_);
   }
 
-private:
+ private:
   std::vector<unsigned char>& bytes() { return model_.buffers[0].data; }
 
   // Appends `length` bytes as a new buffer view. Views start on 4-byte boundaries, so every
@@ -110,7 +116,8 @@ private:
 
   // An accessor of `count` float vectors with `components` components, whose values are
   // `values` (used only for min/max, which glTF requires for POSITION and we give for all).
-  int addFloats(int view, std::size_t offset, const float* values, std::size_t count, int components) {
+  int addFloats(int view, std::size_t offset, const float* values, std::size_t count,
+                int components) {
     tinygltf::Accessor& a = model_.accessors.emplace_back();
     a.bufferView = view;
     a.byteOffset = offset;
@@ -137,7 +144,8 @@ private:
     for (const HeadMaterial& m : head_.materials) {
       int image = -1;
       if (!m.diffuseTexture.empty()) {
-        auto [it, isNew] = imageOfPath.try_emplace(m.diffuseTexture, static_cast<int>(model_.images.size()));
+        auto [it, isNew] =
+            imageOfPath.try_emplace(m.diffuseTexture, static_cast<int>(model_.images.size()));
         if (isNew) {
           const std::string png = pngBytes(m.diffuseTexture);
           // Texture i shows image i; no sampler means repeat wrapping and automatic filtering.
@@ -162,10 +170,13 @@ private:
     const int uvs = hasUvs ? addView(head_.uvs.data(), n * 8, 8, TINYGLTF_TARGET_ARRAY_BUFFER) : -1;
     for (const Part& part : parts_) {
       tinygltf::Primitive& p = model_.meshes[0].primitives.emplace_back();
-      p.attributes["POSITION"] = addFloats(positions, part.first * 12, head_.positions.data() + 3 * part.first, part.count, 3);
-      p.attributes["NORMAL"] = addFloats(normals, part.first * 12, normals_.data() + 3 * part.first, part.count, 3);
+      p.attributes["POSITION"] = addFloats(positions, part.first * 12,
+                                           head_.positions.data() + 3 * part.first, part.count, 3);
+      p.attributes["NORMAL"] =
+          addFloats(normals, part.first * 12, normals_.data() + 3 * part.first, part.count, 3);
       if (hasUvs)
-        p.attributes["TEXCOORD_0"] = addFloats(uvs, part.first * 8, head_.uvs.data() + 2 * part.first, part.count, 2);
+        p.attributes["TEXCOORD_0"] =
+            addFloats(uvs, part.first * 8, head_.uvs.data() + 2 * part.first, part.count, 2);
       p.indices = addIndices(part);
       p.material = part.submesh->material;
       p.mode = TINYGLTF_MODE_TRIANGLES;
@@ -178,15 +189,20 @@ private:
     const bool wide = part.count > 65535;
     std::vector<std::uint32_t> indices;
     for (const Eigen::Vector3i& t : part.submesh->triangles)
-      for (int k = 0; k < 3; ++k) indices.push_back(static_cast<std::uint32_t>(t[k]) - static_cast<std::uint32_t>(part.first));
+      for (int k = 0; k < 3; ++k)
+        indices.push_back(static_cast<std::uint32_t>(t[k]) -
+                          static_cast<std::uint32_t>(part.first));
     tinygltf::Accessor a;
     if (wide) {
-      a.bufferView = addView(indices.data(), indices.size() * 4, 0, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+      a.bufferView =
+          addView(indices.data(), indices.size() * 4, 0, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
     } else {
       const std::vector<std::uint16_t> narrow(indices.begin(), indices.end());
-      a.bufferView = addView(narrow.data(), narrow.size() * 2, 0, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+      a.bufferView =
+          addView(narrow.data(), narrow.size() * 2, 0, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
     }
-    a.componentType = wide ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+    a.componentType =
+        wide ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
     a.count = indices.size();
     a.type = TINYGLTF_TYPE_SCALAR;
     model_.accessors.push_back(std::move(a));
@@ -204,8 +220,10 @@ private:
       const ExportedPose& pose = poses_[p];
       for (const Part& part : parts_) {
         // Pose vertices are ascending: the ones in this primitive are one run.
-        const auto begin = std::lower_bound(pose.vertices.begin(), pose.vertices.end(), static_cast<int>(part.first));
-        const auto end = std::lower_bound(begin, pose.vertices.end(), static_cast<int>(part.first + part.count));
+        const auto begin = std::lower_bound(pose.vertices.begin(), pose.vertices.end(),
+                                            static_cast<int>(part.first));
+        const auto end =
+            std::lower_bound(begin, pose.vertices.end(), static_cast<int>(part.first + part.count));
         if (begin == end) {
           placed[p].push_back(std::nullopt);
           zeroVertices = std::max(zeroVertices, part.count);
@@ -217,13 +235,15 @@ private:
         for (auto it = begin; it != end; ++it) {
           const auto k = static_cast<Eigen::Index>(it - pose.vertices.begin());
           const std::size_t local = offset + 3 * (static_cast<std::size_t>(*it) - part.first);
-          for (int c = 0; c < 3; ++c) deltas[local + static_cast<std::size_t>(c)] = pose.offsets(c, k);
+          for (int c = 0; c < 3; ++c)
+            deltas[local + static_cast<std::size_t>(c)] = pose.offsets(c, k);
         }
       }
     }
     const std::size_t zeroOffset = deltas.size();
     deltas.resize(zeroOffset + 3 * zeroVertices, 0.0f);
-    const int view = addView(deltas.data(), deltas.size() * sizeof(float), 12, TINYGLTF_TARGET_ARRAY_BUFFER);
+    const int view =
+        addView(deltas.data(), deltas.size() * sizeof(float), 12, TINYGLTF_TARGET_ARRAY_BUFFER);
     std::vector<int> zeroAccessor(parts_.size(), -1);
     tinygltf::Mesh& mesh = model_.meshes[0];
     for (std::size_t p = 0; p < poses_.size(); ++p) {
@@ -234,7 +254,8 @@ private:
           target = addFloats(view, *offset * sizeof(float), deltas.data() + *offset, count, 3);
         } else {
           if (zeroAccessor[i] < 0)
-            zeroAccessor[i] = addFloats(view, zeroOffset * sizeof(float), deltas.data() + zeroOffset, count, 3);
+            zeroAccessor[i] =
+                addFloats(view, zeroOffset * sizeof(float), deltas.data() + zeroOffset, count, 3);
           target = zeroAccessor[i];
         }
       }
@@ -242,7 +263,8 @@ private:
     mesh.weights.assign(poses_.size(), 0.0);
     tinygltf::Value::Array names;
     for (const ExportedPose& pose : poses_) names.emplace_back(pose.name);
-    mesh.extras = tinygltf::Value(tinygltf::Value::Object{{"targetNames", tinygltf::Value(std::move(names))}});
+    mesh.extras = tinygltf::Value(
+        tinygltf::Value::Object{{"targetNames", tinygltf::Value(std::move(names))}});
   }
 
   void addMaterials() {
@@ -279,7 +301,8 @@ void exportGlb(const HeadMesh& head, const PoseSet& poses, const std::string& pa
   // either: past 2 GiB it would write a broken file instead of failing.
   const std::size_t binBytes = model.buffers[0].data.size();
   if (binBytes > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
-    throw FileError({path, 0, 0}, "cannot export: " + std::to_string(binBytes) + " bytes exceed the 2 GiB tinygltf can write");
+    throw FileError({path, 0, 0}, "cannot export: " + std::to_string(binBytes) +
+                                      " bytes exceed the 2 GiB tinygltf can write");
   // tinygltf's file writer neither checks its writes nor uses a temporary, so it writes to
   // memory and saveAtomically writes the file, as for every other file.
   std::ostringstream glb;

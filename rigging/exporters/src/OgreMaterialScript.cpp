@@ -20,7 +20,8 @@ constexpr float kCorneaShininess = 96.0f;
 // "0.8" is what people expect to read in a script).
 std::string number(float value) {
   char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed);
+  const auto result =
+      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed);
   return std::string(buffer, result.ptr);
 }
 
@@ -36,7 +37,8 @@ std::string numbers(std::initializer_list<float> values) {
 // Script names and file names are written in double quotes, which the script lexer does not
 // escape; a quote or line break in a name would end the token early.
 std::string scriptSafe(std::string text) {
-  std::replace_if(text.begin(), text.end(), [](char c) { return c == '"' || c == '\n' || c == '\r'; }, '_');
+  std::replace_if(
+      text.begin(), text.end(), [](char c) { return c == '"' || c == '\n' || c == '\r'; }, '_');
   return text;
 }
 
@@ -58,7 +60,8 @@ void appendPass(std::string& text, const HeadMaterial& m, bool cornea, const std
     const Eigen::Vector3f s = m.specular.cwiseMax(kCorneaSpecular);
     text += "      ambient 0 0 0\n";
     text += "      diffuse 0 0 0 1\n";
-    text += "      specular " + numbers({s.x(), s.y(), s.z(), std::max(m.shininess, kCorneaShininess)}) + "\n";
+    text += "      specular " +
+            numbers({s.x(), s.y(), s.z(), std::max(m.shininess, kCorneaShininess)}) + "\n";
     // Additive: black diffuse adds nothing, the highlight brightens the eyeball below.
     text += "      scene_blend add\n";
     text += "      depth_write off\n";

@@ -36,7 +36,7 @@ namespace fs = std::filesystem;
 // MeshSerializer writes to a DataStream; collecting the bytes in memory lets the .mesh go
 // through StagedFiles like the other files, instead of OGRE writing to the target directly.
 class StringDataStream : public Ogre::DataStream {
-public:
+ public:
   StringDataStream() : Ogre::DataStream(WRITE) {}
 
   std::string take() { return std::move(bytes_); }
@@ -51,13 +51,15 @@ public:
     mSize = bytes_.size();
     return count;
   }
-  void skip(long count) override { seek(static_cast<size_t>(std::max(0L, static_cast<long>(position_) + count))); }
+  void skip(long count) override {
+    seek(static_cast<size_t>(std::max(0L, static_cast<long>(position_) + count)));
+  }
   void seek(size_t position) override { position_ = std::min(position, bytes_.size()); }
   size_t tell() const override { return position_; }
   bool eof() const override { return position_ >= bytes_.size(); }
   void close() override {}
 
-private:
+ private:
   std::string bytes_;
   size_t position_ = 0;
 };
@@ -65,7 +67,7 @@ private:
 // A manual mesh under a name nobody else uses (an application's OGRE may hold meshes of its
 // own), removed from the MeshManager when the export is done.
 class ScratchMesh {
-public:
+ public:
   ScratchMesh() {
     static std::atomic<unsigned> counter{0};
     const std::string name = "lacrima/export/" + std::to_string(++counter);
@@ -81,7 +83,7 @@ public:
   Ogre::Mesh& operator*() const { return *mesh_; }
   Ogre::Mesh* operator->() const { return mesh_.get(); }
 
-private:
+ private:
   Ogre::MeshPtr mesh_;
 };
 
@@ -90,7 +92,7 @@ private:
 // stand-ins (empty materials) for the duration of the export; materials that already exist, e.g.
 // in an editor that shows this head, are used as they are and left alone.
 class StandInMaterials {
-public:
+ public:
   explicit StandInMaterials(const std::vector<std::string>& names) {
     auto& manager = Ogre::MaterialManager::getSingleton();
     for (const std::string& name : names) {
@@ -98,18 +100,20 @@ public:
     }
   }
   ~StandInMaterials() {
-    for (const Ogre::MaterialPtr& material : created_) Ogre::MaterialManager::getSingleton().remove(material);
+    for (const Ogre::MaterialPtr& material : created_)
+      Ogre::MaterialManager::getSingleton().remove(material);
   }
   StandInMaterials(const StandInMaterials&) = delete;
   StandInMaterials& operator=(const StandInMaterials&) = delete;
 
-private:
+ private:
   std::vector<Ogre::MaterialPtr> created_;
 };
 
 // Buffers are created with a shadow copy: with a real render system (an export from inside the
 // editor) the serializer can then read them back; the headless buffer manager ignores the flag.
-Ogre::HardwareVertexBufferSharedPtr vertexBuffer(size_t vertexSize, size_t count, const float* data) {
+Ogre::HardwareVertexBufferSharedPtr vertexBuffer(size_t vertexSize, size_t count,
+                                                 const float* data) {
   auto buffer = Ogre::HardwareBufferManager::getSingleton().createVertexBuffer(
       vertexSize, count, Ogre::HardwareBuffer::HBU_STATIC_WRITE_ONLY, true);
   buffer->writeData(0, buffer->getSizeInBytes(), data, true);
@@ -126,10 +130,13 @@ void addSharedGeometry(Ogre::Mesh& mesh, const HeadMesh& head) {
   Ogre::VertexDeclaration& declaration = *data.vertexDeclaration;
   declaration.addElement(0, 0, Ogre::VET_FLOAT3, Ogre::VES_POSITION);
   declaration.addElement(1, 0, Ogre::VET_FLOAT3, Ogre::VES_NORMAL);
-  if (hasUvs) declaration.addElement(1, 3 * sizeof(float), Ogre::VET_FLOAT2, Ogre::VES_TEXTURE_COORDINATES, 0);
+  if (hasUvs)
+    declaration.addElement(1, 3 * sizeof(float), Ogre::VET_FLOAT2, Ogre::VES_TEXTURE_COORDINATES,
+                           0);
 
   // Eigen's 3 x n column-major storage already is x y z per vertex.
-  data.vertexBufferBinding->setBinding(0, vertexBuffer(3 * sizeof(float), n, head.positions.data()));
+  data.vertexBufferBinding->setBinding(0,
+                                       vertexBuffer(3 * sizeof(float), n, head.positions.data()));
   const size_t stride = hasUvs ? 5 : 3;
   std::vector<float> attributes(n * stride);
   for (size_t v = 0; v < n; ++v) {
@@ -141,7 +148,8 @@ void addSharedGeometry(Ogre::Mesh& mesh, const HeadMesh& head) {
       out[4] = head.uvs(1, col);
     }
   }
-  data.vertexBufferBinding->setBinding(1, vertexBuffer(stride * sizeof(float), n, attributes.data()));
+  data.vertexBufferBinding->setBinding(1,
+                                       vertexBuffer(stride * sizeof(float), n, attributes.data()));
 }
 
 template <typename Index>
@@ -183,14 +191,16 @@ void addPoses(Ogre::Mesh& mesh, const std::vector<ExportedPose>& exported) {
     Ogre::Pose* pose = mesh.createPose(kSharedGeometry, source.name);
     for (size_t k = 0; k < source.vertices.size(); ++k) {
       const auto offset = source.offsets.col(static_cast<Eigen::Index>(k));
-      pose->addVertex(static_cast<size_t>(source.vertices[k]), Ogre::Vector3(offset.x(), offset.y(), offset.z()));
+      pose->addVertex(static_cast<size_t>(source.vertices[k]),
+                      Ogre::Vector3(offset.x(), offset.y(), offset.z()));
     }
   }
   // Created even with no poses, so a player can always look up "fap".
   Ogre::Animation* animation = mesh.createAnimation("fap", 0);
   Ogre::VertexAnimationTrack* track = animation->createVertexTrack(kSharedGeometry, Ogre::VAT_POSE);
   Ogre::VertexPoseKeyFrame* key = track->createVertexPoseKeyFrame(0);
-  for (size_t i = 0; i < exported.size(); ++i) key->addPoseReference(static_cast<unsigned short>(i), 0.0f);
+  for (size_t i = 0; i < exported.size(); ++i)
+    key->addPoseReference(static_cast<unsigned short>(i), 0.0f);
 }
 
 void setBounds(Ogre::Mesh& mesh, const Eigen::AlignedBox3f& box) {
@@ -207,13 +217,15 @@ std::string serializeMesh(const HeadMesh& head, const std::vector<ExportedPose>&
   // defines, so it renders and loads without a warning.
   std::vector<std::string> submeshMaterials;
   for (const HeadSubmesh& s : head.submeshes)
-    submeshMaterials.push_back(s.material < 0 ? "BaseWhite" : materialNames[static_cast<size_t>(s.material)]);
+    submeshMaterials.push_back(s.material < 0 ? "BaseWhite"
+                                              : materialNames[static_cast<size_t>(s.material)]);
 
   HeadlessOgre ogre;
   StandInMaterials standIns(submeshMaterials);
   ScratchMesh mesh;  // declared last: it refers to the materials and needs the managers
   addSharedGeometry(*mesh, head);
-  for (size_t i = 0; i < head.submeshes.size(); ++i) addSubmesh(*mesh, head.submeshes[i], submeshMaterials[i]);
+  for (size_t i = 0; i < head.submeshes.size(); ++i)
+    addSubmesh(*mesh, head.submeshes[i], submeshMaterials[i]);
   addPoses(*mesh, exported);
   setBounds(*mesh, bounds);
   // Edge lists serve stencil shadows only, which Lacrima does not use; built, they would be
@@ -234,12 +246,14 @@ void exportOgreMesh(const HeadMesh& head, const PoseSet& poses, const std::strin
   const std::vector<ExportedPose> exported = prepareRigExport(head, poses, meshPath);
   if (!std::isfinite(options.boundsRangeFactor) || options.boundsRangeFactor < 0.0f)
     throw FileError({meshPath, 0, 0}, "cannot export: bounds range factor " +
-                                          std::to_string(options.boundsRangeFactor) + " is not a finite value >= 0");
+                                          std::to_string(options.boundsRangeFactor) +
+                                          " is not a finite value >= 0");
   const fs::path target(meshPath);
   const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   std::error_code error;
   if (!fs::is_directory(folder, error))
-    throw FileError({meshPath, 0, 0}, "cannot write: '" + folder.string() + "' is not an existing folder");
+    throw FileError({meshPath, 0, 0},
+                    "cannot write: '" + folder.string() + "' is not an existing folder");
 
   const std::string stem = target.stem().string();
   const OgreMaterialScript materials =

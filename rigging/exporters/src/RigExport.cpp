@@ -39,7 +39,8 @@ void checkHead(const HeadMesh& head, const std::string& targetPath) {
   const int materialCount = static_cast<int>(head.materials.size());
   for (const HeadSubmesh& s : head.submeshes) {
     const std::string label = "sub-mesh '" + s.name + "'";
-    if (s.firstVertex < 0 || s.vertexCount < 0 || s.firstVertex > n || s.vertexCount > n - s.firstVertex)
+    if (s.firstVertex < 0 || s.vertexCount < 0 || s.firstVertex > n ||
+        s.vertexCount > n - s.firstVertex)
       reject(targetPath, label + " covers vertices outside 0.." + std::to_string(n - 1));
     if (s.material < -1 || s.material >= materialCount)
       reject(targetPath, label + " uses material " + std::to_string(s.material) + " of " +
@@ -58,7 +59,8 @@ void checkHead(const HeadMesh& head, const std::string& targetPath) {
 ExportedPose exportPose(int fap, const VertexPose& pose, int vertexCount,
                         const std::string& targetPath) {
   const std::string label = "the pose of " + channelLabel(fap);
-  if (!hasLinearPose(fap)) reject(targetPath, label + " is not a translation: this channel has no pose");
+  if (!hasLinearPose(fap))
+    reject(targetPath, label + " is not a translation: this channel has no pose");
   if (pose.offsets.cols() != static_cast<Eigen::Index>(pose.vertices.size()))
     reject(targetPath, label + " has " + std::to_string(pose.offsets.cols()) + " offsets for " +
                            std::to_string(pose.vertices.size()) + " vertices");
@@ -77,7 +79,8 @@ ExportedPose exportPose(int fap, const VertexPose& pose, int vertexCount,
   result.name = exportedPoseName(fap);
   result.offsets.resize(3, static_cast<Eigen::Index>(summed.size()));
   for (const auto& [vertex, offset] : summed) {
-    result.offsets.col(static_cast<Eigen::Index>(result.vertices.size())) = offset * kExportedPoseValue;
+    result.offsets.col(static_cast<Eigen::Index>(result.vertices.size())) =
+        offset * kExportedPoseValue;
     result.vertices.push_back(vertex);
   }
   return result;
@@ -91,7 +94,8 @@ void checkRotationGroup(const RotationGroup& group, const std::string& what, int
       reject(targetPath, "the " + what + " rotation group has vertex " + std::to_string(v) +
                              ", but the head has " + std::to_string(vertexCount) + " vertices");
   }
-  if (!group.centre.allFinite()) reject(targetPath, "the " + what + " rotation centre is not finite");
+  if (!group.centre.allFinite())
+    reject(targetPath, "the " + what + " rotation centre is not finite");
 }
 
 }  // namespace

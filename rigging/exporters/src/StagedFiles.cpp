@@ -72,7 +72,8 @@ void StagedFiles::add(const std::string& path, std::string_view bytes) {
 void StagedFiles::commit() {
   while (!staged_.empty()) {
     const Staged& s = staged_.front();
-    if (std::rename(s.temporary.c_str(), s.target.c_str()) != 0) failWith(s.target, "cannot replace", errno);
+    if (std::rename(s.temporary.c_str(), s.target.c_str()) != 0)
+      failWith(s.target, "cannot replace", errno);
     staged_.erase(staged_.begin());
   }
 }

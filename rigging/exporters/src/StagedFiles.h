@@ -12,7 +12,7 @@ namespace lacrima::exporters {
 // over their targets, in the order they were added. Temporaries of a batch that is abandoned,
 // by an exception or by never calling commit(), are deleted by the destructor.
 class StagedFiles {
-public:
+ public:
   StagedFiles() = default;
   ~StagedFiles();
   StagedFiles(const StagedFiles&) = delete;
@@ -26,7 +26,7 @@ public:
   // failed; targets renamed before it keep their new content.
   void commit();
 
-private:
+ private:
   struct Staged {
     std::string target;
     std::string temporary;

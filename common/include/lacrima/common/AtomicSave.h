@@ -9,4 +9,4 @@ namespace lacrima::inline common {
 // the new one is there. Throws FileError naming `path` and the system's reason on failure.
 void saveAtomically(const std::string& path, std::string_view bytes);
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

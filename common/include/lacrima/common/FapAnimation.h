@@ -32,9 +32,9 @@ struct HighLevelFrame {
 };
 
 struct FapAnimation {
-  std::string name = "lacrima";  // header label; one token when written
-  std::string version = "2.1";   // header version as read ("2.0", "2.1", ...)
-  double fps = 22.0;             // frames per second, > 0
+  std::string name = "lacrima";   // header label; one token when written
+  std::string version = "2.1";    // header version as read ("2.0", "2.1", ...)
+  double fps = 22.0;              // frames per second, > 0
   std::vector<FapValues> frames;  // frame i plays at time i / fps
 
   // Channels that carry data (masked in some frame of a file, keyed in a document).
@@ -58,4 +58,4 @@ struct FapAnimation {
   FapValues sample(double seconds) const;
 };
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

@@ -32,4 +32,4 @@ using FapValues = std::array<float, kChannelCount>;
 // Which channels a frame, key or animation uses; bit channelIndex(fap).
 using ChannelMask = std::bitset<kChannelCount>;
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

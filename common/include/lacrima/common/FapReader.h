@@ -28,7 +28,7 @@ struct FapReadResult {
 };
 
 class FapReader {
-public:
+ public:
   // Longest physical line accepted. A real value line is < 4 KiB.
   static constexpr std::size_t kMaxLineLength = 64 * 1024;
   // Highest frame count gaps may expand to, beyond the frames actually present: keeps a
@@ -42,4 +42,4 @@ public:
   static FapReadResult parse(std::string_view text, const std::string& displayName);
 };
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

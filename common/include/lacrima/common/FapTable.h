@@ -55,13 +55,13 @@ struct FapInfo {
   std::string_view name;         // e.g. "open_jaw", "tears_l_eye"
   std::string_view description;  // one sentence, for tooltips
   FapUnit unit;
-  bool bidirectional;            // false: only values >= 0 are meaningful
+  bool bidirectional;  // false: only values >= 0 are meaningful
   FapMotion motion;
   Eigen::Vector3f positiveMotion;  // unit direction or rotation axis; zero when not spatial
   FapGroup group;
-  std::string_view featurePoint;   // e.g. "2.1"; "6.3;6.4" for tongue_roll; "" for 1, 2
-  int quantizerStep;               // binary-stream step; a sensible slider granularity
-  int sliderMin, sliderMax;        // practical editing range (not normative limits)
+  std::string_view featurePoint;  // e.g. "2.1"; "6.3;6.4" for tongue_roll; "" for 1, 2
+  int quantizerStep;              // binary-stream step; a sensible slider granularity
+  int sliderMin, sliderMax;       // practical editing range (not normative limits)
 };
 
 // All 70 channels in number order: fapTable()[channelIndex(n)].number == n.
@@ -84,4 +84,4 @@ bool mirrorNegates(int fap);
 std::string_view toString(FapUnit unit);
 std::string_view toString(FapGroup group);
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

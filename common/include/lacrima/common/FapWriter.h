@@ -18,7 +18,7 @@ struct FapWriteOptions {
 };
 
 class FapWriter {
-public:
+ public:
   // The file's text. Values are rounded to integers; a non-integer fps is rounded (warned).
   // FAP 1/2 are never written (portable rule); if they carry data a warning says so.
   static std::string toText(const FapAnimation& animation, const FapWriteOptions& options = {},
@@ -30,4 +30,4 @@ public:
                    const FapWriteOptions& options = {}, Warnings* warnings = nullptr);
 };
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

@@ -46,4 +46,4 @@ struct FapuSet {
 // IRISD0 and must be positive on its own, so one shut eye cannot hide behind the mean.
 FapuSet computeFapu(const FapuReferencePoints& points);
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

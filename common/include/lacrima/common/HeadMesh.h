@@ -22,9 +22,9 @@ struct HeadMaterial {
 // A sub-mesh owns the contiguous vertex range [firstVertex, firstVertex + vertexCount):
 // a feature point's "vertex i of sub-mesh S" is global vertex S.firstVertex + i.
 struct HeadSubmesh {
-  std::string name;      // role for the default head: skin, eye_l, eye_r, cornea_l, cornea_r,
-                         // teeth_upper, teeth_lower, tongue, eyelashes, eyebrows; else as loaded
-  int material = -1;     // index into HeadMesh::materials, -1 for none
+  std::string name;   // role for the default head: skin, eye_l, eye_r, cornea_l, cornea_r,
+                      // teeth_upper, teeth_lower, tongue, eyelashes, eyebrows; else as loaded
+  int material = -1;  // index into HeadMesh::materials, -1 for none
   int firstVertex = 0;
   int vertexCount = 0;
   std::vector<Eigen::Vector3i> triangles;  // global vertex indices, counter-clockwise outside
@@ -41,7 +41,7 @@ struct HeadMesh {
   int triangleCount() const;
 
   const HeadSubmesh* findSubmesh(std::string_view name) const;  // nullptr if absent
-  int submeshOfVertex(int vertex) const;                         // -1 if none
+  int submeshOfVertex(int vertex) const;                        // -1 if none
 
   // Area-weighted vertex normals. Vertices at the same position (uv seams) share one normal,
   // so lighting shows no seams.
@@ -59,7 +59,7 @@ std::vector<int> weldCoincidentVertices(const Eigen::Matrix3Xf& positions);
 // Area-weighted unit normals of `positions` over `triangles`, accumulated per weld root so seam
 // copies get the same normal; vertices on no triangle get +z.
 void accumulateNormals(const Eigen::Matrix3Xf& positions,
-                       const std::vector<Eigen::Vector3i>& triangles,
-                       const std::vector<int>& weld, Eigen::Matrix3Xf& normals);
+                       const std::vector<Eigen::Vector3i>& triangles, const std::vector<int>& weld,
+                       Eigen::Matrix3Xf& normals);
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

@@ -16,16 +16,16 @@ inline constexpr int kMinImageSide = 16;
 inline constexpr int kMaxImageSide = 8192;
 
 inline bool isImageSizeInBounds(QSize size) {
-  return size.width() >= kMinImageSide && size.height() >= kMinImageSide && size.width() <= kMaxImageSide &&
-         size.height() <= kMaxImageSide;
+  return size.width() >= kMinImageSide && size.height() >= kMinImageSide &&
+         size.width() <= kMaxImageSide && size.height() <= kMaxImageSide;
 }
 
 struct ParsedImageSize {
-  QSize size;          // valid when error is empty
-  std::string error;   // what was expected, to follow "--size: "
+  QSize size;         // valid when error is empty
+  std::string error;  // what was expected, to follow "--size: "
 };
 
 // "1280x720" (or "1280X720"), both sides whole numbers in [kMinImageSide, kMaxImageSide].
 ParsedImageSize parseImageSize(std::string_view text);
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

@@ -15,4 +15,4 @@ namespace lacrima::inline common {
 SourceLocation jsonSyntaxErrorLocation(std::string_view text, const QJsonParseError& error,
                                        const std::string& file);
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

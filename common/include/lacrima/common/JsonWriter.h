@@ -16,7 +16,7 @@ namespace lacrima::inline common {
 std::string formatJsonNumber(double value);
 
 class JsonWriter {
-public:
+ public:
   // Indented: one value per line, two spaces per level. Compact: one line, ", " between values.
   enum class Layout { Indented, Compact };
   explicit JsonWriter(Layout layout = Layout::Indented) : layout_(layout) {}
@@ -36,17 +36,35 @@ public:
   void numberRow(std::span<const double> values);
 
   // Convenience for flat reports: key(name) followed by the value.
-  void field(std::string_view name, double value) { key(name); number(value); }
-  void field(std::string_view name, long long value) { key(name); integer(value); }
-  void field(std::string_view name, int value) { key(name); integer(value); }
-  void field(std::string_view name, bool value) { key(name); boolean(value); }
-  void field(std::string_view name, std::string_view value) { key(name); string(value); }
-  void field(std::string_view name, const char* value) { key(name); string(value); }
+  void field(std::string_view name, double value) {
+    key(name);
+    number(value);
+  }
+  void field(std::string_view name, long long value) {
+    key(name);
+    integer(value);
+  }
+  void field(std::string_view name, int value) {
+    key(name);
+    integer(value);
+  }
+  void field(std::string_view name, bool value) {
+    key(name);
+    boolean(value);
+  }
+  void field(std::string_view name, std::string_view value) {
+    key(name);
+    string(value);
+  }
+  void field(std::string_view name, const char* value) {
+    key(name);
+    string(value);
+  }
 
   // The text, ending in a newline.
   std::string finish() &&;
 
-private:
+ private:
   void separate();
   void open(char bracket);
   void close(char bracket);
@@ -61,4 +79,4 @@ private:
   bool afterKey_ = false;
 };
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

@@ -15,22 +15,22 @@
 // High-level channels (1, 2) hold each key's code until the next key (codes do not blend).
 #include <lacrima/common/FapAnimation.h>
 
-#include <string_view>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 namespace lacrima::inline common {
 
 enum class Interpolation { Linear, Smooth };
 
-std::string_view toString(Interpolation mode);                  // "linear" / "smooth"
+std::string_view toString(Interpolation mode);  // "linear" / "smooth"
 std::optional<Interpolation> interpolationFromString(std::string_view text);
 
 struct Keyframe {
-  double time = 0.0;  // seconds
+  double time = 0.0;                                    // seconds
   Interpolation interpolation = Interpolation::Linear;  // of the segment that starts here
-  ChannelMask channels;  // channels this key sets
-  FapValues values{};    // indexed by channelIndex(fap); meaningful where `channels` is set
+  ChannelMask channels;                                 // channels this key sets
+  FapValues values{};  // indexed by channelIndex(fap); meaningful where `channels` is set
 
   bool has(int fap) const { return channels.test(channelIndex(fap)); }
   float value(int fap) const { return values[channelIndex(fap)]; }
@@ -41,7 +41,7 @@ struct Keyframe {
 
 // Keys sorted by time, at most one key per time.
 class KeyframeSequence {
-public:
+ public:
   KeyframeSequence() = default;
   explicit KeyframeSequence(std::vector<Keyframe> keys);  // sorts; later duplicates win
 
@@ -67,8 +67,8 @@ public:
   static KeyframeSequence fromAnimation(const FapAnimation& animation,
                                         Interpolation mode = Interpolation::Linear);
 
-private:
+ private:
   std::vector<Keyframe> keys_;
 };
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

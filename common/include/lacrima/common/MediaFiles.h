@@ -21,4 +21,4 @@ std::vector<std::string> mediaCandidates(std::string_view relative);
 // The first candidate that exists. Throws FileError naming `relative` and every place looked.
 std::string findMediaFile(std::string_view relative);
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

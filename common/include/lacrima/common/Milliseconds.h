@@ -11,4 +11,4 @@ inline double millisecondsSince(SteadyClock::time_point start) {
   return std::chrono::duration<double, std::milli>(SteadyClock::now() - start).count();
 }
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

@@ -50,16 +50,16 @@ struct RigInput {
   std::map<std::string, Eigen::Vector3f> featurePoints;     // neutral positions by FDP id
   RotationGroup eyeLeft, eyeRight;  // vertices of each eyeball (+cornea), centre of rotation
   Eigen::Vector3f neckPivot = Eigen::Vector3f::Zero();
-  std::vector<int> headVertices;    // vertices that follow head rotation (default: all)
+  std::vector<int> headVertices;  // vertices that follow head rotation (default: all)
 };
 
 struct PoseBakeReport {
-  std::vector<int> bakedFaps;                    // FAPs that got a pose or rotation group, ascending
-  std::vector<std::string> warnings;             // e.g. "FAP 29: no pupil geometry; pose empty"
+  std::vector<int> bakedFaps;         // FAPs that got a pose or rotation group, ascending
+  std::vector<std::string> warnings;  // e.g. "FAP 29: no pupil geometry; pose empty"
 };
 
 // Throws std::invalid_argument when input.mesh is null; every other gap in the input leaves
 // the affected FAPs without a pose and is reported in `report`.
 PoseSet bakePoses(const RigInput& input, PoseBakeReport* report = nullptr);
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

@@ -61,7 +61,7 @@ struct PoseSet {
 // Blends poses into positions and normals. Holds the topology it needs to rebuild normals,
 // so per-frame work is one pass over the poses in use plus one over the triangles.
 class PoseBlender {
-public:
+ public:
   // Throws std::invalid_argument when `poses` does not fit `neutral` (vertex count, an index
   // out of range, offsets of the wrong size, a non-finite centre) or a triangle of `neutral`
   // names a missing vertex. An entirely empty PoseSet fits any head.
@@ -73,7 +73,7 @@ public:
 
   const PoseSet& poses() const { return poses_; }
 
-private:
+ private:
   Eigen::Matrix3Xf neutral_;
   PoseSet poses_;
   std::vector<Eigen::Vector3i> triangles_;  // all sub-meshes
@@ -84,4 +84,4 @@ private:
   std::array<Eigen::Vector3f, kChannelCount> eyeLeftShift_, eyeRightShift_;
 };
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

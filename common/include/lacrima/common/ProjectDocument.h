@@ -72,4 +72,4 @@ struct ProjectDocument {
   static ProjectDocument fromAnimation(const FapAnimation& animation);  // a key per frame
 };
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

@@ -14,8 +14,8 @@ namespace lacrima::inline common {
 // and one row of the table, which points at the field (the simulation's TearSettings builds on
 // this, and reads and writes its values by name through the table alone).
 struct TearParameterSet {
-  double pressure = 0, viscosity = 0, tension = 0, adhesion = 0, friction = 0, gravity = 0, kernel = 0, nodeSize = 0,
-         cubeSize = 0, iso = 0;
+  double pressure = 0, viscosity = 0, tension = 0, adhesion = 0, friction = 0, gravity = 0,
+         kernel = 0, nodeSize = 0, cubeSize = 0, iso = 0;
 };
 
 struct TearParameterInfo {
@@ -45,4 +45,4 @@ class JsonValue;
 // "file:line:column: path.name: <tearParameterProblem>" (JsonValue.h).
 TearParameterValues readTearParameters(const JsonValue& object);
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common

@@ -21,7 +21,7 @@ class ZeroSlider;
 
 class ChannelRow : public QWidget {
   Q_OBJECT
-public:
+ public:
   ChannelRow(editing::EditorModel& model, int fap, QWidget* parent = nullptr);
 
   int fap() const { return fap_; }
@@ -34,11 +34,11 @@ public:
   QToolButton* resetButton() const { return reset_; }
   KeyToggle* keyToggle() const { return key_; }
 
-protected:
+ protected:
   void paintEvent(QPaintEvent* event) override;
   void mousePressEvent(QMouseEvent* event) override;
 
-private:
+ private:
   void edit(int value);
 
   editing::EditorModel& model_;
@@ -57,7 +57,7 @@ private:
 // Keeps wheel events away from a spin box or combo box that does not have focus, so scrolling
 // the slider list never changes a value.
 class WheelGuard : public QObject {
-public:
+ public:
   using QObject::QObject;
   static WheelGuard* instance();
   bool eventFilter(QObject* watched, QEvent* event) override;

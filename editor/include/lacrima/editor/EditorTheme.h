@@ -12,8 +12,8 @@ namespace lacrima::editor::theme {
 
 void apply(QApplication& app);
 
-QColor keyAccent();        // keys at the current time, selected keys
-QColor keyIdle();          // other keys
+QColor keyAccent();  // keys at the current time, selected keys
+QColor keyIdle();    // other keys
 QColor playhead();
 QColor tearBlue();
 QColor groupColour(FapGroup group);

@@ -14,11 +14,11 @@ class KeyTableModel;
 
 class KeyListPanel : public QWidget {
   Q_OBJECT
-public:
+ public:
   explicit KeyListPanel(editing::EditorModel& model, QWidget* parent = nullptr);
   QTableView* view() const { return view_; }
 
-private:
+ private:
   void pullSelection();  // model -> view
   void pushSelection();  // view -> model
 

@@ -10,10 +10,9 @@ class EditorModel;
 
 namespace lacrima::editor {
 
-
 class KeyTableModel : public QAbstractTableModel {
   Q_OBJECT
-public:
+ public:
   enum Column { TimeColumn, FrameColumn, InterpolationColumn, ChannelsColumn, ColumnCount };
 
   explicit KeyTableModel(editing::EditorModel& model, QObject* parent = nullptr);
@@ -25,7 +24,7 @@ public:
   Qt::ItemFlags flags(const QModelIndex& index) const override;
   bool setData(const QModelIndex& index, const QVariant& value, int role) override;
 
-private:
+ private:
   editing::EditorModel& model_;
 };
 

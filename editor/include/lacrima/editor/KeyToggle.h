@@ -9,7 +9,7 @@ namespace lacrima::editor {
 
 class KeyToggle : public QWidget {
   Q_OBJECT
-public:
+ public:
   enum class State { Unanimated, Animated, Keyed };
   explicit KeyToggle(QWidget* parent = nullptr);
 
@@ -17,14 +17,14 @@ public:
   void setState(State state);
   QSize sizeHint() const override { return {14, 18}; }
 
-signals:
+ signals:
   void clicked();
 
-protected:
+ protected:
   void paintEvent(QPaintEvent* event) override;
   void mousePressEvent(QMouseEvent* event) override;
 
-private:
+ private:
   State state_ = State::Unanimated;
 };
 

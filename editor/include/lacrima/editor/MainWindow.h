@@ -52,7 +52,7 @@ struct EditorOptions {
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
-public:
+ public:
   explicit MainWindow(EditorOptions options = {}, QWidget* parent = nullptr);
   ~MainWindow() override;
 
@@ -92,16 +92,16 @@ public:
   void copyKeys();
   void pasteKeys(std::optional<double> at = std::nullopt);
 
-protected:
+ protected:
   void closeEvent(QCloseEvent* event) override;
   void dragEnterEvent(QDragEnterEvent* event) override;
   void dropEvent(QDropEvent* event) override;
 
-private:
+ private:
   void createDocks();
   void createMenus();
-  QAction* addAction(QMenu* menu, const QString& name, const QString& text, const QKeySequence& shortcut,
-                     const QString& tip = {});
+  QAction* addAction(QMenu* menu, const QString& name, const QString& text,
+                     const QKeySequence& shortcut, const QString& tip = {});
   bool maybeSave();
   void updateTitle();
   void updateStatusFigures();

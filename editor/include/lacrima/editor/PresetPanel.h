@@ -18,11 +18,11 @@ class EditorModel;
 
 namespace lacrima::editor {
 
-
 class PresetPanel : public QWidget {
   Q_OBJECT
-public:
-  PresetPanel(editing::EditorModel& model, editing::PresetLibrary library, QWidget* parent = nullptr);
+ public:
+  PresetPanel(editing::EditorModel& model, editing::PresetLibrary library,
+              QWidget* parent = nullptr);
 
   void setLibrary(editing::PresetLibrary library, const QString& source);
   const editing::PresetLibrary& library() const { return library_; }
@@ -33,10 +33,10 @@ public:
   bool apply(const QString& id);
   QTreeWidget* list() const { return list_; }
 
-signals:
+ signals:
   void loadRequested();
 
-private:
+ private:
   void rebuild();
   void showDetails();
   QString selectedId() const;

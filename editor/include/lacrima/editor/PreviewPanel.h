@@ -27,11 +27,11 @@ class FrameStepClock;
 
 namespace lacrima::editor {
 
-
 class PreviewPanel : public QWidget {
   Q_OBJECT
-public:
-  PreviewPanel(editing::EditorModel& model, editing::FrameStepClock& clock, QWidget* parent = nullptr);
+ public:
+  PreviewPanel(editing::EditorModel& model, editing::FrameStepClock& clock,
+               QWidget* parent = nullptr);
   ~PreviewPanel() override;
 
   // Loads the default head now (also scheduled by the constructor). Returns whether a head is
@@ -55,10 +55,10 @@ public:
   // Renders now and returns the picture (screenshots); null when there is no viewport.
   QImage grabFrame();
 
-signals:
+ signals:
   void statusChanged(const QString& text);
 
-private:
+ private:
   void onValuesChanged();
   void updateIdleTimer();
   void setStatus(const QString& text);

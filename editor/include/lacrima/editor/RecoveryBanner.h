@@ -11,20 +11,20 @@ namespace lacrima::editor {
 
 class RecoveryBanner : public QWidget {
   Q_OBJECT
-public:
+ public:
   explicit RecoveryBanner(QWidget* parent = nullptr);
   void setText(const QString& text);
   QPushButton* restoreButton() const { return restore_; }
   QPushButton* discardButton() const { return discard_; }
 
-signals:
+ signals:
   void restoreRequested();
   void discardRequested();
 
-protected:
+ protected:
   void paintEvent(QPaintEvent* event) override;
 
-private:
+ private:
   QLabel* text_;
   QPushButton* restore_;
   QPushButton* discard_;

@@ -29,7 +29,7 @@ class GroupSection;
 
 class SliderPanel : public QWidget {
   Q_OBJECT
-public:
+ public:
   explicit SliderPanel(editing::EditorModel& model, QWidget* parent = nullptr);
 
   void setFilterText(const QString& text);
@@ -44,11 +44,11 @@ public:
   // Re-reads every value from the model (also done on every model change).
   void refresh();
 
-signals:
+ signals:
   // The expression picker asks for the expression's preset (applied by the main window).
   void expressionPresetRequested(int code);
 
-private:
+ private:
   void buildGroups();
   void applyFilter();
 

@@ -26,10 +26,9 @@ class EditorModel;
 
 namespace lacrima::editor {
 
-
 class TimelineWidget : public QWidget {
   Q_OBJECT
-public:
+ public:
   explicit TimelineWidget(editing::EditorModel& model, QWidget* parent = nullptr);
 
   double viewStart() const { return start_; }
@@ -46,12 +45,12 @@ public:
   QSize sizeHint() const override { return {900, 170}; }
   QSize minimumSizeHint() const override { return {200, 110}; }
 
-signals:
+ signals:
   void copyRequested();
   void pasteRequested(double atSeconds);
   void mirrorRequested();
 
-protected:
+ protected:
   void paintEvent(QPaintEvent* event) override;
   void mousePressEvent(QMouseEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;
@@ -62,7 +61,7 @@ protected:
   void resizeEvent(QResizeEvent* event) override;
   void showEvent(QShowEvent* event) override;
 
-private:
+ private:
   enum class Drag { None, Scrub, PendingKey, MoveKeys, PendingBand, Band, Pan };
   struct Curve {
     double start = 0, rate = 1;  // sample i is at start + i / rate

@@ -15,11 +15,11 @@ class FrameStepClock;
 
 namespace lacrima::editor {
 
-
 class TransportBar : public QWidget {
   Q_OBJECT
-public:
-  TransportBar(editing::EditorModel& model, editing::FrameStepClock& clock, QWidget* parent = nullptr);
+ public:
+  TransportBar(editing::EditorModel& model, editing::FrameStepClock& clock,
+               QWidget* parent = nullptr);
 
   QToolButton* playButton() const { return play_; }
   QSpinBox* rateBox() const { return rate_; }
@@ -28,7 +28,7 @@ public:
   enum class Glyph { Start, PreviousKey, Play, Pause, NextKey, End, Loop, Key };
   static QIcon icon(Glyph glyph, const QColor& colour);
 
-private:
+ private:
   void refreshTime();
 
   editing::EditorModel& model_;

@@ -16,7 +16,7 @@ namespace lacrima::editor {
 
 class ZeroSlider : public QWidget {
   Q_OBJECT
-public:
+ public:
   ZeroSlider(int minimum, int maximum, int step, QColor colour, QWidget* parent = nullptr);
 
   int value() const { return value_; }
@@ -30,13 +30,13 @@ public:
   QSize sizeHint() const override { return {140, 20}; }
   QSize minimumSizeHint() const override { return {60, 20}; }
 
-signals:
+ signals:
   void dragStarted();
   void valueEdited(int value);  // by the user, while dragging or by keys
   void dragFinished();
   void resetRequested();
 
-protected:
+ protected:
   void paintEvent(QPaintEvent* event) override;
   void mousePressEvent(QMouseEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;
@@ -46,7 +46,7 @@ protected:
   void wheelEvent(QWheelEvent* event) override;
   bool event(QEvent* event) override;  // keeps its keys from window shortcuts while focused
 
-private:
+ private:
   double xOf(double value) const;
   int valueAt(double x) const;
   void edit(int value);
@@ -56,7 +56,7 @@ private:
   QColor colour_;
   bool emphasis_ = false;
   bool dragging_ = false;
-  double grabX_ = 0;      // fine drags move relative to where they started
+  double grabX_ = 0;  // fine drags move relative to where they started
   int grabValue_ = 0;
 };
 

@@ -12,8 +12,8 @@
 namespace lacrima::player {
 
 struct BatchRenderOptions {
-  QString input;       // .fap or project
-  QString outputDir;   // created if missing
+  QString input;      // .fap or project
+  QString outputDir;  // created if missing
   QSize size{1280, 720};
   int sheetFrames = 12;
   // Called after each frame with (frames done, frames in all).

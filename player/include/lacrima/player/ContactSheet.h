@@ -19,6 +19,7 @@ struct SheetFrame {
 };
 
 // Thumbnails `thumbWidth` wide (height from the aspect ratio), `columns` per row.
-QImage contactSheet(const std::vector<SheetFrame>& frames, const QString& title, int columns = 4, int thumbWidth = 400);
+QImage contactSheet(const std::vector<SheetFrame>& frames, const QString& title, int columns = 4,
+                    int thumbWidth = 400);
 
 }  // namespace lacrima::player

@@ -8,8 +8,8 @@
 namespace lacrima::player {
 
 struct ErrorReport {
-  QString file;     // as named by the user
-  int line = 0;     // 0 when the problem concerns the whole file
+  QString file;  // as named by the user
+  int line = 0;  // 0 when the problem concerns the whole file
   int column = 0;
   QString message;  // what was expected
   QString oneLine;  // "file:line:column: message"

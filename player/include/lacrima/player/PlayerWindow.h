@@ -33,7 +33,7 @@ class QTimer;
 namespace lacrima::viewport {
 class EffectsPanel;
 class FaceViewport;
-}
+}  // namespace lacrima::viewport
 
 namespace lacrima::player {
 
@@ -41,7 +41,7 @@ class TearParametersPanel;
 
 class PlayerWindow : public QMainWindow {
   Q_OBJECT
-public:
+ public:
   explicit PlayerWindow(std::unique_ptr<playback::HeadRig> rig, QWidget* parent = nullptr);
   ~PlayerWindow() override;
 
@@ -51,7 +51,7 @@ public:
   void play();
   void pause();
   void togglePlay();
-  void resetPlayback();    // neutral face, no tears, time 0
+  void resetPlayback();  // neutral face, no tears, time 0
   void seek(double seconds);
 
   bool playing() const { return clock_.running(); }
@@ -73,15 +73,15 @@ public:
   // The window as it looks, the OGRE viewport included (a plain widget grab shows it black).
   QImage screenshot();
 
-signals:
+ signals:
   void fileOpened(const QString& path);
   void openFailed(const QString& message);
 
-protected:
+ protected:
   void dragEnterEvent(QDragEnterEvent* event) override;
   void dropEvent(QDropEvent* event) override;
 
-private:
+ private:
   void buildActions();
   void buildLayout();
   void chooseFile();

@@ -12,7 +12,7 @@
 namespace lacrima::player {
 
 class PngWriter {
-public:
+ public:
   explicit PngWriter(int inFlight);
   ~PngWriter();
   PngWriter(const PngWriter&) = delete;
@@ -21,7 +21,7 @@ public:
   void write(QImage image, const QString& path);
   void finish();
 
-private:
+ private:
   void waitOldest();
 
   int inFlight_;

@@ -6,14 +6,14 @@
 namespace lacrima::player {
 
 class RealTimeClock {
-public:
-  void play();                // runs on from time()
-  void pause();               // holds time()
+ public:
+  void play();                   // runs on from time()
+  void pause();                  // holds time()
   void setTime(double seconds);  // keeps running or paused
   double time() const;
   bool running() const { return running_; }
 
-private:
+ private:
   QElapsedTimer elapsed_;
   double origin_ = 0;  // animation time when elapsed_ was (re)started
   bool running_ = false;

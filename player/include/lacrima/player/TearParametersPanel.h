@@ -17,7 +17,7 @@ namespace lacrima::player {
 
 class TearParametersPanel : public QWidget {
   Q_OBJECT
-public:
+ public:
   explicit TearParametersPanel(QWidget* parent = nullptr);
 
   // Shows `values` (overrides of the defaults) without emitting edited(); `fileValues` is what
@@ -29,10 +29,10 @@ public:
   QDoubleSpinBox* spinBox(std::string_view name) const;
   QPushButton* thesisPreset() const { return thesis_; }
 
-signals:
+ signals:
   void edited();
 
-private:
+ private:
   void setShown(const TearParameterValues& values);
 
   std::vector<QDoubleSpinBox*> boxes_;  // in table order

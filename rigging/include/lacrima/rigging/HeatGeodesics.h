@@ -47,7 +47,7 @@
 namespace lacrima::rigging {
 
 class HeatGeodesics {
-public:
+ public:
   // Factors both systems. Throws std::invalid_argument for a time factor that is not
   // finite and positive, std::runtime_error if a factorisation fails.
   explicit HeatGeodesics(const SurfaceGraph& graph, double timeFactor = 1.0,
@@ -63,7 +63,7 @@ public:
 
   double timeStep() const { return timeStep_; }
 
-private:
+ private:
   struct Face {
     Eigen::Vector3i nodes;
     Eigen::Matrix3d gradient;  // column i: (N x e_i) / (2A), so grad u = gradient * u_corners

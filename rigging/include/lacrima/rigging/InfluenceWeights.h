@@ -27,7 +27,7 @@ namespace lacrima::rigging {
 enum class GeodesicMethod { Dijkstra, Heat };
 
 class InfluenceWeights {
-public:
+ public:
   // Keeps its own copy of the graph. `heatTimeFactor` is m in t = m h^2 (Heat only).
   InfluenceWeights(const SurfaceGraph& graph, GeodesicMethod method, double heatTimeFactor = 1.0);
 
@@ -46,7 +46,7 @@ public:
   GeodesicMethod method() const { return method_; }
   const SurfaceGraph& graph() const { return graph_; }
 
-private:
+ private:
   SurfaceGraph graph_;
   GeodesicMethod method_;
   std::unique_ptr<HeatGeodesics> heat_;  // factored systems, Heat only

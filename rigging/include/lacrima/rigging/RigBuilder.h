@@ -55,22 +55,23 @@ struct BuiltRig {
   std::map<std::string, Eigen::Vector3d, FdpIdLess> featurePoints;  // neutral positions
   // Global vertices each point is bound to, with their barycentric weights (1 for a vertex).
   std::map<std::string, std::vector<std::pair<int, double>>, FdpIdLess> bindings;
-  std::map<std::string, double, FdpIdLess> radii;                   // influence radius used
-  std::map<std::string, GeodesicMethod, FdpIdLess> methods;         // geodesic method used
+  std::map<std::string, double, FdpIdLess> radii;            // influence radius used
+  std::map<std::string, GeodesicMethod, FdpIdLess> methods;  // geodesic method used
   std::optional<Eigen::Vector3d> eyeCentreLeft, eyeCentreRight;
-  std::optional<double> eyeRadiusLeft, eyeRadiusRight;              // when fitted
+  std::optional<double> eyeRadiusLeft, eyeRadiusRight;  // when fitted
   Eigen::Vector3d neckPivot = Eigen::Vector3d::Zero();
   TearSource tearLeft, tearRight;
   std::map<std::string, std::string> roles;  // sub-mesh name -> skin/eye_left/.../rigid
   RigInput input;                            // input.mesh points at the mesh given to buildRig
   PoseSet poses;
-  std::vector<std::string> warnings;         // rig and bake warnings, each naming its subject
+  std::vector<std::string> warnings;  // rig and bake warnings, each naming its subject
 };
 
 // Builds and bakes the rig. `fdp` must have passed validateFeaturePoints for `mesh`; `mesh`
 // must outlive the result (input.mesh points at it). Throws FileError naming fdp.path when the
 // FAPU points give a non-positive distance (computeFapu's message) or an eye has no vertices
 // to fit a centre to.
-BuiltRig buildRig(const HeadMesh& mesh, const FeaturePointFile& fdp, const RigOptions& options = {});
+BuiltRig buildRig(const HeadMesh& mesh, const FeaturePointFile& fdp,
+                  const RigOptions& options = {});
 
 }  // namespace lacrima::rigging

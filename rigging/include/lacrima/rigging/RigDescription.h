@@ -26,7 +26,8 @@ struct RigFiles {
   std::string glb = "head.glb";
 };
 
-std::string rigDescriptionJson(const HeadMesh& mesh, const BuiltRig& rig, const RigFiles& files = {});
+std::string rigDescriptionJson(const HeadMesh& mesh, const BuiltRig& rig,
+                               const RigFiles& files = {});
 
 // The --report text: FAPU values and, for each translational FAP 3-68, its feature point,
 // pose size (vertices), X0, the displacement of the point for a value of 1024 computed by
@@ -37,6 +38,7 @@ std::string rigReportJson(const HeadMesh& mesh, const BuiltRig& rig);
 
 // The displacement of feature point `id` (its bound vertices, barycentric mix for triangle
 // points) by the linear pose of `fap` at `value`; zero when the pose or point is missing.
-Eigen::Vector3d featurePointDisplacement(const BuiltRig& rig, const std::string& id, int fap, double value);
+Eigen::Vector3d featurePointDisplacement(const BuiltRig& rig, const std::string& id, int fap,
+                                         double value);
 
 }  // namespace lacrima::rigging

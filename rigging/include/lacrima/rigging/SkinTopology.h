@@ -18,10 +18,12 @@
 namespace lacrima::rigging {
 
 // Named warnings (empty for a clean skin). Throws std::invalid_argument for an unknown name.
-std::vector<std::string> checkSkinTopology(const HeadMesh& mesh, const std::vector<std::string>& skin);
+std::vector<std::string> checkSkinTopology(const HeadMesh& mesh,
+                                           const std::vector<std::string>& skin);
 
 // The mean of the vertices of the skin's open boundary loop with the lowest mean height (y):
 // the neck opening of a head cut from a body. nullopt for a closed skin.
-std::optional<Eigen::Vector3d> lowestBoundaryLoopCentre(const HeadMesh& mesh, const std::vector<std::string>& skin);
+std::optional<Eigen::Vector3d> lowestBoundaryLoopCentre(const HeadMesh& mesh,
+                                                        const std::vector<std::string>& skin);
 
 }  // namespace lacrima::rigging

@@ -25,10 +25,10 @@
 namespace lacrima::rigging {
 
 struct SurfaceGraph {
-  int meshVertexCount = 0;         // size of the mesh's vertex array the graph was built from
-  std::vector<int> nodeOfVertex;   // per mesh vertex: its node, or -1 when not chosen
-  std::vector<int> vertexOfNode;   // per node: its lowest-numbered chosen mesh vertex
-  Eigen::Matrix3Xd positions;      // per node
+  int meshVertexCount = 0;        // size of the mesh's vertex array the graph was built from
+  std::vector<int> nodeOfVertex;  // per mesh vertex: its node, or -1 when not chosen
+  std::vector<int> vertexOfNode;  // per node: its lowest-numbered chosen mesh vertex
+  Eigen::Matrix3Xd positions;     // per node
   std::vector<Eigen::Vector3i> triangles;  // node indices, orientation as in the mesh
 
   // Adjacency in compressed rows: the neighbours of node i are
@@ -39,7 +39,7 @@ struct SurfaceGraph {
 
   std::vector<int> component;  // per node, 0 .. componentCount - 1
   int componentCount = 0;
-  double meanEdgeLength = 0;   // over distinct edges; 0 when there are none
+  double meanEdgeLength = 0;  // over distinct edges; 0 when there are none
 
   int nodeCount() const { return static_cast<int>(vertexOfNode.size()); }
 

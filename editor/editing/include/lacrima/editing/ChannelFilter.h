@@ -19,14 +19,14 @@
 namespace lacrima::editing {
 
 class ChannelFilter {
-public:
+ public:
   explicit ChannelFilter(std::string_view text = {});
 
   bool isEmpty() const { return alternatives_.empty(); }
   bool matches(const FapInfo& info) const;
   ChannelMask matching() const;  // over the whole table
 
-private:
+ private:
   struct Word {
     int from = 0, to = -1;  // number range when from <= to
     std::string text;       // lower case, '_' for spaces

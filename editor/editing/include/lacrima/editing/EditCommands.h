@@ -20,7 +20,7 @@ namespace lacrima::editing {
 class EditorModel;
 
 class KeyEditCommand : public QUndoCommand {
-public:
+ public:
   // Selections are restored on undo/redo when given (edits that move or create keys).
   KeyEditCommand(EditorModel& model, KeyChange change, const QString& text,
                  std::optional<std::vector<double>> selectionBefore,
@@ -28,14 +28,14 @@ public:
   void redo() override;
   void undo() override;
 
-protected:
+ protected:
   EditorModel& model_;
   KeyChange change_;
   std::optional<std::vector<double>> selectionBefore_, selectionAfter_;
 };
 
 class SetChannelsCommand : public KeyEditCommand {
-public:
+ public:
   static constexpr int kId = 0x4c41;  // any constant unique among Lacrima's commands
 
   SetChannelsCommand(EditorModel& model, KeyChange change, const QString& text, double time,
@@ -43,19 +43,20 @@ public:
   int id() const override { return kId; }
   bool mergeWith(const QUndoCommand* other) override;
 
-private:
+ private:
   double time_;
   ChannelMask channels_;
   int session_;
 };
 
 class SettingsCommand : public QUndoCommand {
-public:
-  SettingsCommand(EditorModel& model, ProjectDocument before, ProjectDocument after, const QString& text);
+ public:
+  SettingsCommand(EditorModel& model, ProjectDocument before, ProjectDocument after,
+                  const QString& text);
   void redo() override;
   void undo() override;
 
-private:
+ private:
   EditorModel& model_;
   ProjectDocument before_, after_;  // keys left empty
 };

@@ -34,7 +34,7 @@ using ChannelValue = std::pair<int, float>;
 
 class EditorModel : public QObject {
   Q_OBJECT
-public:
+ public:
   explicit EditorModel(QObject* parent = nullptr);
   ~EditorModel() override;
 
@@ -53,14 +53,14 @@ public:
   void setCurrentTimeExact(double seconds);  // playback
   double snapTime(double seconds) const;
   double frameDuration() const { return 1.0 / document_.fps; }
-  int frameAt(double seconds) const;          // nearest frame number
+  int frameAt(double seconds) const;  // nearest frame number
   double endTime() const { return document_.keys.endTime(); }
 
   // --- values at the current time -----------------------------------------------------
   const FapValues& currentValues() const { return values_; }
   float currentValue(int fap) const { return values_[channelIndex(fap)]; }
-  int currentKeyIndex() const;                  // key at the current time, or -1
-  ChannelMask keyedAtCurrentTime() const;       // channels of that key
+  int currentKeyIndex() const;             // key at the current time, or -1
+  ChannelMask keyedAtCurrentTime() const;  // channels of that key
   const ChannelMask& animatedChannels() const { return animated_; }  // union over all keys
 
   // --- selection ----------------------------------------------------------------------
@@ -107,7 +107,7 @@ public:
   void applyKeyChange(const KeyChange& change, bool redo);
   void applySettings(const ProjectDocument& settings);
 
-signals:
+ signals:
   void documentReset();
   void keysChanged();
   void settingsChanged();
@@ -119,7 +119,7 @@ signals:
   // A user-visible note about an edit that could not be done ("nothing to mirror").
   void message(const QString& text);
 
-private:
+ private:
   void refreshValues();
   void pushKeyEdit(const KeyChange& change, const QString& text,
                    std::optional<std::vector<double>> selectionAfter);

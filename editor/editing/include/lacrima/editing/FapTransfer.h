@@ -22,16 +22,17 @@ struct FapImportOptions {
 
 struct FapImportResult {
   ProjectDocument document;
-  int frames = 0;        // frames in the file
-  int keys = 0;          // keys made from them
-  double maxError = 0;   // largest reproduction error of a dropped frame (channel units)
+  int frames = 0;       // frames in the file
+  int keys = 0;         // keys made from them
+  double maxError = 0;  // largest reproduction error of a dropped frame (channel units)
   Warnings warnings;
 };
 
 // Throws FileError (file:line:column: what was expected) for input the reader rejects.
 FapImportResult importFap(const std::string& path, const FapImportOptions& options = {});
 // Same, from a decoded animation (tests, benchmarks).
-FapImportResult importAnimation(const FapAnimation& animation, const FapImportOptions& options = {});
+FapImportResult importAnimation(const FapAnimation& animation,
+                                const FapImportOptions& options = {});
 
 struct FapExportOptions {
   double fps = 22.0;

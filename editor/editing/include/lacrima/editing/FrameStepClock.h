@@ -14,7 +14,7 @@ class EditorModel;
 
 class FrameStepClock : public QObject {
   Q_OBJECT
-public:
+ public:
   explicit FrameStepClock(EditorModel& model, QObject* parent = nullptr);
 
   bool isPlaying() const { return timer_.isActive(); }
@@ -23,7 +23,7 @@ public:
   // Frames per second actually reached over the last second of playback.
   double achievedRate() const { return achieved_; }
 
-public slots:
+ public slots:
   void play();
   void pause();
   void toggle();
@@ -31,13 +31,13 @@ public slots:
   void setLoop(bool on);
   void advance();  // one playback frame (the timer calls it; tests may too)
 
-signals:
+ signals:
   void playingChanged(bool playing);
   void rateChanged(double framesPerSecond);
   // Emitted after each advance with the step in seconds (the preview simulates by it).
   void ticked(double dt);
 
-private:
+ private:
   EditorModel& model_;
   QTimer timer_;
   double rate_ = 22.0;

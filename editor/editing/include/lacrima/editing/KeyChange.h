@@ -28,7 +28,7 @@ inline constexpr double kSameKeyTime = 1e-9;
 int findKey(const KeyframeSequence& keys, double seconds);
 
 struct KeyChange {
-  std::vector<double> times;    // affected times, ascending, unique
+  std::vector<double> times;     // affected times, ascending, unique
   std::vector<Keyframe> before;  // keys at `times` before the edit, ascending
   std::vector<Keyframe> after;   // keys at `times` after the edit, ascending
 

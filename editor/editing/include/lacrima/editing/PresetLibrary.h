@@ -43,7 +43,7 @@ struct Preset {
 };
 
 class PresetLibrary {
-public:
+ public:
   static constexpr std::string_view kFormat = "lacrima-presets";
   static constexpr int kVersion = 1;
   // The presets compiled into the editor (Qt resource copy of media/presets/presets.json).
@@ -61,7 +61,7 @@ public:
   const Preset* forExpression(int code) const;  // the pose for FAP 2 code 1..6, if any
   std::vector<std::string> categories() const;  // in order of first appearance
 
-private:
+ private:
   std::vector<Preset> presets_;
 };
 

@@ -25,7 +25,7 @@ class QLockFile;
 namespace lacrima::editing {
 
 class RecoveryStore {
-public:
+ public:
   // <AppLocalDataLocation>/recovery
   static QString defaultDirectory();
 
@@ -59,7 +59,7 @@ public:
   // Removes an orphan (restored or declined).
   static void remove(const QString& file);
 
-private:
+ private:
   QString directory_;
   QString id_;
   std::unique_ptr<QLockFile> lock_;

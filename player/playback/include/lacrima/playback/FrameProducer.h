@@ -25,7 +25,7 @@ struct ProducerCounters {
 };
 
 class FrameProducer {
-public:
+ public:
   explicit FrameProducer(const HeadRig& rig, const SceneSettings& scene = {});
   ~FrameProducer();
   FrameProducer(const FrameProducer&) = delete;
@@ -62,7 +62,7 @@ public:
   const ProducerCounters& counters() const;
   int particleCount() const;
 
-private:
+ private:
   struct State;
   std::unique_ptr<State> state_;
 };

@@ -20,14 +20,14 @@ namespace lacrima::playback {
 
 // Texture-blend weights, each in [0, 1].
 struct OverlayWeights {
-  double redness = 0;                    // redder, darker skin around both eyes
-  std::array<double, 2> wetEyes{0, 0};   // glossy, watery overlay on the left / right eye
-  double blush = 0;                      // cheeks (optional effect)
+  double redness = 0;                   // redder, darker skin around both eyes
+  std::array<double, 2> wetEyes{0, 0};  // glossy, watery overlay on the left / right eye
+  double blush = 0;                     // cheeks (optional effect)
   bool operator==(const OverlayWeights&) const = default;
 };
 
 struct FrameView {
-  const HeadMesh* neutral = nullptr;           // topology, uvs, sub-meshes, materials
+  const HeadMesh* neutral = nullptr;            // topology, uvs, sub-meshes, materials
   const Eigen::Matrix3Xf* positions = nullptr;  // deformed head, 3 x vertex count
   const Eigen::Matrix3Xf* normals = nullptr;
   const tears::ParticleSet* particles = nullptr;  // non-null only when particle spheres are on

@@ -17,16 +17,17 @@
 namespace lacrima::playback {
 
 class Playback {
-public:
+ public:
   explicit Playback(const HeadRig& rig, int checkpointInterval = 50);
   ~Playback();
 
   // A .fap file or a project (.json, .lacrima). Throws FileError (file, line, what was expected);
   // on error the current animation stays loaded. Shows the first frame.
   void open(const std::string& path);
-  void setAnimation(FapAnimation animation, const SceneSettings& scene = {}, const TearSources& sources = {});
+  void setAnimation(FapAnimation animation, const SceneSettings& scene = {},
+                    const TearSources& sources = {});
   const FapAnimation& animation() const;
-  const std::string& path() const;  // empty when set from memory
+  const std::string& path() const;   // empty when set from memory
   const Warnings& warnings() const;  // the FAP reader's for the open file
   const TearSources& tearSources() const;
 
@@ -43,7 +44,7 @@ public:
   // interpolated at t.
   const FrameView& seek(double seconds);
   const FrameView& view() const;
-  int currentFrame() const;     // the last whole frame the tears have reached
+  int currentFrame() const;  // the last whole frame the tears have reached
   double currentTime() const;
 
   // Neutral face, all tears gone, time 0. Checkpoints stay valid; the next seek plays from the
@@ -54,7 +55,7 @@ public:
   int checkpointCount() const;
   long long framesSimulated() const;  // produce() calls so far (replays after seeks included)
 
-private:
+ private:
   struct State;
   std::unique_ptr<State> state_;
 };

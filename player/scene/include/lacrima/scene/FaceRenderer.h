@@ -26,7 +26,7 @@ struct RenderTimes {
 };
 
 class FaceRenderer {
-public:
+ public:
   // `neutral` must outlive the renderer. Sizes outside isImageSizeInBounds (ImageSize.h) throw
   // std::invalid_argument, here and in resize().
   FaceRenderer(const HeadMesh& neutral, QSize size);
@@ -41,7 +41,7 @@ public:
   // Camera: the same framing as the viewport's reset view, then orbit/zoom in its terms.
   void resetView();
   void orbit(double yawDegrees, double pitchDegrees);
-  void zoom(double factor);  // < 1 moves closer
+  void zoom(double factor);           // < 1 moves closer
   void pan(double right, double up);  // moves the target by fractions of the view's height
   // Pixel position of a point in the head frame under the current camera (tests: where the
   // eyes and cheeks are in the image); y grows downwards.
@@ -55,7 +55,7 @@ public:
   // The scene behind the images (camera, per-frame details) for tools and tests.
   FaceScene& scene();
 
-private:
+ private:
   struct State;
   std::unique_ptr<State> state_;
 };

@@ -28,7 +28,7 @@ namespace lacrima::scene {
 class OgreRuntime;
 
 class FaceScene {
-public:
+ public:
   // `head` must outlive the scene (or the next setHead). Without a head the scene shows only
   // its backdrop until setHead() or a frame with a neutral head arrives.
   FaceScene(std::shared_ptr<OgreRuntime> runtime, const HeadMesh& head);
@@ -60,7 +60,7 @@ public:
 
   OgreRuntime& runtime() const;
 
-private:
+ private:
   struct State;
   std::unique_ptr<State> state_;
 };

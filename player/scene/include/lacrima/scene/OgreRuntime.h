@@ -28,7 +28,7 @@ class Root;
 namespace lacrima::scene {
 
 class OgreRuntime {
-public:
+ public:
   static std::shared_ptr<OgreRuntime> acquire();
   // Whether a runtime exists now (tests prove that a widget without X never started one).
   static bool running();
@@ -47,7 +47,7 @@ public:
   // Where OGRE writes its log.
   const std::string& logPath() const;
 
-private:
+ private:
   OgreRuntime();
   struct Parts;
   std::unique_ptr<Parts> parts_;

@@ -7,8 +7,8 @@
 //               eye's centre or 1/1.6 below it, 1/2): an ellipsoid reaching further sideways
 //               and downwards (lids, the bags under the eyes: what reddens when crying) than up
 //               (brows), and little in depth; only skin in front of the eyeball's back half.
-//               Plus the nose tip, which reddens too: 0.7 (1 - smoothstep(0.2, 1, |p - t| / 1.1 r)),
-//               t the front-most skin point on the mid line 1 to 3.5 r below the eyes.
+//               Plus the nose tip, which reddens too: 0.7 (1 - smoothstep(0.2, 1, |p - t| / 1.1
+//               r)), t the front-most skin point on the mid line 1 to 3.5 r below the eyes.
 //   cheek       1 - smoothstep(0.3, 1.0, |D' (p - k)| / 1.9 r), D' = diag(1/1.3, 1, 1), with
 //               k the front-most skin point below the eye at c + (0.25 r outwards, -2.4 r):
 //               the cheekbone, where a blush shows; only skin facing forwards (n.z > 0.2).

@@ -4,8 +4,9 @@
 //
 // Irritated skin (the redness layer): in linear light, each texel becomes
 //   (0.92 r, 0.56 g m, 0.66 b m),  m = 0.82 .. 1.12 from two octaves of value noise
-// (about 20 and 60 blotches across the texture): redder (towards pink, not orange) and darker, mottled as skin flushed by
-// crying is, not a flat tint. The mask decides where it shows (OverlayMasks.h).
+// (about 20 and 60 blotches across the texture): redder (towards pink, not orange) and darker,
+// mottled as skin flushed by crying is, not a flat tint. The mask decides where it shows
+// (OverlayMasks.h).
 //
 // Wet, bloodshot eye (the wet-eye layer): sclera texels (bright, saturation < 0.3) turn pink and
 // get thin red vessels where ridged noise |n| is small; iris and pupil keep their colour; the
@@ -25,6 +26,7 @@ namespace lacrima::scene {
 
 QImage makeIrritatedSkin(const QImage& skinDiffuse);
 QImage makeWetEye(const QImage& eyeDiffuse);
-QImage padUvIslands(const QImage& texture, const HeadMesh& head, const HeadSubmesh& submesh, int grow = 4);
+QImage padUvIslands(const QImage& texture, const HeadMesh& head, const HeadSubmesh& submesh,
+                    int grow = 4);
 
 }  // namespace lacrima::scene

@@ -21,19 +21,20 @@ struct FoundDrop {
 };
 
 class DropFinder {
-public:
+ public:
   // `grid` must be built over particles.position (any cell edge; the simulation's is h).
   void find(const ParticleSet& particles, const UniformGrid& grid);
 
   std::span<const FoundDrop> drops() const { return drops_; }
   std::span<const int> particlesOf(const FoundDrop& drop) const {
-    return std::span<const int>(particles_).subspan(static_cast<std::size_t>(drop.first), static_cast<std::size_t>(drop.count));
+    return std::span<const int>(particles_)
+        .subspan(static_cast<std::size_t>(drop.first), static_cast<std::size_t>(drop.count));
   }
 
-private:
+ private:
   std::vector<FoundDrop> drops_;
-  std::vector<int> particles_;           // particle indices, drop by drop
-  std::vector<std::uint8_t> visited_;    // per occupied cell
+  std::vector<int> particles_;         // particle indices, drop by drop
+  std::vector<std::uint8_t> visited_;  // per occupied cell
   std::vector<std::size_t> stack_;
 };
 

@@ -25,7 +25,7 @@ struct NeighbourList {
 };
 
 class NeighbourSearch {
-public:
+ public:
   virtual ~NeighbourSearch() = default;
   // Rebuilds the structure for these positions and fills `out` with all pairs closer than h.
   virtual void find(std::span<const Eigen::Vector3d> positions, double h, NeighbourList& out) = 0;

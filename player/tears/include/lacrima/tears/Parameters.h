@@ -53,7 +53,7 @@ struct TearSettings : TearParameterSet {
 
 // Length and acceleration conversion between physical/2009 units and the head's units.
 struct UnitScale {
-  double headUnitsPerMetre = 10.0;  // decimetre head
+  double headUnitsPerMetre = 10.0;   // decimetre head
   double lengthPer2009Unit = 0.032;  // head units per 2009 unit (3.2 mm)
 
   // From the head's height in its own units (default head: 2.7 dm).
@@ -67,15 +67,15 @@ struct ScaledParameters {
   double particleRadius = 0;  // collision radius, spacing / 2
   double contactBand = 0;     // a particle within radius + band of the skin is touching it
   double restDensity = 1.0;
-  double particleMass = 0;    // set so a rest lattice at `spacing` has density restDensity
-  double stiffness = 0;       // k in p = k (rho - rho0); speed of sound c = sqrt(k)
+  double particleMass = 0;  // set so a rest lattice at `spacing` has density restDensity
+  double stiffness = 0;     // k in p = k (rho - rho0); speed of sound c = sqrt(k)
   double soundSpeed = 0;
   double kinematicViscosity = 0;
-  double tensionSigma = 0;    // Müller: sigma / rho0
-  double tensionGamma = 0;    // Akinci: gamma
-  double adhesion = 0;        // acceleration into the skin at rest density and full mass
-  double friction = 0;        // drag rate per (normal load per mass)
-  double gravity = 0;         // magnitude, along -y of the head frame
+  double tensionSigma = 0;  // Müller: sigma / rho0
+  double tensionGamma = 0;  // Akinci: gamma
+  double adhesion = 0;      // acceleration into the skin at rest density and full mass
+  double friction = 0;      // drag rate per (normal load per mass)
+  double gravity = 0;       // magnitude, along -y of the head frame
   double nodeSize = 0, cubeSize = 0, iso = 0;
   double headUnitsPerMetre = 0;
 

@@ -16,12 +16,12 @@ enum class Eye : std::uint8_t { Left = 0, Right = 1 };
 // Contact with the skin, tracked on one triangle by barycentric coordinates so the particle
 // can be carried along when the face deforms.
 struct SkinContact {
-  std::int32_t triangle = -1;   // skin triangle index, -1 = not touching
+  std::int32_t triangle = -1;            // skin triangle index, -1 = not touching
   Eigen::Vector3d barycentric{0, 0, 0};  // of the contact point on that triangle
 };
 
 class ParticleSet {
-public:
+ public:
   int size() const { return static_cast<int>(position.size()); }
   bool empty() const { return position.empty(); }
 
@@ -53,7 +53,7 @@ public:
   std::vector<SkinContact> contact;
   std::vector<double> clearance;  // free particles: guaranteed gap to the skin (lower bound)
 
-private:
+ private:
   // permute's buffers, one per attribute type, kept so reordering does not allocate. They hold
   // no state: copying a ParticleSet (a checkpoint) leaves them behind.
   struct Scratch {

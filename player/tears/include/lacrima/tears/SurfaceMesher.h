@@ -6,10 +6,10 @@
 // on each axis). The colour field is zero farther than h from every particle, so a lattice
 // corner has c > 0 only inside some particle's support box (the corners within h of it), and
 // only a cube with such a corner can hold the surface. The lattice is cut into BLOCKS of
-// 4 x 4 x 4 cubes (kBlock in the source); the active blocks are those meeting a support box extended by one
-// corner downwards (so every cube with a corner c > 0 has its lowest corner in an active block).
-// Blocks are found through an open-addressing map of their integer coordinates, a few lookups
-// per particle; everything inside a block is a dense array.
+// 4 x 4 x 4 cubes (kBlock in the source); the active blocks are those meeting a support box
+// extended by one corner downwards (so every cube with a corner c > 0 has its lowest corner in an
+// active block). Blocks are found through an open-addressing map of their integer coordinates, a
+// few lookups per particle; everything inside a block is a dense array.
 //
 // Cost: one density pass (SurfaceMesherField), then each particle adds its weight to the dense
 // corner arrays of its blocks: value and gradient, four floats as one SSE register (Float4.h),
@@ -63,7 +63,7 @@ struct SurfaceMesherSettings {
 // The extracted mesh. Buffers keep their capacity between frames; the accessors view them as
 // Eigen matrices (one column per vertex / triangle).
 class TearSurface {
-public:
+ public:
   int vertexCount() const { return static_cast<int>(position_.size()); }
   int triangleCount() const { return static_cast<int>(triangle_.size()); }
   bool empty() const { return triangle_.empty(); }
@@ -83,23 +83,23 @@ public:
     triangle_.clear();
   }
 
-private:
+ private:
   friend class SurfaceMesher;
   std::vector<Eigen::Vector3d> position_, normal_;
   std::vector<Eigen::Vector3i> triangle_;
 };
 
 struct SurfaceMesherStats {
-  std::size_t activeCells = 0;  // grid cells (edge h) holding particles
-  std::size_t blocks = 0;       // active blocks of 4^3 cubes
+  std::size_t activeCells = 0;         // grid cells (edge h) holding particles
+  std::size_t blocks = 0;              // active blocks of 4^3 cubes
   std::size_t cubes = 0, corners = 0;  // in the active blocks (cubes whose lowest corner is in one)
-  double cubeSize = 0;          // the size used (larger than asked when capped)
+  double cubeSize = 0;                 // the size used (larger than asked when capped)
   bool capped = false;
-  double milliseconds = 0;      // of the last build / update
+  double milliseconds = 0;  // of the last build / update
 };
 
 class SurfaceMesher {
-public:
+ public:
   SurfaceMesher();
   ~SurfaceMesher();
   SurfaceMesher(const SurfaceMesher&) = delete;
@@ -108,12 +108,14 @@ public:
   // Meshes the simulation's particles with its kernel radius, cube size and iso value (already
   // in head units, Parameters.h). Does nothing (and leaves an empty surface) when there are no
   // particles; otherwise counts a surface run on the simulation. `maxCubes` bounds the work.
-  const TearSurface& update(TearSimulation& simulation, std::size_t maxCubes = SurfaceMesherSettings{}.maxCubes);
+  const TearSurface& update(TearSimulation& simulation,
+                            std::size_t maxCubes = SurfaceMesherSettings{}.maxCubes);
 
   // Meshes any particle set; `grid` must be built over `positions` with cell edge
   // settings.kernelRadius. Throws std::invalid_argument for non-positive or non-finite settings.
-  const TearSurface& build(std::span<const Eigen::Vector3d> positions, std::span<const double> masses,
-                           const UniformGrid& grid, const SurfaceMesherSettings& settings);
+  const TearSurface& build(std::span<const Eigen::Vector3d> positions,
+                           std::span<const double> masses, const UniformGrid& grid,
+                           const SurfaceMesherSettings& settings);
 
   const TearSurface& surface() const { return surface_; }
   const SurfaceMesherStats& stats() const { return stats_; }
@@ -121,10 +123,10 @@ public:
   const SurfaceMesherField& field() const { return *field_; }
   long long cappedBuilds() const { return cappedBuilds_; }
 
-private:
+ private:
   struct AxisPoint {
-    int block;     // relative to the support's lowest block
-    int local;     // block-local coordinate
+    int block;  // relative to the support's lowest block
+    int local;  // block-local coordinate
   };
   using Lattice = Eigen::Matrix<std::int64_t, 3, 1>;
 
@@ -143,19 +145,20 @@ private:
   long long cappedBuilds_ = 0;
 
   std::unique_ptr<detail::SurfaceMesherKeyMap> blockMap_;
-  Lattice blockBase_;                            // block keys are packed relative to this
-  std::vector<Lattice> block_;                   // block coordinates (lattice point / 4)
-  std::vector<std::array<std::int32_t, 8>> neighbour_;  // block + (i & 1, (i >> 1) & 1, i >> 2), -1 = none
+  Lattice blockBase_;           // block keys are packed relative to this
+  std::vector<Lattice> block_;  // block coordinates (lattice point / 4)
+  std::vector<std::array<std::int32_t, 8>>
+      neighbour_;  // block + (i & 1, (i >> 1) & 1, i >> 2), -1 = none
   // Per block 4 x 64 floats, corner (x * 4 + y) * 4 + z: the sums of a d^3, then of a d^2 e_x,
   // a d^2 e_y, a d^2 e_z (d = 1 - r^2/h^2, e = (corner - x) / h, a = V w h^6).
   std::vector<float> sum_;
-  std::vector<std::uint8_t> inside_;             // 16 per block: bit z of line (x, y)
-  std::vector<std::uint16_t> line_;              // 25 per block: 5-bit masks of lines x, y = 0..4
-  std::vector<std::uint32_t> surfaceBlock_;      // blocks whose lines are neither all out nor all in
-  std::vector<std::int32_t> edgeVertex_;         // 3 per corner (axis); valid on crossing edges only
-  std::vector<std::int32_t> particleBlocks_;     // scratch: the blocks of one support box
-  std::vector<AxisPoint> axisTable_;             // scratch: the support box's points per axis
-  std::vector<float> offsetTable_;               // scratch: their offsets (lattice - x) / h
+  std::vector<std::uint8_t> inside_;          // 16 per block: bit z of line (x, y)
+  std::vector<std::uint16_t> line_;           // 25 per block: 5-bit masks of lines x, y = 0..4
+  std::vector<std::uint32_t> surfaceBlock_;   // blocks whose lines are neither all out nor all in
+  std::vector<std::int32_t> edgeVertex_;      // 3 per corner (axis); valid on crossing edges only
+  std::vector<std::int32_t> particleBlocks_;  // scratch: the blocks of one support box
+  std::vector<AxisPoint> axisTable_;          // scratch: the support box's points per axis
+  std::vector<float> offsetTable_;            // scratch: their offsets (lattice - x) / h
   std::vector<std::uint8_t> normalFallback_;
   bool anyFallback_ = false;
 };

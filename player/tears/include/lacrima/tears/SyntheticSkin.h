@@ -11,10 +11,10 @@
 namespace lacrima::tears {
 
 struct CheekSheetOptions {
-  double width = 1.6, height = 2.4;    // dm
-  double cylinderRadius = 1.0;         // horizontal curvature of the face
-  double tiltDegrees = 20;             // top leans back by this (normal points forward and up)
-  double edge = 0.05;                  // target triangle edge length
+  double width = 1.6, height = 2.4;  // dm
+  double cylinderRadius = 1.0;       // horizontal curvature of the face
+  double tiltDegrees = 20;           // top leans back by this (normal points forward and up)
+  double edge = 0.05;                // target triangle edge length
   // Stress geometry: collapse one row of vertices onto the row above (a strip of zero-area
   // triangles across the middle) and add this many extra zero-area triangles (repeated and
   // collinear vertices) scattered over the sheet.
@@ -24,7 +24,7 @@ struct CheekSheetOptions {
 
 struct SyntheticSkin {
   Eigen::Matrix3Xf positions;
-  std::vector<Eigen::Vector3i> triangles;  // counter-clockwise seen from the front (+z side)
+  std::vector<Eigen::Vector3i> triangles;   // counter-clockwise seen from the front (+z side)
   Eigen::Vector3d leftSource, rightSource;  // just in front of the sheet near its top
   Eigen::Vector3d centre;                   // of the sheet's bounding box
   double radius = 0;                        // half the sheet's height ("head radius" stand-in)
@@ -33,7 +33,8 @@ struct SyntheticSkin {
 SyntheticSkin makeCheekSheet(const CheekSheetOptions& options = {});
 
 // The sheet moved rigidly: x' = R x + t about the sheet's centre.
-Eigen::Matrix3Xf movedSheet(const SyntheticSkin& sheet, const Eigen::Vector3d& translation,
-                            const Eigen::AngleAxisd& rotation = Eigen::AngleAxisd(0, Eigen::Vector3d::UnitX()));
+Eigen::Matrix3Xf movedSheet(
+    const SyntheticSkin& sheet, const Eigen::Vector3d& translation,
+    const Eigen::AngleAxisd& rotation = Eigen::AngleAxisd(0, Eigen::Vector3d::UnitX()));
 
 }  // namespace lacrima::tears

@@ -16,7 +16,7 @@ class TearSimulation;
 // Copyable and cheap to copy (the state is shared and immutable); empty() until assigned from
 // TearSimulation::checkpoint().
 class TearCheckpoint {
-public:
+ public:
   TearCheckpoint();
   ~TearCheckpoint();
   TearCheckpoint(const TearCheckpoint&);
@@ -28,7 +28,7 @@ public:
   int particleCount() const;
   std::size_t bytes() const;  // memory held by the saved state
 
-private:
+ private:
   friend class TearSimulation;
   struct State;
   std::shared_ptr<const State> state_;

@@ -6,19 +6,20 @@
 namespace lacrima::tears {
 
 struct TearCounters {
-  long long frames = 0;             // step() calls
-  long long sphSteps = 0;           // frames in which the fluid was simulated
+  long long frames = 0;    // step() calls
+  long long sphSteps = 0;  // frames in which the fluid was simulated
   long long substeps = 0;
-  long long clamped = 0;            // particle accelerations/velocities clamped (last resort)
-  long long substepCapHits = 0;     // sub-steps that wanted to be shorter than the cap allows
+  long long clamped = 0;         // particle accelerations/velocities clamped (last resort)
+  long long substepCapHits = 0;  // sub-steps that wanted to be shorter than the cap allows
   long long divergenceIterations = 0, densityIterations = 0;  // DFSPH Jacobi sweeps
-  long long solverCapped = 0;       // DFSPH solves stopped at the iteration cap
+  long long solverCapped = 0;  // DFSPH solves stopped at the iteration cap
   // Which limit set each sub-step (the adaptive time step); the rest ended the frame.
   long long cflLimited = 0, accelerationLimited = 0, viscosityLimited = 0;
-  long long recycled = 0;           // left the box, re-emitted at their source
+  long long recycled = 0;  // left the box, re-emitted at their source
   long long spawned = 0, removed = 0;
   long long neighbourSearches = 0;  // pair-list builds (the list is reused between them)
-  long long straySubsteps = 0, strays = 0;  // sub-steps that kept the list with strays; their strays
+  long long straySubsteps = 0,
+            strays = 0;  // sub-steps that kept the list with strays; their strays
   long long trimeshUpdates = 0, odeQueries = 0, sweptParticles = 0, contactsTracked = 0;
   long long bruteForceQueries = 0;  // nearest-skin queries ODE could not answer in full (scanned)
   long long surfaceRuns = 0;        // incremented by the surface mesher via countSurfaceRun()

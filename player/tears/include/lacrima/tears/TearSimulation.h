@@ -48,13 +48,14 @@ struct EmissionSite;
 
 // What TearSimulation::forHead takes from the head besides its skin.
 struct HeadTearOptions {
-  std::optional<Eigen::Vector3d> leftSource, rightSource;  // head frame, e.g. the rig's tear sources
+  std::optional<Eigen::Vector3d> leftSource,
+      rightSource;  // head frame, e.g. the rig's tear sources
   bool eyesCollide = true;
 };
 
 // A point of the collision surface (the skin, and the eyes for forHead simulations).
 struct SkinPoint {
-  int triangle = -1;                                 // -1: nothing within the radius asked
+  int triangle = -1;  // -1: nothing within the radius asked
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // the triangle's, unit, outward
   double distance = 0;                               // from the query point
@@ -62,23 +63,25 @@ struct SkinPoint {
 };
 
 struct EyeWetness {
-  int count = 0;              // particles of this eye now
-  double trailVolume = 0;     // water left on the skin so far (trail + dried tears), head units^3
-  double skin = 0;            // 1 - exp(-trailVolume / reference volume), for the wet-skin blend
-  double eye = 0;             // min(1, count / reference count), for the watery-eye blend
+  int count = 0;           // particles of this eye now
+  double trailVolume = 0;  // water left on the skin so far (trail + dried tears), head units^3
+  double skin = 0;         // 1 - exp(-trailVolume / reference volume), for the wet-skin blend
+  double eye = 0;          // min(1, count / reference count), for the watery-eye blend
 };
 
 class TearSimulation {
-public:
+ public:
   // `restPositions`: all head vertices (3 x n); `skinTriangles`: the skin's triangles by global
   // vertex index (counter-clockwise outside). Every later frame passes positions of the same size.
-  TearSimulation(const Eigen::Matrix3Xf& restPositions, const std::vector<Eigen::Vector3i>& skinTriangles,
+  TearSimulation(const Eigen::Matrix3Xf& restPositions,
+                 const std::vector<Eigen::Vector3i>& skinTriangles,
                  const TearSettings& settings = {}, const SimulationOptions& options = {});
   // A simulation on a head's "skin" sub-mesh. The collision surface is the skin followed by the
   // eyeballs and corneas (eye_l, eye_r, cornea_l, cornea_r, when present and eyesCollide), which
   // close the eye openings of the skin; contact triangles past the skin's are eyes (the trail
   // builder, given the skin alone, ignores them). Sources: those given, else defaultTearSource.
-  static std::unique_ptr<TearSimulation> forHead(const HeadMesh& head, const TearSettings& settings = {},
+  static std::unique_ptr<TearSimulation> forHead(const HeadMesh& head,
+                                                 const TearSettings& settings = {},
                                                  const SimulationOptions& options = {},
                                                  const HeadTearOptions& headOptions = {});
   // Where forHead puts an eye's source when none is given: the skin vertex nearest to a point
@@ -134,7 +137,7 @@ public:
   const StageTimes& lastFrameTimes() const { return times_; }
   void countSurfaceRun() { ++counters_.surfaceRuns; }
 
-private:
+ private:
   struct Internals;      // the solver's parts (TearSimulationInternals.h)
   struct EmissionSites;  // where each eye emits in this frame, found on first need
 

@@ -21,8 +21,8 @@
 // A drop that splits hands its last section to every part, so the trail branches from it; drops
 // that merge continue the track of the larger share. In the update of a split or merge the
 // centre jumps without the fluid having moved there, so that update neither changes the
-// direction nor adds a section; the next one does, from the shared section. Trail points are skin anchors (TrailSkin.h)
-// and the mesh is rebuilt from the current skin every update.
+// direction nor adds a section; the next one does, from the shared section. Trail points are skin
+// anchors (TrailSkin.h) and the mesh is rebuilt from the current skin every update.
 //
 // Drying: a section's alpha falls linearly from 1 to 0 over drySeconds; a segment is dropped
 // when its newer section is dry, a section when nothing refers to it. At most maxSections
@@ -42,10 +42,10 @@ namespace lacrima::tears {
 class TearSimulation;
 
 struct TrailSettings {
-  double minimumStepKernels = 0.5;     // d_min in kernel radii
-  double middleHeightFraction = 0.5;   // of the drop's height over the skin (capped at h)
+  double minimumStepKernels = 0.5;    // d_min in kernel radii
+  double middleHeightFraction = 0.5;  // of the drop's height over the skin (capped at h)
   double drySeconds = 10;
-  int maxSections = 4096;              // 3 trail points each
+  int maxSections = 4096;  // 3 trail points each
 };
 
 struct TrailSection {
@@ -55,13 +55,13 @@ struct TrailSection {
 };
 
 struct TrailSegment {
-  int from = 0, to = 0;             // sections, `to` the newer
+  int from = 0, to = 0;  // sections, `to` the newer
 };
 
 // The trail mesh: three vertices per section, four triangles per segment. Buffers keep their
 // capacity between updates.
 class TrailMesh {
-public:
+ public:
   int vertexCount() const { return static_cast<int>(position_.size()); }
   int triangleCount() const { return static_cast<int>(triangle_.size()); }
   bool empty() const { return triangle_.empty(); }
@@ -78,7 +78,7 @@ public:
     return {triangle_.empty() ? nullptr : triangle_.front().data(), 3, triangleCount()};
   }
 
-private:
+ private:
   friend class TrailBuilder;
   std::vector<Eigen::Vector3d> position_, normal_;
   std::vector<double> alpha_;
@@ -86,7 +86,7 @@ private:
 };
 
 class TrailBuilder {
-public:
+ public:
   // `skinTriangles`: the skin's triangles by head vertex index, the same list (and order) the
   // simulation was built with, so particle contact triangles index into it. The simulation may
   // collide with more (TearSimulation::forHead appends the eyes): contacts past this list are
@@ -94,14 +94,16 @@ public:
   //
   // A TrailBuilder is a plain value: a copy continues exactly as the original would (keep one
   // beside a TearCheckpoint to seek).
-  explicit TrailBuilder(std::vector<Eigen::Vector3i> skinTriangles, const TrailSettings& settings = {});
+  explicit TrailBuilder(std::vector<Eigen::Vector3i> skinTriangles,
+                        const TrailSettings& settings = {});
 
   // One update after the simulation's step, with the head positions of that step and the
   // frame's duration (drying). No work at all when there are neither particles nor trails.
-  const TrailMesh& update(const TearSimulation& simulation, const Eigen::Matrix3Xf& headPositions, double dt);
+  const TrailMesh& update(const TearSimulation& simulation, const Eigen::Matrix3Xf& headPositions,
+                          double dt);
   // Same for any particle set: `grid` built over its positions with cell edge h.
-  const TrailMesh& update(const ParticleSet& particles, const UniformGrid& grid, double h, double particleRadius,
-                          const Eigen::Matrix3Xf& headPositions, double dt);
+  const TrailMesh& update(const ParticleSet& particles, const UniformGrid& grid, double h,
+                          double particleRadius, const Eigen::Matrix3Xf& headPositions, double dt);
 
   const TrailMesh& mesh() const { return mesh_; }
   std::span<const TrailSection> sections() const { return sections_; }
@@ -113,16 +115,17 @@ public:
   int trackedDrops() const { return static_cast<int>(tracks_.size()); }
   double lastMilliseconds() const { return milliseconds_; }
 
-private:
+ private:
   struct Track {
-    SkinAnchor centre;        // last centre on the skin (triangle -1: never touched)
+    SkinAnchor centre;                   // last centre on the skin (triangle -1: never touched)
     Eigen::Vector3d direction{0, 0, 0};  // last tangential direction of motion (unit or zero)
     int lastSection = -1;
   };
-  void advance(const ParticleSet& particles, const UniformGrid& grid, double h, double particleRadius);
+  void advance(const ParticleSet& particles, const UniformGrid& grid, double h,
+               double particleRadius);
   // `reshaped`: the drop split off or merged this update, so its centre jumped.
-  void continueTrack(Track& track, const ParticleSet& particles, const FoundDrop& drop, double h, double particleRadius,
-                     bool reshaped);
+  void continueTrack(Track& track, const ParticleSet& particles, const FoundDrop& drop, double h,
+                     double particleRadius, bool reshaped);
   void dryAndCap();
   void rebuildMesh();
 

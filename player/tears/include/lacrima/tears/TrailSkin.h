@@ -20,7 +20,7 @@ struct SkinAnchor {
 };
 
 class TrailSkin {
-public:
+ public:
   // Triangles by head vertex index, counter-clockwise outside (the simulation's skin order, so
   // a particle's contact triangle is an index into them).
   explicit TrailSkin(std::vector<Eigen::Vector3i> triangles);
@@ -41,7 +41,7 @@ public:
   // The closest skin point to x found from the seeds (height 0); triangle -1 if no seed is valid.
   SkinAnchor closest(const Eigen::Vector3d& x, std::span<const int> seeds) const;
 
-private:
+ private:
   std::vector<Eigen::Vector3i> triangles_;
   std::vector<int> vertexStart_, vertexTriangles_;  // CSR: triangles around each vertex
   int maxVertex_ = -1;

@@ -16,7 +16,7 @@ namespace lacrima::tears {
 class CellIndex;
 
 class UniformGrid final : public NeighbourSearch {
-public:
+ public:
   UniformGrid();
   ~UniformGrid() override;
   UniformGrid(const UniformGrid& other);  // copies the cells (trail checkpoints hold a grid)
@@ -38,7 +38,7 @@ public:
   // allocation-free consumers (surface mesher, drop finder).
   const CellIndex& index() const { return *index_; }
 
-private:
+ private:
   std::unique_ptr<CellIndex> index_;
   std::vector<int> found_;            // neighbours in sorted order of the query particle
   std::vector<std::uint32_t> start_;  // per sorted particle: its run in found_

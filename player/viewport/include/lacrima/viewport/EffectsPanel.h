@@ -14,11 +14,11 @@ namespace lacrima::viewport {
 
 class EffectsPanel : public QWidget {
   Q_OBJECT
-public:
+ public:
   explicit EffectsPanel(QWidget* parent = nullptr);
 
-  void display(const SceneSettings& scene);   // without emitting edited()
-  void applyTo(SceneSettings& scene) const;   // the toggles' state, simulation untouched
+  void display(const SceneSettings& scene);  // without emitting edited()
+  void applyTo(SceneSettings& scene) const;  // the toggles' state, simulation untouched
 
   QCheckBox* particles() const { return particles_; }
   QCheckBox* surface() const { return surface_; }
@@ -27,10 +27,10 @@ public:
   QCheckBox* blush() const { return blush_; }
   QComboBox* redness() const { return redness_; }
 
-signals:
+ signals:
   void edited();
 
-private:
+ private:
   QCheckBox *particles_, *surface_, *trails_, *textureBlending_, *blush_;
   QComboBox* redness_;
 };

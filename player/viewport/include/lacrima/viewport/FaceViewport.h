@@ -21,7 +21,7 @@ namespace lacrima::viewport {
 
 class FaceViewport : public QWidget {
   Q_OBJECT
-public:
+ public:
   explicit FaceViewport(QWidget* parent = nullptr);
   ~FaceViewport() override;
 
@@ -42,10 +42,10 @@ public:
 
   QPaintEngine* paintEngine() const override { return nullptr; }
 
-signals:
+ signals:
   void rendered(double milliseconds);
 
-protected:
+ protected:
   void showEvent(QShowEvent* event) override;
   void paintEvent(QPaintEvent* event) override;
   void resizeEvent(QResizeEvent* event) override;
@@ -54,10 +54,10 @@ protected:
   void mouseReleaseEvent(QMouseEvent* event) override;
   void mouseDoubleClickEvent(QMouseEvent* event) override;
   void wheelEvent(QWheelEvent* event) override;
-  bool event(QEvent* event) override;  // deferred render requests
+  bool event(QEvent* event) override;                          // deferred render requests
   bool eventFilter(QObject* watched, QEvent* event) override;  // exposes of the native window
 
-private:
+ private:
   void showMessage(const QString& text);
   void watchExposes();
   bool ensureScene();

@@ -38,15 +38,15 @@ struct PreviewMarker {
 };
 
 struct PreviewStyle {
-  int panelSize = 600;                               // pixels per square panel
+  int panelSize = 600;                                // pixels per square panel
   std::vector<std::optional<QColor>> submeshColours;  // per sub-mesh; nullopt hides it
   bool textured = true;  // shown sub-meshes with a readable diffuse texture use it
 };
 
-// Panels in a grid, three per row. `positions` are the (possibly deformed) vertices of `mesh` (same count).
-// Needs a QGuiApplication for the labels' font (the offscreen platform is enough).
+// Panels in a grid, three per row. `positions` are the (possibly deformed) vertices of `mesh` (same
+// count). Needs a QGuiApplication for the labels' font (the offscreen platform is enough).
 QImage renderHeadPreview(const HeadMesh& mesh, const Eigen::Matrix3Xf& positions,
-                         const std::vector<PreviewPanel>& panels, const std::vector<PreviewMarker>& markers,
-                         const PreviewStyle& style);
+                         const std::vector<PreviewPanel>& panels,
+                         const std::vector<PreviewMarker>& markers, const PreviewStyle& style);
 
 }  // namespace lacrima::exporters

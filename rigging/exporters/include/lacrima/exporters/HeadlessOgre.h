@@ -24,7 +24,7 @@ class Root;
 namespace lacrima::exporters {
 
 class HeadlessOgre {
-public:
+ public:
   HeadlessOgre();
   ~HeadlessOgre();
   HeadlessOgre(const HeadlessOgre&) = delete;
@@ -33,7 +33,7 @@ public:
   // Whether this object created the Root (false: it runs inside someone else's OGRE).
   bool ownsRoot() const { return root_ != nullptr; }
 
-private:
+ private:
   std::unique_ptr<Ogre::LogManager> log_;
   std::unique_ptr<Ogre::Root> root_;
   std::unique_ptr<Ogre::DefaultHardwareBufferManager> buffers_;
