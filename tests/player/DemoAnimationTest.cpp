@@ -1,7 +1,7 @@
 // The committed demo (media/demo/crying.fap) is what lacrima-fap makes of the demo project
 // (media/demo/crying.json) today, byte for byte, so the two never drift apart; and it tells
-// the story the README promises: a sad face building up, tears welling in both eyes, a sob,
-// tears drying.
+// the story the README and docs/player.md promise: a sad face building up, tears welling in both
+// eyes, a sob, tears drying.
 #include <lacrima/common/FapReader.h>
 #include <lacrima/common/FapTable.h>
 

@@ -4,7 +4,7 @@
 // skin triangle a particle's sphere touches (dCollide sphere vs trimesh) or which triangle a
 // moving particle's path crosses (dCollide ray vs trimesh).
 //
-// Why not ODE bodies (the 2009 design)? Measured on this machine class (STACK_NOTES.md, 9k
+// Why not ODE bodies (the 2009 design)? Measured on this machine class (docs/decisions/0001, 9k
 // triangles, 2 sub-steps per frame, one core): ODE bodies cost 0.54 / 5.6 / 79 ms per frame for
 // 100 / 1,000 / 10,000 particles in collision alone (+~40 ms solver at 10k), while contact-only
 // queries with a cached contact triangle cost 0.02 / 0.18 / 1.7 ms; our own measurement

@@ -1,5 +1,5 @@
 #pragma once
-// Tolerant reader for the plain-text .fap format (see README, "FAP files").
+// Tolerant reader for the plain-text .fap format (docs/fap.md, "FAP files").
 //
 // Accepts: version 2.0/2.1 (others warn), integer or decimal fps, names with spaces (warns),
 // '#' comment lines and blank lines anywhere, tabs, CRLF, decimal values, masks of 68 or 70

@@ -11,9 +11,10 @@
 // their own resource group and checked: a shader that does not compile is an error here, not
 // a black frame later. No RT Shader System: every material has its own programs.
 //
-// Shut-down runs in the order that does not crash (../shared STACK_NOTES.md): holders destroy
-// their scene managers and release their resources first (they hold the shared_ptr, so they
-// are gone before this object), then the resource group, the Root and last the log.
+// Shut-down runs in the order that does not crash (docs/stack.md, "OGRE start-up and
+// shut-down"): holders destroy their scene managers and release their resources first (they hold
+// the shared_ptr, so they are gone before this object), then the resource group, the Root and
+// last the log.
 //
 // Needs an X display (OGRE on Debian is GLX only): acquire() throws std::runtime_error saying
 // so when there is none, and when another OGRE Root already runs in this process.
