@@ -73,16 +73,24 @@ FapuSet computeFapu(const FapuReferencePoints& p) {
 
 double FapuSet::unitValue(FapUnit unit) const {
   switch (unit) {
-    case FapUnit::None: return 0.0;
-    case FapUnit::IRISD: return irisd0 / kDivisor;
-    case FapUnit::ES: return es0 / kDivisor;
-    case FapUnit::ENS: return ens0 / kDivisor;
-    case FapUnit::MNS: return mns0 / kDivisor;
-    case FapUnit::MW: return mw0 / kDivisor;
-    case FapUnit::AU: return kAngleUnit;
-    case FapUnit::Particles: return 1.0;
+    case FapUnit::None:
+      return 0.0;
+    case FapUnit::IRISD:
+      return irisd0 / kDivisor;
+    case FapUnit::ES:
+      return es0 / kDivisor;
+    case FapUnit::ENS:
+      return ens0 / kDivisor;
+    case FapUnit::MNS:
+      return mns0 / kDivisor;
+    case FapUnit::MW:
+      return mw0 / kDivisor;
+    case FapUnit::AU:
+      return kAngleUnit;
+    case FapUnit::Particles:
+      return 1.0;
   }
   return 0.0;
 }
 
-}  // namespace lacrima::common
+}  // namespace lacrima::inline common
