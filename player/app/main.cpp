@@ -8,6 +8,7 @@
 #include <lacrima/common/Diagnostics.h>
 #include <lacrima/common/ImageSize.h>
 #include <lacrima/playback/HeadRig.h>
+#include <lacrima/scene/CameraPreset.h>
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -18,6 +19,8 @@
 #include <unistd.h>
 #include <cstdio>
 #include <cstring>
+#include <optional>
+#include <string>
 
 using namespace lacrima;
 
@@ -60,11 +63,19 @@ int renderMode(const QCommandLineParser& parser, const QSize& size) {
     std::fprintf(stderr, "lacrima-player: --render needs exactly one FILE to render\n");
     return kExitUsage;
   }
+  const std::string viewName = parser.value("view").toStdString();
+  const std::optional<scene::CameraPreset> view = scene::parseCameraPreset(viewName);
+  if (!view) {
+    std::fprintf(stderr, "lacrima-player: --view: expected one of %s, not '%s'\n",
+                 std::string(scene::cameraPresetNames()).c_str(), viewName.c_str());
+    return kExitUsage;
+  }
   const auto rig = loadRig(parser);
   player::BatchRenderOptions options;
   options.input = files.front();
   options.outputDir = parser.value("render");
   options.size = size;
+  options.view = *view;
   options.progress = showProgress;
   const player::BatchRenderResult result = player::renderAnimation(*rig, options);
   std::fprintf(stderr, "lacrima-player: %d frames in %.1f s\n", result.frames, result.seconds);
@@ -152,6 +163,7 @@ int main(int argc, char** argv) {
       "Examples:\n"
       "  lacrima-player media/demo/crying.fap\n"
       "  xvfb-run -a lacrima-player --render out/ --size 1280x720 media/demo/crying.fap\n"
+      "  xvfb-run -a lacrima-player --render close/ --view close-left media/demo/crying.fap\n"
       "  lacrima-player --mesh head.obj --fdp head.fdp.json animation.fap\n\n"
       "Keys: Space play/pause, Home reset, Left/Right one frame, V reset the view, Ctrl+O open.\n"
       "Mouse: left drag orbits, right drag pans, the wheel zooms, double-click frames the face.\n\n"
@@ -167,6 +179,11 @@ int main(int argc, char** argv) {
        "OUT_DIR"},
       {"size", "Image size for --render, window size otherwise (default 1280x720 for --render).",
        "WxH"},
+      {"view",
+       "Camera for --render: framing (the viewport's reset view, the default), front, "
+       "three-quarter, profile, close-left or close-right (a cheek and its tear filling the "
+       "image).",
+       "NAME", "framing"},
       {"mesh", "Your own head (any format assimp reads) instead of the default head; needs --fdp.",
        "FILE"},
       {"fdp", "The feature-point file (*.fdp.json) of --mesh.", "FILE"},

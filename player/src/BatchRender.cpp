@@ -6,6 +6,7 @@
 #include <lacrima/common/Diagnostics.h>
 #include <lacrima/playback/Playback.h>
 #include <lacrima/scene/FaceRenderer.h>
+#include <lacrima/scene/FaceScene.h>
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -25,6 +26,7 @@ BatchRenderResult renderAnimation(const playback::HeadRig& rig, const BatchRende
     throw FileError({options.outputDir.toStdString(), 0, 0}, "cannot create the output folder");
 
   scene::FaceRenderer renderer(rig.head, options.size);
+  renderer.scene().setView(scene::presetView(rig.head, options.view));
   const int frames = playback.frameCount();
   const std::vector<int> picked = evenlySpacedFrames(frames, options.sheetFrames);
   std::vector<SheetFrame> sheet;
@@ -43,12 +45,17 @@ BatchRenderResult renderAnimation(const playback::HeadRig& rig, const BatchRende
   BatchRenderResult result;
   result.frames = frames;
   result.contactSheet = out.filePath("contact_sheet.png");
-  const QString title = QStringLiteral("%1  ·  %2 frames at %3 fps  ·  %4 x %5")
-                            .arg(QFileInfo(options.input).fileName())
-                            .arg(frames)
-                            .arg(playback.frameRate())
-                            .arg(options.size.width())
-                            .arg(options.size.height());
+  QString title = QStringLiteral("%1  ·  %2 frames at %3 fps  ·  %4 x %5")
+                      .arg(QFileInfo(options.input).fileName())
+                      .arg(frames)
+                      .arg(playback.frameRate())
+                      .arg(options.size.width())
+                      .arg(options.size.height());
+  if (options.view != scene::CameraPreset::Framing) {
+    const std::string_view view = toString(options.view);
+    title += QStringLiteral("  ·  %1 view")
+                 .arg(QLatin1String(view.data(), static_cast<qsizetype>(view.size())));
+  }
   savePng(contactSheet(sheet, title), result.contactSheet);
   result.seconds = static_cast<double>(wall.elapsed()) / 1000.0;
   return result;

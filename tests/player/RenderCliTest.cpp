@@ -87,6 +87,25 @@ class RenderCliTest : public QObject {
     QVERIFY(QImage(out + "/frame_0000.png") != QImage(out + "/frame_0013.png"));
   }
 
+  // --view close-left frames the left cheek: a different picture of the same frame, at the
+  // same size.
+  void namedViewChangesTheCamera() {
+    const QString out = dir_.filePath("close-left");
+    const Run r = run({"--render", out, "--size", "320x240", "--view", "close-left", animation_});
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    const QImage close(out + "/frame_0013.png");
+    QCOMPARE(close.size(), QSize(320, 240));
+    const QImage framed(dir_.filePath("render") + "/frame_0013.png");
+    QVERIFY(!framed.isNull());
+    QVERIFY(close != framed);
+  }
+
+  void unknownViewIsAUsageError() {
+    const Run r = run({"--render", dir_.filePath("x"), "--view", "sideways", animation_});
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains("close-left") && r.err.contains("sideways"), qPrintable(r.err));
+  }
+
   void badFileFailsNamingTheLine() {
     const QString bad = dir_.filePath("bad.fap");
     std::ofstream(bad.toStdString()) << "2.1 bad 22 1\n0 0 2\n";

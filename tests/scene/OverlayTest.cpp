@@ -1,7 +1,9 @@
 // The engine-free parts of the scene on the real default head (skipped when it is not fetched):
 // where the overlays apply (masks painted in uv space), the overlay layers made from the head's
-// textures, the static occlusion, and the orbit camera's framing and mouse mapping.
+// textures, the static occlusion, the orbit camera's framing and mouse mapping, and the named
+// cameras of --render --view.
 #include <lacrima/rigging/DefaultHead.h>
+#include <lacrima/scene/CameraPreset.h>
 #include <lacrima/scene/HeadOcclusion.h>
 #include <lacrima/scene/OrbitView.h>
 #include <lacrima/scene/OverlayMasks.h>
@@ -9,8 +11,11 @@
 
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
+#include <numbers>
+#include <optional>
 
 using namespace lacrima;
 using namespace lacrima::scene;
@@ -240,6 +245,49 @@ class OverlayTest : public QObject {
     // Looking at the target: the camera's -z axis points from the eye to the target.
     const Eigen::Vector3d forward = -(view.orientation() * Eigen::Vector3d::UnitZ());
     QVERIFY((forward - (view.target - view.eye()).normalized()).norm() < 1e-9);
+  }
+
+  // The angle between where `view` looks and the direction to `point`, in degrees.
+  static double offAxisDegrees(const OrbitView& view, const Eigen::Vector3d& point) {
+    const Eigen::Vector3d forward = (view.target - view.eye()).normalized();
+    return std::acos(std::clamp(forward.dot((point - view.eye()).normalized()), -1.0, 1.0)) *
+           180.0 / std::numbers::pi;
+  }
+
+  void cameraPresetsAimWhereTheyAreNamed() {
+    for (const CameraPreset preset :
+         {CameraPreset::Framing, CameraPreset::Front, CameraPreset::ThreeQuarter,
+          CameraPreset::Profile, CameraPreset::CloseLeft, CameraPreset::CloseRight}) {
+      QCOMPARE(parseCameraPreset(toString(preset)), std::optional(preset));
+      QVERIFY(cameraPresetNames().find(toString(preset)) != std::string_view::npos);
+    }
+    QVERIFY(!parseCameraPreset("sideways"));
+    QVERIFY(!parseCameraPreset(""));
+
+    const OrbitView framing = OrbitView::framing(*head_);
+    QVERIFY(presetView(*head_, CameraPreset::Framing) == framing);
+    const OrbitView front = presetView(*head_, CameraPreset::Front);
+    QVERIFY(std::abs(front.eye().x() - front.target.x()) < 1e-9);
+    QVERIFY(front.eye().z() > head_->boundsMax().z());
+    // Profile: the camera stands on the face's left (+x), level with the target.
+    const OrbitView profile = presetView(*head_, CameraPreset::Profile);
+    QVERIFY(std::abs(profile.eye().x() - profile.target.x() - profile.distance) < 1e-9);
+
+    // Close-ups: aimed at the cheek below their own eye, from that side, far closer than the
+    // framing, with that eye still in view (the tear's start) and the other eye off centre.
+    const double halfFov = 0.5 * framing.fovYDegrees;
+    for (const bool left : {true, false}) {
+      const OrbitView close =
+          presetView(*head_, left ? CameraPreset::CloseLeft : CameraPreset::CloseRight);
+      const Eigen::Vector3d own = (left ? left_ : right_).centre.cast<double>();
+      const Eigen::Vector3d other = (left ? right_ : left_).centre.cast<double>();
+      QVERIFY(std::abs(close.target.x() - own.x()) < 0.05);  // the eye mesh's middle
+      QVERIFY(close.target.y() < own.y());
+      QVERIFY(left ? close.eye().x() > close.target.x() : close.eye().x() < close.target.x());
+      QVERIFY(close.distance < 0.3 * framing.distance);
+      QVERIFY(offAxisDegrees(close, own) < halfFov);
+      QVERIFY(offAxisDegrees(close, other) > offAxisDegrees(close, own));
+    }
   }
 
   void orbitZoomAndPanStayInRange() {

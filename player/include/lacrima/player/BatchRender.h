@@ -3,6 +3,7 @@
 // contact sheet of 12 evenly spaced frames (contact_sheet.png), through the same scene the
 // viewport shows (FaceRenderer), with progress on stderr. Needs an X display (xvfb-run).
 #include <lacrima/playback/HeadRig.h>
+#include <lacrima/scene/CameraPreset.h>
 
 #include <QSize>
 #include <QString>
@@ -15,6 +16,7 @@ struct BatchRenderOptions {
   QString input;      // .fap or project
   QString outputDir;  // created if missing
   QSize size{1280, 720};
+  scene::CameraPreset view = scene::CameraPreset::Framing;  // --view
   int sheetFrames = 12;
   // Called after each frame with (frames done, frames in all).
   std::function<void(int, int)> progress;
