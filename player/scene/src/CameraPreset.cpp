@@ -1,8 +1,10 @@
 #include <lacrima/scene/CameraPreset.h>
+#include <lacrima/scene/OverlayMasks.h>
 
 #include <Eigen/Geometry>
 
 #include <array>
+#include <string>
 #include <utility>
 
 namespace lacrima::scene {
@@ -17,27 +19,24 @@ constexpr std::array kNames{
     std::pair{CameraPreset::CloseRight, std::string_view("close-right")},
 };
 
-Eigen::AlignedBox3d boundsOf(const HeadMesh& head, int first, int count) {
-  Eigen::AlignedBox3d box;
-  for (int v = first; v < first + count; ++v) box.extend(head.positions.col(v).cast<double>());
-  return box;
+Eigen::AlignedBox3d boundsOf(const HeadMesh& head) {
+  return {head.boundsMin().cast<double>(), head.boundsMax().cast<double>()};
 }
 
 // The cheek below one eye: where the tear of that eye runs. side is +1 for the face's left.
 OrbitView closeUp(const HeadMesh& head, const OrbitView& framing, double side) {
-  const Eigen::AlignedBox3d all = boundsOf(head, 0, head.vertexCount());
+  const Eigen::AlignedBox3d all = boundsOf(head);
   const double height = all.sizes().y();
   Eigen::Vector3d eye(all.center().x() + side * 0.25 * all.sizes().x(), framing.target.y(),
                       framing.target.z());
-  if (const HeadSubmesh* sub = head.findSubmesh(side > 0 ? "eye_l" : "eye_r");
-      sub && sub->vertexCount > 0)
-    eye = boundsOf(head, sub->firstVertex, sub->vertexCount).center();
+  if (const auto sphere = eyeSphere(head, side > 0 ? "eye_l" : "eye_r"))
+    eye = sphere->centre.cast<double>();
   OrbitView view = framing;
-  // 0.12 head heights below the eye's centre: the lower lid's edge and the cheek beneath it.
-  view.target = Eigen::Vector3d(eye.x(), eye.y() - 0.12 * height, eye.z());
+  // 0.10 head heights below the eye's centre: the lower lid's edge and the cheek beneath it.
+  view.target = Eigen::Vector3d(eye.x(), eye.y() - 0.10 * height, eye.z());
   view.yawDegrees = side * 25;
   view.pitchDegrees = 6;
-  view.distance = framing.distance * 0.26;
+  view.distance = framing.distance * 0.28;
   return view;
 }
 
@@ -56,7 +55,15 @@ std::optional<CameraPreset> parseCameraPreset(std::string_view name) {
 }
 
 std::string_view cameraPresetNames() {
-  return "framing, front, three-quarter, profile, close-left, close-right";
+  static const std::string names = [] {
+    std::string joined;
+    for (const auto& [value, name] : kNames) {
+      if (!joined.empty()) joined += ", ";
+      joined += name;
+    }
+    return joined;
+  }();
+  return names;
 }
 
 OrbitView presetView(const HeadMesh& head, CameraPreset preset) {
@@ -74,7 +81,7 @@ OrbitView presetView(const HeadMesh& head, CameraPreset preset) {
       break;
     case CameraPreset::Profile:
       // Seen from the side the head's depth runs across the image: centre it.
-      view.target.z() = boundsOf(head, 0, head.vertexCount()).center().z();
+      view.target.z() = boundsOf(head).center().z();
       view.yawDegrees = 90;
       view.pitchDegrees = 0;
       break;

@@ -7,7 +7,7 @@
 //   three-quarter  45 degrees towards the face's left, slightly above
 //   profile        from the face's left side, level
 //   close-left     the left cheek under the left eye, where the left tear runs, filling the
-//                  view (about a quarter of the head's height), seen slightly from that side
+//                  view (about 0.3 of the head's height), seen slightly from that side
 //   close-right    the same for the right cheek
 //
 // Left and right are the face's own (MPEG-4's "l" is the face's left, at +x). The close views
