@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
-# lacrima.sh demo | test | build
+# lacrima.sh demo | test | build | screenshots
 #   Installs the Debian packages that are missing (packaging/debian-packages.txt), builds
-#   Lacrima in ./build (Release), then runs the demo (demo) or every test through CTest (test).
+#   Lacrima in ./build (Release), then runs the demo (demo), every test through CTest (test), or
+#   renders the reference pictures in media/screenshots (screenshots).
 #   Idempotent; prints only what it does. Run as root on Debian 12, or as a user with sudo.
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${LACRIMA_BUILD_DIR:-$root/build}
 mode=${1:-}
-case "$mode" in demo|test|build) ;; *) echo "usage: $0 demo|test|build" >&2; exit 2 ;; esac
+case "$mode" in demo|test|build|screenshots) ;; *) echo "usage: $0 demo|test|build|screenshots" >&2; exit 2 ;; esac
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
 
@@ -81,6 +82,31 @@ run_demo() {
   echo "         twelve of them side by side: $out/contact_sheet.png"
 }
 
+# The reference renders the README shows (media/screenshots/demo-*.png): the demo from the front
+# and close up on the face's left cheek at three moments, the sob (7.2 s), the tear peak
+# (8.2 s) and the drying (12.5 s). The player renders every frame (22 fps); these are frames
+# 158, 180 and 275.
+render_screenshots() {
+  local bin="$build/bin" demo="$root/media/demo/crying.fap" shots="$root/media/screenshots"
+  if [ "$head_available" -eq 0 ]; then
+    echo "lacrima: no default head, so no reference renders" >&2
+    exit 1
+  fi
+  local work
+  work=$(mktemp -d)
+  trap 'rm -rf "$work"' EXIT
+  local view moment frame
+  for view in front close-left; do
+    xvfb-run -a -s "-screen 0 1280x1024x24" "$bin/lacrima-player" --render "$work/$view" \
+      --view "$view" --size 1280x720 "$demo" >/dev/null
+    for moment in sob:0158 peak:0180 drying:0275; do
+      frame=${moment#*:}
+      cp "$work/$view/frame_$frame.png" "$shots/demo-${moment%%:*}-$view.png"
+    done
+  done
+  echo "lacrima: rendered $(ls "$shots"/demo-*.png | wc -l) reference pictures into $shots"
+}
+
 run_tests() {
   cd "$build"
   ctest --output-on-failure -j "$(nproc)" --timeout 900
@@ -98,5 +124,6 @@ build_lacrima
 case "$mode" in
   demo) run_demo ;;
   test) run_tests ;;
+  screenshots) render_screenshots ;;
   build) ;;
 esac

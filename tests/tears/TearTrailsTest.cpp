@@ -1,9 +1,11 @@
 // Wet trails: a drop sliding down the cheek sheet leaves a trail on the sheet that rides along
-// when the sheet moves; a drop that splits branches its trail; merging drops continue one trail;
-// trails dry and disappear; the section cap bounds memory; a real simulation's tears leave
-// trails; nothing is done when nothing is wet.
+// when the sheet moves; a trail is at least as wide as its drop's footprint; a drop that splits
+// branches its trail; merging drops continue one trail; trails dry and disappear; the section cap
+// bounds memory; a real simulation's tears leave trails; nothing is done when nothing is wet.
+#include "SheetDrops.h"
 #include "TearTestSupport.h"
 
+#include <lacrima/tears/DropFootprint.h>
 #include <lacrima/tears/TrailBuilder.h>
 
 #include <QtTest>
@@ -15,84 +17,6 @@ using namespace lacrima::tears;
 using namespace lacrima::tears::testing;
 
 namespace {
-
-constexpr double kH = 0.016, kRadius = kH / 4;  // the default kernel and particle radius, dm
-
-// The sheet's analytic surface (SyntheticSkin.cpp's construction, default options): a vertical
-// cylinder of radius 1 leaning back 20 degrees about x. Used as an independent reference.
-const Eigen::AngleAxisd kLean(-20 * std::numbers::pi / 180, Eigen::Vector3d::UnitX());
-Eigen::Vector3d sheetPoint(double u, double v) {
-  return kLean * Eigen::Vector3d(std::sin(u), v, std::cos(u) - 1);
-}
-Eigen::Vector3d sheetNormal(double u) {
-  return kLean * Eigen::Vector3d(std::sin(u), 0, std::cos(u));
-}
-// Distance from x to the (unmoved) cylinder.
-double distanceToSheet(const Eigen::Vector3d& x) {
-  const Eigen::Vector3d p = kLean.inverse() * x;
-  return std::abs(std::hypot(p.x(), p.z() + 1) - 1);
-}
-
-// A rigid motion of the sheet about its centre, as movedSheet applies it.
-struct Motion {
-  Eigen::Vector3d centre, translation;
-  Eigen::Matrix3d rotation;
-  Eigen::Vector3d apply(const Eigen::Vector3d& x) const {
-    return centre + rotation * (x - centre) + translation;
-  }
-  Eigen::Vector3d undo(const Eigen::Vector3d& x) const {
-    return centre + rotation.transpose() * (x - translation - centre);
-  }
-};
-
-// A drop of resting particles on the sheet at (u, v): a half-ball lattice of spacing h/2 over
-// the skin, ids from firstId, each touching particle given its contact triangle.
-struct DropSpec {
-  double u, v;
-  int count;
-  std::uint64_t firstId;
-  Eye eye = Eye::Left;
-};
-
-void addDrop(ParticleSet& particles, const TrailSkin& skin, const DropSpec& d,
-             const Motion* motion = nullptr) {
-  const Eigen::Vector3d c = sheetPoint(d.u, d.v), n = sheetNormal(d.u);
-  const Eigen::Vector3d e1 = Eigen::Vector3d::UnitY().cross(n).normalized(), e2 = n.cross(e1);
-  const double spacing = kH / 2;
-  std::vector<Eigen::Vector3d> offsets;
-  for (int i = -4; i <= 4; ++i)
-    for (int j = -4; j <= 4; ++j)
-      for (int k = 0; k <= 4; ++k) offsets.emplace_back(i * spacing, j * spacing, k * spacing);
-  std::stable_sort(offsets.begin(), offsets.end(),
-                   [](const auto& a, const auto& b) { return a.squaredNorm() < b.squaredNorm(); });
-  std::vector<int> all(static_cast<std::size_t>(skin.triangleCount()));
-  std::iota(all.begin(), all.end(), 0);
-  for (int p = 0; p < d.count; ++p) {
-    const Eigen::Vector3d& o = offsets[static_cast<std::size_t>(p)];
-    Eigen::Vector3d x = c + o.x() * e1 + o.y() * e2 + (o.z() + kRadius) * n;
-    const SkinAnchor nearest = skin.closest(x, all);  // set-up only: brute force over the sheet
-    if (motion) x = motion->apply(x);
-    const int i = particles.add(x, 1.0, d.firstId + static_cast<std::uint64_t>(p), d.eye);
-    if (o.z() == 0) particles.contact[static_cast<std::size_t>(i)].triangle = nearest.triangle;
-  }
-}
-
-struct Scene {
-  SyntheticSkin sheet = makeCheekSheet();
-  TrailSkin probe{sheet.triangles};  // for setting up contacts
-  ParticleSet particles;
-  UniformGrid grid;
-  Scene() { probe.bind(sheet.positions); }
-
-  const TrailMesh& step(TrailBuilder& trails, const std::vector<DropSpec>& drops,
-                        double dt = kFrameDt, const Eigen::Matrix3Xf* moved = nullptr,
-                        const Motion* motion = nullptr) {
-    particles.clear();
-    for (const DropSpec& d : drops) addDrop(particles, probe, d, motion);
-    grid.build(particles.position, kH);
-    return trails.update(particles, grid, kH, kRadius, moved ? *moved : sheet.positions, dt);
-  }
-};
 
 void checkOnSheet(const TrailMesh& mesh, const Motion* motion = nullptr) {
   QVERIFY(mesh.positions().allFinite() && mesh.normals().allFinite() && mesh.alpha().allFinite());
@@ -159,6 +83,27 @@ class TearTrailsTest : public QObject {
     for (int v = 0; v < before.cols(); ++v)
       QVERIFY((after.positions().col(v) - motion.apply(before.col(v))).norm() < 1e-5);
     checkOnSheet(after, &motion);
+  }
+
+  // A drop of one particle is a parcel of water 2r wide, but on the skin it spreads to the
+  // footprint of its volume (DropFootprint.h): the trail a lone particle leaves is that wide,
+  // not a 2r hairline.
+  void trailIsAsWideAsTheDropsFootprint() {
+    Scene scene;
+    TrailBuilder trails(scene.sheet.triangles);
+    for (int f = 0; f < 20; ++f) scene.step(trails, {{0.1, 0.8 - 0.005 * f, 1, 1}});
+    QVERIFY(trails.sections().size() >= 5);
+    const double footprint =
+        sphericalCap(parcelVolume(kRadius),
+                     TrailSettings{}.contactAngleDegrees * std::numbers::pi / 180)
+            .contactRadius;
+    QVERIFY(footprint > 1.5 * kRadius);  // so the test tells the two widths apart
+    const auto p = trails.mesh().positions();
+    for (int section = 0; section < p.cols() / 3; ++section) {
+      const double width = (p.col(3 * section) - p.col(3 * section + 2)).norm();
+      QVERIFY2(std::abs(width - 2 * footprint) < 0.02 * footprint,
+               QByteArray::number(width / (2 * footprint)));
+    }
   }
 
   void sharpTurnDoesNotFoldTheTrail() {

@@ -4,6 +4,7 @@
 
 #include <lacrima/common/Milliseconds.h>
 #include <lacrima/playback/FrameProducer.h>
+#include <lacrima/tears/DropCaps.h>
 #include <lacrima/tears/SurfaceMesher.h>
 #include <lacrima/tears/TearSimulation.h>
 #include <lacrima/tears/TrailBuilder.h>
@@ -60,6 +61,7 @@ struct FrameProducer::State {
   std::optional<tears::TearCheckpoint> pristine;
   int generation = 0;
   tears::SurfaceMesher mesher;
+  tears::DropCaps caps;  // small drops on the skin; the mesher skips their particles
   tears::TrailBuilder trails;
   bool surfaceCurrent = false;  // the mesher's surface is of the current particles
   // The trail builder has seen every frame since it was made. One that missed frames (trails
@@ -75,7 +77,12 @@ struct FrameProducer::State {
   ProducerCounters counters;
 
   State(const HeadRig& r, const SceneSettings& s)
-      : rig(r), scene(s), settings(settingsFor(s)), skin(skinTriangles(r)), trails(skin) {
+      : rig(r),
+        scene(s),
+        settings(settingsFor(s)),
+        skin(skinTriangles(r)),
+        caps(skin),
+        trails(skin) {
     positions = rig.head.positions;
     normals = rig.head.normals;
   }
@@ -132,7 +139,8 @@ struct FrameProducer::State {
     surfaceCurrent = false;
     if (!scene.surface || particles() == 0) return;
     const auto start = SteadyClock::now();
-    mesher.update(*simulation);
+    caps.update(*simulation, positions);
+    mesher.update(*simulation, tears::SurfaceMesherSettings{}.maxCubes, caps.skipped());
     times.surface = millisecondsSince(start);
     surfaceCurrent = true;
     ++counters.surfaceRuns;
@@ -166,12 +174,14 @@ struct FrameProducer::State {
     }
     if (scene.surface && surfaceCurrent && !mesher.surface().empty())
       next.surface = &mesher.surface();
+    if (scene.surface && surfaceCurrent && !caps.mesh().empty()) next.drops = &caps.mesh();
     if (scene.trails && trailsCurrent && !trails.mesh().empty()) next.trails = &trails.mesh();
     next.overlays = overlays;
     next.textureBlending = scene.textureBlending;
     changed = changed || next.particles != view.particles || next.surface != view.surface ||
-              next.trails != view.trails || next.overlays != view.overlays ||
-              next.textureBlending != view.textureBlending || view.neutral == nullptr;
+              next.drops != view.drops || next.trails != view.trails ||
+              next.overlays != view.overlays || next.textureBlending != view.textureBlending ||
+              view.neutral == nullptr;
     next.revision = view.revision + (changed ? 1 : 0);
     view = next;
   }

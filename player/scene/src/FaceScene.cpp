@@ -175,6 +175,7 @@ void FaceScene::show(const playback::FrameView& view) {
   State& s = *state_;
   if (view.neutral && view.neutral != s.head) s.buildHead(*view.neutral);
   s.tears->showSurface(view.surface);
+  s.tears->showDrops(view.drops);
   s.tears->showTrails(view.trails);
   s.tears->showParticles(view.particles, view.particleRadius);
   if (!s.geometry) return;
@@ -195,7 +196,8 @@ Ogre::Viewport& FaceScene::attach(Ogre::RenderTarget& target) {
   viewport->setBackgroundColour(Ogre::ColourValue(0.1f, 0.1f, 0.11f));
   viewport->setOverlaysEnabled(false);
   // The backdrop covers every pixel: clearing colour too would be a wasted pass over the frame.
-  viewport->setClearEveryFrame(true, Ogre::FBT_DEPTH);
+  // The trails mark the stencil (TearLayers.h).
+  viewport->setClearEveryFrame(true, Ogre::FBT_DEPTH | Ogre::FBT_STENCIL);
   viewport->setShadowsEnabled(false);
   state_->camera->setAutoAspectRatio(false);
   if (target.getHeight() > 0) setAspect(double(target.getWidth()) / double(target.getHeight()));

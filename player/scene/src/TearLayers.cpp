@@ -5,8 +5,13 @@
 #include <lacrima/tears/TrailBuilder.h>
 
 #include <OgreMaterialManager.h>
+#include <OgreRenderObjectListener.h>
 #include <OgreRenderQueue.h>
+#include <OgreRenderSystem.h>
+#include <OgreRoot.h>
+#include <OgreSceneManager.h>
 #include <OgreSceneNode.h>
+#include <OgreTechnique.h>
 
 #include <array>
 #include <limits>
@@ -19,7 +24,8 @@ constexpr std::array kSurfaceLayout{Attribute{Ogre::VET_FLOAT3, Ogre::VES_POSITI
                                     Attribute{Ogre::VET_FLOAT3, Ogre::VES_NORMAL}};
 constexpr std::array kTrailLayout{Attribute{Ogre::VET_FLOAT3, Ogre::VES_POSITION},
                                   Attribute{Ogre::VET_FLOAT3, Ogre::VES_NORMAL},
-                                  Attribute{Ogre::VET_FLOAT2, Ogre::VES_TEXTURE_COORDINATES, 0}};
+                                  Attribute{Ogre::VET_FLOAT2, Ogre::VES_TEXTURE_COORDINATES, 0},
+                                  Attribute{Ogre::VET_FLOAT3, Ogre::VES_TANGENT}};
 constexpr std::array kImpostorLayout{Attribute{Ogre::VET_FLOAT3, Ogre::VES_POSITION},
                                      Attribute{Ogre::VET_FLOAT2, Ogre::VES_TEXTURE_COORDINATES, 0}};
 
@@ -32,12 +38,13 @@ struct Bounds {
   }
 };
 
-// Positions, normals and, for trails, (wetness, across) per vertex, then the triangles.
-// `across` is -1, 0, 1 for a trail section's left, middle and right point (TrailBuilder stores
-// three vertices per section in that order), so the film can thin out towards its edges.
-template <typename Positions, typename Normals, typename Triangles>
+enum class Order { AsGiven, Reversed };
+
+// Positions and normals per vertex, then whatever `extra(v, out)` appends for vertex v (it
+// returns the pointer past what it wrote), then the triangles in the given order.
+template <typename Positions, typename Normals, typename Triangles, typename Extra>
 void upload(StreamedGeometry& geometry, const Positions& positions, const Normals& normals,
-            const double* wetness, const Triangles& triangles) {
+            const Triangles& triangles, Order order, Extra&& extra) {
   const int n = static_cast<int>(positions.cols());
   const int t = static_cast<int>(triangles.cols());
   if (n == 0 || t == 0) {
@@ -56,15 +63,14 @@ void upload(StreamedGeometry& geometry, const Positions& positions, const Normal
     *out++ = q.x();
     *out++ = q.y();
     *out++ = q.z();
-    if (wetness) {
-      *out++ = static_cast<float>(wetness[v]);
-      *out++ = static_cast<float>(v % 3 - 1);
-    }
+    out = extra(v, out);
   }
   geometry.unlockVertices();
   std::uint32_t* index = geometry.lockIndices(3 * t);
-  for (int i = 0; i < t; ++i)
-    for (int k = 0; k < 3; ++k) *index++ = static_cast<std::uint32_t>(triangles(k, i));
+  for (int i = 0; i < t; ++i) {
+    const int triangle = order == Order::AsGiven ? i : t - 1 - i;
+    for (int k = 0; k < 3; ++k) *index++ = static_cast<std::uint32_t>(triangles(k, triangle));
+  }
   geometry.unlockIndices();
   geometry.setDrawn(3 * t, bounds.low, bounds.high);
 }
@@ -82,19 +88,47 @@ std::unique_ptr<StreamedGeometry> makeLayer(std::span<const Attribute> layout,
 
 }  // namespace
 
-TearLayers::TearLayers(Ogre::SceneManager&, Ogre::SceneNode& node, const std::string& prefix,
+class TrailStencil : public Ogre::RenderObjectListener {
+ public:
+  explicit TrailStencil(const Ogre::Renderable& trails) : trails_(trails) {}
+
+  void notifyRenderSingleObject(Ogre::Renderable* renderable, const Ogre::Pass* pass,
+                                const Ogre::AutoParamDataSource*, const Ogre::LightList*,
+                                bool) override {
+    Ogre::RenderSystem& system = *Ogre::Root::getSingleton().getRenderSystem();
+    if (renderable != &trails_) {
+      system.setStencilCheckEnabled(false);
+      return;
+    }
+    // Pass 0 (tint) where the mark is 0, pass 1 (light) where it is 1; OGRE passes when
+    // (reference compare stencil) holds.
+    const auto reference = static_cast<Ogre::uint32>(pass->getIndex() + 1);
+    system.setStencilCheckEnabled(true);
+    system.setStencilBufferParams(Ogre::CMPF_EQUAL, reference - 1, 0xff, 0xff, Ogre::SOP_KEEP,
+                                  Ogre::SOP_KEEP, Ogre::SOP_INCREMENT);
+  }
+
+ private:
+  const Ogre::Renderable& trails_;
+};
+
+TearLayers::TearLayers(Ogre::SceneManager& scene, Ogre::SceneNode& node, const std::string& prefix,
                        const std::string& group)
-    : node_(node) {
+    : scene_(scene), node_(node) {
   surface_ =
       makeLayer(kSurfaceLayout, prefix + "/surface", "Lacrima/Tear", group, kTearQueue, node);
+  drops_ = makeLayer(kSurfaceLayout, prefix + "/drops", "Lacrima/Tear", group, kTearQueue, node);
   trails_ = makeLayer(kTrailLayout, prefix + "/trails", "Lacrima/Trail", group, kTrailQueue, node);
   particles_ = makeLayer(kImpostorLayout, prefix + "/particles", "Lacrima/Particle", group,
                          Ogre::RENDER_QUEUE_MAIN, node);
   particles_->setCustomParameter(0, Ogre::Vector4(0, 0, 0, 0));
+  stencil_ = std::make_unique<TrailStencil>(*trails_);
+  scene_.addRenderObjectListener(stencil_.get());
 }
 
 TearLayers::~TearLayers() {
-  for (auto* geometry : {surface_.get(), trails_.get(), particles_.get()})
+  scene_.removeRenderObjectListener(stencil_.get());
+  for (auto* geometry : {surface_.get(), drops_.get(), trails_.get(), particles_.get()})
     if (geometry && geometry->isAttached()) node_.detachObject(geometry);
 }
 
@@ -103,7 +137,17 @@ void TearLayers::showSurface(const tears::TearSurface* surface) {
     surface_->hide();
     return;
   }
-  upload(*surface_, surface->positions(), surface->normals(), nullptr, surface->triangles());
+  upload(*surface_, surface->positions(), surface->normals(), surface->triangles(), Order::AsGiven,
+         [](int, float* out) { return out; });
+}
+
+void TearLayers::showDrops(const tears::TearSurface* caps) {
+  if (!caps || caps->empty()) {
+    drops_->hide();
+    return;
+  }
+  upload(*drops_, caps->positions(), caps->normals(), caps->triangles(), Order::AsGiven,
+         [](int, float* out) { return out; });
 }
 
 void TearLayers::showTrails(const tears::TrailMesh* trails) {
@@ -111,8 +155,26 @@ void TearLayers::showTrails(const tears::TrailMesh* trails) {
     trails_->hide();
     return;
   }
-  upload(*trails_, trails->positions(), trails->normals(), trails->alpha().data(),
-         trails->triangles());
+  // Per vertex: (wetness, across), across -1, 0, 1 for a section's left, middle and right point
+  // (TrailBuilder stores three vertices per section in that order), and the section's direction
+  // from left to right, along which the film's shader rounds its normal. Segments come oldest
+  // first; drawn newest first, the freshest water wins the stencil (TrailStencil).
+  const auto positions = trails->positions();
+  const auto alpha = trails->alpha();
+  upload(*trails_, positions, trails->normals(), trails->triangles(), Order::Reversed,
+         [&](int v, float* out) {
+           const int left = v - v % 3;
+           const Eigen::Vector3d span = positions.col(left + 2) - positions.col(left);
+           const Eigen::Vector3f across = span.norm() > 0
+                                              ? Eigen::Vector3f(span.normalized().cast<float>())
+                                              : Eigen::Vector3f::Zero();
+           *out++ = static_cast<float>(alpha[v]);
+           *out++ = static_cast<float>(v % 3 - 1);
+           *out++ = across.x();
+           *out++ = across.y();
+           *out++ = across.z();
+           return out;
+         });
 }
 
 void TearLayers::showParticles(const tears::ParticleSet* particles, double radius) {

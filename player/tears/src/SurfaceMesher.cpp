@@ -93,7 +93,8 @@ SurfaceMesher::SurfaceMesher()
 
 SurfaceMesher::~SurfaceMesher() = default;
 
-const TearSurface& SurfaceMesher::update(TearSimulation& simulation, std::size_t maxCubes) {
+const TearSurface& SurfaceMesher::update(TearSimulation& simulation, std::size_t maxCubes,
+                                         std::span<const std::uint8_t> skip) {
   const ParticleSet& particles = simulation.particles();
   if (particles.empty()) {  // effects on demand: no particles, no work and no run counted
     surface_.clear();
@@ -103,10 +104,24 @@ const TearSurface& SurfaceMesher::update(TearSimulation& simulation, std::size_t
   const auto start = SteadyClock::now();
   const ScaledParameters& p = simulation.parameters();
   SurfaceMesherSettings settings{p.h, p.cubeSize, p.iso, maxCubes};
-  build(particles.position, particles.mass, simulation.grid(), settings);
+  const UniformGrid& grid = simulation.grid();
+  build(particles.position, meshedMasses(particles, skip), grid, settings);
   simulation.countSurfaceRun();
   stats_.milliseconds = millisecondsSince(start);
   return surface_;
+}
+
+// The particles' masses, zero for those skipped: a massless particle adds nothing to the
+// colour field (SurfaceMesherField.h).
+std::span<const double> SurfaceMesher::meshedMasses(const ParticleSet& particles,
+                                                    std::span<const std::uint8_t> skip) {
+  if (skip.empty()) return particles.mass;
+  if (skip.size() != particles.mass.size())
+    throw std::invalid_argument("surface mesher: one skip flag per particle");
+  meshedMass_.assign(particles.mass.begin(), particles.mass.end());
+  for (std::size_t i = 0; i < skip.size(); ++i)
+    if (skip[i]) meshedMass_[i] = 0;
+  return meshedMass_;
 }
 
 const TearSurface& SurfaceMesher::build(std::span<const Eigen::Vector3d> positions,

@@ -1,26 +1,31 @@
 #include "VectorState.h"
 
 #include <lacrima/common/Milliseconds.h>
+#include <lacrima/tears/DropFootprint.h>
 #include <lacrima/tears/TearSimulation.h>
 #include <lacrima/tears/TrailBuilder.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 
 namespace lacrima::tears {
 namespace {
 constexpr std::size_t kMaxSeeds = 32;  // contact triangles of a drop used to start skin walks
+constexpr double kRadian = std::numbers::pi / 180;
 }  // namespace
 
 TrailBuilder::TrailBuilder(std::vector<Eigen::Vector3i> skinTriangles,
                            const TrailSettings& settings)
     : skin_(std::move(skinTriangles)), settings_(settings) {
   if (!(settings_.drySeconds > 0) || !(settings_.minimumStepKernels > 0) ||
-      settings_.maxSections < 2 || !(settings_.middleHeightFraction >= 0))
+      settings_.maxSections < 2 || !(settings_.middleHeightFraction >= 0) ||
+      !(settings_.contactAngleDegrees >= 0 && settings_.contactAngleDegrees <= 180))
     throw std::invalid_argument(
-        "trail settings: dry time and step must be positive, at least two sections");
+        "trail settings: dry time and step must be positive, at least two sections, a contact "
+        "angle in [0, 180] degrees");
 }
 
 const TrailMesh& TrailBuilder::update(const TearSimulation& simulation,
@@ -164,11 +169,16 @@ void TrailBuilder::continueTrack(Track& track, const ParticleSet& particles, con
     right = std::min(right, across);
     top = std::max(top, d.dot(n));
   }
+  // The wetted width is the wider of the particles' extent and the footprint of a drop of their
+  // volume (DropFootprint.h): a few particles spread as one cap, not as a chain of parcels.
+  const double footprint = sphericalCap(drop.count * parcelVolume(particleRadius),
+                                        settings_.contactAngleDegrees * kRadian)
+                               .contactRadius;
   seeds_.push_back(centre.triangle);
   TrailSection section;
   section.eye = drop.eye;
-  section.point[0] = skin_.closest(c + (left + particleRadius) * a, seeds_);
-  section.point[2] = skin_.closest(c + (right - particleRadius) * a, seeds_);
+  section.point[0] = skin_.closest(c + std::max(left + particleRadius, footprint) * a, seeds_);
+  section.point[2] = skin_.closest(c + std::min(right - particleRadius, -footprint) * a, seeds_);
   section.point[1] = centre;
   section.point[1].height = std::min(h, settings_.middleHeightFraction * (top + particleRadius));
   if (section.point[0].triangle < 0) section.point[0] = centre;

@@ -33,6 +33,8 @@ struct FrameView {
   const tears::ParticleSet* particles = nullptr;  // non-null only when particle spheres are on
   double particleRadius = 0;                      // head units
   const tears::TearSurface* surface = nullptr;    // non-null when the surface is on and non-empty
+  const tears::TearSurface* drops = nullptr;      // small drops on the skin as caps (DropCaps.h),
+                                                  // shown with the surface; null when none
   const tears::TrailMesh* trails = nullptr;       // non-null when trails are on and non-empty
   OverlayWeights overlays;
   bool textureBlending = true;

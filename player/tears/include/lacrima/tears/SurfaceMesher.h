@@ -32,6 +32,10 @@
 // fraction of the cost of evaluating it there. Where the gradient vanishes: the area-weighted
 // triangle normals.
 //
+// update() can leave particles out (`skip`): the small drops on the skin, which DropCaps.h draws
+// as spherical caps. Meshed alone, a drop of a few particles is a bead about 1 mm across with a
+// silhouette all round, and a stream of them reads as a string of glass spheres.
+//
 // The work is capped (SurfaceMesherSettings::maxCubes, counted as the cubes of the active
 // blocks): past the cap the cube size is enlarged until they fit, and stats().capped reports it —
 // a coarser surface, never a truncated one with holes.
@@ -47,6 +51,7 @@
 
 namespace lacrima::tears {
 
+class ParticleSet;
 class SurfaceMesherField;
 class TearSimulation;
 namespace detail {
@@ -85,6 +90,7 @@ class TearSurface {
 
  private:
   friend class SurfaceMesher;
+  friend class DropCaps;
   std::vector<Eigen::Vector3d> position_, normal_;
   std::vector<Eigen::Vector3i> triangle_;
 };
@@ -108,8 +114,10 @@ class SurfaceMesher {
   // Meshes the simulation's particles with its kernel radius, cube size and iso value (already
   // in head units, Parameters.h). Does nothing (and leaves an empty surface) when there are no
   // particles; otherwise counts a surface run on the simulation. `maxCubes` bounds the work.
+  // `skip`: empty, or one flag per particle; a non-zero flag leaves that particle out.
   const TearSurface& update(TearSimulation& simulation,
-                            std::size_t maxCubes = SurfaceMesherSettings{}.maxCubes);
+                            std::size_t maxCubes = SurfaceMesherSettings{}.maxCubes,
+                            std::span<const std::uint8_t> skip = {});
 
   // Meshes any particle set; `grid` must be built over `positions` with cell edge
   // settings.kernelRadius. Throws std::invalid_argument for non-positive or non-finite settings.
@@ -124,6 +132,9 @@ class SurfaceMesher {
   long long cappedBuilds() const { return cappedBuilds_; }
 
  private:
+  std::span<const double> meshedMasses(const ParticleSet& particles,
+                                       std::span<const std::uint8_t> skip);
+
   struct AxisPoint {
     int block;  // relative to the support's lowest block
     int local;  // block-local coordinate
@@ -143,6 +154,7 @@ class SurfaceMesher {
   TearSurface surface_;
   SurfaceMesherStats stats_;
   long long cappedBuilds_ = 0;
+  std::vector<double> meshedMass_;
 
   std::unique_ptr<detail::SurfaceMesherKeyMap> blockMap_;
   Lattice blockBase_;           // block keys are packed relative to this

@@ -8,7 +8,8 @@
 //     the centre's displacement since the last update, both points evaluated on the CURRENT
 //     skin, so skin motion is not mistaken for sliding;
 //   * across the motion, a = n x t (n: skin normal), the drop's left and right boundaries are
-//     its extreme particles along a (plus a particle radius), projected on the skin; the middle
+//     its extreme particles along a (plus a particle radius), or the edges of the footprint of a
+//     drop of its volume (DropFootprint.h) where that is wider, projected on the skin; the middle
 //     point is the centre raised along n by min(h, middleHeightFraction x the drop's height);
 //   * once the centre is more than d_min from the last cross-section's centre, a new section
 //     (left, middle, right) is stored and joined to the last one by four triangles
@@ -45,7 +46,8 @@ struct TrailSettings {
   double minimumStepKernels = 0.5;    // d_min in kernel radii
   double middleHeightFraction = 0.5;  // of the drop's height over the skin (capped at h)
   double drySeconds = 10;
-  int maxSections = 4096;  // 3 trail points each
+  double contactAngleDegrees = 70;  // water on skin: the drop's footprint (DropFootprint.h)
+  int maxSections = 4096;           // 3 trail points each
 };
 
 struct TrailSection {

@@ -1,0 +1,138 @@
+#include <lacrima/tears/DropCaps.h>
+#include <lacrima/tears/DropFootprint.h>
+#include <lacrima/tears/TearSimulation.h>
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace lacrima::tears {
+namespace {
+constexpr std::size_t kMaxSeeds = 32;  // contact triangles of a drop used to start skin walks
+}  // namespace
+
+DropCaps::DropCaps(std::vector<Eigen::Vector3i> skinTriangles, const DropCapSettings& settings)
+    : skin_(std::move(skinTriangles)), settings_(settings) {
+  if (settings_.maxParticles < 1 || settings_.rings < 1 || settings_.segments < 3 ||
+      !(settings_.minimumSpeed >= 0) || !(settings_.followDistance >= 0) ||
+      !(settings_.trackWidth >= 0) ||
+      !(settings_.contactAngleDegrees > 0 && settings_.contactAngleDegrees <= 180) ||
+      !(settings_.rimLift >= 0 && settings_.rimLift < 1))
+    throw std::invalid_argument(
+        "drop caps: at least one particle, ring and three segments, distances and a speed of at "
+        "least 0, a "
+        "contact angle in (0, 180] degrees and a rim lift in [0, 1)");
+}
+
+const TearSurface& DropCaps::update(const TearSimulation& simulation,
+                                    const Eigen::Matrix3Xf& headPositions) {
+  if (simulation.particles().empty()) {  // the grid is built on demand: do not ask for it
+    mesh_.clear();
+    skipped_.clear();
+    caps_ = 0;
+    return mesh_;
+  }
+  return update(simulation.particles(), simulation.grid(), simulation.kernelRadius(),
+                simulation.particleRadius(), headPositions);
+}
+
+const TearSurface& DropCaps::update(const ParticleSet& particles, const UniformGrid& grid, double h,
+                                    double particleRadius, const Eigen::Matrix3Xf& headPositions) {
+  mesh_.clear();
+  caps_ = 0;
+  skipped_.assign(particles.position.size(), 0);
+  if (particles.empty()) return mesh_;
+  if (headPositions.cols() <= skin_.maxVertex())
+    throw std::invalid_argument("drop caps: fewer head positions than the skin uses");
+  skin_.bind(headPositions);
+  finder_.find(particles, grid);
+  // Every drop touching the skin, with its volume and velocity; any size, since a large drop
+  // ahead also means the small one behind runs on its track.
+  onSkin_.clear();
+  const auto all = finder_.drops();
+  for (std::size_t d = 0; d < all.size(); ++d) {
+    SkinDrop drop;
+    drop.index = static_cast<int>(d);
+    seeds_.clear();
+    for (int i : finder_.particlesOf(all[d])) {
+      const auto s = static_cast<std::size_t>(i);
+      const int t = particles.contact[s].triangle;
+      if (t >= 0 && t < skin_.triangleCount() && seeds_.size() < kMaxSeeds) seeds_.push_back(t);
+      drop.velocity += particles.velocity[s];
+    }
+    if (seeds_.empty()) continue;  // in the air or only on an eye: the mesher draws it
+    drop.volume = all[d].count * parcelVolume(particleRadius);
+    drop.velocity /= all[d].count;
+    drop.base = skin_.closest(all[d].centre, seeds_);
+    if (drop.base.triangle >= 0) onSkin_.push_back(drop);
+  }
+  for (const SkinDrop& drop : onSkin_) {
+    const FoundDrop& found = all[static_cast<std::size_t>(drop.index)];
+    if (found.count >= settings_.maxParticles) continue;
+    for (int i : finder_.particlesOf(found)) skipped_[static_cast<std::size_t>(i)] = 1;
+    if (!leads(drop, h)) continue;
+    const Eigen::Vector3d normal = skin_.normal(drop.base.triangle);
+    if (normal.isZero()) continue;  // a degenerate triangle has no side to sit on
+    addCap(skin_.point(drop.base), normal, drop.volume);
+  }
+  skin_.unbind();
+  return mesh_;
+}
+
+// A sliding drop leads unless another drop on the skin lies ahead of it, within
+// `followDistance` along its motion and `trackWidth` across it.
+bool DropCaps::leads(const SkinDrop& drop, double h) const {
+  const double speed = drop.velocity.norm();
+  if (speed < settings_.minimumSpeed * h) return true;  // a drop at rest sits on its own
+  const Eigen::Vector3d direction = drop.velocity / speed;
+  const Eigen::Vector3d centre = finder_.drops()[static_cast<std::size_t>(drop.index)].centre;
+  for (const SkinDrop& other : onSkin_) {
+    if (other.index == drop.index) continue;
+    const Eigen::Vector3d d =
+        finder_.drops()[static_cast<std::size_t>(other.index)].centre - centre;
+    const double along = d.dot(direction);
+    if (along > 0 && along < settings_.followDistance * h &&
+        (d - along * direction).norm() < settings_.trackWidth * h)
+      return false;
+  }
+  return true;
+}
+
+void DropCaps::addCap(const Eigen::Vector3d& base, const Eigen::Vector3d& n, double volume) {
+  const double theta = settings_.contactAngleDegrees * std::numbers::pi / 180;
+  const CapShape cap = sphericalCap(volume, theta);
+  if (!(cap.contactRadius > 0) || !std::isfinite(cap.contactRadius)) return;
+  const double R = cap.contactRadius / std::sin(theta);
+  const Eigen::Vector3d centre =
+      base + (cap.height - R + settings_.rimLift * cap.contactRadius) * n;
+  // Any two directions across the normal.
+  const Eigen::Vector3d helper =
+      std::abs(n.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  const Eigen::Vector3d e1 = n.cross(helper).normalized(), e2 = n.cross(e1);
+
+  const int rings = settings_.rings, segments = settings_.segments;
+  const int top = mesh_.vertexCount();
+  auto addVertex = [&](const Eigen::Vector3d& direction) {
+    mesh_.position_.push_back(centre + R * direction);
+    mesh_.normal_.push_back(direction);
+  };
+  addVertex(n);
+  for (int k = 1; k <= rings; ++k) {
+    const double phi = theta * k / rings;
+    for (int j = 0; j < segments; ++j) {
+      const double psi = 2 * std::numbers::pi * j / segments;
+      addVertex(std::cos(phi) * n + std::sin(phi) * (std::cos(psi) * e1 + std::sin(psi) * e2));
+    }
+  }
+  // Counter-clockwise seen from outside (along +n): e1, e2, n is right-handed.
+  auto ring = [&](int k, int j) { return top + 1 + (k - 1) * segments + (j % segments); };
+  for (int j = 0; j < segments; ++j) mesh_.triangle_.emplace_back(top, ring(1, j), ring(1, j + 1));
+  for (int k = 1; k < rings; ++k)
+    for (int j = 0; j < segments; ++j) {
+      mesh_.triangle_.emplace_back(ring(k, j), ring(k + 1, j), ring(k + 1, j + 1));
+      mesh_.triangle_.emplace_back(ring(k, j), ring(k + 1, j + 1), ring(k, j + 1));
+    }
+  ++caps_;
+}
+
+}  // namespace lacrima::tears
