@@ -82,20 +82,19 @@ run_demo() {
   echo "         twelve of them side by side: $out/contact_sheet.png"
 }
 
-# The reference renders the README shows (media/screenshots/demo-*.png): the demo from the front
-# and close up on the face's left cheek at three moments, the sob (7.2 s), the tear peak
-# (8.2 s) and the drying (12.5 s). The player renders every frame (22 fps); these are frames
-# 158, 180 and 275.
+# The pictures of the player in media/screenshots: the reference renders the README shows
+# (demo-*.png), the demo from the front and close up on the face's left cheek at three moments,
+# the sob (7.2 s), the tear peak (8.2 s) and the drying (12.5 s) (the player renders every frame
+# at 22 fps; these are frames 158, 180 and 275), and the player's window at the sob
+# (player-sob.png).
 render_screenshots() {
   local bin="$build/bin" demo="$root/media/demo/crying.fap" shots="$root/media/screenshots"
   if [ "$head_available" -eq 0 ]; then
     echo "lacrima: no default head, so no reference renders" >&2
     exit 1
   fi
-  local work
+  local work view moment frame
   work=$(mktemp -d)
-  trap 'rm -rf "$work"' EXIT
-  local view moment frame
   for view in front close-left; do
     xvfb-run -a -s "-screen 0 1280x1024x24" "$bin/lacrima-player" --render "$work/$view" \
       --view "$view" --size 1280x720 "$demo" >/dev/null
@@ -104,7 +103,10 @@ render_screenshots() {
       cp "$work/$view/frame_$frame.png" "$shots/demo-${moment%%:*}-$view.png"
     done
   done
-  echo "lacrima: rendered $(ls "$shots"/demo-*.png | wc -l) reference pictures into $shots"
+  rm -rf "$work"
+  xvfb-run -a -s "-screen 0 1600x1000x24" "$bin/lacrima-player" --size 1280x760 \
+    --screenshot "$shots/player-sob.png" --at 7.2 "$demo" >/dev/null
+  echo "lacrima: rendered $(ls "$shots"/demo-*.png | wc -l) reference pictures and the window into $shots"
 }
 
 run_tests() {
