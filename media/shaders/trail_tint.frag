@@ -9,6 +9,6 @@ out vec4 fragColour;
 void main() {
   TrailFilm f = trailFilm();
   float amount = f.body * mix(0.35, 1.0, f.rivulet);
-  vec3 wetSkin = vec3(0.87, 0.79, 0.76);
+  vec3 wetSkin = vec3(0.91, 0.85, 0.83);
   fragColour = vec4(mix(vec3(1.0), wetSkin, amount), 1.0);
 }

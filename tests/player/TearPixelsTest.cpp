@@ -35,7 +35,7 @@ constexpr double kRunningTearTime = 6.8;
 constexpr int kWaterContrast = 20;
 // A tear track is 1-3 mm wide; close up (about 7 px per mm) a real one is 7 to 20 px, more
 // with the bead. Measured: the hairline tears this test was written against had a median of
-// 11 px (their dark rims and beads included), the rivulets 23 px.
+// 11 px (their dark rims and beads included), the rivulets 20 px.
 constexpr int kMinimumTearWidth = 16;
 // Pixels of glints along the water, brighter than any skin nearby (measured: about 460).
 constexpr int kMinimumHighlights = 100;
