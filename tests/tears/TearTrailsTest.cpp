@@ -46,12 +46,14 @@ struct Motion {
 };
 
 // A drop of resting particles on the sheet at (u, v): a half-ball lattice of spacing h/2 over
-// the skin, ids from firstId, each touching particle given its contact triangle.
+// the skin, ids from firstId, each touching particle given its contact triangle. A drop lifted
+// off the sheet (in the air) touches nothing.
 struct DropSpec {
   double u, v;
   int count;
   std::uint64_t firstId;
   Eye eye = Eye::Left;
+  double lift = 0;  // along the normal
 };
 
 void addDrop(ParticleSet& particles, const TrailSkin& skin, const DropSpec& d,
@@ -69,11 +71,12 @@ void addDrop(ParticleSet& particles, const TrailSkin& skin, const DropSpec& d,
   std::iota(all.begin(), all.end(), 0);
   for (int p = 0; p < d.count; ++p) {
     const Eigen::Vector3d& o = offsets[static_cast<std::size_t>(p)];
-    Eigen::Vector3d x = c + o.x() * e1 + o.y() * e2 + (o.z() + kRadius) * n;
+    Eigen::Vector3d x = c + o.x() * e1 + o.y() * e2 + (o.z() + kRadius + d.lift) * n;
     const SkinAnchor nearest = skin.closest(x, all);  // set-up only: brute force over the sheet
     if (motion) x = motion->apply(x);
     const int i = particles.add(x, 1.0, d.firstId + static_cast<std::uint64_t>(p), d.eye);
-    if (o.z() == 0) particles.contact[static_cast<std::size_t>(i)].triangle = nearest.triangle;
+    if (o.z() == 0 && d.lift == 0)
+      particles.contact[static_cast<std::size_t>(i)].triangle = nearest.triangle;
   }
 }
 
@@ -249,6 +252,30 @@ class TearTrailsTest : public QObject {
     std::map<int, int> outgoing;
     for (const TrailSegment& s : trails.segments()) ++outgoing[s.from];
     for (const auto& [section, count] : outgoing) QCOMPARE(count, 1);
+    checkOnSheet(trails.mesh());
+  }
+
+  void aFallingDropLeavesNoTrailInTheAir() {
+    // A drop slides, falls off (three updates in the air, touching nothing), lands 3 cm lower
+    // and slides on: two trails, and no strip bridging the fall.
+    Scene scene;
+    TrailBuilder trails(scene.sheet.triangles);
+    for (int f = 0; f < 8; ++f) scene.step(trails, {{0.0, 0.8 - 0.006 * f, 30, 1}});
+    const std::size_t sectionsBefore = trails.sections().size();
+    QVERIFY(sectionsBefore >= 2);
+    for (int f = 0; f < 3; ++f) {
+      scene.step(trails, {{0.0, 0.7 - 0.1 * f, 30, 1, Eye::Left, 0.1}});
+      QCOMPARE(trails.sections().size(), sectionsBefore);  // nothing wet in the air
+    }
+    for (int f = 0; f < 8; ++f) scene.step(trails, {{0.0, 0.4 - 0.006 * f, 30, 1}});
+    QVERIFY(trails.sections().size() > sectionsBefore + 2);
+    // Every segment joins two sections a few steps apart: none spans the 3 cm fall.
+    const auto middle = [&](int section) {
+      return scene.probe.point(trails.sections()[static_cast<std::size_t>(section)].point[1]);
+    };
+    for (const TrailSegment& s : trails.segments())
+      QVERIFY2((middle(s.from) - middle(s.to)).norm() < 0.05,
+               QByteArray::number((middle(s.from) - middle(s.to)).norm()));
     checkOnSheet(trails.mesh());
   }
 
