@@ -241,6 +241,8 @@ int runTears(int argc, char** argv) {
     json.field("clamped", c.clamped);
     json.field("substep_cap_hits", c.substepCapHits);
     json.field("recycled", c.recycled);
+    json.field("pendant_substeps", c.pendantSubsteps);
+    json.field("released_contacts", c.releasedContacts);
     json.field("surface_runs", c.surfaceRuns);
     json.field("spawned", c.spawned);
     json.field("neighbour_searches", c.neighbourSearches);
@@ -293,9 +295,10 @@ int runTears(int argc, char** argv) {
       total.emission / n, surfaceTotal / n, trailsTotal / n);
   std::printf(
       "  counters: sph_steps %lld  substeps %lld (%.1f/frame)  clamped %lld  recycled %lld  "
-      "ode_queries %lld  trimesh_updates %lld  surface_runs %lld\n",
+      "ode_queries %lld  trimesh_updates %lld  surface_runs %lld\n"
+      "  pendant drops: weighed in %lld sub-steps, %lld contacts let go\n",
       c.sphSteps, c.substeps, c.substeps / n, c.clamped, c.recycled, c.odeQueries, c.trimeshUpdates,
-      c.surfaceRuns);
+      c.surfaceRuns, c.pendantSubsteps, c.releasedContacts);
   std::printf(
       "  sub-step limits: cfl %lld  acceleration %lld  viscosity %lld  frame end %lld   pair-list "
       "builds %lld (%.1f/frame)\n",

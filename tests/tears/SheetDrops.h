@@ -49,12 +49,14 @@ struct Motion {
 };
 
 // A drop of resting particles on the sheet at (u, v): a half-ball lattice of spacing h/2 over
-// the skin, ids from firstId, each touching particle given its contact triangle.
+// the skin, ids from firstId, each touching particle given its contact triangle. A drop lifted
+// off the sheet (in the air) touches nothing.
 struct DropSpec {
   double u, v;
   int count;
   std::uint64_t firstId;
   Eye eye = Eye::Left;
+  double lift = 0;  // along the normal
 };
 
 inline void addDrop(ParticleSet& particles, const TrailSkin& skin, const DropSpec& d,
@@ -72,11 +74,12 @@ inline void addDrop(ParticleSet& particles, const TrailSkin& skin, const DropSpe
   std::iota(all.begin(), all.end(), 0);
   for (int p = 0; p < d.count; ++p) {
     const Eigen::Vector3d& o = offsets[static_cast<std::size_t>(p)];
-    Eigen::Vector3d x = c + o.x() * e1 + o.y() * e2 + (o.z() + kRadius) * n;
+    Eigen::Vector3d x = c + o.x() * e1 + o.y() * e2 + (o.z() + kRadius + d.lift) * n;
     const SkinAnchor nearest = skin.closest(x, all);  // set-up only: brute force over the sheet
     if (motion) x = motion->apply(x);
     const int i = particles.add(x, 1.0, d.firstId + static_cast<std::uint64_t>(p), d.eye);
-    if (o.z() == 0) particles.contact[static_cast<std::size_t>(i)].triangle = nearest.triangle;
+    if (o.z() == 0 && d.lift == 0)
+      particles.contact[static_cast<std::size_t>(i)].triangle = nearest.triangle;
   }
 }
 

@@ -61,49 +61,6 @@ std::vector<std::set<int>> bruteForce(const std::vector<Eigen::Vector3d>& x, dou
   return sets;
 }
 
-template <typename T>
-bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() &&
-         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
-}
-
-bool sameBits(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
-  return a.rows() == b.rows() && a.cols() == b.cols() &&
-         (a.size() == 0 || std::memcmp(a.data(), b.data(),
-                                       static_cast<std::size_t>(a.size()) * sizeof(double)) == 0);
-}
-
-// Everything a player sees of one frame: the particles, the trail mesh and the wetness.
-struct FrameState {
-  std::vector<Eigen::Vector3d> position, velocity;
-  std::vector<double> mass;
-  std::vector<std::uint64_t> id;
-  std::vector<int> contact;
-  Eigen::MatrixXd trail;
-  double wetLeft = 0, wetRight = 0;
-};
-
-FrameState stateOf(const TearSimulation& sim, const TrailBuilder& trails) {
-  FrameState s;
-  const ParticleSet& p = sim.particles();
-  s.position = p.position;
-  s.velocity = p.velocity;
-  s.mass = p.mass;
-  s.id = p.id;
-  for (const SkinContact& c : p.contact) s.contact.push_back(c.triangle);
-  s.trail = trails.mesh().positions();
-  s.wetLeft = sim.wetness(Eye::Left).trailVolume;
-  s.wetRight = sim.wetness(Eye::Right).trailVolume;
-  return s;
-}
-
-bool sameBits(const FrameState& a, const FrameState& b) {
-  return sameBits(a.position, b.position) && sameBits(a.velocity, b.velocity) &&
-         sameBits(a.mass, b.mass) && a.id == b.id && a.contact == b.contact &&
-         sameBits(a.trail, b.trail) && std::memcmp(&a.wetLeft, &b.wetLeft, sizeof(double)) == 0 &&
-         std::memcmp(&a.wetRight, &b.wetRight, sizeof(double)) == 0;
-}
-
 std::vector<std::set<int>> asSets(const NeighbourList& list) {
   std::vector<std::set<int>> sets(static_cast<std::size_t>(list.particleCount()));
   for (int i = 0; i < list.particleCount(); ++i) {

@@ -1,11 +1,14 @@
 // Hard cases of the tear simulation: extreme parameters, degenerate input and a snapping face.
-// Every case runs a few simulated seconds on the generated cheek sheet and checks, at every
-// frame: finite state, every particle inside a box around the sheet, the commanded count, and
-// (on a still sheet) kinetic energy bounded by the potential energy gravity released. Each case
-// runs with both pressure solvers (WCSPH and DFSPH).
+// Every case runs a few simulated seconds on the generated cheek sheet (or, for skin facing
+// down, under a chin-sized sphere) and checks, at every frame: finite state, every particle
+// inside a box around the surface, the commanded count, and (on a still surface) kinetic
+// energy bounded by the potential energy gravity released. Each case runs with both pressure
+// solvers (WCSPH and DFSPH).
 #include "TearTestSupport.h"
 
 #include <QtTest>
+
+#include <array>
 
 using namespace lacrima::tears;
 using namespace lacrima::tears::testing;
@@ -30,15 +33,21 @@ class TearHardCasesTest : public QObject {
  private:
   void runCase(const TearSettings& settings, int left, int right, int frames,
                SimulationOptions options = {}) {
-    const SyntheticSkin sheet = makeCheekSheet();
+    runCaseOn(makeCheekSheet(), settings, left, right, frames, options);
+  }
+  // `counters`, when given: each solver's counters at the end.
+  void runCaseOn(const SyntheticSkin& skin, const TearSettings& settings, int left, int right,
+                 int frames, SimulationOptions options = {},
+                 std::array<TearCounters, 2>* counters = nullptr) {
     for (PressureMethod solver : kSolvers) {
       options.pressureSolver = solver;
-      auto sim = makeSheetSimulation(sheet, settings, options);
-      runAndCheck(*sim, sheet, left, right, frames);
+      auto sim = makeSheetSimulation(skin, settings, options);
+      runAndCheck(*sim, skin, left, right, frames);
       if (QTest::currentTestFailed()) qWarning("with the %s solver", nameOf(solver));
       QVERIFY(!QTest::currentTestFailed());
       // Sub-stepping, not clamping, must have kept these stable.
       QVERIFY2(sim->counters().clamped == 0, nameOf(solver));
+      if (counters) (*counters)[static_cast<std::size_t>(solver)] = sim->counters();
     }
   }
 
@@ -82,6 +91,41 @@ class TearHardCasesTest : public QObject {
   void kernelTenthAndTenfold() {
     runCase(with({{"kernel", 0.05}, {"node_size", 0.05}}), 50, 50, 44);
     runCase(with({{"kernel", 5}, {"node_size", 5}}), 50, 50, 44);
+  }
+
+  // The extremes where the skin faces down: tears emitted just below the equator of a
+  // chin-sized sphere run under it, gather and hang there, and fall as drops when their weight
+  // is more than the contact holds (DropDetachment_Tate1864.h), so the pendant-drop path runs
+  // in each case.
+  void overhang_data() {
+    QTest::addColumn<QString>("parameter");
+    QTest::addColumn<double>("value");
+    for (double adhesion : {0.0, 20.0, 100.0, 1000.0})
+      QTest::addRow("adhesion %g", adhesion) << "adhesion" << adhesion;
+    QTest::newRow("tension 0") << "tension" << 0.0;
+    QTest::newRow("tension x10") << "tension" << 2.0;
+    QTest::newRow("viscosity 0") << "viscosity" << 0.0;
+    QTest::newRow("viscosity x10") << "viscosity" << 9.0;
+    QTest::newRow("pressure x100") << "pressure" << 0.4;
+  }
+  void overhang() {
+    QFETCH(QString, parameter);
+    QFETCH(double, value);
+    std::array<TearCounters, 2> counters;
+    ChinSphereOptions chin;
+    chin.sourceDegrees = -20;
+    runCaseOn(makeChinSphere(chin), with({{parameter.toUtf8().constData(), value}}), 60, 60, 88, {},
+              &counters);
+    if (QTest::currentTestFailed()) return;
+    qInfo("contacts let go: %lld (WCSPH), %lld (DFSPH)", counters[0].releasedContacts,
+          counters[1].releasedContacts);
+    // 120 particles (about 60 uL) let go at the default adhesion and below; 5 and 50 times
+    // the holding tension keep them.
+    const bool sticky = parameter == "adhesion" && value >= 100;
+    for (const TearCounters& c : counters) {
+      QVERIFY(c.pendantSubsteps > 0);
+      QVERIFY(sticky ? c.releasedContacts == 0 : c.releasedContacts > 0);
+    }
   }
 
   void fiveThousandAtOnePoint_data() { solverRows(); }

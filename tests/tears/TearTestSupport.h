@@ -1,13 +1,16 @@
 #pragma once
 // Shared scene and invariant checks for the tear-simulation suites: the generated cheek sheet,
-// a runner that drives a simulation frame by frame, and the checks every hard case must pass
+// a runner that drives a simulation frame by frame, the checks every hard case must pass
 // at every frame (finite state, particles inside a box around the sheet, the commanded count,
-// and kinetic energy bounded by the potential energy released since each particle appeared).
+// and kinetic energy bounded by the potential energy released since each particle appeared),
+// and what a frame shows, compared bit for bit (determinism and checkpoints).
 #include <lacrima/tears/SyntheticSkin.h>
 #include <lacrima/tears/TearSimulation.h>
+#include <lacrima/tears/TrailBuilder.h>
 
 #include <QtTest>
 
+#include <cstring>
 #include <functional>
 #include <map>
 #include <memory>
@@ -106,6 +109,49 @@ inline void runAndCheck(TearSimulation& sim, const SyntheticSkin& sheet, int lef
                    " exceeds what gravity released " + QByteArray::number(r.released));
     }
   }
+}
+
+template <typename T>
+bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() &&
+         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+inline bool sameBits(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  return a.rows() == b.rows() && a.cols() == b.cols() &&
+         (a.size() == 0 || std::memcmp(a.data(), b.data(),
+                                       static_cast<std::size_t>(a.size()) * sizeof(double)) == 0);
+}
+
+// Everything a player sees of one frame: the particles, the trail mesh and the wetness.
+struct FrameState {
+  std::vector<Eigen::Vector3d> position, velocity;
+  std::vector<double> mass;
+  std::vector<std::uint64_t> id;
+  std::vector<int> contact;
+  Eigen::MatrixXd trail;
+  double wetLeft = 0, wetRight = 0;
+};
+
+inline FrameState stateOf(const TearSimulation& sim, const TrailBuilder& trails) {
+  FrameState s;
+  const ParticleSet& p = sim.particles();
+  s.position = p.position;
+  s.velocity = p.velocity;
+  s.mass = p.mass;
+  s.id = p.id;
+  for (const SkinContact& c : p.contact) s.contact.push_back(c.triangle);
+  s.trail = trails.mesh().positions();
+  s.wetLeft = sim.wetness(Eye::Left).trailVolume;
+  s.wetRight = sim.wetness(Eye::Right).trailVolume;
+  return s;
+}
+
+inline bool sameBits(const FrameState& a, const FrameState& b) {
+  return sameBits(a.position, b.position) && sameBits(a.velocity, b.velocity) &&
+         sameBits(a.mass, b.mass) && a.id == b.id && a.contact == b.contact &&
+         sameBits(a.trail, b.trail) && std::memcmp(&a.wetLeft, &b.wetLeft, sizeof(double)) == 0 &&
+         std::memcmp(&a.wetRight, &b.wetRight, sizeof(double)) == 0;
 }
 
 }  // namespace lacrima::tears::testing

@@ -197,6 +197,30 @@ class TearTrailsTest : public QObject {
     checkOnSheet(trails.mesh());
   }
 
+  void aFallingDropLeavesNoTrailInTheAir() {
+    // A drop slides, falls off (three updates in the air, touching nothing), lands 3 cm lower
+    // and slides on: two trails, and no strip bridging the fall.
+    Scene scene;
+    TrailBuilder trails(scene.sheet.triangles);
+    for (int f = 0; f < 8; ++f) scene.step(trails, {{0.0, 0.8 - 0.006 * f, 30, 1}});
+    const std::size_t sectionsBefore = trails.sections().size();
+    QVERIFY(sectionsBefore >= 2);
+    for (int f = 0; f < 3; ++f) {
+      scene.step(trails, {{0.0, 0.7 - 0.1 * f, 30, 1, Eye::Left, 0.1}});
+      QCOMPARE(trails.sections().size(), sectionsBefore);  // nothing wet in the air
+    }
+    for (int f = 0; f < 8; ++f) scene.step(trails, {{0.0, 0.4 - 0.006 * f, 30, 1}});
+    QVERIFY(trails.sections().size() > sectionsBefore + 2);
+    // Every segment joins two sections a few steps apart: none spans the 3 cm fall.
+    const auto middle = [&](int section) {
+      return scene.probe.point(trails.sections()[static_cast<std::size_t>(section)].point[1]);
+    };
+    for (const TrailSegment& s : trails.segments())
+      QVERIFY2((middle(s.from) - middle(s.to)).norm() < 0.05,
+               QByteArray::number((middle(s.from) - middle(s.to)).norm()));
+    checkOnSheet(trails.mesh());
+  }
+
   void trailsDryAndAreRemoved() {
     Scene scene;
     TrailSettings settings;

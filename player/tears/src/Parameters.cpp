@@ -24,6 +24,11 @@ constexpr double kDrop100Radius2009 = 0.72;
 // Akinci: cohesion + curvature at a drop's surface ~5% of the pressure response c^2 / h.
 constexpr double kAkinciFraction = 0.05;
 constexpr double kFrictionReferenceSpeed = 0.3;  // m/s
+// Pendant drops: the holding tension at the default adhesion, N/m, and water's density
+// (docs/tears.md, "Drops that fall", has the calibration).
+constexpr double kDefaultAdhesion = 20;
+constexpr double kHoldingTension = 0.011;
+constexpr double kWaterDensity = 1000;  // kg/m^3
 
 // Sum of poly6 over a simple cubic lattice of the given spacing around the origin (origin
 // included): the density a particle of unit mass sees in a fluid at rest.
@@ -96,6 +101,7 @@ ScaledParameters ScaledParameters::from(const TearSettings& in, const UnitScale&
                    kDrop100Radius2009 * L * (in.kernel / 0.5);
   p.tensionGamma = in.tension / kDefaultTension * kAkinciFraction * c0 * c0 / p.h;
   p.adhesion = in.adhesion * U;
+  p.holdingTension = in.adhesion / kDefaultAdhesion * kHoldingTension / kWaterDensity * U * U * U;
   p.friction = in.friction / (kFrictionReferenceSpeed * U);
   p.gravity = in.gravity * U;
   p.nodeSize = in.nodeSize * L;

@@ -22,7 +22,7 @@ void SkinContactForces::applyExternal(ParticleSet& p, const Eigen::Vector3d& g, 
 }
 
 void SkinContactForces::constrain(ParticleSet& p, const SkinView& skin, const Eigen::Vector3d& g,
-                                  double dt) const {
+                                  double dt, std::span<const double> spare) const {
   if (dt <= 0) return;
   for (int i = 0; i < p.size(); ++i) {
     const auto s = static_cast<std::size_t>(i);
@@ -31,16 +31,17 @@ void SkinContactForces::constrain(ParticleSet& p, const SkinView& skin, const Ei
     const SkinFace& face = skin.faces[static_cast<std::size_t>(t)];
     const Eigen::Vector3d n = face.normal;
     if (n.squaredNorm() == 0) continue;  // degenerate triangle: the collider drops the contact
-    const double adhesion = adhesionOf(p, i);
+    const double share = spare.empty() ? 1.0 : spare[s];
+    const double adhesion = share > 0 ? adhesionOf(p, i) : 0.0;
     Eigen::Vector3d v = p.velocity[s] - dt * adhesion * n;
     // Gap between the particle's surface and the triangle's plane.
     const double gap = std::max(0.0, (p.position[s] - face.a).dot(n) - radius_);
     const double vn = v.dot(n);
     const double minimum = -gap / dt;
     if (vn < minimum) v += (minimum - vn) * n;
-    // Normal load per unit mass: adhesion plus whatever of gravity and the fluid forces pushes
-    // the particle into the skin.
-    const double load = adhesion + std::max(0.0, -(p.acceleration[s] + g).dot(n));
+    // Normal load per unit mass: the adhesion not spent holding the drop up, plus whatever of
+    // gravity and the fluid forces pushes the particle into the skin.
+    const double load = share * adhesion + std::max(0.0, -(p.acceleration[s] + g).dot(n));
     const double vnAfter = v.dot(n);
     const Eigen::Vector3d tangential = v - vnAfter * n;
     v = vnAfter * n + tangential / (1.0 + dt * friction_ * load);

@@ -5,7 +5,10 @@
 // outward normal n) also gets the adhesion force f = -alpha n_s / rho of the thesis, written
 // as an acceleration relative to a fresh particle at rest density:
 //   a_adh = -A (rho0 / rho_i) (m0 / m_i) n,     A = adhesion in head units / s^2,
-// so thin (low-density) and trail-depleted (light) particles cling harder, as in 2009.
+// so thin (low-density) and trail-depleted (light) particles cling harder, as in 2009. Where
+// the skin faces down, a drop heavier than its contact can hold lets go
+// (DropDetachment_Tate1864.h): its contacts get no adhesion, and gravity pulls it off; a drop
+// still held is pressed on by the share of adhesion its weight leaves spare.
 //
 // The contact is a velocity constraint, not a penalty spring: after the velocity update the
 // normal component may not exceed the gap closing speed, v.n >= -gap / dt, so a particle never
@@ -15,7 +18,7 @@
 // adhesion 1000; the constraint removes it.
 //
 // Friction is viscous drag on the tangential velocity, proportional to the normal load per
-// unit mass (adhesion plus the pressing part of gravity and fluid forces), integrated
+// unit mass (the spare adhesion plus the pressing part of gravity and fluid forces), integrated
 // implicitly so it can stop a particle but never reverse it, for any friction and dt:
 //   v_t <- v_t / (1 + dt mu N / m)   with mu = friction / (0.3 m/s).
 #include <lacrima/tears/ParticleSet.h>
@@ -60,9 +63,11 @@ class SkinContactForces {
   void applyExternal(ParticleSet& particles, const Eigen::Vector3d& gravity, double dt) const;
 
   // For particles touching the skin: adhesion (it needs the contact normal), then the normal
-  // velocity constraint, then friction.
+  // velocity constraint, then friction. `spare`: empty (all 1), or per particle the share of
+  // its drop's holding capacity not in use (DropDetachment_Tate1864::spare()): 0 = the drop
+  // let go, no adhesion; otherwise adhesion holds and that share of it loads friction.
   void constrain(ParticleSet& particles, const SkinView& skin, const Eigen::Vector3d& gravity,
-                 double dt) const;
+                 double dt, std::span<const double> spare = {}) const;
 
  private:
   double adhesion_, friction_, rho0_, m0_, radius_;

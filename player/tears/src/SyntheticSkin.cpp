@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace lacrima::tears {
 
@@ -54,6 +55,48 @@ SyntheticSkin makeCheekSheet(const CheekSheetOptions& o) {
   sheet.leftSource = surfacePoint(0.3, v) + 0.01 * normalNearTop;
   sheet.rightSource = surfacePoint(-0.3, v) + 0.01 * normalNearTop;
   return sheet;
+}
+
+SyntheticSkin makeChinSphere(const ChinSphereOptions& o) {
+  const double pi = std::numbers::pi;
+  // Rings of constant angle about the x axis (polar angle theta from +x), each with the same
+  // number of segments around it (phi, in the y-z plane): pole caps are fans.
+  const int rings = std::max(4, static_cast<int>(std::ceil(pi * o.radius / o.edge)));
+  const int segments = std::max(6, static_cast<int>(std::ceil(2 * pi * o.radius / o.edge)));
+  auto point = [&](double theta, double phi) {
+    return Eigen::Vector3d(o.radius * std::cos(theta), o.radius * std::sin(theta) * std::cos(phi),
+                           o.radius * std::sin(theta) * std::sin(phi));
+  };
+  SyntheticSkin sphere;
+  const int inner = rings - 1;  // rings of vertices between the poles
+  sphere.positions.resize(3, inner * segments + 2);
+  for (int r = 0; r < inner; ++r)
+    for (int s = 0; s < segments; ++s)
+      sphere.positions.col(r * segments + s) =
+          point(pi * (r + 1) / rings, 2 * pi * s / segments).cast<float>();
+  const int north = inner * segments, south = north + 1;  // theta = 0 (+x) and pi (-x)
+  sphere.positions.col(north) = Eigen::Vector3f(static_cast<float>(o.radius), 0, 0);
+  sphere.positions.col(south) = Eigen::Vector3f(static_cast<float>(-o.radius), 0, 0);
+  // Counter-clockwise seen from outside: with theta growing towards -x and phi turning from
+  // +y to +z, (d theta) x (d phi) points outward.
+  auto at = [&](int r, int s) { return r * segments + (s % segments); };
+  for (int s = 0; s < segments; ++s) {
+    sphere.triangles.emplace_back(north, at(0, s), at(0, s + 1));
+    for (int r = 0; r + 1 < inner; ++r) {
+      sphere.triangles.emplace_back(at(r, s), at(r + 1, s), at(r + 1, s + 1));
+      sphere.triangles.emplace_back(at(r, s), at(r + 1, s + 1), at(r, s + 1));
+    }
+    sphere.triangles.emplace_back(at(inner - 1, s), south, at(inner - 1, s + 1));
+  }
+  sphere.centre = Eigen::Vector3d::Zero();
+  sphere.radius = o.radius;
+  const double latitude = o.sourceDegrees * pi / 180, side = 0.05 * o.radius;
+  for (auto [source, x] :
+       {std::pair{&sphere.leftSource, side}, std::pair{&sphere.rightSource, -side}}) {
+    const Eigen::Vector3d onFront(x, o.radius * std::sin(latitude), o.radius * std::cos(latitude));
+    *source = onFront.normalized() * o.radius * 1.01;
+  }
+  return sphere;
 }
 
 Eigen::Matrix3Xf movedSheet(const SyntheticSkin& sheet, const Eigen::Vector3d& translation,

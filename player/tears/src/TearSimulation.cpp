@@ -44,6 +44,7 @@ TearSimulation::Internals::Internals(const ScaledParameters& p, const TearSettin
       viscosity(p.kinematicViscosity),
       forcePass(p.h),
       contact(p.adhesion, p.friction, p.restDensity, p.particleMass, p.particleRadius),
+      detachment(p.holdingTension, p.restDensity),
       massLoss(p.particleMass, options.trailDecayMetres * scale.headUnitsPerMetre,
                options.massFloor),
       emitter(p.spacing, p.particleMass),

@@ -5,6 +5,7 @@
 #include "AdaptiveTimeStep.h"
 #include "CellIndex.h"
 #include "DensitySolver.h"
+#include "DropDetachment_Tate1864.h"
 #include "Emitter.h"
 #include "FluidForcePass.h"
 #include "Octree.h"
@@ -45,6 +46,7 @@ struct TearSimulation::Internals {
   std::unique_ptr<SurfaceTension> tension;
   FluidForcePass forcePass;
   SkinContactForces contact;
+  DropDetachment_Tate1864 detachment;
   TrailMassLoss massLoss;
   Emitter emitter;
   AdaptiveTimeStep stepper;

@@ -127,7 +127,11 @@ void TearSimulation::simulate(double frameDt) {
     in.viscosity.apply(particles_, in.forcePass.weightedVelocity(), in.forcePass.weightSum(), dt);
     in.contact.applyExternal(particles_, g, dt);
     pressure.correctVelocities(particles_, in.pairs, dt, in.collider->view(), counters_);
-    in.contact.constrain(particles_, in.collider->view(), g, dt);
+    if (in.detachment.update(particles_, in.pairs, in.collider->view(), g)) {
+      ++counters_.pendantSubsteps;
+      counters_.releasedContacts += in.detachment.releasedCount();
+    }
+    in.contact.constrain(particles_, in.collider->view(), g, dt, in.detachment.spare());
     if (capped) {
       const double vLimit = in.stepper.lambdaCfl() * h / dt;
       for (auto& v : particles_.velocity) {

@@ -132,7 +132,12 @@ void TrailBuilder::continueTrack(Track& track, const ParticleSet& particles, con
         std::find(seeds_.begin(), seeds_.end(), t) == seeds_.end())
       seeds_.push_back(t);
   }
-  if (seeds_.empty()) return;  // in the air: it wets nothing; the track keeps its last section
+  if (seeds_.empty()) {
+    // In the air (a drop that fell off the chin): it wets nothing, and its track ends, so where
+    // it lands a new trail starts instead of a strip bridging the gap.
+    track = Track{};
+    return;
+  }
   if (track.centre.triangle >= 0) seeds_.push_back(track.centre.triangle);
   const SkinAnchor centre = skin_.closest(drop.centre, seeds_);
   if (centre.triangle < 0) return;

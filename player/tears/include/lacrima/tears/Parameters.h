@@ -28,6 +28,10 @@
 //                         and curvature forces ~5% of the pressure response c^2 / h)
 //      friction        -> drag rate = friction * (normal load per mass) / 0.3 m/s: a default
 //                         tear on a 45 degree cheek slides at ~2 cm/s (see SkinContact.h)
+//      adhesion 20     -> also the holding tension of pendant drops (Tate's law,
+//                         DropDetachment_Tate1864.h): gamma = adhesion / 20 * 0.011 N/m, so a
+//                         drop under the chin lets go at the 20-30 uL water drops on skin hold;
+//                         adhesion 0 holds nothing, 1000 fifty times more
 //  * Time is in seconds, density is normalised (rest density rho0 = 1).
 #include <lacrima/common/TearParameters.h>
 
@@ -71,11 +75,12 @@ struct ScaledParameters {
   double stiffness = 0;     // k in p = k (rho - rho0); speed of sound c = sqrt(k)
   double soundSpeed = 0;
   double kinematicViscosity = 0;
-  double tensionSigma = 0;  // Müller: sigma / rho0
-  double tensionGamma = 0;  // Akinci: gamma
-  double adhesion = 0;      // acceleration into the skin at rest density and full mass
-  double friction = 0;      // drag rate per (normal load per mass)
-  double gravity = 0;       // magnitude, along -y of the head frame
+  double tensionSigma = 0;    // Müller: sigma / rho0
+  double tensionGamma = 0;    // Akinci: gamma
+  double adhesion = 0;        // acceleration into the skin at rest density and full mass
+  double holdingTension = 0;  // gamma / rho0 of pendant drops' contact line, head units^3/s^2
+  double friction = 0;        // drag rate per (normal load per mass)
+  double gravity = 0;         // magnitude, along -y of the head frame
   double nodeSize = 0, cubeSize = 0, iso = 0;
   double headUnitsPerMetre = 0;
 

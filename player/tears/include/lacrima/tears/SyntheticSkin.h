@@ -32,6 +32,18 @@ struct SyntheticSkin {
 
 SyntheticSkin makeCheekSheet(const CheekSheetOptions& options = {});
 
+// A chin, or a nose tip: a sphere, outside facing out, whose lower half is an overhang that
+// water reaches by running down its front. Latitude-longitude rings about the x axis, so the
+// poles lie to the sides and the lowest point (where drops gather) is a regular patch of
+// mesh. Both sources sit on the front, `sourceDegrees` above the equator, 0.1 radii apart.
+struct ChinSphereOptions {
+  double radius = 0.3;        // dm: a chin's curvature
+  double edge = 0.03;         // target triangle edge length
+  double sourceDegrees = 45;  // latitude of the sources on the front (+z)
+};
+
+SyntheticSkin makeChinSphere(const ChinSphereOptions& options = {});
+
 // The sheet moved rigidly: x' = R x + t about the sheet's centre.
 Eigen::Matrix3Xf movedSheet(
     const SyntheticSkin& sheet, const Eigen::Vector3d& translation,

@@ -23,6 +23,9 @@ struct TearCounters {
   long long trimeshUpdates = 0, odeQueries = 0, sweptParticles = 0, contactsTracked = 0;
   long long bruteForceQueries = 0;  // nearest-skin queries ODE could not answer in full (scanned)
   long long surfaceRuns = 0;        // incremented by the surface mesher via countSurfaceRun()
+  // Pendant drops (DropDetachment_Tate1864.h): sub-steps in which some contact faced down, so
+  // the drops hanging there were weighed; contacts whose drop let go, summed over sub-steps.
+  long long pendantSubsteps = 0, releasedContacts = 0;
 };
 
 // Milliseconds spent per stage in the last frame.

@@ -19,6 +19,8 @@
 // the new direction), the strip would fold over itself; the inner side then keeps the last
 // section's point (the segment fans out around it), and any triangle left without area or
 // facing into the skin is not drawn.
+// A drop in the air (no particle touching the skin, as one falling off the chin) wets nothing
+// and ends its track: where it lands, a new trail starts.
 // A drop that splits hands its last section to every part, so the trail branches from it; drops
 // that merge continue the track of the larger share. In the update of a split or merge the
 // centre jumps without the fluid having moved there, so that update neither changes the
