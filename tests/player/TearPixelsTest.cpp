@@ -73,6 +73,19 @@ class TearPixelsTest : public QObject {
     return render(playback.seek(t));
   }
 
+  // The demo file itself (tears and all) at t, and which tear layers its frame had.
+  struct WetFrame {
+    QImage image;
+    bool surface = false, trails = false;
+  };
+  WetFrame renderWet(const SceneSettings& scene, double t) {
+    Playback playback(*rig_);
+    playback.open(kDemo);
+    playback.setScene(scene);
+    const FrameView& view = playback.seek(t);
+    return {render(view), view.surface != nullptr, view.trails != nullptr};
+  }
+
  private slots:
   void initTestCase() {
     if (!rigging::defaultHeadAvailable())
@@ -110,12 +123,9 @@ class TearPixelsTest : public QObject {
     SceneSettings scene;
     scene.textureBlending = false;
     const QImage reference = renderDemo(dry_, scene, kTearTime);
-    Playback playback(*rig_);
-    playback.open(kDemo);
-    playback.setScene(scene);
-    const FrameView& view = playback.seek(kTearTime);
-    QVERIFY(view.surface && view.trails);
-    const QImage wet = render(view);
+    const WetFrame frame = renderWet(scene, kTearTime);
+    QVERIFY(frame.surface && frame.trails);
+    const QImage& wet = frame.image;
 
     int below = 0, far = 0, total = 0;
     std::array<int, 2> perSide{0, 0};
@@ -166,10 +176,7 @@ class TearPixelsTest : public QObject {
     SceneSettings scene;
     scene.textureBlending = false;
     const QImage dry = renderDemo(dry_, scene, kRunningTearTime);
-    Playback playback(*rig_);
-    playback.open(kDemo);
-    playback.setScene(scene);
-    const QImage wet = render(playback.seek(kRunningTearTime));
+    const QImage wet = renderWet(scene, kRunningTearTime).image;
     renderer_->resize(kSize);
     renderer_->resetView();
 

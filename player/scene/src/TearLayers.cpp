@@ -86,6 +86,15 @@ std::unique_ptr<StreamedGeometry> makeLayer(std::span<const Attribute> layout,
   return geometry;
 }
 
+void showWater(StreamedGeometry& geometry, const tears::TearSurface* water) {
+  if (!water || water->empty()) {
+    geometry.hide();
+    return;
+  }
+  upload(geometry, water->positions(), water->normals(), water->triangles(), Order::AsGiven,
+         [](int, float* out) { return out; });
+}
+
 }  // namespace
 
 class TrailStencil : public Ogre::RenderObjectListener {
@@ -132,23 +141,9 @@ TearLayers::~TearLayers() {
     if (geometry && geometry->isAttached()) node_.detachObject(geometry);
 }
 
-void TearLayers::showSurface(const tears::TearSurface* surface) {
-  if (!surface || surface->empty()) {
-    surface_->hide();
-    return;
-  }
-  upload(*surface_, surface->positions(), surface->normals(), surface->triangles(), Order::AsGiven,
-         [](int, float* out) { return out; });
-}
+void TearLayers::showSurface(const tears::TearSurface* surface) { showWater(*surface_, surface); }
 
-void TearLayers::showDrops(const tears::TearSurface* caps) {
-  if (!caps || caps->empty()) {
-    drops_->hide();
-    return;
-  }
-  upload(*drops_, caps->positions(), caps->normals(), caps->triangles(), Order::AsGiven,
-         [](int, float* out) { return out; });
-}
+void TearLayers::showDrops(const tears::TearSurface* caps) { showWater(*drops_, caps); }
 
 void TearLayers::showTrails(const tears::TrailMesh* trails) {
   if (!trails || trails->empty()) {
