@@ -123,6 +123,25 @@ class FaceRendererTest : public QObject {
     QVERIFY2(lowDown > 30, "no tear pixels down the cheeks (the running drops and trails)");
   }
 
+  // Drops following one another down one path leave trails over each other; the water there is
+  // drawn once (TrailStencil), so three strips look like the newest one alone, not like a tint
+  // stacked three times with its glints added up.
+  void overlappingTrailsAreDrawnOnce() {
+    SyntheticTears::Options one, three;
+    three.streamDrops = 3;
+    const SyntheticTears single(*head_, one), stream(*head_, three);
+    QCOMPARE(stream.trails().triangleCount(), 3 * single.trails().triangleCount());
+    playback::FrameView a = single.view(), b = stream.view();
+    a.surface = b.surface = nullptr;
+    const QImage once = render(a), thrice = render(b);
+    const QImage dry = render(neutral());
+    const std::size_t trail = differingPixels(once, dry, 10).size();
+    const std::vector<QPoint> stacked = differingPixels(once, thrice, 6);
+    qInfo("%zu trail pixels, %zu differ with three strips over each other", trail, stacked.size());
+    QVERIFY2(trail > 100, "the trail barely shows");
+    QVERIFY(stacked.size() < trail / 20);
+  }
+
   void withoutTearsNothingChanges() {
     const QImage a = render(neutral());
     playback::FrameView empty = neutral();

@@ -40,6 +40,9 @@ class SyntheticTears {
     double runLength = 0.55;  // head units the running drop has slid below the lid
     int runningDropParticles = 420;
     int poolParticles = 200;
+    // Drops that slide down the same path one after the other, each leaving its own trail over
+    // the last one's (a stream).
+    int streamDrops = 1;
   };
 
   explicit SyntheticTears(const HeadMesh& head) : SyntheticTears(head, Options{}) {}
@@ -55,20 +58,23 @@ class SyntheticTears {
 
     // The running drop slides from the lid down its path, leaving the trail.
     constexpr int kSteps = 60;
-    for (int step = 0; step <= kSteps; ++step) {
-      tears::ParticleSet sliding;
-      const double s = options.runLength * step / kSteps;
-      for (int e = 0; e < 2; ++e) {
-        auto hit = pathPoint(e, s);
-        if (!hit) continue;
-        addDrop(sliding, *hit, 0.55 * radiusFor(options.runningDropParticles), 1.25, e,
-                nextIdBase(e), options.runningDropParticles);
+    for (int drop = 0; drop < options.streamDrops; ++drop)
+      for (int step = 0; step <= kSteps; ++step) {
+        tears::ParticleSet sliding;
+        const double s = options.runLength * step / kSteps;
+        for (int e = 0; e < 2; ++e) {
+          auto hit = pathPoint(e, s);
+          if (!hit) continue;
+          addDrop(sliding, *hit, 0.55 * radiusFor(options.runningDropParticles), 1.25, e,
+                  nextIdBase(e) + 10000 * static_cast<std::uint64_t>(drop),
+                  options.runningDropParticles);
+        }
+        tears::UniformGrid grid;
+        grid.build(sliding.position, params_.h);
+        trails_->update(sliding, grid, params_.h, params_.particleRadius, head.positions,
+                        1.0 / 22.0);
+        if (step == kSteps) particles_ = sliding;
       }
-      tears::UniformGrid grid;
-      grid.build(sliding.position, params_.h);
-      trails_->update(sliding, grid, params_.h, params_.particleRadius, head.positions, 1.0 / 22.0);
-      if (step == kSteps) particles_ = sliding;
-    }
     // Pools on the lower lids.
     for (int e = 0; e < 2; ++e)
       if (auto hit = pathPoint(e, 0.0))
