@@ -12,8 +12,9 @@
 //  - Points on an eye sub-mesh (the pupils 3.5, 3.6) move their whole eye (weight 1), so the
 //    eyeball thrusts 27/28 move the eyeball and nothing else.
 //  - Attached sub-meshes (eyelashes, eyebrows) take, for every skin point's influence, the
-//    weight of their vertex's nearest skin vertex (straight-line distance), so lashes ride on
-//    their lid and brows on the brow skin.
+//    weight the skin has at each vertex's closest skin point (barycentric in its triangle;
+//    src/SkinAttachment.h), so lashes ride on their lid and brows on the brow skin with their
+//    rest offset, never lifting off it.
 //  - Eyes: RotationGroups of each eye's vertices about the given centre, else the least-squares
 //    sphere through them. Head: every vertex about the neck pivot (7.1).
 //  - Tear sources (unless the file gives them): the skin vertex nearest to the lower-lid
