@@ -2,6 +2,7 @@
 
 #include "SkinAttachment.h"
 
+#include <lacrima/common/FapTable.h>
 #include <lacrima/rigging/InfluenceRadius.h>
 #include <lacrima/rigging/SkinTopology.h>
 #include <lacrima/rigging/SphereFit.h>
@@ -244,6 +245,22 @@ BuiltRig buildRig(const HeadMesh& mesh, const FeaturePointFile& fdp, const RigOp
       rig.radii[id] = radius;
       rig.methods[id] = m;
       if (onSkin && !attached.empty()) merge(influence, attachment.weights(influence));
+      // FAPs of this point that must not fold the skin over their range get an influence that
+      // reaches farther along their own motion (InfluenceRadius.h, docs/rig.md "Folds"). Only
+      // the brows have a range; 2.1's rigid jaw and tongue below are not added to these.
+      for (int fap = 3; onSkin && fap <= kFapCount; ++fap) {
+        const FapInfo& info = fapInfo(fap);
+        const auto range = foldFreeRange(fap);
+        if (info.motion != FapMotion::Translation || info.featurePoint != id || !range) continue;
+        const DirectionalReach reach =
+            directionalReach(radius, rig.fapu.unitValue(info.unit), *range);
+        if (!(reach.ahead > radius || reach.behind > radius)) continue;
+        FeaturePointInfluence own =
+            solver.directional(src, fp.at(id), info.positiveMotion.cast<double>(), reach);
+        if (!attached.empty()) merge(own, attachment.weights(own));
+        in.fapInfluences[fap] = std::move(own);
+        rig.reaches[fap] = reach;
+      }
     } else {
       rig.warnings.push_back(
           "feature point " + id + ": sub-mesh \"" + sub +

@@ -1,7 +1,7 @@
 // Geodesic distances and influence weights: convergence to exact distances on a flat lattice
 // and a sphere, Dijkstra's bounds, multiple sources, cut-off, welded seams, a slit whose lips
 // touch in space, degenerate triangles, disconnected parts, sub-mesh restriction, the
-// falloff's shape, and the distance stretched along a FAP's motion.
+// falloff's shape, and the distance stretched along a FAP's motion with the reach it gets.
 #include "GeodesicTestSurfaces.h"
 
 #include <lacrima/rigging/DijkstraGeodesics.h>
@@ -800,6 +800,28 @@ class GeodesicsTest : public QObject {
     QVERIFY_THROWS_EXCEPTION(
         std::invalid_argument,
         rigging::directionalDistances(g, one(s), Eigen::Vector3d::Constant(kInf), up, R{1, 1, 1}));
+  }
+
+  // The brows' fold-free ranges and the reach they ask for (InfluenceRadius.h).
+  void foldFreeReach() {
+    QVERIFY(!rigging::foldFreeRange(3));
+    QVERIFY(!rigging::foldFreeRange(30));
+    QVERIFY(!rigging::foldFreeRange(39));
+    for (int fap = 31; fap <= 36; ++fap) {
+      QCOMPARE(rigging::foldFreeRange(fap)->min, -200.0);
+      QCOMPARE(rigging::foldFreeRange(fap)->max, 400.0);
+    }
+    for (int fap : {37, 38}) {
+      QCOMPARE(rigging::foldFreeRange(fap)->min, -200.0);
+      QCOMPARE(rigging::foldFreeRange(fap)->max, 100.0);
+    }
+    const rigging::DirectionalReach r = rigging::directionalReach(2.0, 0.01, {-200, 400});
+    QCOMPARE(r.across, 2.0);
+    QCOMPARE(r.ahead, rigging::kReachPerDisplacement * 4.0);
+    QCOMPARE(r.behind, rigging::kReachPerDisplacement * 2.0);
+    const rigging::DirectionalReach small = rigging::directionalReach(20.0, 0.01, {-200, 400});
+    QCOMPARE(small.ahead, 20.0);  // never below the radius
+    QCOMPARE(small.behind, 20.0);
   }
 
   void defaultRadii() {
