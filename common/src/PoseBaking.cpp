@@ -186,23 +186,36 @@ class Baker {
     if (auto hit = cache_.find(id); hit != cache_.end()) return &hit->second;
     const auto found = in_.influences.find(id);
     if (found == in_.influences.end()) return nullptr;
-    const FeaturePointInfluence& raw = found->second;
+    return &cache_.emplace(id, validated(found->second, "feature point " + id)).first->second;
+  }
+
+  // The influence of `fap`'s own pose: its entry in fapInfluences, else its point's.
+  const WeightedVertices* influenceOf(int fap) {
+    const auto found = in_.fapInfluences.find(fap);
+    if (found == in_.fapInfluences.end()) return influence(std::string(fapInfo(fap).featurePoint));
+    const std::string key = "FAP " + std::to_string(fap);
+    if (auto hit = cache_.find(key); hit != cache_.end()) return &hit->second;
+    return &cache_.emplace(key, validated(found->second, fapLabel(fap) + "'s own influence"))
+                .first->second;
+  }
+
+  WeightedVertices validated(const FeaturePointInfluence& raw, const std::string& id) {
     SeamExpander::Problems problems;
     const std::size_t count = std::min(raw.vertices.size(), raw.weights.size());
     if (raw.vertices.size() != raw.weights.size())
-      warnings.push_back("feature point " + id + ": " + std::to_string(raw.vertices.size()) +
-                         " vertices but " + std::to_string(raw.weights.size()) +
+      warnings.push_back(id + ": " + std::to_string(raw.vertices.size()) + " vertices but " +
+                         std::to_string(raw.weights.size()) +
                          " weights; the unmatched entries are skipped");
     for (std::size_t k = 0; k < count; ++k)
       expander_.add(raw.vertices[k], raw.weights[k], problems);
     if (problems.rejected)
-      warnings.push_back("feature point " + id + ": " + std::to_string(problems.rejected) +
+      warnings.push_back(id + ": " + std::to_string(problems.rejected) +
                          " influence entries skipped (vertex outside the head, or weight not "
                          "positive and finite)");
     if (problems.clamped)
-      warnings.push_back("feature point " + id + ": " + std::to_string(problems.clamped) +
+      warnings.push_back(id + ": " + std::to_string(problems.clamped) +
                          " weights above 1 clamped to 1");
-    return &cache_.emplace(id, expander_.take()).first->second;
+    return expander_.take();
   }
 
   // d_v = w_p(v) * unitValue * dir, as one outer product over the influence.
@@ -211,7 +224,7 @@ class Baker {
     const double unit = in_.fapu.unitValue(info.unit);
     if (!usable(unit)) return {};  // reported once by checkUnits
     const std::string id(info.featurePoint);
-    const WeightedVertices* weights = influence(id);
+    const WeightedVertices* weights = influenceOf(fap);
     if (!weights || weights->vertices.empty()) {
       warnings.push_back(fapLabel(fap) + ": " +
                          (weights ? "the influence of feature point " + id + " has no valid entry"

@@ -1,5 +1,6 @@
 #include <lacrima/rigging/InfluenceRadius.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
@@ -50,6 +51,20 @@ double defaultInfluenceRadius(const FapuSet& fapu, std::string_view featurePoint
     default:  // 5 cheeks, 7 head, 11 hair line
       return es() / 2;
   }
+}
+
+std::optional<FoldFreeRange> foldFreeRange(int fap) {
+  if (fap >= 31 && fap <= 36) return FoldFreeRange{-200, 400};
+  if (fap == 37 || fap == 38) return FoldFreeRange{-200, 100};
+  return std::nullopt;
+}
+
+DirectionalReach directionalReach(double radius, double unitValue, const FoldFreeRange& range) {
+  DirectionalReach reach;
+  reach.across = radius;
+  reach.ahead = std::max(radius, kReachPerDisplacement * std::max(0.0, range.max) * unitValue);
+  reach.behind = std::max(radius, kReachPerDisplacement * std::max(0.0, -range.min) * unitValue);
+  return reach;
 }
 
 }  // namespace lacrima::rigging

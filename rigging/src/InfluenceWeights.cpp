@@ -42,6 +42,14 @@ FeaturePointInfluence InfluenceWeights::atTriangle(const Eigen::Vector3i& corner
   return compute(Eigen::VectorXi(corners), radius);
 }
 
+FeaturePointInfluence InfluenceWeights::directional(const Eigen::VectorXi& sources,
+                                                    const Eigen::Vector3d& origin,
+                                                    const Eigen::Vector3d& direction,
+                                                    const DirectionalReach& reach) const {
+  // Normalised already: a radius of 1.
+  return fromDistances(directionalDistances(graph_, sources, origin, direction, reach), 1.0);
+}
+
 FeaturePointInfluence InfluenceWeights::fromDistances(const Eigen::VectorXd& distances,
                                                       double radius) {
   checkRadius(radius);

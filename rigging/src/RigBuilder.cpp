@@ -1,5 +1,8 @@
 #include <lacrima/rigging/RigBuilder.h>
 
+#include "SkinAttachment.h"
+
+#include <lacrima/common/FapTable.h>
 #include <lacrima/rigging/InfluenceRadius.h>
 #include <lacrima/rigging/SkinTopology.h>
 #include <lacrima/rigging/SphereFit.h>
@@ -203,14 +206,8 @@ BuiltRig buildRig(const HeadMesh& mesh, const FeaturePointFile& fdp, const RigOp
     tongueWeights = std::make_unique<InfluenceWeights>(buildSurfaceGraph(mesh, fdp.tongue),
                                                        GeodesicMethod::Dijkstra);
 
-  // Attached vertices copy the weight of their nearest skin vertex.
   const std::vector<int> attached = verticesOf(mesh, fdp.attached);
-  std::vector<int> attachedTo;
-  if (!attached.empty()) {
-    const NearestVertex nearestSkin(mesh.positions, verticesOf(mesh, fdp.skin));
-    for (int v : attached)
-      attachedTo.push_back(nearestSkin.nearest(mesh.positions.col(v).cast<double>()));
-  }
+  const SkinAttachment attachment = attachToSkin(mesh, fdp.skin, attached);
 
   const std::size_t total = fdp.points.size();
   std::size_t done = 0;
@@ -247,17 +244,22 @@ BuiltRig buildRig(const HeadMesh& mesh, const FeaturePointFile& fdp, const RigOp
               : solver.atTriangle(Eigen::Vector3i(sources[0], sources[1], sources[2]), radius);
       rig.radii[id] = radius;
       rig.methods[id] = m;
-      if (onSkin && !attached.empty()) {
-        // Dense lookup of this point's skin weights for the attachments.
-        std::map<int, float> weightOf;
-        for (std::size_t k = 0; k < influence.vertices.size(); ++k)
-          weightOf[influence.vertices[k]] = influence.weights[k];
-        std::vector<std::pair<int, float>> extra;
-        for (std::size_t k = 0; k < attached.size(); ++k) {
-          const auto hit = weightOf.find(attachedTo[k]);
-          if (hit != weightOf.end()) extra.emplace_back(attached[k], hit->second);
-        }
-        merge(influence, extra);
+      if (onSkin && !attached.empty()) merge(influence, attachment.weights(influence));
+      // FAPs of this point that must not fold the skin over their range get an influence that
+      // reaches farther along their own motion (InfluenceRadius.h, docs/rig.md "Folds"). Only
+      // the brows have a range; 2.1's rigid jaw and tongue below are not added to these.
+      for (int fap = 3; onSkin && fap <= kFapCount; ++fap) {
+        const FapInfo& info = fapInfo(fap);
+        const auto range = foldFreeRange(fap);
+        if (info.motion != FapMotion::Translation || info.featurePoint != id || !range) continue;
+        const DirectionalReach reach =
+            directionalReach(radius, rig.fapu.unitValue(info.unit), *range);
+        if (!(reach.ahead > radius || reach.behind > radius)) continue;
+        FeaturePointInfluence own =
+            solver.directional(src, fp.at(id), info.positiveMotion.cast<double>(), reach);
+        if (!attached.empty()) merge(own, attachment.weights(own));
+        in.fapInfluences[fap] = std::move(own);
+        rig.reaches[fap] = reach;
       }
     } else {
       rig.warnings.push_back(

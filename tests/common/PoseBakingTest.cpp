@@ -244,6 +244,29 @@ class PoseBakingTest : public QObject {
     QVERIFY(pose.offsets.allFinite());
   }
 
+  // A FAP's own influence replaces its point's in that FAP's pose only: 31 (raise) gets a
+  // different footprint, 37 (squeeze, same point 4.1) keeps the point's; bad entries of the
+  // FAP's own influence are skipped and named after the FAP.
+  void fapInfluenceReplacesThePointsForThatFapOnly() {
+    const synthetic::Head head = buildHead();
+    RigInput rig = head.rig();
+    const PoseSet plain = bakePoses(rig);
+    const int point = head.featureVertex.at("4.1");
+    const int far = head.featureVertex.at("10.1");  // outside 4.1's influence
+    QVERIFY(offsetOf(poseOf(plain, 31), far).isZero());
+    rig.fapInfluences[31] = {{point, far, -1}, {1.0f, 0.5f, 1.0f}};
+    PoseBakeReport report;
+    const PoseSet set = bakePoses(rig, &report);
+    const float unit = float(head.fapu.unitValue(FapUnit::ENS));
+    QCOMPARE(poseOf(set, 31).vertices.size(), size_t(2));
+    QVERIFY((offsetOf(poseOf(set, 31), point) - Eigen::Vector3f(0, unit, 0)).norm() < 1e-9f);
+    QVERIFY((offsetOf(poseOf(set, 31), far) - Eigen::Vector3f(0, 0.5f * unit, 0)).norm() < 1e-9f);
+    QCOMPARE(poseOf(set, 37).vertices, poseOf(plain, 37).vertices);
+    QVERIFY(poseOf(set, 37).offsets == poseOf(plain, 37).offsets);
+    QVERIFY2(warned(report, {"FAP 31 (raise_l_i_eyebrow)'s own influence", "1 influence entries"}),
+             allWarnings(report).c_str());
+  }
+
   void unusableFapuLeavesItsFapsWithoutPoses() {
     const synthetic::Head head = buildHead();
     RigInput rig = head.rig();

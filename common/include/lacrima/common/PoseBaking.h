@@ -3,7 +3,9 @@
 //
 // For translational FAP i with feature point p, unit u and direction dir_i:
 //   d_{i,v} = w_p(v) * unitValue(u) * dir_i
-// so a value of 1024 moves p (weight 1) by its FAPU distance X0. uv-seam copies of a vertex
+// so a value of 1024 moves p (weight 1) by its FAPU distance X0; w_p is p's influence, or the
+// FAP's own when RigInput::fapInfluences has one (e.g. weights stretched along the FAP's
+// motion, still 1 at p). uv-seam copies of a vertex
 // (same position bit for bit) take the largest weight among the copies, so seams never open
 // even when the weights list only one copy. Pupil dilation (29, 30) and tongue roll (47) have
 // dedicated poses; eyeball and head rotations become RotationGroups. High-level FAPs and tear
@@ -47,7 +49,10 @@ struct RigInput {
   const HeadMesh* mesh = nullptr;
   FapuSet fapu;
   std::map<std::string, FeaturePointInfluence> influences;  // by FDP id, e.g. "2.1"
-  std::map<std::string, Eigen::Vector3f> featurePoints;     // neutral positions by FDP id
+  // By FAP number: replaces its feature point's influence in that FAP's translation pose (a
+  // FAP whose influence reaches farther along its own motion, e.g. the brow raises).
+  std::map<int, FeaturePointInfluence> fapInfluences;
+  std::map<std::string, Eigen::Vector3f> featurePoints;  // neutral positions by FDP id
   RotationGroup eyeLeft, eyeRight;  // vertices of each eyeball (+cornea), centre of rotation
   Eigen::Vector3f neckPivot = Eigen::Vector3f::Zero();
   std::vector<int> headVertices;  // vertices that follow head rotation (default: all)

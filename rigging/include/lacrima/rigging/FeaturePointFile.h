@@ -16,7 +16,7 @@
 //       "eye_right": ["eye_r", "cornea_r"],  optional: FAPs 24/26 (28, 30)
 //       "jaw": ["teeth_lower"],           optional: follow jaw point 2.1 rigidly (weight 1)
 //       "tongue": ["tongue"],             optional: follow 2.1 rigidly; 6.x get own weights
-//       "attached": ["eyelashes"]         optional: copy the weights of their nearest skin vertex
+//       "attached": ["eyelashes"]         optional: ride on the skin point closest to each vertex
 //     },                                  other sub-meshes only follow the head rotation
 //     "defaults": { "geodesics": "dijkstra" },   optional: "dijkstra" or "heat"
 //     "points": {                         by FDP id "group.index"

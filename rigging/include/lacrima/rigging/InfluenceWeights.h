@@ -15,6 +15,7 @@
 // that converge under refinement, with the straight-line bound on (see DijkstraGeodesics.h,
 // HeatGeodesics.h; `lacrima-bench geodesics` prints what each costs and gets wrong).
 #include <lacrima/common/PoseBaking.h>
+#include <lacrima/rigging/DirectionalGeodesics.h>
 #include <lacrima/rigging/HeatGeodesics.h>
 #include <lacrima/rigging/SurfaceGraph.h>
 
@@ -42,6 +43,14 @@ class InfluenceWeights {
 
   // The same listing from precomputed per-vertex distances (+infinity for unreachable).
   static FeaturePointInfluence fromDistances(const Eigen::VectorXd& distances, double radius);
+
+  // Weights influenceFalloff(s) of the normalised distance s in the metric stretched along
+  // `direction` (DirectionalGeodesics.h), whatever this object's method: the heat method here
+  // is round. The same listing as compute(), for a FAP whose motion must not fold the skin
+  // (docs/rig.md, "Folds"). Throws as directionalDistances does.
+  FeaturePointInfluence directional(const Eigen::VectorXi& sources, const Eigen::Vector3d& origin,
+                                    const Eigen::Vector3d& direction,
+                                    const DirectionalReach& reach) const;
 
   GeodesicMethod method() const { return method_; }
   const SurfaceGraph& graph() const { return graph_; }

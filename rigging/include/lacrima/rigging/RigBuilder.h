@@ -8,12 +8,18 @@
 //    Method: the point's "geodesics", else RigOptions::geodesics, else the file's default.
 //  - Jaw and tongue sub-meshes follow the jaw point 2.1 rigidly (weight 1 in its influence),
 //    so opening, thrusting and shifting the jaw carries the lower teeth and the tongue.
+//  - FAPs with a fold-free range (foldFreeRange: the brows 31-38) get their own influence,
+//    the falloff of the distance stretched along their motion so that it reaches
+//    kReachPerDisplacement times the largest displacement of the range ahead and behind
+//    (directionalReach; DirectionalGeodesics.h), always by fast marching; across, the point's
+//    radius.
 //  - Tongue points 6.x get their own falloff over the tongue sub-meshes.
 //  - Points on an eye sub-mesh (the pupils 3.5, 3.6) move their whole eye (weight 1), so the
 //    eyeball thrusts 27/28 move the eyeball and nothing else.
 //  - Attached sub-meshes (eyelashes, eyebrows) take, for every skin point's influence, the
-//    weight of their vertex's nearest skin vertex (straight-line distance), so lashes ride on
-//    their lid and brows on the brow skin.
+//    weight the skin has at each vertex's closest skin point (barycentric in its triangle;
+//    src/SkinAttachment.h), so lashes ride on their lid and brows on the brow skin with their
+//    rest offset, never lifting off it.
 //  - Eyes: RotationGroups of each eye's vertices about the given centre, else the least-squares
 //    sphere through them. Head: every vertex about the neck pivot (7.1).
 //  - Tear sources (unless the file gives them): the skin vertex nearest to the lower-lid
@@ -57,6 +63,9 @@ struct BuiltRig {
   std::map<std::string, std::vector<std::pair<int, double>>, FdpIdLess> bindings;
   std::map<std::string, double, FdpIdLess> radii;            // influence radius used
   std::map<std::string, GeodesicMethod, FdpIdLess> methods;  // geodesic method used
+  // FAPs whose pose has its own influence, stretched along the motion, and its reach
+  // (input.fapInfluences; InfluenceRadius.h).
+  std::map<int, DirectionalReach> reaches;
   std::optional<Eigen::Vector3d> eyeCentreLeft, eyeCentreRight;
   std::optional<double> eyeRadiusLeft, eyeRadiusRight;  // when fitted
   Eigen::Vector3d neckPivot = Eigen::Vector3d::Zero();
