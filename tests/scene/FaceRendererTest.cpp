@@ -199,6 +199,30 @@ class FaceRendererTest : public QObject {
     QCOMPARE(changedRight, 0.0);  // only the eye that is wet
   }
 
+  // Full redness, close up: the iris (the eyeball's front pole) keeps every pixel, the sclera on
+  // its nose side (32 degrees off the front, in view from this camera for both eyes) turns pinker.
+  void rednessReddensTheScleraNotTheIris() {
+    const auto resetView = qScopeGuard([this] { renderer_->resetView(); });
+    renderer_->zoom(0.4);
+    playback::FrameView calm = neutral(), red = neutral();
+    red.overlays.redness = 1;
+    const QImage a = render(calm), b = render(red);
+    for (int e = 0; e < 2; ++e) {
+      const double r = eyeRadius(e), nasal = e == 0 ? -1 : 1;
+      const QPointF iris = renderer_->project(eyeCentre(e) + Eigen::Vector3d(0, 0, r));
+      for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx)
+          QCOMPARE(channelDifference(a, b, int(iris.x()) + dx, int(iris.y()) + dy), 0);
+      const QPointF at =
+          renderer_->project(eyeCentre(e) + r * Eigen::Vector3d(nasal * 0.53, 0, 0.848));
+      const MeanColour before = meanColour(a, at, 1), after = meanColour(b, at, 1);
+      qInfo("eye %d sclera at (%.0f, %.0f): redness %.3f -> %.3f", e, at.x(), at.y(),
+            before.redness(), after.redness());
+      QVERIFY2(before.redness() < 1.25, "not the sclera: too red already");
+      QVERIFY2(after.redness() > before.redness() * 1.1, "the sclera did not redden");
+    }
+  }
+
   void textureBlendingOffEqualsNoOverlay() {
     playback::FrameView plain = neutral(), off = neutral();
     off.overlays.redness = 1;

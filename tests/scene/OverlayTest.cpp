@@ -157,6 +157,51 @@ class OverlayTest : public QObject {
     QCOMPARE(makeIrritatedSkin(QImage()).size(), QSize(1, 1));  // a head without a texture
   }
 
+  // The bloodshot layer at full redness, blended as eye.frag does (mix by its alpha), on the
+  // default head's own eye texture: texels of the iris (eyeball vertices within 20 degrees of
+  // the gaze, the cornea's direction; the iris reaches about 29) are unchanged bit for bit,
+  // texels of the sclera (45 to 75 degrees off the gaze) turn pink.
+  void bloodshotLayerReddensScleraNotIris() {
+    const HeadSubmesh* eye = head_->findSubmesh("eye_l");
+    const HeadSubmesh* cornea = head_->findSubmesh("cornea_l");
+    QVERIFY(eye && cornea && eye->material >= 0);
+    const QImage diffuse =
+        QImage(QString::fromStdString(head_->materials[std::size_t(eye->material)].diffuseTexture))
+            .convertToFormat(QImage::Format_RGBA8888);
+    QVERIFY(!diffuse.isNull());
+    const QImage layer = makeWetEye(diffuse);
+    QCOMPARE(layer.size(), diffuse.size());
+    const Eigen::Vector3f gaze =
+        (head_->positions.middleCols(cornea->firstVertex, cornea->vertexCount).rowwise().mean() -
+         left_.centre)
+            .normalized();
+    int iris = 0, sclera = 0, pinker = 0;
+    for (int v = eye->firstVertex; v < eye->firstVertex + eye->vertexCount; ++v) {
+      const float degrees =
+          std::acos(std::clamp((head_->positions.col(v) - left_.centre).normalized().dot(gaze),
+                               -1.0f, 1.0f)) *
+          180 / std::numbers::pi_v<float>;
+      const int x =
+          std::clamp(int(head_->uvs(0, v) * float(diffuse.width())), 0, diffuse.width() - 1);
+      const int y =
+          std::clamp(int(head_->uvs(1, v) * float(diffuse.height())), 0, diffuse.height() - 1);
+      const QColor before = diffuse.pixelColor(x, y), over = layer.pixelColor(x, y);
+      const double a = over.alphaF();
+      const double red = before.redF() * (1 - a) + over.redF() * a;
+      const double green = before.greenF() * (1 - a) + over.greenF() * a;
+      if (degrees < 20) {
+        ++iris;
+        QCOMPARE(over.alpha(), 0);
+        QCOMPARE(over.rgb(), before.rgb());
+      } else if (degrees > 45 && degrees < 75) {
+        ++sclera;
+        pinker += red - green > before.redF() - before.greenF() + 0.05;
+      }
+    }
+    QVERIFY(iris > 30 && sclera > 30);
+    QVERIFY2(pinker > sclera * 3 / 4, "the sclera did not turn pink");
+  }
+
   void islandPaddingReplacesBordersAndFillsAround() {
     // One square uv island over [4, 12) texels of a 16 x 16 texture: green inside with a red
     // painted border ring, blue outside.

@@ -167,7 +167,7 @@ void HeadLook::setOverlays(const playback::OverlayWeights& weights, bool enabled
     Ogre::Vector4 value(0, 0, 0, 0);
     if (part.role == Role::Skin) value = Ogre::Vector4(redness, 0, blush, 0);
     if ((part.role == Role::Eye || part.role == Role::Cornea) && part.eye >= 0)
-      value.y = wet[part.eye];
+      value = Ogre::Vector4(redness, wet[part.eye], 0, 0);
     part.entity->setCustomParameter(0, value);
   }
 }

@@ -2,12 +2,13 @@
 // Materials and textures of one head: each sub-mesh gets a clone of the base material for its
 // role (media/materials/lacrima.material) with the head's texture and colours:
 //   skin            Lacrima/Skin: diffuse, overlay mask (OverlayMasks.h), irritated skin layer
-//   eye_l, eye_r    Lacrima/Eye: diffuse, wet bloodshot layer
+//   eye_l, eye_r    Lacrima/Eye: diffuse, bloodshot sclera layer (its alpha: where the sclera is)
 //   cornea_l/_r     Lacrima/Cornea: additive reflections only
 //   transparent     Lacrima/Card: alpha-textured lashes and brows, drawn after the tears
 //   anything else   Lacrima/Lit with the material's colour, specular and shininess
 // The overlay weights reach the shaders as custom parameter 0 of each sub-entity
-// (x redness, y this eye's wetness, z blush), so changing them costs no material change.
+// (x redness, y this eye's wetness, z blush; skin gets x and z, eyes and corneas x and y), so
+// changing them costs no material change.
 #include <lacrima/common/HeadMesh.h>
 #include <lacrima/playback/FrameView.h>
 
