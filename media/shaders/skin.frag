@@ -2,20 +2,25 @@
 // Skin with its texture layers: the diffuse texture, the red irritated-skin layer (blended in
 // by mask.r x redness: eyelids, under-eye, nose tip) and a blush tint (mask.g x blush: cheeks).
 // The masks are painted in the head's uv space at start-up (OverlayMasks.h). The light comes
-// per vertex (skin.vert). Written for a software rasteriser: the overlay layers are only
-// fetched when and where they show.
+// per vertex (skin.vert); per pixel, a tiling relief of pores and fine lines (SkinDetail.h)
+// shades the key light's diffuse and breaks up its sheen. Written for a software rasteriser:
+// the overlay layers are only fetched when and where they show.
 #include "common.glsl"
 
 in vec2 vUv;
 in vec3 vDiffuse;
 in vec3 vRim;
 in float vSheen;
+in vec3 vKey;
 
 uniform sampler2D diffuseMap;
 uniform sampler2D maskMap;
 uniform sampler2D rednessMap;
+uniform sampler2D detailMap;
 uniform vec4 overlay;         // x redness, y unused, z blush
 uniform vec4 materialColour;
+uniform float detailTiling;   // relief tiles per uv unit (SkinDetail.h: about 1.5 cm each)
+uniform vec4 detail;          // x: the relief's strength, 0 with the camera too far to see it
 
 out vec4 fragColour;
 
@@ -29,8 +34,15 @@ void main() {
     if (red > 0.0) texel = mix(texel, texture(rednessMap, vUv).rgb, red);
     texel *= mix(vec3(1.0), vec3(1.0, 0.77, 0.76), mask.g * overlay.z * 0.55);
   }
+  // n'.l - n.l to first order for the relief's normal n' (its x, y in the tangent frame): no
+  // bias where the mipmaps average the relief flat, so a distant face keeps its light.
+  float tilt = 0.0;
+  if (detail.x > 0.0)  // uniform: a face seen from afar fetches no relief
+    tilt = detail.x * dot(texture(detailMap, vUv * detailTiling).xy * 2.0 - 1.0, vKey.xy);
   // Rim and sheen add light: their display-space increments are small and nearly linear.
-  // Irritated lids are moist: the redness makes the skin glossier too.
-  vec3 glow = vRim * texel * texel + kKeyColour * vSheen * (1.0 + 2.0 * red);
-  fragColour = vec4(texel * vDiffuse + displayIncrement(glow) * 0.8, 1.0);
+  // Irritated lids are moist: the redness makes the skin glossier too. The sheen's lobe is
+  // narrower than the diffuse, so the relief moves it more.
+  vec3 glow = vRim * texel * texel
+            + kKeyColour * vSheen * (1.0 + 2.0 * red) * clamp(1.0 + 6.0 * tilt, 0.0, 2.0);
+  fragColour = vec4(texel * vDiffuse * (1.0 + vKey.z * tilt) + displayIncrement(glow) * 0.8, 1.0);
 }

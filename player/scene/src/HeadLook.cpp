@@ -7,6 +7,7 @@
 #include <lacrima/scene/OgreRuntime.h>
 #include <lacrima/scene/OverlayMasks.h>
 #include <lacrima/scene/OverlayTextures.h>
+#include <lacrima/scene/SkinDetail.h>
 
 #include <OgreGpuProgramParams.h>
 #include <OgreLogManager.h>
@@ -102,7 +103,9 @@ HeadLook::HeadLook(OgreRuntime& runtime, const HeadMesh& head, HeadGeometry& geo
         pass->getTextureUnitState(1)->setTexture(
             texture(paintOverlayMask(head, overlayVertexWeights(head)), false));
         pass->getTextureUnitState(2)->setTexture(texture(makeIrritatedSkin(skin), true));
+        pass->getTextureUnitState(3)->setTexture(texture(makeSkinDetailNormals(), true));
         fragment->setNamedConstant("materialColour", toOgre(look.diffuse));
+        fragment->setNamedConstant("detailTiling", skinDetailTiling(head));
         break;
       }
       case Role::Eye:
@@ -128,6 +131,7 @@ HeadLook::HeadLook(OgreRuntime& runtime, const HeadMesh& head, HeadGeometry& geo
     material->load();
     entity->setMaterial(material);
     entity->setCustomParameter(0, Ogre::Vector4(0, 0, 0, 0));
+    entity->setCustomParameter(1, Ogre::Vector4(0, 0, 0, 0));
     materials_.push_back(material);
     parts_.push_back(part);
   }
@@ -170,6 +174,12 @@ void HeadLook::setOverlays(const playback::OverlayWeights& weights, bool enabled
       value = Ogre::Vector4(redness, wet[part.eye], 0, 0);
     part.entity->setCustomParameter(0, value);
   }
+}
+
+void HeadLook::setDetailStrength(float strength) {
+  const float s = std::isfinite(strength) ? std::clamp(strength, 0.0f, 1.0f) : 0.0f;
+  for (const Part& part : parts_)
+    if (part.role == Role::Skin) part.entity->setCustomParameter(1, Ogre::Vector4(s, 0, 0, 0));
 }
 
 }  // namespace lacrima::scene::detail

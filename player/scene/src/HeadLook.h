@@ -1,14 +1,16 @@
 #pragma once
 // Materials and textures of one head: each sub-mesh gets a clone of the base material for its
 // role (media/materials/lacrima.material) with the head's texture and colours:
-//   skin            Lacrima/Skin: diffuse, overlay mask (OverlayMasks.h), irritated skin layer
+//   skin            Lacrima/Skin: diffuse, overlay mask (OverlayMasks.h), irritated skin layer,
+//                   tiling relief (SkinDetail.h)
 //   eye_l, eye_r    Lacrima/Eye: diffuse, bloodshot sclera layer (its alpha: where the sclera is)
 //   cornea_l/_r     Lacrima/Cornea: additive reflections only
 //   transparent     Lacrima/Card: alpha-textured lashes and brows, drawn after the tears
 //   anything else   Lacrima/Lit with the material's colour, specular and shininess
 // The overlay weights reach the shaders as custom parameter 0 of each sub-entity
-// (x redness, y this eye's wetness, z blush; skin gets x and z, eyes and corneas x and y), so
-// changing them costs no material change.
+// (x redness, y this eye's wetness, z blush; skin gets x and z, eyes and corneas x and y), and
+// the strength of the skin's relief as custom parameter 1 (x), so changing them costs no
+// material change.
 #include <lacrima/common/HeadMesh.h>
 #include <lacrima/playback/FrameView.h>
 
@@ -40,6 +42,8 @@ class HeadLook {
 
   // Weights in [0, 1] (clamped); `enabled` false sets them all to 0 (no overlay at all).
   void setOverlays(const playback::OverlayWeights& weights, bool enabled);
+  // The skin's fine relief (SkinDetail.h), 0 (not even fetched) to 1; clamped.
+  void setDetailStrength(float strength);
 
  private:
   enum class Role { Skin, Eye, Cornea, Card, Lit };

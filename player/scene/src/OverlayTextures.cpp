@@ -1,5 +1,7 @@
 #include <lacrima/scene/OverlayTextures.h>
 
+#include "PaintMath.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -8,6 +10,8 @@
 
 namespace lacrima::scene {
 namespace {
+
+using detail::valueNoise;
 
 // Decoding table: 8-bit sRGB-ish (gamma 2.2, as the shaders assume) to linear.
 const std::array<float, 256>& linearTable() {
@@ -31,27 +35,6 @@ uchar encode(float linear) {
     return t;
   }();
   return table[static_cast<std::size_t>(std::lround(std::clamp(linear, 0.0f, 1.0f) * 4096.0f))];
-}
-
-float hash(int x, int y, int seed) {
-  auto h = static_cast<std::uint32_t>(x) * 374761393u + static_cast<std::uint32_t>(y) * 668265263u +
-           static_cast<std::uint32_t>(seed) * 2246822519u;
-  h = (h ^ (h >> 13)) * 1274126177u;
-  h ^= h >> 16;
-  return static_cast<float>(h & 0xffffffu) / static_cast<float>(0xffffff);
-}
-
-// Smooth value noise in [0, 1], `cells` lattice cells across the unit square (tiles).
-float valueNoise(float u, float v, int cells, int seed) {
-  const float x = u * static_cast<float>(cells), y = v * static_cast<float>(cells);
-  const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
-  const float fx = x - static_cast<float>(x0), fy = y - static_cast<float>(y0);
-  const float sx = fx * fx * (3 - 2 * fx), sy = fy * fy * (3 - 2 * fy);
-  auto at = [&](int i, int j) {
-    return hash(((i % cells) + cells) % cells, ((j % cells) + cells) % cells, seed);
-  };
-  const float a = at(x0, y0), b = at(x0 + 1, y0), c = at(x0, y0 + 1), d = at(x0 + 1, y0 + 1);
-  return (a + (b - a) * sx) + ((c + (d - c) * sx) - (a + (b - a) * sx)) * sy;
 }
 
 QImage rgba(const QImage& image) {
