@@ -1,8 +1,8 @@
 #pragma once
 // Materials and textures of one head: each sub-mesh gets a clone of the base material for its
 // role (media/materials/lacrima.material) with the head's texture and colours:
-//   skin            Lacrima/Skin: diffuse, overlay mask (OverlayMasks.h), irritated skin layer,
-//                   tiling relief (SkinDetail.h)
+//   skin            Lacrima/Skin: diffuse, overlay mask (OverlayMasks.h), irritated skin layer;
+//                   close up Lacrima/SkinDetail: the same and the tiling relief (SkinDetail.h)
 //   eye_l, eye_r    Lacrima/Eye: diffuse, bloodshot sclera layer (its alpha: where the sclera is)
 //   cornea_l/_r     Lacrima/Cornea: additive reflections only
 //   transparent     Lacrima/Card: alpha-textured lashes and brows, drawn after the tears
@@ -42,7 +42,8 @@ class HeadLook {
 
   // Weights in [0, 1] (clamped); `enabled` false sets them all to 0 (no overlay at all).
   void setOverlays(const playback::OverlayWeights& weights, bool enabled);
-  // The skin's fine relief (SkinDetail.h), 0 (not even fetched) to 1; clamped.
+  // The skin's fine relief (SkinDetail.h), 0 (the skin's plain material, no relief fetched) to
+  // 1; clamped.
   void setDetailStrength(float strength);
 
  private:
@@ -50,7 +51,10 @@ class HeadLook {
   struct Part {
     Ogre::SubEntity* entity = nullptr;
     Role role = Role::Lit;
-    int eye = -1;  // 0 left, 1 right
+    int eye = -1;               // 0 left, 1 right
+    Ogre::MaterialPtr whole;    // the material it starts with
+    Ogre::MaterialPtr closeUp;  // skin only: the same layers and the fine relief
+    bool showingCloseUp = false;
   };
   Ogre::TexturePtr texture(const QImage& image, bool mipmaps);
 
