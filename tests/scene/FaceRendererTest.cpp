@@ -5,7 +5,9 @@
 #include "SyntheticTears.h"
 
 #include <lacrima/rigging/DefaultHead.h>
+#include <lacrima/scene/CameraPreset.h>
 #include <lacrima/scene/FaceRenderer.h>
+#include <lacrima/scene/FaceScene.h>
 #include <lacrima/scene/OgreRuntime.h>
 #include <lacrima/scene/OverlayMasks.h>
 
@@ -216,6 +218,57 @@ class FaceRendererTest : public QObject {
           changedRight / 225);
     QVERIFY2(changedLeft / 225 > 3, "the wet overlay did not change the left eye");
     QCOMPARE(changedRight, 0.0);  // only the eye that is wet
+  }
+
+  // Full redness, close up: the iris (the eyeball's front pole) keeps every pixel, the sclera on
+  // its nose side (32 degrees off the front, in view from this camera for both eyes) turns pinker.
+  void rednessReddensTheScleraNotTheIris() {
+    const auto resetView = qScopeGuard([this] { renderer_->resetView(); });
+    renderer_->zoom(0.4);
+    playback::FrameView calm = neutral(), red = neutral();
+    red.overlays.redness = 1;
+    const QImage a = render(calm), b = render(red);
+    for (int e = 0; e < 2; ++e) {
+      const double r = eyeRadius(e), nasal = e == 0 ? -1 : 1;
+      const QPointF iris = renderer_->project(eyeCentre(e) + Eigen::Vector3d(0, 0, r));
+      for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx)
+          QCOMPARE(channelDifference(a, b, int(iris.x()) + dx, int(iris.y()) + dy), 0);
+      const QPointF at =
+          renderer_->project(eyeCentre(e) + r * Eigen::Vector3d(nasal * 0.53, 0, 0.848));
+      const MeanColour before = meanColour(a, at, 1), after = meanColour(b, at, 1);
+      qInfo("eye %d sclera at (%.0f, %.0f): redness %.3f -> %.3f", e, at.x(), at.y(),
+            before.redness(), after.redness());
+      QVERIFY2(before.redness() < 1.25, "not the sclera: too red already");
+      QVERIFY2(after.redness() > before.redness() * 1.1, "the sclera did not redden");
+    }
+  }
+
+  // Three-quarter view of the face's left side: walking across the jaw line from the cheek to
+  // the neck, the jaw's underside (facing down, away from the key light) is a soft shade, not a
+  // grey crease: no pixel much darker than the neck below it, none much less red than it. The
+  // points are on the default head's left jaw (x = 0.45, y from 6.65 down to 6.25).
+  void jawLineHasNoCrease() {
+    const auto resetView = qScopeGuard([this] { renderer_->resetView(); });
+    renderer_->scene().setView(scene::presetView(*head_, scene::CameraPreset::ThreeQuarter));
+    const QImage image = render(neutral());
+    const QPointF cheek = renderer_->project(skinPoint(Eigen::Vector3d(0.46, 6.65, 1.25)));
+    const QPointF neck = renderer_->project(skinPoint(Eigen::Vector3d(0.45, 6.25, 0.4)));
+    const MeanColour below = meanColour(image, neck, 1);
+    double darkest = 1e9, leastRed = 1e9;
+    QString profile;
+    for (int i = 0; i <= 40; ++i) {
+      const MeanColour c = meanColour(image, cheek + (neck - cheek) * (i / 40.0), 1);
+      darkest = std::min(darkest, c.luminance());
+      leastRed = std::min(leastRed, c.redness());
+      profile += QString(" %1/%2").arg(c.luminance(), 0, 'f', 0).arg(c.redness(), 0, 'f', 2);
+    }
+    qInfo("cheek (%.0f, %.0f) to neck (%.0f, %.0f), luminance/redness:%s", cheek.x(), cheek.y(),
+          neck.x(), neck.y(), qPrintable(profile));
+    // Without the bounce from below it was 0.54 of the neck's luminance, and grey (0.88 of its
+    // redness); with it about 0.8 and warmer than the neck.
+    QVERIFY2(darkest > 0.7 * below.luminance(), "a dark line along the jaw");
+    QVERIFY2(leastRed > 0.92 * below.redness(), "a grey line along the jaw");
   }
 
   void textureBlendingOffEqualsNoOverlay() {

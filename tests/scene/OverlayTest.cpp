@@ -1,13 +1,17 @@
 // The engine-free parts of the scene on the real default head (skipped when it is not fetched):
 // where the overlays apply (masks painted in uv space), the overlay layers made from the head's
-// textures, the static occlusion, the orbit camera's framing and mouse mapping, and the named
-// cameras of --render --view.
+// textures, the skin's relief and the tangent frames it is shaded in, the skin's horizons (its
+// shadows), the static occlusion, the
+// orbit camera's framing and mouse mapping, and the named cameras of --render --view.
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/scene/CameraPreset.h>
 #include <lacrima/scene/HeadOcclusion.h>
+#include <lacrima/scene/HeadTangents.h>
 #include <lacrima/scene/OrbitView.h>
 #include <lacrima/scene/OverlayMasks.h>
 #include <lacrima/scene/OverlayTextures.h>
+#include <lacrima/scene/SkinDetail.h>
+#include <lacrima/scene/SkinHorizons.h>
 
 #include <QtTest>
 
@@ -155,6 +159,164 @@ class OverlayTest : public QObject {
       }
     QVERIFY2(redShift / (64 * 64) > 15, "the sclera did not turn pink");
     QCOMPARE(makeIrritatedSkin(QImage()).size(), QSize(1, 1));  // a head without a texture
+  }
+
+  // The bloodshot layer at full redness, blended as eye.frag does (mix by its alpha), on the
+  // default head's own eye texture: texels of the iris (eyeball vertices within 20 degrees of
+  // the gaze, the cornea's direction; the iris reaches about 29) are unchanged bit for bit,
+  // texels of the sclera (45 to 75 degrees off the gaze) turn pink.
+  void bloodshotLayerReddensScleraNotIris() {
+    const HeadSubmesh* eye = head_->findSubmesh("eye_l");
+    const HeadSubmesh* cornea = head_->findSubmesh("cornea_l");
+    QVERIFY(eye && cornea && eye->material >= 0);
+    const QImage diffuse =
+        QImage(QString::fromStdString(head_->materials[std::size_t(eye->material)].diffuseTexture))
+            .convertToFormat(QImage::Format_RGBA8888);
+    QVERIFY(!diffuse.isNull());
+    const QImage layer = makeWetEye(diffuse);
+    QCOMPARE(layer.size(), diffuse.size());
+    const Eigen::Vector3f gaze =
+        (head_->positions.middleCols(cornea->firstVertex, cornea->vertexCount).rowwise().mean() -
+         left_.centre)
+            .normalized();
+    int iris = 0, sclera = 0, pinker = 0;
+    for (int v = eye->firstVertex; v < eye->firstVertex + eye->vertexCount; ++v) {
+      const float degrees =
+          std::acos(std::clamp((head_->positions.col(v) - left_.centre).normalized().dot(gaze),
+                               -1.0f, 1.0f)) *
+          180 / std::numbers::pi_v<float>;
+      const int x =
+          std::clamp(int(head_->uvs(0, v) * float(diffuse.width())), 0, diffuse.width() - 1);
+      const int y =
+          std::clamp(int(head_->uvs(1, v) * float(diffuse.height())), 0, diffuse.height() - 1);
+      const QColor before = diffuse.pixelColor(x, y), over = layer.pixelColor(x, y);
+      const double a = over.alphaF();
+      const double red = before.redF() * (1 - a) + over.redF() * a;
+      const double green = before.greenF() * (1 - a) + over.greenF() * a;
+      if (degrees < 20) {
+        ++iris;
+        QCOMPARE(over.alpha(), 0);
+        QCOMPARE(over.rgb(), before.rgb());
+      } else if (degrees > 45 && degrees < 75) {
+        ++sclera;
+        pinker += red - green > before.redF() - before.greenF() + 0.05;
+      }
+    }
+    QVERIFY(iris > 30 && sclera > 30);
+    QVERIFY2(pinker > sclera * 3 / 4, "the sclera did not turn pink");
+  }
+
+  // The skin's relief: a normal map that tiles (the step across the wrap is no bigger than
+  // steps inside), averages to a flat normal (it neither darkens nor tilts the light overall),
+  // and has fine structure; one tile spans about 1.5 cm of the default head's skin; it shows
+  // only close up.
+  void skinReliefTilesAveragesFlatAndIsFine() {
+    const QImage relief = makeSkinDetailNormals(128);
+    QCOMPARE(relief.size(), QSize(128, 128));
+    QCOMPARE(relief.format(), QImage::Format_RGBA8888);
+    auto normal = [&](int x, int y) {
+      const QColor c = relief.pixelColor(x, y);
+      return Eigen::Vector3d(c.redF() * 2 - 1, c.greenF() * 2 - 1, c.blueF() * 2 - 1);
+    };
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    double tilted = 0, insideStep = 0, wrapStep = 0;
+    for (int y = 0; y < 128; ++y)
+      for (int x = 0; x < 128; ++x) {
+        const Eigen::Vector3d n = normal(x, y);
+        QVERIFY(std::abs(n.norm() - 1) < 0.02);
+        mean += n;
+        tilted += n.z() < 0.985;  // more than 10 degrees
+        if (x < 127) insideStep = std::max(insideStep, (normal(x + 1, y) - n).norm());
+      }
+    for (int y = 0; y < 128; ++y)
+      wrapStep = std::max(wrapStep, (normal(0, y) - normal(127, y)).norm());
+    for (int x = 0; x < 128; ++x)
+      wrapStep = std::max(wrapStep, (normal(x, 0) - normal(x, 127)).norm());
+    mean /= 128.0 * 128.0;
+    QVERIFY2(std::abs(mean.x()) < 0.01 && std::abs(mean.y()) < 0.01, "the relief tilts the light");
+    QVERIFY2(tilted > 128 * 128 / 20, "no pores or lines");
+    QVERIFY2(wrapStep <= insideStep, "the relief does not tile");
+
+    const float tiling = skinDetailTiling(*head_);
+    QVERIFY2(tiling > 45 && tiling < 90, qPrintable(QString::number(tiling)));
+    QCOMPARE(skinDetailTiling(HeadMesh{}), 64.0f);
+    // Only close up: full from half the framing distance in, none from three quarters out.
+    QCOMPARE(skinDetailStrength(0.3, 1.0), 1.0f);
+    QCOMPARE(skinDetailStrength(0.5, 1.0), 1.0f);
+    const float between = skinDetailStrength(0.6, 1.0);
+    QVERIFY(between > 0 && between < 1);
+    QCOMPARE(skinDetailStrength(0.75, 1.0), 0.0f);
+    QCOMPARE(skinDetailStrength(1.0, 1.0), 0.0f);
+    QCOMPARE(skinDetailStrength(0.3, 0.0), 0.0f);
+  }
+
+  // Tangent frames follow the uv layout: unit, orthogonal to the normal, along +u on the skin's
+  // triangles and with +v on the side their handedness says.
+  void tangentsFollowTheUvLayout() {
+    const std::vector<Eigen::Vector4f> tangents = headTangents(*head_);
+    QCOMPARE(tangents.size(), std::size_t(head_->vertexCount()));
+    for (int v = 0; v < head_->vertexCount(); ++v) {
+      const Eigen::Vector3f t = tangents[std::size_t(v)].head<3>();
+      QVERIFY(std::abs(t.norm() - 1) < 1e-4f);
+      QVERIFY(std::abs(t.dot(head_->normals.col(v))) < 1e-4f);
+      QVERIFY(std::abs(std::abs(tangents[std::size_t(v)].w()) - 1) < 1e-6f);
+    }
+    int along = 0, total = 0;
+    for (const Eigen::Vector3i& tri : head_->findSubmesh("skin")->triangles) {
+      const Eigen::Vector3f e1 = head_->positions.col(tri[1]) - head_->positions.col(tri[0]);
+      const Eigen::Vector3f e2 = head_->positions.col(tri[2]) - head_->positions.col(tri[0]);
+      const Eigen::Vector2f d1 = head_->uvs.col(tri[1]) - head_->uvs.col(tri[0]);
+      const Eigen::Vector2f d2 = head_->uvs.col(tri[2]) - head_->uvs.col(tri[0]);
+      const float det = d1.x() * d2.y() - d2.x() * d1.y();
+      if (std::abs(det) < 1e-12f) continue;
+      const Eigen::Vector3f du = (e1 * d2.y() - e2 * d1.y()) / det;
+      const Eigen::Vector3f dv = (e2 * d1.x() - e1 * d2.x()) / det;
+      const Eigen::Vector4f& t = tangents[std::size_t(tri[0])];
+      const Eigen::Vector3f bitangent = t.w() * head_->normals.col(tri[0]).cross(t.head<3>());
+      along += t.head<3>().dot(du) > 0 && bitangent.dot(dv) > 0;
+      ++total;
+    }
+    QVERIFY2(along > total * 95 / 100, qPrintable(QString("%1 of %2").arg(along).arg(total)));
+    // Without uvs: still unit and orthogonal.
+    HeadMesh plain = *head_;
+    plain.uvs.resize(2, 0);
+    const std::vector<Eigen::Vector4f> fallback = headTangents(plain);
+    QVERIFY(std::abs(fallback[0].head<3>().dot(plain.normals.col(0))) < 1e-4f);
+    QVERIFY(std::abs(fallback[0].head<3>().norm() - 1) < 1e-4f);
+  }
+
+  // Horizons on the default head: the crown sees open sky all round, the neck under the jaw has
+  // the jaw above it (its most upward sector is high), the chin's underside faces the neck;
+  // nothing but skin has horizons, and nothing within a tiny reach.
+  void horizonsSeeTheJawOverTheNeck() {
+    const std::vector<Eigen::Vector4f> tangents = headTangents(*head_);
+    const std::vector<Horizons> horizons = skinHorizons(*head_, tangents);
+    QCOMPARE(horizons.size(), std::size_t(head_->vertexCount()));
+    auto upward = [&](int v) {  // the horizon of the sector pointing most upwards
+      const Eigen::Vector3f n = head_->normals.col(v), t = tangents[std::size_t(v)].head<3>();
+      const Eigen::Vector3f b = tangents[std::size_t(v)].w() * n.cross(t);
+      int best = 0;
+      for (int k = 1; k < 8; ++k) {
+        const float a = float(k) * std::numbers::pi_v<float> / 4,
+                    a0 = float(best) * std::numbers::pi_v<float> / 4;
+        if ((std::cos(a) * t + std::sin(a) * b).y() > (std::cos(a0) * t + std::sin(a0) * b).y())
+          best = k;
+      }
+      return horizons[std::size_t(v)][std::size_t(best)];
+    };
+    const int crown = skinVertexNear(Eigen::Vector3f(0, head_->boundsMax().y(), 0.4f));
+    for (float h : horizons[std::size_t(crown)]) QVERIFY(h < 0.05f);
+    const int neck = skinVertexNear(Eigen::Vector3f(0.45f, 6.3f, 0.6f));
+    QVERIFY2(upward(neck) > 0.3f, qPrintable(QString::number(upward(neck))));
+    const int chin = skinVertexNear(Eigen::Vector3f(0, 6.17f, 1.03f));
+    QVERIFY(*std::max_element(horizons[std::size_t(chin)].begin(),
+                              horizons[std::size_t(chin)].end()) > 0.5f);
+    const HeadSubmesh* eye = head_->findSubmesh("eye_l");
+    for (int v = eye->firstVertex; v < eye->firstVertex + eye->vertexCount; ++v)
+      for (float h : horizons[std::size_t(v)]) QCOMPARE(h, 0.0f);
+    for (const Horizons& h : skinHorizons(*head_, tangents, 1e-4f))
+      for (float x : h) QCOMPARE(x, 0.0f);
+    QVERIFY(skinHorizons(*head_, {}).size() == std::size_t(head_->vertexCount()));
   }
 
   void islandPaddingReplacesBordersAndFillsAround() {

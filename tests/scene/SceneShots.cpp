@@ -1,14 +1,15 @@
 // lacrima-scene-shots: renders the default head crying at 1280x720 into PNGs (for judging the
 // look) and measures how long a render takes at 1280x720 and 640x480. Needs an X display
 // (xvfb-run -a). Usage:
-//   lacrima-scene-shots [OUT_DIR] [--timing | --quick-timing] [--particles] [--no-trails]
-//   [--no-surface]
-//                       [--simulate N]
+//   lacrima-scene-shots [OUT_DIR] [--timing | --quick-timing] [--close] [--particles]
+//                       [--no-trails] [--no-surface] [--simulate N]
 // OUT_DIR defaults to the current folder. The tears are SyntheticTears (drops and trails placed
 // on the cheeks); --simulate N runs the tear simulation instead for N frames at 22 fps with 100
 // particles per eye. --particles also draws the particle spheres. --timing prints ms per frame
 // of the off-screen renderer (with and without 4x multisampling) and of the on-screen viewport
 // (render and buffer swap) at 1280x720 and 640x480; --quick-timing only the renderer at 1280x720.
+// The renderer is timed with the framing camera, or with --close with the camera of
+// crying-close.png (the skin fills the frame and gets its fine relief).
 #include "SyntheticTears.h"
 
 #include <lacrima/rigging/DefaultHead.h>
@@ -120,8 +121,8 @@ int main(int argc, char** argv) {
   QApplication app(argc, argv);
   const QStringList args = app.arguments().mid(1);
   QString out = QStringLiteral(".");
-  bool timing = false, quick = false, viewportOnly = false, particles = false, noTrails = false,
-       noSurface = false;
+  bool timing = false, quick = false, viewportOnly = false, close = false, particles = false,
+       noTrails = false, noSurface = false;
   int simulate = 0, runs = 80;
   for (int i = 0; i < args.size(); ++i) {
     if (args[i] == QLatin1String("--timing"))
@@ -130,6 +131,8 @@ int main(int argc, char** argv) {
       timing = quick = true;
     else if (args[i] == QLatin1String("--viewport-timing"))
       timing = viewportOnly = true;
+    else if (args[i] == QLatin1String("--close"))
+      close = true;
     else if (args[i] == QLatin1String("--particles"))
       particles = true;
     else if (args[i] == QLatin1String("--no-trails"))
@@ -185,9 +188,13 @@ int main(int argc, char** argv) {
   const QString first = out + QStringLiteral("/crying-front.png");
   renderer.render().save(first);
 
-  renderer.orbit(24, -2);
-  renderer.zoom(0.5);
-  renderer.pan(0.06, -0.12);
+  auto closeUp = [&renderer] {
+    renderer.resetView();
+    renderer.orbit(24, -2);
+    renderer.zoom(0.5);
+    renderer.pan(0.06, -0.12);
+  };
+  closeUp();
   const QString second = out + QStringLiteral("/crying-close.png");
   renderer.render().save(second);
 
@@ -202,6 +209,7 @@ int main(int argc, char** argv) {
 
   if (!timing) return 0;
   renderer.resetView();
+  if (close) closeUp();
   if (viewportOnly) {
     measureViewport(frame, QSize(1280, 720), runs);
     return 0;

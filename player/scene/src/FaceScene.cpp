@@ -6,7 +6,10 @@
 #include "TearLayers.h"
 
 #include <lacrima/scene/HeadOcclusion.h>
+#include <lacrima/scene/HeadTangents.h>
 #include <lacrima/scene/OgreRuntime.h>
+#include <lacrima/scene/SkinDetail.h>
+#include <lacrima/scene/SkinHorizons.h>
 
 #include <OgreCamera.h>
 #include <OgreEntity.h>
@@ -91,6 +94,7 @@ struct FaceScene::State {
   std::unique_ptr<detail::TearLayers> tears;
   const HeadMesh* head = nullptr;
   OrbitView view = defaultView();
+  double framingDistance = 0;  // of the head shown (skinDetailStrength)
   double aspect = 4.0 / 3.0;
 
   static OrbitView defaultView() {
@@ -121,6 +125,7 @@ struct FaceScene::State {
     camera->setNearClipDistance(Ogre::Real(std::max(1e-4, 0.25 * view.minDistance)));
     camera->setFarClipDistance(Ogre::Real(4.0 * view.maxDistance + view.distance));
     camera->setAspectRatio(Ogre::Real(aspect));
+    if (look) look->setDetailStrength(skinDetailStrength(view.distance, framingDistance));
   }
 
   // A head without vertices or triangles shows nothing (only the backdrop and any tears).
@@ -129,13 +134,16 @@ struct FaceScene::State {
     geometry.reset();
     head = &mesh;
     if (mesh.vertexCount() > 0 && mesh.triangleCount() > 0) {
+      detail::StaticShading shading{headOcclusion(mesh), headTangents(mesh), {}};
+      shading.horizons = skinHorizons(mesh, shading.tangents);
       auto built = std::make_unique<detail::HeadGeometry>(
-          *scene, mesh, headOcclusion(mesh), runtime->uniqueName("head"), runtime->resourceGroup());
+          *scene, mesh, shading, runtime->uniqueName("head"), runtime->resourceGroup());
       look = std::make_unique<detail::HeadLook>(*runtime, mesh, *built);
       geometry = std::move(built);
       headNode->attachObject(&geometry->entity());
     }
     view = OrbitView::framing(mesh);
+    framingDistance = view.distance;
     applyCamera();
   }
 };

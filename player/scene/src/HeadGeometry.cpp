@@ -7,6 +7,7 @@
 #include <OgreSubEntity.h>
 #include <OgreSubMesh.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 
@@ -30,7 +31,7 @@ Ogre::HardwareIndexBufferSharedPtr indexBuffer(const std::vector<Eigen::Vector3i
 }  // namespace
 
 HeadGeometry::HeadGeometry(Ogre::SceneManager& scene, const HeadMesh& head,
-                           const std::vector<float>& occlusion, const std::string& name,
+                           const StaticShading& shading, const std::string& name,
                            const std::string& group)
     : scene_(scene), vertexCount_(head.vertexCount()) {
   auto& buffers = Ogre::HardwareBufferManager::getSingleton();
@@ -43,20 +44,29 @@ HeadGeometry::HeadGeometry(Ogre::SceneManager& scene, const HeadMesh& head,
   declaration->addElement(0, 12, Ogre::VET_FLOAT3, Ogre::VES_NORMAL);
   declaration->addElement(1, 0, Ogre::VET_FLOAT2, Ogre::VES_TEXTURE_COORDINATES, 0);
   declaration->addElement(1, 8, Ogre::VET_FLOAT1, Ogre::VES_TEXTURE_COORDINATES, 1);
+  declaration->addElement(1, 12, Ogre::VET_FLOAT4, Ogre::VES_TEXTURE_COORDINATES, 2);
+  declaration->addElement(1, 28, Ogre::VET_FLOAT4, Ogre::VES_TEXTURE_COORDINATES, 3);
+  declaration->addElement(1, 44, Ogre::VET_FLOAT4, Ogre::VES_TEXTURE_COORDINATES, 4);
 
   dynamic_ = buffers.createVertexBuffer(6 * sizeof(float), n,
                                         Ogre::HardwareBuffer::HBU_DYNAMIC_WRITE_ONLY_DISCARDABLE);
-  std::vector<float> fixed(3 * n, 0.0f);
+  constexpr std::size_t kStatic = 15;  // floats per vertex in source 1
+  std::vector<float> fixed(kStatic * n, 0.0f);
   const bool hasUvs = head.uvs.cols() == head.positions.cols();
   for (std::size_t v = 0; v < n; ++v) {
+    float* out = fixed.data() + kStatic * v;
     if (hasUvs) {
-      fixed[3 * v] = head.uvs(0, static_cast<Eigen::Index>(v));
-      fixed[3 * v + 1] = head.uvs(1, static_cast<Eigen::Index>(v));
+      out[0] = head.uvs(0, static_cast<Eigen::Index>(v));
+      out[1] = head.uvs(1, static_cast<Eigen::Index>(v));
     }
-    fixed[3 * v + 2] = v < occlusion.size() ? occlusion[v] : 1.0f;
+    out[2] = v < shading.occlusion.size() ? shading.occlusion[v] : 1.0f;
+    const Eigen::Vector4f tangent =
+        v < shading.tangents.size() ? shading.tangents[v] : Eigen::Vector4f(1, 0, 0, 1);
+    for (int k = 0; k < 4; ++k) out[3 + k] = tangent[k];
+    if (v < shading.horizons.size()) std::copy_n(shading.horizons[v].begin(), 8, out + 7);
   }
-  auto staticBuffer =
-      buffers.createVertexBuffer(3 * sizeof(float), n, Ogre::HardwareBuffer::HBU_STATIC_WRITE_ONLY);
+  auto staticBuffer = buffers.createVertexBuffer(kStatic * sizeof(float), n,
+                                                 Ogre::HardwareBuffer::HBU_STATIC_WRITE_ONLY);
   staticBuffer->writeData(0, fixed.size() * sizeof(float), fixed.data(), true);
   binding_->setBinding(0, dynamic_);
   binding_->setBinding(1, staticBuffer);

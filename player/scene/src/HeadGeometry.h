@@ -1,7 +1,8 @@
 #pragma once
 // The head as one OGRE mesh: all sub-meshes share one vertex array in two buffers,
 //   source 0 (dynamic, rewritten every frame): position, normal    (6 floats)
-//   source 1 (static):                         uv0, occlusion (uv1) (3 floats)
+//   source 1 (static):                         uv0, occlusion (uv1), tangent (uv2), horizons
+//                                              (uv3, uv4): StaticShading     (15 floats)
 // so a frame uploads the CPU-blended pose (PoseBlender) with one discard-lock and memcpy-like
 // loop (about 0.26 MB for the default head) and OGRE never animates anything itself. Each head
 // sub-mesh with triangles becomes an OGRE sub-mesh whose vertex data is a window
@@ -10,6 +11,7 @@
 // a software rasteriser, where vertex work runs on the calling thread. Bounds are the neutral
 // bounds grown by half their size on every side, so no expression gets culled.
 #include <lacrima/common/HeadMesh.h>
+#include <lacrima/scene/SkinHorizons.h>
 
 #include <OgreHardwareVertexBuffer.h>
 #include <OgreMesh.h>
@@ -24,9 +26,17 @@ class SubEntity;
 
 namespace lacrima::scene::detail {
 
+// What the shaders need per vertex that no pose changes, computed once per head; vertices
+// beyond a vector's size get 1, (1, 0, 0, 1) and no horizon.
+struct StaticShading {
+  std::vector<float> occlusion;           // HeadOcclusion.h
+  std::vector<Eigen::Vector4f> tangents;  // HeadTangents.h
+  std::vector<Horizons> horizons;         // SkinHorizons.h
+};
+
 class HeadGeometry {
  public:
-  HeadGeometry(Ogre::SceneManager& scene, const HeadMesh& head, const std::vector<float>& occlusion,
+  HeadGeometry(Ogre::SceneManager& scene, const HeadMesh& head, const StaticShading& shading,
                const std::string& name, const std::string& group);
   ~HeadGeometry();
   HeadGeometry(const HeadGeometry&) = delete;

@@ -7,6 +7,7 @@
 #include <lacrima/scene/OgreRuntime.h>
 #include <lacrima/scene/OverlayMasks.h>
 #include <lacrima/scene/OverlayTextures.h>
+#include <lacrima/scene/SkinDetail.h>
 
 #include <OgreGpuProgramParams.h>
 #include <OgreLogManager.h>
@@ -71,7 +72,8 @@ HeadLook::HeadLook(OgreRuntime& runtime, const HeadMesh& head, HeadGeometry& geo
         sub.material >= 0 && sub.material < static_cast<int>(head.materials.size())
             ? head.materials[static_cast<std::size_t>(sub.material)]
             : fallback;
-    Part part{entity, Role::Lit, -1};
+    Part part;
+    part.entity = entity;
     if (sub.name == "skin")
       part.role = Role::Skin;
     else if (sub.name == "eye_l" || sub.name == "eye_r")
@@ -98,11 +100,24 @@ HeadLook::HeadLook(OgreRuntime& runtime, const HeadMesh& head, HeadGeometry& geo
         // The skin's texture gets its uv islands padded (seams otherwise show as lines); the
         // redness layer is made from the padded texture so both stay aligned.
         const QImage skin = padUvIslands(imageOf(sub.material), head, sub);
-        pass->getTextureUnitState(0)->setTexture(texture(skin, true));
-        pass->getTextureUnitState(1)->setTexture(
-            texture(paintOverlayMask(head, overlayVertexWeights(head)), false));
-        pass->getTextureUnitState(2)->setTexture(texture(makeIrritatedSkin(skin), true));
-        fragment->setNamedConstant("materialColour", toOgre(look.diffuse));
+        const Ogre::TexturePtr layers[] = {
+            texture(skin, true), texture(paintOverlayMask(head, overlayVertexWeights(head)), false),
+            texture(makeIrritatedSkin(skin), true)};
+        // The same layers close up, with the relief (setDetailStrength switches).
+        part.closeUp = materials.getByName("Lacrima/SkinDetail", group)
+                           ->clone(runtime.uniqueName("material/" + sub.name), true, group);
+        Ogre::Pass* close = part.closeUp->getTechnique(0)->getPass(0);
+        for (Ogre::Pass* p : {pass, close}) {
+          for (unsigned short unit = 0; unit < 3; ++unit)
+            p->getTextureUnitState(unit)->setTexture(layers[unit]);
+          p->getFragmentProgramParameters()->setNamedConstant("materialColour",
+                                                              toOgre(look.diffuse));
+        }
+        close->getTextureUnitState("detail")->setTexture(texture(makeSkinDetailNormals(), true));
+        close->getFragmentProgramParameters()->setNamedConstant("detailTiling",
+                                                                skinDetailTiling(head));
+        part.closeUp->load();
+        materials_.push_back(part.closeUp);
         break;
       }
       case Role::Eye:
@@ -127,7 +142,9 @@ HeadLook::HeadLook(OgreRuntime& runtime, const HeadMesh& head, HeadGeometry& geo
     }
     material->load();
     entity->setMaterial(material);
+    part.whole = material;
     entity->setCustomParameter(0, Ogre::Vector4(0, 0, 0, 0));
+    entity->setCustomParameter(1, Ogre::Vector4(0, 0, 0, 0));
     materials_.push_back(material);
     parts_.push_back(part);
   }
@@ -167,8 +184,22 @@ void HeadLook::setOverlays(const playback::OverlayWeights& weights, bool enabled
     Ogre::Vector4 value(0, 0, 0, 0);
     if (part.role == Role::Skin) value = Ogre::Vector4(redness, 0, blush, 0);
     if ((part.role == Role::Eye || part.role == Role::Cornea) && part.eye >= 0)
-      value.y = wet[part.eye];
+      value = Ogre::Vector4(redness, wet[part.eye], 0, 0);
     part.entity->setCustomParameter(0, value);
+  }
+}
+
+void HeadLook::setDetailStrength(float strength) {
+  const float s = std::isfinite(strength) ? std::clamp(strength, 0.0f, 1.0f) : 0.0f;
+  for (Part& part : parts_) {
+    if (!part.closeUp) continue;
+    part.entity->setCustomParameter(1, Ogre::Vector4(s, 0, 0, 0));
+    // Swapping materials (both loaded at start-up) costs nothing; a relief weighted 0 in the
+    // same program would still be fetched: llvmpipe runs both sides of a uniform branch.
+    if ((s > 0) != part.showingCloseUp) {
+      part.showingCloseUp = s > 0;
+      part.entity->setMaterial(part.showingCloseUp ? part.closeUp : part.whole);
+    }
   }
 }
 

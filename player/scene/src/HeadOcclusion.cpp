@@ -1,5 +1,7 @@
 #include <lacrima/scene/HeadOcclusion.h>
 
+#include "PaintMath.h"
+
 #include <lacrima/scene/OverlayMasks.h>
 
 #include <algorithm>
@@ -9,10 +11,7 @@
 namespace lacrima::scene {
 namespace {
 
-float smoothstep(float edge0, float edge1, float x) {
-  const float t = std::clamp((x - edge0) / (edge1 - edge0), 0.0f, 1.0f);
-  return t * t * (3 - 2 * t);
-}
+using detail::smoothstep;
 
 void skinCavities(const HeadMesh& head, const HeadSubmesh& skin, std::vector<float>& occlusion) {
   const std::vector<int> weld = weldCoincidentVertices(head.positions);

@@ -1,5 +1,7 @@
 #include <lacrima/scene/OverlayMasks.h>
 
+#include "PaintMath.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -9,10 +11,7 @@
 namespace lacrima::scene {
 namespace {
 
-float smoothstep(float edge0, float edge1, float x) {
-  const float t = std::clamp((x - edge0) / (edge1 - edge0), 0.0f, 1.0f);
-  return t * t * (3 - 2 * t);
-}
+using detail::smoothstep;
 
 float periocularWeight(const Eigen::Vector3f& p, const EyeSphere& eye) {
   const Eigen::Vector3f d = p - eye.centre;

@@ -1,5 +1,7 @@
 #include <lacrima/scene/OverlayTextures.h>
 
+#include "PaintMath.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -8,6 +10,8 @@
 
 namespace lacrima::scene {
 namespace {
+
+using detail::valueNoise;
 
 // Decoding table: 8-bit sRGB-ish (gamma 2.2, as the shaders assume) to linear.
 const std::array<float, 256>& linearTable() {
@@ -31,27 +35,6 @@ uchar encode(float linear) {
     return t;
   }();
   return table[static_cast<std::size_t>(std::lround(std::clamp(linear, 0.0f, 1.0f) * 4096.0f))];
-}
-
-float hash(int x, int y, int seed) {
-  auto h = static_cast<std::uint32_t>(x) * 374761393u + static_cast<std::uint32_t>(y) * 668265263u +
-           static_cast<std::uint32_t>(seed) * 2246822519u;
-  h = (h ^ (h >> 13)) * 1274126177u;
-  h ^= h >> 16;
-  return static_cast<float>(h & 0xffffffu) / static_cast<float>(0xffffff);
-}
-
-// Smooth value noise in [0, 1], `cells` lattice cells across the unit square (tiles).
-float valueNoise(float u, float v, int cells, int seed) {
-  const float x = u * static_cast<float>(cells), y = v * static_cast<float>(cells);
-  const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
-  const float fx = x - static_cast<float>(x0), fy = y - static_cast<float>(y0);
-  const float sx = fx * fx * (3 - 2 * fx), sy = fy * fy * (3 - 2 * fy);
-  auto at = [&](int i, int j) {
-    return hash(((i % cells) + cells) % cells, ((j % cells) + cells) % cells, seed);
-  };
-  const float a = at(x0, y0), b = at(x0 + 1, y0), c = at(x0, y0 + 1), d = at(x0 + 1, y0 + 1);
-  return (a + (b - a) * sx) + ((c + (d - c) * sx) - (a + (b - a) * sx)) * sy;
 }
 
 QImage rgba(const QImage& image) {
@@ -84,6 +67,14 @@ QImage shadeTexels(const QImage& image, Shade shade) {
   return out;
 }
 
+// Sclera: bright and nearly grey (in linear light), 0 for the iris and the pupil.
+float scleraWeight(float r, float g, float b) {
+  const float high = std::max({r, g, b}), low = std::min({r, g, b});
+  const float saturation = high > 0 ? (high - low) / high : 0;
+  return std::clamp((0.30f - saturation) / 0.12f, 0.0f, 1.0f) *
+         std::clamp((high - 0.12f) / 0.15f, 0.0f, 1.0f);
+}
+
 }  // namespace
 
 QImage makeIrritatedSkin(const QImage& skinDiffuse) {
@@ -97,27 +88,40 @@ QImage makeIrritatedSkin(const QImage& skinDiffuse) {
 }
 
 QImage makeWetEye(const QImage& eyeDiffuse) {
-  return shadeTexels(eyeDiffuse, [](float u, float v, std::array<float, 3>& c) {
-    float r = c[0], g = c[1], b = c[2];
-    const float high = std::max({r, g, b}), low = std::min({r, g, b});
-    const float saturation = high > 0 ? (high - low) / high : 0;
-    // Sclera: bright and nearly grey.
-    const float sclera = std::clamp((0.30f - saturation) / 0.12f, 0.0f, 1.0f) *
-                         std::clamp((high - 0.25f) / 0.2f, 0.0f, 1.0f);
-    // Vessels: where two octaves of noise cross 0.5, thin lines; thicker at low frequency.
-    const float ridge =
-        std::abs(valueNoise(u, v, 14, 7) - 0.5f) + 0.5f * std::abs(valueNoise(u, v, 37, 8) - 0.5f);
-    const float vessel = std::clamp(1.0f - ridge / 0.045f, 0.0f, 1.0f);
-    const float pink = 0.55f * sclera;
-    r = r * (1 - pink) + r * 0.98f * pink;
-    g = g * (1 - pink) + g * 0.70f * pink;
-    b = b * (1 - pink) + b * 0.70f * pink;
-    const float redVessel = 0.75f * vessel * sclera;
-    r = r * (1 - redVessel) + 0.55f * redVessel;
-    g = g * (1 - redVessel) + 0.06f * redVessel;
-    b = b * (1 - redVessel) + 0.06f * redVessel;
-    c = {r * 1.04f, g * 1.04f, b * 1.04f};
-  });
+  QImage out = rgba(eyeDiffuse);
+  const auto& lin = linearTable();
+  const int w = out.width(), h = out.height();
+  for (int y = 0; y < h; ++y) {
+    uchar* row = out.scanLine(y);
+    const float v = (static_cast<float>(y) + 0.5f) / static_cast<float>(h);
+    for (int x = 0; x < w; ++x) {
+      uchar* p = row + 4 * x;
+      float r = lin[p[0]], g = lin[p[1]], b = lin[p[2]];
+      const float sclera = scleraWeight(r, g, b);
+      p[3] = static_cast<uchar>(std::lround(sclera * 255.0f));
+      // Not re-encoded off the sclera: the iris and pupil keep their texels bit for bit.
+      if (sclera <= 0) continue;
+      const float u = (static_cast<float>(x) + 0.5f) / static_cast<float>(w);
+      // Vessels: long winding lines where warped noise crosses 0.5, and finer twigs between.
+      const float warp = 0.025f * (valueNoise(u, v, 40, 8) - 0.5f);
+      const float trunk = std::abs(valueNoise(u + warp, v - warp, 16, 7) - 0.5f);
+      const float twig = std::abs(valueNoise(u - warp, v + warp, 48, 9) - 0.5f);
+      const float vessel = std::max(std::clamp(1.0f - trunk / 0.035f, 0.0f, 1.0f),
+                                    0.6f * std::clamp(1.0f - twig / 0.025f, 0.0f, 1.0f));
+      // At full strength: the alpha (the sclera weight) says how much of it shows.
+      g *= 0.64f;
+      b *= 0.66f;
+      const float redVessel = 0.8f * vessel;
+      r = r * (1 - redVessel) + 0.50f * redVessel;
+      g = g * (1 - redVessel) + 0.05f * redVessel;
+      b = b * (1 - redVessel) + 0.05f * redVessel;
+      const float film = 1.04f;  // a film of water scatters a little more light
+      p[0] = encode(r * film);
+      p[1] = encode(g * film);
+      p[2] = encode(b * film);
+    }
+  }
+  return out;
 }
 
 QImage padUvIslands(const QImage& texture, const HeadMesh& head, const HeadSubmesh& submesh,

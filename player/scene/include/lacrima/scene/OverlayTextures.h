@@ -8,9 +8,15 @@
 // mottled as skin flushed by crying is, not a flat tint. The mask decides where it shows
 // (OverlayMasks.h).
 //
-// Wet, bloodshot eye (the wet-eye layer): sclera texels (bright, saturation < 0.3) turn pink and
-// get thin red vessels where ridged noise |n| is small; iris and pupil keep their colour; the
-// whole eye is a little brighter (a film of water scatters light). The eye shader adds the gloss.
+// Bloodshot eye (the eye's redness layer): its alpha is the sclera weight, 1 on bright, nearly
+// grey texels (in linear light, saturation below 0.18 and brightest channel above 0.27, fading
+// out by saturation 0.3 and brightness 0.12), 0 on the iris and the pupil; its colour, where the
+// alpha is not 0, is the sclera at full redness: pink (green and blue x 0.64, 0.66), a little
+// brighter (a film of water scatters light), with red vessels: long winding lines where warped
+// value noise crosses 0.5 and finer twigs between. Texels with alpha 0 keep their colour bit for
+// bit, so eye.frag, which blends the layer in by alpha x redness, never changes an iris,
+// whatever its colour (a grey iris would count as sclera: the rule is by colour). The eye
+// shader adds the gloss.
 //
 // Island padding (for the skin's own texture too): texels a sub-mesh's uv triangles cover are
 // found by rasterising them; the outermost covered ring is dropped (island borders are often
