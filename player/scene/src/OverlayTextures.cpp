@@ -46,8 +46,9 @@ QImage rgba(const QImage& image) {
   return image.convertToFormat(QImage::Format_RGBA8888);
 }
 
-// Calls shade(u, v, linear rgb) for every texel of `image` (uv at texel centres) and stores
-// the linear colour it leaves there; alpha is kept.
+// Calls shade(u, v, linear rgb, alpha) for every texel of `image` (uv at texel centres); it may
+// change the alpha, and when it returns true the linear colour it leaves is encoded back into the
+// texel (otherwise the texel's colour is kept bit for bit).
 template <typename Shade>
 QImage shadeTexels(const QImage& image, Shade shade) {
   QImage out = rgba(image);
@@ -60,7 +61,7 @@ QImage shadeTexels(const QImage& image, Shade shade) {
       const float u = (static_cast<float>(x) + 0.5f) / static_cast<float>(w);
       uchar* p = row + 4 * x;
       std::array<float, 3> c{lin[p[0]], lin[p[1]], lin[p[2]]};
-      shade(u, v, c);
+      if (!shade(u, v, c, p[3])) continue;
       for (int k = 0; k < 3; ++k) p[k] = encode(c[static_cast<std::size_t>(k)]);
     }
   }
@@ -78,50 +79,40 @@ float scleraWeight(float r, float g, float b) {
 }  // namespace
 
 QImage makeIrritatedSkin(const QImage& skinDiffuse) {
-  return shadeTexels(skinDiffuse, [](float u, float v, std::array<float, 3>& c) {
+  return shadeTexels(skinDiffuse, [](float u, float v, std::array<float, 3>& c, uchar&) {
     const float mottle = 0.65f * valueNoise(u, v, 20, 1) + 0.35f * valueNoise(u, v, 60, 2);
     const float m = 0.82f + 0.30f * mottle;
     c[0] *= 0.92f;
     c[1] *= 0.56f * m;
     c[2] *= 0.66f * m;
+    return true;
   });
 }
 
 QImage makeWetEye(const QImage& eyeDiffuse) {
-  QImage out = rgba(eyeDiffuse);
-  const auto& lin = linearTable();
-  const int w = out.width(), h = out.height();
-  for (int y = 0; y < h; ++y) {
-    uchar* row = out.scanLine(y);
-    const float v = (static_cast<float>(y) + 0.5f) / static_cast<float>(h);
-    for (int x = 0; x < w; ++x) {
-      uchar* p = row + 4 * x;
-      float r = lin[p[0]], g = lin[p[1]], b = lin[p[2]];
-      const float sclera = scleraWeight(r, g, b);
-      p[3] = static_cast<uchar>(std::lround(sclera * 255.0f));
-      // Not re-encoded off the sclera: the iris and pupil keep their texels bit for bit.
-      if (sclera <= 0) continue;
-      const float u = (static_cast<float>(x) + 0.5f) / static_cast<float>(w);
-      // Vessels: long winding lines where warped noise crosses 0.5, and finer twigs between.
-      const float warp = 0.025f * (valueNoise(u, v, 40, 8) - 0.5f);
-      const float trunk = std::abs(valueNoise(u + warp, v - warp, 16, 7) - 0.5f);
-      const float twig = std::abs(valueNoise(u - warp, v + warp, 48, 9) - 0.5f);
-      const float vessel = std::max(std::clamp(1.0f - trunk / 0.035f, 0.0f, 1.0f),
-                                    0.6f * std::clamp(1.0f - twig / 0.025f, 0.0f, 1.0f));
-      // At full strength: the alpha (the sclera weight) says how much of it shows.
-      g *= 0.64f;
-      b *= 0.66f;
-      const float redVessel = 0.8f * vessel;
-      r = r * (1 - redVessel) + 0.50f * redVessel;
-      g = g * (1 - redVessel) + 0.05f * redVessel;
-      b = b * (1 - redVessel) + 0.05f * redVessel;
-      const float film = 1.04f;  // a film of water scatters a little more light
-      p[0] = encode(r * film);
-      p[1] = encode(g * film);
-      p[2] = encode(b * film);
-    }
-  }
-  return out;
+  return shadeTexels(eyeDiffuse, [](float u, float v, std::array<float, 3>& c, uchar& alpha) {
+    auto& [r, g, b] = c;
+    const float sclera = scleraWeight(r, g, b);
+    alpha = static_cast<uchar>(std::lround(sclera * 255.0f));
+    // Not re-encoded off the sclera: the iris and pupil keep their texels bit for bit.
+    if (sclera <= 0) return false;
+    // Vessels: long winding lines where warped noise crosses 0.5, and finer twigs between.
+    const float warp = 0.025f * (valueNoise(u, v, 40, 8) - 0.5f);
+    const float trunk = std::abs(valueNoise(u + warp, v - warp, 16, 7) - 0.5f);
+    const float twig = std::abs(valueNoise(u - warp, v + warp, 48, 9) - 0.5f);
+    const float vessel = std::max(std::clamp(1.0f - trunk / 0.035f, 0.0f, 1.0f),
+                                  0.6f * std::clamp(1.0f - twig / 0.025f, 0.0f, 1.0f));
+    // At full strength: the alpha (the sclera weight) says how much of it shows.
+    g *= 0.64f;
+    b *= 0.66f;
+    const float redVessel = 0.8f * vessel;
+    r = r * (1 - redVessel) + 0.50f * redVessel;
+    g = g * (1 - redVessel) + 0.05f * redVessel;
+    b = b * (1 - redVessel) + 0.05f * redVessel;
+    const float film = 1.04f;  // a film of water scatters a little more light
+    for (float& channel : c) channel *= film;
+    return true;
+  });
 }
 
 QImage padUvIslands(const QImage& texture, const HeadMesh& head, const HeadSubmesh& submesh,
