@@ -85,8 +85,8 @@ run_demo() {
 # The pictures of the player in media/screenshots: the reference renders the README shows
 # (demo-*.png), the demo from the front and close up on the face's left cheek at three moments,
 # the sob (7.2 s), the tear peak (8.2 s) and the drying (12.5 s) (the player renders every frame
-# at 22 fps; these are frames 158, 180 and 275), and the player's window at the sob
-# (player-sob.png).
+# at 22 fps; these are frames 158, 180 and 275), and the player's and the editor's windows at
+# the sob (player-sob.png, editor.png).
 render_screenshots() {
   local bin="$build/bin" demo="$root/media/demo/crying.fap" shots="$root/media/screenshots"
   if [ "$head_available" -eq 0 ]; then
@@ -106,7 +106,9 @@ render_screenshots() {
   rm -rf "$work"
   xvfb-run -a -s "-screen 0 1600x1000x24" "$bin/lacrima-player" --size 1280x760 \
     --screenshot "$shots/player-sob.png" --at 7.2 "$demo" >/dev/null
-  echo "lacrima: rendered $(ls "$shots"/demo-*.png | wc -l) reference pictures and the window into $shots"
+  xvfb-run -a -s "-screen 0 1600x1000x24" "$bin/lacrima-editor" "$root/media/demo/crying.json" \
+    --screenshot "$shots/editor.png" --time 7.2 --warm-up 80 >/dev/null
+  echo "lacrima: rendered $(ls "$shots"/demo-*.png | wc -l) reference pictures and the two windows into $shots"
 }
 
 run_tests() {
