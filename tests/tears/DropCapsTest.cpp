@@ -1,8 +1,8 @@
 // Small drops on the skin as spherical caps (DropCaps.h): a drop at rest becomes one cap of its
 // volume sitting on the sheet, its particles flagged for the mesher; of a stream of drops only
 // the leading one gets a cap, the ones behind it are left to the trails; large drops and drops
-// in the air stay with the mesher. Also the cap formula itself (DropFootprint.h) and the
-// mesher's skip flags.
+// in the air stay with the mesher; the number of caps is bounded. Also the cap formula itself
+// (DropFootprint.h) and the mesher's skip flags.
 #include "SheetDrops.h"
 
 #include <lacrima/tears/DropCaps.h>
@@ -153,6 +153,24 @@ class DropCapsTest : public QObject {
     QCOMPARE(caps.capCount(), 4);
   }
 
+  // Past maxCaps the remaining small drops are left to the mesher (not skipped), so thousands
+  // of scattered particles cannot make an unbounded cap mesh.
+  void capsAreBounded() {
+    Scene scene;
+    DropCapSettings settings;
+    settings.maxCaps = 3;
+    DropCaps caps(scene.sheet.triangles, settings);
+    scene.particles.clear();
+    for (int d = 0; d < 6; ++d)
+      addDrop(scene.particles, scene.probe,
+              {-0.25 + 0.1 * d, 0.5, 3, 1 + 100 * static_cast<std::uint64_t>(d)});
+    scene.grid.build(scene.particles.position, kH);
+    caps.update(scene.particles, scene.grid, kH, kRadius, scene.sheet.positions);
+    QCOMPARE(caps.capCount(), 3);
+    QCOMPARE(flagged(caps.skipped()), 9);
+    QCOMPARE(caps.mesh().vertexCount(), 3 * (1 + settings.rings * settings.segments));
+  }
+
   void largeDropsAndDropsInTheAirAreTheMeshers() {
     Scene scene;
     DropCaps caps(scene.sheet.triangles);
@@ -177,7 +195,8 @@ class DropCapsTest : public QObject {
              [](DropCapSettings& s) { s.contactAngleDegrees = 0; },
              [](DropCapSettings& s) { s.contactAngleDegrees = std::nan(""); },
              [](DropCapSettings& s) { s.minimumSpeed = -1; },
-             [](DropCapSettings& s) { s.rimLift = 1; }}) {
+             [](DropCapSettings& s) { s.rimLift = 1; },
+             [](DropCapSettings& s) { s.maxCaps = -1; }}) {
       DropCapSettings s;
       change(s);
       QVERIFY_THROWS_EXCEPTION(std::invalid_argument, DropCaps(sheet.triangles, s));

@@ -2,6 +2,7 @@
 #include <lacrima/tears/DropFootprint.h>
 #include <lacrima/tears/TearSimulation.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -15,13 +16,13 @@ DropCaps::DropCaps(std::vector<Eigen::Vector3i> skinTriangles, const DropCapSett
     : skin_(std::move(skinTriangles)), settings_(settings) {
   if (settings_.maxParticles < 1 || settings_.rings < 1 || settings_.segments < 3 ||
       !(settings_.minimumSpeed >= 0) || !(settings_.followDistance >= 0) ||
-      !(settings_.trackWidth >= 0) ||
+      !(settings_.trackWidth >= 0) || settings_.maxCaps < 0 ||
       !(settings_.contactAngleDegrees > 0 && settings_.contactAngleDegrees <= 180) ||
       !(settings_.rimLift >= 0 && settings_.rimLift < 1))
     throw std::invalid_argument(
-        "drop caps: at least one particle, ring and three segments, distances and a speed of at "
-        "least 0, a "
-        "contact angle in (0, 180] degrees and a rim lift in [0, 1)");
+        "drop caps: at least one particle, ring and three segments, distances, a speed and a "
+        "number of caps of at least 0, a contact angle in (0, 180] degrees and a rim lift in "
+        "[0, 1)");
 }
 
 const TearSurface& DropCaps::update(const TearSimulation& simulation,
@@ -66,17 +67,41 @@ const TearSurface& DropCaps::update(const ParticleSet& particles, const UniformG
     drop.base = skin_.closest(all[d].centre, seeds_);
     if (drop.base.triangle >= 0) onSkin_.push_back(drop);
   }
+  binDrops(h);
   for (const SkinDrop& drop : onSkin_) {
     const FoundDrop& found = all[static_cast<std::size_t>(drop.index)];
     if (found.count >= settings_.maxParticles) continue;
+    const bool cap = leads(drop, h);
+    if (cap && caps_ >= settings_.maxCaps) continue;  // over the bound: the mesher's
     for (int i : finder_.particlesOf(found)) skipped_[static_cast<std::size_t>(i)] = 1;
-    if (!leads(drop, h)) continue;
+    if (!cap) continue;
     const Eigen::Vector3d normal = skin_.normal(drop.base.triangle);
     if (normal.isZero()) continue;  // a degenerate triangle has no side to sit on
     addCap(skin_.point(drop.base), normal, drop.volume);
   }
   skin_.unbind();
   return mesh_;
+}
+
+std::int64_t DropCaps::cellKey(const Eigen::Vector3d& x) const {
+  // 21 bits an axis: two million cells of at least h (1.6 mm at the defaults) is 3 km. A
+  // non-finite centre lands in some cell; nothing near it passes the distance tests.
+  std::int64_t key = 0;
+  for (int a = 0; a < 3; ++a) {
+    double c = std::floor(x[a] / binSize_);
+    c = std::isfinite(c) ? std::clamp(c, -1048575.0, 1048575.0) : 0.0;
+    key = (key << 21) | ((static_cast<std::int64_t>(c) + 1048576) & 0x1fffff);
+  }
+  return key;
+}
+
+void DropCaps::binDrops(double h) {
+  binSize_ = std::max(std::max(settings_.followDistance, settings_.trackWidth) * h, 1e-12);
+  bins_.clear();
+  for (std::size_t i = 0; i < onSkin_.size(); ++i)
+    bins_.push_back({cellKey(finder_.drops()[static_cast<std::size_t>(onSkin_[i].index)].centre),
+                     static_cast<int>(i)});
+  std::sort(bins_.begin(), bins_.end());
 }
 
 // A sliding drop leads unless another drop on the skin lies ahead of it, within
@@ -86,15 +111,22 @@ bool DropCaps::leads(const SkinDrop& drop, double h) const {
   if (speed < settings_.minimumSpeed * h) return true;  // a drop at rest sits on its own
   const Eigen::Vector3d direction = drop.velocity / speed;
   const Eigen::Vector3d centre = finder_.drops()[static_cast<std::size_t>(drop.index)].centre;
-  for (const SkinDrop& other : onSkin_) {
-    if (other.index == drop.index) continue;
-    const Eigen::Vector3d d =
-        finder_.drops()[static_cast<std::size_t>(other.index)].centre - centre;
-    const double along = d.dot(direction);
-    if (along > 0 && along < settings_.followDistance * h &&
-        (d - along * direction).norm() < settings_.trackWidth * h)
-      return false;
-  }
+  for (int dx = -1; dx <= 1; ++dx)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dz = -1; dz <= 1; ++dz) {
+        const std::int64_t cell = cellKey(centre + binSize_ * Eigen::Vector3d(dx, dy, dz));
+        for (auto it = std::lower_bound(bins_.begin(), bins_.end(), Binned{cell, 0});
+             it != bins_.end() && it->cell == cell; ++it) {
+          const SkinDrop& other = onSkin_[static_cast<std::size_t>(it->drop)];
+          if (other.index == drop.index) continue;
+          const Eigen::Vector3d d =
+              finder_.drops()[static_cast<std::size_t>(other.index)].centre - centre;
+          const double along = d.dot(direction);
+          if (along > 0 && along < settings_.followDistance * h &&
+              (d - along * direction).norm() < settings_.trackWidth * h)
+            return false;
+        }
+      }
   return true;
 }
 

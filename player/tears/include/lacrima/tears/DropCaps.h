@@ -49,6 +49,10 @@ struct DropCapSettings {
   double followDistance = 10, trackWidth = 2;  // kernel radii
   int rings = 3, segments = 14;
   double rimLift = 0.04;  // of the contact radius
+  // At most this many caps a frame (43 vertices each at the default rings and segments), so the
+  // work and the mesh stay bounded when thousands of particles scatter as single drops; past it
+  // the remaining small drops are left to the mesher, as larger drops are.
+  int maxCaps = 1024;
 };
 
 class DropCaps {
@@ -77,6 +81,17 @@ class DropCaps {
     Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // mean
     SkinAnchor base;                                     // the skin point under its centre
   };
+  // The drops on the skin binned by cells of edge followDistance x h, sorted by cell, so the
+  // drops ahead of one are looked for in the 27 cells around it, not among all of them.
+  struct Binned {
+    std::int64_t cell = 0;
+    int drop = 0;  // in onSkin_
+    bool operator<(const Binned& o) const {
+      return cell < o.cell || (cell == o.cell && drop < o.drop);
+    }
+  };
+  std::int64_t cellKey(const Eigen::Vector3d& x) const;
+  void binDrops(double h);
   bool leads(const SkinDrop& drop, double h) const;
   void addCap(const Eigen::Vector3d& base, const Eigen::Vector3d& normal, double volume);
 
@@ -87,6 +102,8 @@ class DropCaps {
   std::vector<std::uint8_t> skipped_;
   std::vector<int> seeds_;
   std::vector<SkinDrop> onSkin_;
+  std::vector<Binned> bins_;
+  double binSize_ = 1;
   int caps_ = 0;
 };
 
