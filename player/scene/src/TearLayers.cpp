@@ -5,13 +5,13 @@
 #include <lacrima/tears/TrailBuilder.h>
 
 #include <OgreMaterialManager.h>
+#include <OgrePass.h>
 #include <OgreRenderObjectListener.h>
 #include <OgreRenderQueue.h>
 #include <OgreRenderSystem.h>
 #include <OgreRoot.h>
 #include <OgreSceneManager.h>
 #include <OgreSceneNode.h>
-#include <OgreTechnique.h>
 
 #include <array>
 #include <limits>
