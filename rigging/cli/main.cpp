@@ -209,17 +209,8 @@ int run(QCommandLineParser& parser) {
                                std::pair{&fdp.eyeRight, &preview.eyeCentreRight}}) {
         if (spec->centre)
           *out = *spec->centre;
-        else if (!spec->submeshes.empty()) {
-          std::vector<Eigen::Vector3d> pts;
-          for (const std::string& name : spec->submeshes) {
-            const HeadSubmesh& s = *mesh.findSubmesh(name);
-            for (int v = 0; v < s.vertexCount; ++v)
-              pts.push_back(mesh.positions.col(s.firstVertex + v).cast<double>());
-          }
-          Eigen::Matrix3Xd m(3, static_cast<Eigen::Index>(pts.size()));
-          for (std::size_t k = 0; k < pts.size(); ++k) m.col(static_cast<Eigen::Index>(k)) = pts[k];
-          if (const auto sphere = rigging::fitSphere(m)) *out = sphere->centre;
-        }
+        else if (!spec->submeshes.empty())
+          if (const auto sphere = rigging::fitSphere(mesh, spec->submeshes)) *out = sphere->centre;
       }
       preview.neckPivot = fdp.neckPivot.value_or(Eigen::Vector3d::Zero());
       preview.tearLeft.position = preview.tearRight.position = preview.neckPivot;

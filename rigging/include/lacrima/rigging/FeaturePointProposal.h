@@ -4,7 +4,8 @@
 //
 // Given n >= 8 anchors placed on both heads (source a_i on the default head, target b_i on the
 // new one; at least the eye corners 3.7, 3.8, 3.11, 3.12, the nose tip 9.3, the mouth corners
-// 8.3, 8.4 and the chin 2.10), every other default point p is carried over in two steps:
+// 8.3, 8.4 and the chin 2.10; proposeFeaturePoints adds the eye centres when both heads have
+// eyes), every other default point p is carried over in two steps:
 //
 // 1. A similarity (Umeyama 1991, "Least-squares estimation of transformation parameters between
 //    two point patterns"): s, R, t minimising sum |s R a_i + t - b_i|^2, with R from the SVD of
@@ -19,8 +20,8 @@
 //    so the proportions of the new face (wider mouth, longer nose) carry to the points between.
 //    The kernel is equivariant under similarities, so the result does not depend on the units
 //    or axes either. Far from the anchors the spline extrapolates their local differences
-//    (on the ICT head it put the ears 0.6 ES0 off, the similarity alone 0.15 ES0), so its
-//    correction fades with the distance d to the nearest fitted anchor:
+//    (on the ICT head, without the eye centres, it put the ears 0.6 ES0 off, the similarity
+//    alone 0.15 ES0), so its correction fades with the distance d to the nearest fitted anchor:
 //      x' = sRp + t,   p' = x' + exp(-(d / r)^2) (f(x') - x'),   r = 0.3 RMS_i |a'_i - mean a'|,
 //    exact at the anchors, the similarity far from them, and still similarity-invariant.
 // The warped point is then snapped to the closest vertex of the part the default point is on
