@@ -13,6 +13,7 @@
 #include <lacrima/exporters/OgreMeshExport.h>
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/rigging/FeaturePointFile.h>
+#include <lacrima/rigging/FeaturePointProposal.h>
 #include <lacrima/rigging/MeshImport.h>
 #include <lacrima/rigging/RigBuilder.h>
 #include <lacrima/rigging/RigDescription.h>
@@ -79,6 +80,22 @@ PreviewPoints pointsForPreview(const HeadMesh& mesh, const rigging::FeaturePoint
   return points;
 }
 
+// --complete: the partial file's points plus the default head's others, carried onto `mesh`
+// (FeaturePointProposal.h).
+rigging::FeaturePointFile completeFeaturePoints(const rigging::FeaturePointFile& partial,
+                                                const HeadMesh& mesh, Warnings* warnings) {
+  rigging::validateFeaturePoints(partial, mesh, warnings, rigging::FeaturePointSet::Partial);
+  if (!rigging::defaultHeadAvailable())
+    throw FileError({rigging::defaultHeadPackageDir(), 0, 0},
+                    "--complete carries the default head's feature points, but the default head "
+                    "is not in the cache; run packaging/fetch-default-head.sh first");
+  const HeadMesh reference = rigging::loadDefaultHead();
+  const rigging::FeaturePointFile referenceFdp =
+      rigging::readFeaturePointFile(findMediaFile("default-head.fdp.json"));
+  rigging::validateFeaturePoints(referenceFdp, reference, nullptr);
+  return rigging::proposeFeaturePoints(partial, mesh, referenceFdp, reference, warnings);
+}
+
 void savePng(const QImage& image, const std::string& path) {
   if (!image.save(QString::fromStdString(path), "PNG"))
     throw FileError({path, 0, 0}, "cannot write the PNG image (folder missing or not writable?)");
@@ -93,8 +110,12 @@ int run(QCommandLineParser& parser) {
     throw UsageError("--mesh needs --fdp FILE (its feature points)");
   const bool wantRig =
       parser.isSet("output") || parser.isSet("report") || parser.isSet("pose-image");
-  if (!wantRig && !parser.isSet("fdp-image"))
-    throw UsageError("nothing to do: give -o DIR, --report, --fdp-image or --pose-image");
+  const bool complete = parser.isSet("complete");
+  if (complete && !parser.isSet("mesh"))
+    throw UsageError("--complete needs --mesh FILE and --fdp PARTIAL (feature points on it)");
+  if (!wantRig && !complete && !parser.isSet("fdp-image"))
+    throw UsageError(
+        "nothing to do: give -o DIR, --report, --fdp-image, --pose-image or --complete FILE");
   if (parser.isSet("fap") && !parser.isSet("pose-image"))
     throw UsageError("--fap only applies to --pose-image");
   std::optional<rigging::GeodesicMethod> method;
@@ -129,6 +150,14 @@ int run(QCommandLineParser& parser) {
   }
   Warnings warnings;
   rigging::FeaturePointFile fdp = rigging::readFeaturePointFile(fdpPath, &warnings);
+  if (complete) {
+    fdp = completeFeaturePoints(fdp, mesh, &warnings);
+    const std::string out = parser.value("complete").toStdString();
+    saveAtomically(out, rigging::featurePointFileJson(fdp));
+    std::fprintf(stderr, "lacrima-rig: wrote %s (%zu feature points)\n", out.c_str(),
+                 fdp.points.size());
+    fdp = rigging::readFeaturePointFile(out);  // so that messages name the complete file's lines
+  }
   rigging::validateFeaturePoints(fdp, mesh, &warnings);
   for (const std::string& w : rigging::checkSkinTopology(mesh, fdp.skin)) {
     Diagnostic d;
@@ -180,17 +209,8 @@ int run(QCommandLineParser& parser) {
                                std::pair{&fdp.eyeRight, &preview.eyeCentreRight}}) {
         if (spec->centre)
           *out = *spec->centre;
-        else if (!spec->submeshes.empty()) {
-          std::vector<Eigen::Vector3d> pts;
-          for (const std::string& name : spec->submeshes) {
-            const HeadSubmesh& s = *mesh.findSubmesh(name);
-            for (int v = 0; v < s.vertexCount; ++v)
-              pts.push_back(mesh.positions.col(s.firstVertex + v).cast<double>());
-          }
-          Eigen::Matrix3Xd m(3, static_cast<Eigen::Index>(pts.size()));
-          for (std::size_t k = 0; k < pts.size(); ++k) m.col(static_cast<Eigen::Index>(k)) = pts[k];
-          if (const auto sphere = rigging::fitSphere(m)) *out = sphere->centre;
-        }
+        else if (!spec->submeshes.empty())
+          if (const auto sphere = rigging::fitSphere(mesh, spec->submeshes)) *out = sphere->centre;
       }
       preview.neckPivot = fdp.neckPivot.value_or(Eigen::Vector3d::Zero());
       preview.tearLeft.position = preview.tearRight.position = preview.neckPivot;
@@ -246,6 +266,7 @@ int main(int argc, char** argv) {
       "  lacrima-rig --default -o rig/\n"
       "  lacrima-rig --mesh head.obj --fdp head.fdp.json -o rig/ --report > report.json\n"
       "  lacrima-rig --default --fdp-image points.png\n"
+      "  lacrima-rig --mesh head.obj --fdp partial.fdp.json --complete head.fdp.json\n"
       "  lacrima-rig --default --pose-image jaw.png --fap open_jaw=400 --fap 19=1024\n\n"
       "Exit codes: 0 success, 1 bad input or failed write, 2 wrong usage.");
   parser.addHelpOption();
@@ -257,6 +278,11 @@ int main(int argc, char** argv) {
       {{"o", "output"},
        "Write head.mesh, head.material, textures, head.glb and rig.json here.",
        "DIR"},
+      {"complete",
+       "Propose the feature points --fdp lacks (it needs at least 2.10, 3.7, 3.8, 3.11, 3.12, "
+       "8.3, 8.4, 9.3) by carrying the default head's onto --mesh; write the complete file "
+       "here (then rig with it if -o, --report or an image is asked for too).",
+       "FILE"},
       {"geodesics", "Distance for influence falloff: dijkstra (default) or heat.", "METHOD"},
       {"report", "Print FAPU values and per-FAP checks as JSON on stdout."},
       {"fdp-image", "Render the neutral head with its feature points to a PNG.", "PNG"},

@@ -352,7 +352,8 @@ FeaturePointFile readFeaturePointFile(const std::string& path, Warnings* warning
   return out;
 }
 
-void validateFeaturePoints(const FeaturePointFile& file, const HeadMesh& mesh, Warnings* warnings) {
+void validateFeaturePoints(const FeaturePointFile& file, const HeadMesh& mesh, Warnings* warnings,
+                           FeaturePointSet set) {
   Validator v(file, mesh);
   const JsonPath roles = JsonPath() / "submeshes";
   std::map<std::string, std::string> roleOf;  // sub-mesh -> role, to catch a name in two roles
@@ -377,6 +378,10 @@ void validateFeaturePoints(const FeaturePointFile& file, const HeadMesh& mesh, W
   if (file.tearLeft) v.checkPoint(*file.tearLeft, JsonPath() / "tear_sources" / "left");
   if (file.tearRight) v.checkPoint(*file.tearRight, JsonPath() / "tear_sources" / "right");
 
+  if (set == FeaturePointSet::Partial) {
+    v.throwIfErrors();
+    return;
+  }
   for (const std::string& id : fapuFeaturePoints())
     if (!file.points.count(id))
       v.error(points, "missing required feature point " + id + " (it defines a FAPU: expected \"" +

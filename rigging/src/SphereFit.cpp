@@ -24,4 +24,18 @@ std::optional<Sphere> fitSphere(const Eigen::Matrix3Xd& points) {
   return Sphere{mean + x.head<3>(), std::sqrt(r2)};
 }
 
+std::optional<Sphere> fitSphere(const HeadMesh& mesh, const std::vector<std::string>& names) {
+  Eigen::Index count = 0;
+  for (const std::string& name : names) count += mesh.findSubmesh(name)->vertexCount;
+  Eigen::Matrix3Xd points(3, count);
+  Eigen::Index k = 0;
+  for (const std::string& name : names) {
+    const HeadSubmesh& s = *mesh.findSubmesh(name);
+    points.middleCols(k, s.vertexCount) =
+        mesh.positions.middleCols(s.firstVertex, s.vertexCount).cast<double>();
+    k += s.vertexCount;
+  }
+  return fitSphere(points);
+}
+
 }  // namespace lacrima::rigging

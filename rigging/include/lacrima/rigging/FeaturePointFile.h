@@ -113,7 +113,15 @@ FeaturePointFile readFeaturePointFile(const std::string& path, Warnings* warning
 // barycentrics are valid, the required points exist and no sub-mesh has two roles. Throws
 // FileError listing every error, each naming the line, column and JSON path of the feature point
 // (or role) and what was expected; appends named warnings for missing optional points.
-void validateFeaturePoints(const FeaturePointFile& file, const HeadMesh& mesh, Warnings* warnings);
+// A Partial file (the input of proposeFeaturePoints, FeaturePointProposal.h) is checked the same
+// way except that no point is required and missing ones are not warned about.
+enum class FeaturePointSet { Complete, Partial };
+void validateFeaturePoints(const FeaturePointFile& file, const HeadMesh& mesh, Warnings* warnings,
+                           FeaturePointSet set = FeaturePointSet::Complete);
+
+// The file as JSON text in the format above (points by id, in FdpIdLess order), for saving with
+// saveAtomically; readFeaturePointFile reads it back to the same content.
+std::string featurePointFileJson(const FeaturePointFile& file);
 
 // Global vertex indices a point is bound to: one vertex, or the triangle's three corners.
 // Precondition: the point was validated against `mesh`.

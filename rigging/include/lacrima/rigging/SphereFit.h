@@ -6,9 +6,13 @@
 // sense (column-pivoting QR on points centred on their mean, so large offsets cost no
 // precision); the radius is sqrt(k + |c|^2). For points on a sphere this is exact; for an
 // eyeball with a bulging cornea it leans slightly forward, well under a millimetre here.
+#include <lacrima/common/HeadMesh.h>
+
 #include <Eigen/Core>
 
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace lacrima::rigging {
 
@@ -19,5 +23,9 @@ struct Sphere {
 
 // nullopt for fewer than 4 points or points that do not span 3-D space (coplanar).
 std::optional<Sphere> fitSphere(const Eigen::Matrix3Xd& points);
+
+// The sphere through every vertex of the sub-meshes `names` of `mesh` (an eye's); nullopt as
+// above. Precondition: every name is a sub-mesh of `mesh`.
+std::optional<Sphere> fitSphere(const HeadMesh& mesh, const std::vector<std::string>& names);
 
 }  // namespace lacrima::rigging

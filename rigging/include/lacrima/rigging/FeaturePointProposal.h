@@ -1,0 +1,65 @@
+#pragma once
+// Proposing feature points for a new head from a few placed by hand (issue 13): the default
+// head's points carried onto the new head.
+//
+// Given n >= 8 anchors placed on both heads (source a_i on the default head, target b_i on the
+// new one; at least the eye corners 3.7, 3.8, 3.11, 3.12, the nose tip 9.3, the mouth corners
+// 8.3, 8.4 and the chin 2.10; proposeFeaturePoints adds the eye centres when both heads have
+// eyes), every other default point p is carried over in two steps:
+//
+// 1. A similarity (Umeyama 1991, "Least-squares estimation of transformation parameters between
+//    two point patterns"): s, R, t minimising sum |s R a_i + t - b_i|^2, with R from the SVD of
+//    the anchors' cross-covariance (a reflection corrected to a rotation) and s from the
+//    singular values. It absorbs the heads' units and axis conventions: nothing assumes +y up,
+//    the face frame is whatever the anchors say it is.
+// 2. A thin-plate spline (Bookstein 1989; in 3-D the biharmonic kernel U(r) = r) through the
+//    similarity-fitted anchors a'_i = s R a_i + t:
+//      f(x) = x + c + A x + sum_i w_i |x - a'_i|,   f(a'_i) = b_i,   sum_i w_i = 0,
+//      sum_i w_i a'_i^T = 0,
+//    the smoothest (least bending energy) warp that takes every anchor exactly onto its target,
+//    so the proportions of the new face (wider mouth, longer nose) carry to the points between.
+//    The kernel is equivariant under similarities, so the result does not depend on the units
+//    or axes either. Far from the anchors the spline extrapolates their local differences
+//    (on the ICT head, without the eye centres, it put the ears 0.6 ES0 off, the similarity
+//    alone 0.15 ES0), so its correction fades with the distance d to the nearest fitted anchor:
+//      x' = sRp + t,   p' = x' + exp(-(d / r)^2) (f(x') - x'),   r = 0.3 RMS_i |a'_i - mean a'|,
+//    exact at the anchors, the similarity far from them, and still similarity-invariant.
+// The warped point is then snapped to the closest vertex of the part the default point is on
+// (skin to skin, an eye's points to that eye, jaw to jaw, tongue to tongue): a feature point is
+// a vertex of the new head, as a hand-made file names it.
+#include <lacrima/common/Diagnostics.h>
+#include <lacrima/common/HeadMesh.h>
+#include <lacrima/rigging/FeaturePointFile.h>
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace lacrima::rigging {
+
+// The anchors a partial feature-point file must have.
+const std::vector<std::string>& proposalAnchors();
+
+// Steps 1 and 2 above: `points` (3 x m, source frame) carried by the similarity fit and the
+// thin-plate spline through `source` -> `target` (3 x n each, n >= 4 not all in one plane).
+// Throws std::invalid_argument when the sizes differ or the anchors are degenerate.
+Eigen::Matrix3Xd warpPoints(const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target,
+                            const Eigen::Matrix3Xd& points);
+
+// The similarity's scale s alone (target units per source unit), e.g. to carry radii.
+double similarityScale(const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target);
+
+// The partial file `partial` (points placed on `mesh`) completed with every point of `reference`
+// (a complete file on `referenceMesh`, e.g. the default head's) that it lacks. Given points are
+// kept as they are; every given point the reference also has is an anchor of the warp. A
+// reference point whose part the new head lacks (no tongue sub-mesh, say) is left out with a
+// warning. Radii of proposed points are scaled by the similarity's scale. Throws FileError naming
+// `partial.path` and every missing anchor when one of proposalAnchors() is missing.
+// Precondition: `partial` was validated against `mesh` (FeaturePointSet::Partial) and
+// `reference` against `referenceMesh`.
+FeaturePointFile proposeFeaturePoints(const FeaturePointFile& partial, const HeadMesh& mesh,
+                                      const FeaturePointFile& reference,
+                                      const HeadMesh& referenceMesh, Warnings* warnings = nullptr);
+
+}  // namespace lacrima::rigging
