@@ -1,5 +1,7 @@
 // Rig assembly end to end: feature-point files, RigBuilder on the default head and the ICT head,
 // the exported files and the lacrima-rig command.
+#include "TestHeadFiles.h"
+
 #include <lacrima/common/FapTable.h>
 #include <lacrima/common/PoseSet.h>
 #include <lacrima/exporters/GlbExport.h>
@@ -31,14 +33,9 @@
 #include <set>
 
 using namespace lacrima;
+using namespace lacrima::rigtest;
 
 namespace {
-
-const QString kDefaultFdp = QStringLiteral(LACRIMA_SOURCE_DIR "/media/default-head.fdp.json");
-const QString kIctMesh =
-    QStringLiteral(LACRIMA_SHARED_DIR "/heads/ict-facekit/generic_neutral_mesh.obj");
-const QString kIctFdp = QStringLiteral(LACRIMA_SOURCE_DIR "/tests/rigging/ict-facekit.fdp.json");
-const QString kRigTool = QStringLiteral(LACRIMA_BIN_DIR "/lacrima-rig");
 
 void writeFile(const QString& path, const QByteArray& bytes) {
   QFile f(path);
