@@ -52,20 +52,13 @@ const TearSurface& DropCaps::update(const ParticleSet& particles, const UniformG
   onSkin_.clear();
   const auto all = finder_.drops();
   for (std::size_t d = 0; d < all.size(); ++d) {
+    if (!gatherSeeds(particles, all[d])) continue;  // in the air or only on an eye: the mesher's
     SkinDrop drop;
     drop.index = static_cast<int>(d);
-    seeds_.clear();
-    for (int i : finder_.particlesOf(all[d])) {
-      const auto s = static_cast<std::size_t>(i);
-      const int t = particles.contact[s].triangle;
-      if (t >= 0 && t < skin_.triangleCount() && seeds_.size() < kMaxSeeds) seeds_.push_back(t);
-      drop.velocity += particles.velocity[s];
-    }
-    if (seeds_.empty()) continue;  // in the air or only on an eye: the mesher draws it
-    drop.volume = all[d].count * parcelVolume(particleRadius);
+    for (int i : finder_.particlesOf(all[d]))
+      drop.velocity += particles.velocity[static_cast<std::size_t>(i)];
     drop.velocity /= all[d].count;
-    drop.base = skin_.closest(all[d].centre, seeds_);
-    if (drop.base.triangle >= 0) onSkin_.push_back(drop);
+    onSkin_.push_back(drop);
   }
   binDrops(h);
   for (const SkinDrop& drop : onSkin_) {
@@ -75,9 +68,13 @@ const TearSurface& DropCaps::update(const ParticleSet& particles, const UniformG
     if (cap && caps_ >= settings_.maxCaps) continue;  // over the bound: the mesher's
     for (int i : finder_.particlesOf(found)) skipped_[static_cast<std::size_t>(i)] = 1;
     if (!cap) continue;
-    const Eigen::Vector3d normal = skin_.normal(drop.base.triangle);
+    // The skin point under the drop only for the drops drawn: a walk over the skin each.
+    gatherSeeds(particles, found);
+    const SkinAnchor base = skin_.closest(found.centre, seeds_);
+    if (base.triangle < 0) continue;
+    const Eigen::Vector3d normal = skin_.normal(base.triangle);
     if (normal.isZero()) continue;  // a degenerate triangle has no side to sit on
-    addCap(skin_.point(drop.base), normal, drop.volume);
+    addCap(skin_.point(base), normal, found.count * parcelVolume(particleRadius));
   }
   skin_.unbind();
   return mesh_;
@@ -102,6 +99,16 @@ void DropCaps::binDrops(double h) {
     bins_.push_back({cellKey(finder_.drops()[static_cast<std::size_t>(onSkin_[i].index)].centre),
                      static_cast<int>(i)});
   std::sort(bins_.begin(), bins_.end());
+}
+
+// The skin triangles a drop's particles touch (at most kMaxSeeds), into seeds_; false when none.
+bool DropCaps::gatherSeeds(const ParticleSet& particles, const FoundDrop& drop) {
+  seeds_.clear();
+  for (int i : finder_.particlesOf(drop)) {
+    const int t = particles.contact[static_cast<std::size_t>(i)].triangle;
+    if (t >= 0 && t < skin_.triangleCount() && seeds_.size() < kMaxSeeds) seeds_.push_back(t);
+  }
+  return !seeds_.empty();
 }
 
 // A sliding drop leads unless another drop on the skin lies ahead of it, within

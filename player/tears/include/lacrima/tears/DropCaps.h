@@ -76,11 +76,10 @@ class DropCaps {
 
  private:
   struct SkinDrop {
-    int index = 0;  // in the finder's drops
-    double volume = 0;
+    int index = 0;                                       // in the finder's drops
     Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // mean
-    SkinAnchor base;                                     // the skin point under its centre
   };
+  bool gatherSeeds(const ParticleSet& particles, const FoundDrop& drop);
   // The drops on the skin binned by cells of edge followDistance x h, sorted by cell, so the
   // drops ahead of one are looked for in the 27 cells around it, not among all of them.
   struct Binned {
