@@ -15,23 +15,36 @@ namespace lacrima::playback {
 
 namespace {
 
-// Binds the feature points, bakes the poses and builds the blender for `rig->head`.
-void rigHead(HeadRig& rig, const std::string& fdpPath) {
+// Reads the feature-point file at `fdpPath` and rigs `head` with it.
+std::unique_ptr<HeadRig> rigHeadFromFile(HeadMesh head, const std::string& fdpPath) {
   Warnings warnings;
   const rigging::FeaturePointFile fdp = rigging::readFeaturePointFile(fdpPath, &warnings);
-  rigging::validateFeaturePoints(fdp, rig.head, &warnings);
-  rig.rig = rigging::buildRig(rig.head, fdp);
-  for (const Diagnostic& d : warnings) rig.warnings.push_back(d.toString());
-  for (const std::string& w : rig.rig.warnings) rig.warnings.push_back(fdpPath + ": " + w);
-  try {
-    rig.blender = std::make_unique<PoseBlender>(rig.head, rig.rig.poses);
-  } catch (const std::invalid_argument& e) {
-    throw FileError({fdpPath, 0, 0},
-                    std::string("the baked poses do not fit the head: ") + e.what());
-  }
+  auto rig = rigHead(std::move(head), fdp);
+  std::vector<std::string> fileWarnings;
+  for (const Diagnostic& d : warnings) fileWarnings.push_back(d.toString());
+  rig->warnings.insert(rig->warnings.begin(), fileWarnings.begin(), fileWarnings.end());
+  return rig;
 }
 
 }  // namespace
+
+std::unique_ptr<HeadRig> rigHead(HeadMesh head, const rigging::FeaturePointFile& fdp,
+                                 const rigging::RigOptions& options) {
+  auto rig = std::make_unique<HeadRig>();
+  rig->head = std::move(head);
+  Warnings warnings;
+  rigging::validateFeaturePoints(fdp, rig->head, &warnings);
+  rig->rig = rigging::buildRig(rig->head, fdp, options);
+  for (const Diagnostic& d : warnings) rig->warnings.push_back(d.toString());
+  for (const std::string& w : rig->rig.warnings) rig->warnings.push_back(fdp.path + ": " + w);
+  try {
+    rig->blender = std::make_unique<PoseBlender>(rig->head, rig->rig.poses);
+  } catch (const std::invalid_argument& e) {
+    throw FileError({fdp.path, 0, 0},
+                    std::string("the baked poses do not fit the head: ") + e.what());
+  }
+  return rig;
+}
 
 std::unique_ptr<HeadRig> loadDefaultHeadRig() {
   if (!rigging::defaultHeadAvailable())
@@ -39,24 +52,20 @@ std::unique_ptr<HeadRig> loadDefaultHeadRig() {
         {rigging::defaultHeadPackageDir(), 0, 0},
         "the default head is not in the cache; fetch it with packaging/fetch-default-head.sh "
         "(packaging/lacrima.sh does), or bring your own with --mesh FILE --fdp FILE");
-  auto rig = std::make_unique<HeadRig>();
-  rig->head = rigging::loadDefaultHead();
-  rigHead(*rig, findMediaFile("default-head.fdp.json"));
-  return rig;
+  return rigHeadFromFile(rigging::loadDefaultHead(), findMediaFile("default-head.fdp.json"));
 }
 
 std::unique_ptr<HeadRig> loadHeadRig(const std::string& meshPath, const std::string& fdpPath) {
-  auto rig = std::make_unique<HeadRig>();
+  HeadMesh head;
   try {
-    rig->head = rigging::importHeadMesh(meshPath);
+    head = rigging::importHeadMesh(meshPath);
   } catch (const FileError&) {
     throw;
   } catch (const std::runtime_error& e) {
     // importHeadMesh's message already names the file; keep it as the location for dialogs.
     throw FileError({meshPath, 0, 0}, e.what());
   }
-  rigHead(*rig, fdpPath);
-  return rig;
+  return rigHeadFromFile(std::move(head), fdpPath);
 }
 
 namespace {

@@ -31,6 +31,11 @@ struct HeadRig {
 std::unique_ptr<HeadRig> loadDefaultHeadRig();
 // Any mesh assimp reads, with its feature-point file (lacrima-fdp v1). Throws FileError.
 std::unique_ptr<HeadRig> loadHeadRig(const std::string& meshPath, const std::string& fdpPath);
+// A head already in memory with its feature points (the editor's Head workspace rigs what the
+// user placed without writing files): validates `fdp` against `head` (messages name fdp.path),
+// builds the rig and the blender. Throws FileError; `options.progress` reports the stages.
+std::unique_ptr<HeadRig> rigHead(HeadMesh head, const rigging::FeaturePointFile& fdp,
+                                 const rigging::RigOptions& options = {});
 
 // The triangles of every sub-mesh the feature-point file calls skin (rig.roles), by head vertex
 // index: the surface tears run on. For the default head, exactly its "skin" sub-mesh.
