@@ -316,9 +316,9 @@ FeaturePointFile readFeaturePointFile(const std::string& path, Warnings* warning
         r.error(point, "expected an FDP id \"group.index\" with group 2 to 11");
         continue;
       }
-      auto at = r.surfacePoint(point, {"radius", "geodesics"});
+      auto at = r.surfacePoint(point, {"radius", "geodesics", "placed"});
       if (!at) continue;
-      FeaturePointSpec spec{*at, std::nullopt, std::nullopt};
+      FeaturePointSpec spec{*at, std::nullopt, std::nullopt, false};
       if (point.has("radius")) {
         const JsonValue radius = point["radius"];
         if (!radius.isNumber() || !(radius.number() > 0.0))
@@ -327,6 +327,13 @@ FeaturePointFile readFeaturePointFile(const std::string& path, Warnings* warning
           spec.radius = radius.number();
       }
       if (point.has("geodesics")) spec.geodesics = r.method(point["geodesics"]);
+      if (point.has("placed")) {
+        const JsonValue placed = point["placed"];
+        if (placed.isString() && (placed.string() == "hand" || placed.string() == "proposed"))
+          spec.placedByHand = placed.string() == "hand";
+        else
+          r.error(placed, "expected \"hand\" or \"proposed\", got " + placed.describe());
+      }
       out.points.emplace(id, spec);
     }
   }

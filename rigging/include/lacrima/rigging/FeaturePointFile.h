@@ -22,7 +22,8 @@
 //     "points": {                         by FDP id "group.index"
 //       "2.1": { "submesh": "skin", "vertex": 812 },
 //       "2.2": { "submesh": "skin", "triangle": 97, "barycentric": [0.2, 0.3, 0.5] },
-//       "4.3": { "submesh": "skin", "vertex": 17, "radius": 0.25, "geodesics": "heat" }
+//       "4.3": { "submesh": "skin", "vertex": 17, "radius": 0.25, "geodesics": "heat" },
+//       "8.3": { "submesh": "skin", "vertex": 420, "placed": "hand" }
 //     },
 //     "eyes": {                           optional; a missing centre is fitted (see below)
 //       "left": { "centre": [0.308, 7.284, 1.236] }, "right": { ... }
@@ -36,7 +37,10 @@
 // A point is "vertex i of sub-mesh S" (global index S.firstVertex + i) or a point inside
 // triangle t of S (local triangle index) with barycentric weights of its three corners, each in
 // [0, 1] and summing to 1 within 1e-4. "radius" (model units, > 0) overrides the influence
-// radius from InfluenceRadius.h; "geodesics" overrides the file's default method.
+// radius from InfluenceRadius.h; "geodesics" overrides the file's default method. "placed"
+// ("hand" or "proposed", default "proposed") records how the editor's Head workspace got the
+// point: the user placed it, or proposeFeaturePoints carried it over (re-proposing keeps the
+// hand ones). The rig ignores it.
 //
 // Required points: the FAPU-defining ones (3.1-3.6, 9.15, 2.2, 8.3, 8.4); a missing one is an
 // error. The other points moved by FAPs 3-68 are optional: a missing one is a named warning
@@ -79,6 +83,7 @@ struct FeaturePointSpec {
   SurfacePoint at;
   std::optional<double> radius;
   std::optional<GeodesicMethod> geodesics;
+  bool placedByHand = false;  // "placed": "hand"
 };
 
 struct EyeSpec {
