@@ -1,7 +1,9 @@
 // Rig checks (RigChecks.h): the default head passes with no Error, and each check fires, with
-// its figures, on a deliberately broken feature-point file.
+// its figures, on a deliberately broken feature-point file; lacrima-rig --check prints them and
+// exits 1 on an Error.
 #include "TestHeadFiles.h"
 
+#include <lacrima/common/AtomicSave.h>
 #include <lacrima/common/FapTable.h>
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/rigging/FeaturePointFile.h>
@@ -10,6 +12,8 @@
 
 #include <Eigen/Geometry>
 
+#include <QDir>
+#include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -245,6 +249,29 @@ class RigChecksTest : public QObject {
     };
     QVERIFY(!layout(before).empty());
     QCOMPARE(layout(after), layout(before));
+  }
+
+  // lacrima-rig --check: one line per check, exit 0 without Error, 1 with one.
+  void commandLineCheck() {
+    REQUIRE_DEFAULT_HEAD();
+    QProcess good;
+    good.start(kRigTool, {"--default", "--check"});
+    QVERIFY(good.waitForFinished(120000));
+    const QString goodOut = QString::fromUtf8(good.readAllStandardOutput());
+    QVERIFY2(good.exitCode() == 0, qPrintable(goodOut + good.readAllStandardError()));
+    QCOMPARE(goodOut.count('\n'), static_cast<qsizetype>(checks_.size()) + 1);  // + summary
+
+    rigging::FeaturePointFile fdp = *fdp_;
+    fdp.points["2.3"].at = {"eye_l", 0, -1, Eigen::Vector3d::Zero()};
+    const QString broken = QDir(tmp_.path()).filePath("broken.fdp.json");
+    saveAtomically(broken.toStdString(), rigging::featurePointFileJson(fdp));
+    QProcess bad;
+    bad.start(kRigTool, {"--default", "--fdp", broken, "--check"});
+    QVERIFY(bad.waitForFinished(120000));
+    const QString badOut = QString::fromUtf8(bad.readAllStandardOutput());
+    QVERIFY2(bad.exitCode() == 1, qPrintable(badOut + bad.readAllStandardError()));
+    QVERIFY2(badOut.contains("error: wrong-part (2.3): feature point 2.3 belongs on the skin"),
+             qPrintable(badOut));
   }
 };
 
