@@ -16,6 +16,7 @@
 #include <lacrima/rigging/FeaturePointProposal.h>
 #include <lacrima/rigging/MeshImport.h>
 #include <lacrima/rigging/RigBuilder.h>
+#include <lacrima/rigging/RigChecks.h>
 #include <lacrima/rigging/RigDescription.h>
 #include <lacrima/rigging/SkinTopology.h>
 #include <lacrima/rigging/SphereFit.h>
@@ -108,14 +109,15 @@ int run(QCommandLineParser& parser) {
     throw UsageError("choose the head: --default, or --mesh FILE with --fdp FILE");
   if (parser.isSet("mesh") && !parser.isSet("fdp"))
     throw UsageError("--mesh needs --fdp FILE (its feature points)");
-  const bool wantRig =
-      parser.isSet("output") || parser.isSet("report") || parser.isSet("pose-image");
+  const bool wantRig = parser.isSet("output") || parser.isSet("report") ||
+                       parser.isSet("pose-image") || parser.isSet("check");
   const bool complete = parser.isSet("complete");
   if (complete && !parser.isSet("mesh"))
     throw UsageError("--complete needs --mesh FILE and --fdp PARTIAL (feature points on it)");
   if (!wantRig && !complete && !parser.isSet("fdp-image"))
     throw UsageError(
-        "nothing to do: give -o DIR, --report, --fdp-image, --pose-image or --complete FILE");
+        "nothing to do: give -o DIR, --report, --check, --fdp-image, --pose-image or --complete "
+        "FILE");
   if (parser.isSet("fap") && !parser.isSet("pose-image"))
     throw UsageError("--fap only applies to --pose-image");
   std::optional<rigging::GeodesicMethod> method;
@@ -246,6 +248,17 @@ int run(QCommandLineParser& parser) {
                                          previewStyle(mesh, fdp, panelSize)),
             parser.value("pose-image").toStdString());
   }
+  if (parser.isSet("check")) {  // RigChecks.h: one line per check, exit 1 on an Error
+    const std::vector<rigging::RigCheck> checks = rigging::checkRig(mesh, fdp, *rig);
+    int errors = 0;
+    for (const rigging::RigCheck& c : checks) {
+      std::printf("%s\n", rigging::toString(c).c_str());
+      errors += c.severity == rigging::RigCheck::Severity::Error;
+    }
+    std::printf("%zu checks: %d errors, %zu warnings\n", checks.size(), errors,
+                checks.size() - static_cast<std::size_t>(errors));
+    if (errors > 0) return kExitBadInput;
+  }
   return kExitOk;
 }
 
@@ -285,6 +298,9 @@ int main(int argc, char** argv) {
        "FILE"},
       {"geodesics", "Distance for influence falloff: dijkstra (default) or heat.", "METHOD"},
       {"report", "Print FAPU values and per-FAP checks as JSON on stdout."},
+      {"check",
+       "Print the rig checks (points on the wrong part, asymmetry, zero FAPU, joined "
+       "lips, poses that move nothing), one a line; exit 1 when one is an error."},
       {"fdp-image", "Render the neutral head with its feature points to a PNG.", "PNG"},
       {"pose-image", "Render the posed head (see --fap) with its feature points to a PNG.", "PNG"},
       {"fap", "A FAP value for --pose-image, e.g. 3=400 or open_jaw=400 (repeatable).",
