@@ -49,6 +49,16 @@ struct FaceViewport::State {
   QPoint lastMouse;
   Qt::MouseButton dragButton = Qt::NoButton;
 
+  // What the scene is told once it exists (and again whenever it is re-created).
+  std::vector<Marker> markers;
+  Eigen::Matrix3d frame = Eigen::Matrix3d::Identity();
+  // Picking: the positions of the last frame shown (copied: the frame's pointers expire), built
+  // into a hierarchy on the first pick and refitted on the first pick after a new frame.
+  std::vector<bool> pickable;
+  Eigen::Matrix3Xf shownPositions;  // 3 x 0: the neutral positions are shown
+  mutable std::unique_ptr<HeadPicker> picker;
+  mutable bool pickerStale = false;
+
   void destroyWindow() {
     if (window && runtime) runtime->root().destroyRenderTarget(window);
     window = nullptr;
@@ -114,7 +124,11 @@ bool FaceViewport::ensureScene() {
   try {
     s.runtime = scene::OgreRuntime::acquire();
     s.scene = std::make_unique<scene::FaceScene>(s.runtime);
-    if (s.head) s.scene->setHead(*s.head);
+    if (s.head) {
+      s.scene->setHead(*s.head);
+      s.scene->setViewFrame(s.frame);
+    }
+    s.scene->setMarkers(s.markers);
     return true;
   } catch (const std::exception& e) {
     showMessage(tr("3-D preview unavailable: %1").arg(QString::fromStdString(e.what())));
@@ -148,6 +162,9 @@ void FaceViewport::setHead(const HeadMesh& neutral) {
   State& s = *state_;
   s.head = &neutral;
   s.shownRevision.reset();
+  s.frame = Eigen::Matrix3d::Identity();
+  s.shownPositions.resize(3, 0);
+  s.picker.reset();
   if (!s.ogre || !ensureScene()) return;
   s.scene->setHead(neutral);
   requestRender();
@@ -162,12 +179,72 @@ void FaceViewport::showFrame(const playback::FrameView& view) {
   // Upload now: the frame's pointers are only valid until the producer's next frame.
   s.scene->show(view);
   s.shownRevision = view.revision;
+  if (view.positions && s.head && view.positions->cols() == s.head->vertexCount()) {
+    s.shownPositions = *view.positions;
+    s.pickerStale = true;
+  } else if (s.shownPositions.cols() > 0) {
+    s.shownPositions.resize(3, 0);
+    s.pickerStale = true;
+  }
   requestRender();
 }
 
 void FaceViewport::resetView() {
   if (!state_->scene) return;
   state_->scene->resetView();
+  requestRender();
+}
+
+void FaceViewport::setViewFrame(const Eigen::Matrix3d& faceToHead) {
+  State& s = *state_;
+  s.frame = scene::faceFrameRotation(faceToHead);
+  if (!s.scene) return;
+  s.scene->setViewFrame(s.frame);
+  requestRender();
+}
+
+Eigen::Matrix3d FaceViewport::viewFrame() const { return state_->frame; }
+
+std::optional<QPointF> FaceViewport::project(const Eigen::Vector3d& point) const {
+  const State& s = *state_;
+  if (!s.scene || !s.scene->head()) return std::nullopt;
+  const QPointF pixel = s.scene->project(point, size());
+  if (!std::isfinite(pixel.x()) || !std::isfinite(pixel.y())) return std::nullopt;
+  return pixel;
+}
+
+std::optional<Ray> FaceViewport::rayAt(QPointF pixel) const {
+  const State& s = *state_;
+  if (!s.scene) return std::nullopt;
+  return s.scene->rayAt(pixel, size());
+}
+
+std::optional<SurfaceHit> FaceViewport::pick(QPointF pixel) const {
+  const State& s = *state_;
+  if (!s.head || s.head->triangleCount() == 0) return std::nullopt;
+  const auto ray = rayAt(pixel);
+  if (!ray) return std::nullopt;
+  if (!s.picker) {
+    s.picker = std::make_unique<HeadPicker>(*s.head, s.pickable);
+    s.pickerStale = s.shownPositions.cols() > 0;
+  }
+  if (s.pickerStale) {
+    s.picker->setPositions(s.shownPositions.cols() > 0 ? s.shownPositions : s.head->positions);
+    s.pickerStale = false;
+  }
+  return s.picker->pick(*ray);
+}
+
+void FaceViewport::setPickableSubmeshes(std::vector<bool> pickable) {
+  state_->pickable = std::move(pickable);
+  state_->picker.reset();
+}
+
+void FaceViewport::setMarkers(std::vector<Marker> markers) {
+  State& s = *state_;
+  s.markers = std::move(markers);
+  if (!s.scene) return;
+  s.scene->setMarkers(s.markers);
   requestRender();
 }
 
