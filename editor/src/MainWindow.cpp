@@ -12,6 +12,7 @@
 #include <lacrima/editor/SliderPanel.h>
 #include <lacrima/editor/TimelineWidget.h>
 #include <lacrima/editor/TransportBar.h>
+#include <lacrima/editor/head/HeadWorkspace.h>
 #include <lacrima/viewport/EffectsPanel.h>
 
 #include <QApplication>
@@ -29,7 +30,9 @@
 #include <QMessageBox>
 #include <QPainter>
 #include <QSettings>
+#include <QStackedWidget>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QTimer>
 #include <QToolBar>
 #include <QUndoView>
@@ -101,6 +104,23 @@ MainWindow::~MainWindow() {
   for (QDockWidget* dock : docks) delete dock;
 }
 
+void MainWindow::setWorkspace(Workspace workspace) {
+  workspaceStack_->setCurrentIndex(static_cast<int>(workspace));
+  const QSignalBlocker block(workspaces_);
+  workspaces_->setCurrentIndex(static_cast<int>(workspace));
+  // Ctrl+Z undoes head edits while the Head workspace is shown (its own undo actions).
+  const bool head = workspace == Workspace::Head;
+  action(QStringLiteral("edit.undo"))->setShortcut(head ? QKeySequence() : QKeySequence::Undo);
+  action(QStringLiteral("edit.redo"))
+      ->setShortcuts(head ? QList<QKeySequence>()
+                          : QList<QKeySequence>{QKeySequence(QStringLiteral("Ctrl+Shift+Z")),
+                                                QKeySequence(QStringLiteral("Ctrl+Y"))});
+}
+
+MainWindow::Workspace MainWindow::workspace() const {
+  return static_cast<Workspace>(workspaceStack_->currentIndex());
+}
+
 QAction* MainWindow::action(const QString& name) const { return findChild<QAction*>(name); }
 
 void MainWindow::createDocks() {
@@ -126,7 +146,25 @@ void MainWindow::createDocks() {
   preview_ = new PreviewPanel(*model_, *clock_, centre);
   centreLayout->addWidget(banner_);
   centreLayout->addWidget(preview_, 1);
-  setCentralWidget(centre);
+  // Over the centre: Animate (the preview) | Head (import and rig your own head, issue 13).
+  auto* workspaces = new QWidget(this);
+  auto* workspacesLayout = new QVBoxLayout(workspaces);
+  workspacesLayout->setContentsMargins(0, 0, 0, 0);
+  workspacesLayout->setSpacing(0);
+  workspaces_ = new QTabBar(workspaces);
+  workspaces_->setObjectName(QStringLiteral("workspaces"));
+  workspaces_->addTab(tr("Animate"));
+  workspaces_->addTab(tr("Head"));
+  workspaceStack_ = new QStackedWidget(workspaces);
+  workspaceStack_->addWidget(centre);
+  headWorkspace_ = new head::HeadWorkspace(*model_, workspaceStack_);
+  headWorkspace_->setInteractive(options_.interactive);
+  workspaceStack_->addWidget(headWorkspace_);
+  workspacesLayout->addWidget(workspaces_);
+  workspacesLayout->addWidget(workspaceStack_, 1);
+  setCentralWidget(workspaces);
+  connect(workspaces_, &QTabBar::currentChanged, this,
+          [this](int index) { setWorkspace(static_cast<Workspace>(index)); });
   connect(banner_, &RecoveryBanner::restoreRequested, this, &MainWindow::restoreRecovery);
   connect(banner_, &RecoveryBanner::discardRequested, this, &MainWindow::discardRecovery);
 
@@ -345,6 +383,14 @@ void MainWindow::createMenus() {
         sliders_->filterBox()->setFocus();
         sliders_->filterBox()->selectAll();
       });
+  viewMenu_->addSeparator();
+  connect(addAction(viewMenu_, QStringLiteral("view.animate"), tr("&Animate workspace"),
+                    QKeySequence(QStringLiteral("Ctrl+1"))),
+          &QAction::triggered, this, [this] { setWorkspace(Workspace::Animate); });
+  connect(addAction(viewMenu_, QStringLiteral("view.head"), tr("&Head workspace"),
+                    QKeySequence(QStringLiteral("Ctrl+2")),
+                    tr("Import your own head, place its feature points and rig it")),
+          &QAction::triggered, this, [this] { setWorkspace(Workspace::Head); });
   viewMenu_->addSeparator();
   for (QDockWidget* d : findChildren<QDockWidget*>()) viewMenu_->addAction(d->toggleViewAction());
 

@@ -21,6 +21,8 @@
 
 class QLabel;
 class QMenu;
+class QStackedWidget;
+class QTabBar;
 class QTimer;
 class QUndoView;
 
@@ -32,6 +34,9 @@ class RecoveryStore;
 
 namespace lacrima::editor {
 
+namespace head {
+class HeadWorkspace;
+}
 class KeyListPanel;
 class PresetPanel;
 class PreviewPanel;
@@ -65,6 +70,11 @@ class MainWindow : public QMainWindow {
   PreviewPanel* preview() const { return preview_; }
   KeyListPanel* keyList() const { return keyList_; }
   RecoveryBanner* recoveryBanner() const { return banner_; }
+  // The workspaces over the central area: Animate (the preview) and Head (bring your own head).
+  enum class Workspace { Animate, Head };
+  head::HeadWorkspace* headWorkspace() const { return headWorkspace_; }
+  void setWorkspace(Workspace workspace);
+  Workspace workspace() const;
   editing::RecoveryStore& recovery() { return *recovery_; }
   // Actions by object name ("file.save", "key.add", ...), for tests and the shortcut list.
   QAction* action(const QString& name) const;
@@ -128,6 +138,9 @@ class MainWindow : public QMainWindow {
   PreviewPanel* preview_ = nullptr;
   KeyListPanel* keyList_ = nullptr;
   RecoveryBanner* banner_ = nullptr;
+  head::HeadWorkspace* headWorkspace_ = nullptr;
+  QTabBar* workspaces_ = nullptr;
+  QStackedWidget* workspaceStack_ = nullptr;
   QUndoView* history_ = nullptr;
   QMenu* recentMenu_ = nullptr;
   QMenu* viewMenu_ = nullptr;

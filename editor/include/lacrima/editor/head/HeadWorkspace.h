@@ -1,0 +1,174 @@
+#pragma once
+// The Head workspace (issue 13): bring your own head. Import a mesh, say what each part is,
+// click the 8 anchors on it, let the rest be proposed, drag what is off, and watch the rigged
+// head follow the editor's FAP sliders; then save the feature points and use the head in the
+// project.
+//
+// Layout: a tool bar (Import..., Open points..., Propose, Save..., Use in project, the rig's
+// progress and status), the face viewport in the middle, and on the right the parts table, the
+// point list, the reference picture of the current point and the rig checks.
+//
+// Mouse on the viewport: a click (press and release within a few pixels) places the current
+// point where it hits the head, then selects the next anchor still missing; pressing on a
+// marker and dragging moves that point (snapped to its part's surface when released, one undo
+// step); every other drag orbits, pans or zooms as in the preview. Markers: hand points green,
+// proposed ones blue, the current point yellow and ringed.
+//
+// Nothing blocks the window: the import (assimp), the proposal and the rig run on worker
+// threads; an edit restarts the rig after a short pause (rigDelay), with progress, and a newer
+// edit supersedes a rig still running (RigJob.h). Once rigged, the viewport shows the head posed
+// by the editor model's current FAP values, so the slider panel deforms it at once.
+//
+// Every action exists without dialogs (importHead, proposePoints, saveTo, openPoints) for
+// tests; failures go to lastError() and the status line and leave the workspace as it was.
+#include <lacrima/common/HeadMesh.h>
+#include <lacrima/rigging/RigChecks.h>
+
+#include <Eigen/Core>
+#include <QPointF>
+#include <QString>
+#include <QWidget>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class QLabel;
+class QProgressBar;
+class QTableView;
+class QListWidget;
+class QTimer;
+class QToolButton;
+
+namespace lacrima::editing {
+class EditorModel;
+class HeadSetup;
+struct ProposalReference;
+}  // namespace lacrima::editing
+namespace lacrima::playback {
+struct HeadRig;
+class FrameProducer;
+}  // namespace lacrima::playback
+namespace lacrima::viewport {
+class FaceViewport;
+}
+
+namespace lacrima::editor {
+class RigJob;
+}
+
+namespace lacrima::editor::head {
+
+class PartsTableModel;
+class PointListModel;
+
+class HeadWorkspace : public QWidget {
+  Q_OBJECT
+ public:
+  explicit HeadWorkspace(editing::EditorModel& model, QWidget* parent = nullptr);
+  ~HeadWorkspace() override;
+
+  editing::HeadSetup& setup() { return *setup_; }
+  viewport::FaceViewport* viewport() const { return viewport_; }
+  QTableView* partsView() const { return partsView_; }
+  QTableView* pointsView() const { return pointsView_; }
+  QListWidget* checksView() const { return checksView_; }
+
+  // --- actions (no dialogs) ---------------------------------------------------------------
+  // Reads the mesh on a worker thread; importFinished(ok) tells how it went. On failure the
+  // workspace keeps the head it had.
+  void importHead(const QString& path);
+  // Proposes every point not placed by hand, on a worker thread; proposalFinished(ok).
+  void proposePoints();
+  bool saveTo(const QString& path);
+  bool openPoints(const QString& path);
+  // Saves when needed (asks for a path when interactive) and asks the window to use the head.
+  void useInProject();
+
+  std::string currentPoint() const { return current_; }
+  void setCurrentPoint(const std::string& id);
+
+  // The rig of the newest finished job (null before the first, or after an edit that made the
+  // points unrigable), and its checks.
+  const playback::HeadRig* rig() const { return rig_.get(); }
+  const std::vector<rigging::RigCheck>& checks() const { return checks_; }
+  bool rigging() const;
+  // How long the workspace waits after an edit before rigging again.
+  void setRigDelay(int milliseconds);
+
+  QString lastError() const { return lastError_; }
+  QString statusText() const;
+  void setInteractive(bool on) { interactive_ = on; }
+
+  // Re-poses the rigged head with the model's current values (the sliders call this).
+  void pose();
+
+ signals:
+  void importFinished(bool ok);
+  void proposalFinished(bool ok);
+  void rigFinished();
+  void rigFailed(const QString& message);
+  void statusChanged(const QString& text);
+  // The saved head, for MainWindow::setHead.
+  void useInProjectRequested(const QString& meshPath, const QString& fdpPath);
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
+ private:
+  QWidget* createToolBar();
+  QWidget* createSidePanel();
+  void onMeshChanged();
+  void onDocumentEdited();
+  void startRig();
+  void onRigFinished(std::shared_ptr<playback::HeadRig> rig);
+  void updateMarkers();
+  void updateReference();
+  void updateChecks();
+  void updatePickable();
+  void setStatus(const QString& text);
+  void fail(const QString& what, const QString& message);
+  void selectNextMissingAnchor();
+  // The head point under a widget pixel as a spot on the neutral mesh (via the viewport).
+  bool clickPlaces(QPointF pixel);
+  std::string markerAt(QPointF pixel) const;
+  Eigen::Vector3d shownPosition(const std::string& id) const;
+
+  editing::EditorModel& model_;
+  std::unique_ptr<editing::HeadSetup> setup_;
+  std::shared_ptr<const editing::ProposalReference> reference_;
+  std::shared_ptr<const HeadMesh> shownMesh_;  // what the viewport's setHead was given
+  std::shared_ptr<playback::HeadRig> rig_;
+  std::unique_ptr<playback::FrameProducer> producer_;
+  const Eigen::Matrix3Xf* shownPositions_ = nullptr;  // the producer's last frame, or null
+  std::vector<rigging::RigCheck> checks_;
+  std::shared_ptr<std::vector<rigging::RigCheck>> pendingChecks_;
+
+  viewport::FaceViewport* viewport_ = nullptr;
+  PartsTableModel* parts_ = nullptr;
+  PointListModel* pointList_ = nullptr;
+  QTableView* partsView_ = nullptr;
+  QTableView* pointsView_ = nullptr;
+  QListWidget* checksView_ = nullptr;
+  QLabel* referencePicture_ = nullptr;
+  QLabel* referenceText_ = nullptr;
+  QLabel* status_ = nullptr;
+  QProgressBar* progress_ = nullptr;
+  QToolButton* proposeButton_ = nullptr;
+  QToolButton* saveButton_ = nullptr;
+  QToolButton* useButton_ = nullptr;
+  QTimer* rigDelay_ = nullptr;
+  RigJob* rigJob_ = nullptr;
+
+  std::string current_;
+  std::string dragged_;  // the point whose marker is being dragged
+  QPointF pressAt_;
+  bool pressed_ = false;
+  bool importing_ = false;
+  bool proposing_ = false;
+  bool interactive_ = true;
+  QString lastError_;
+  QString statusText_;
+};
+
+}  // namespace lacrima::editor::head
