@@ -10,6 +10,7 @@
 
 #include <QFileInfo>
 
+#include <algorithm>
 #include <stdexcept>
 #include <utility>
 
@@ -122,16 +123,25 @@ void HeadSetup::placePoint(const std::string& id, const SurfaceSpot& spot) {
       spot.triangle >=
           static_cast<int>(parts[static_cast<std::size_t>(spot.submesh)].triangles.size()))
     throw std::invalid_argument("feature point " + id + ": the spot is not on the head");
-  const HeadSubmesh& part = parts[static_cast<std::size_t>(spot.submesh)];
+  SurfaceSpot on = spot;
+  if (belongsOnSkin(id) && roles_[static_cast<std::size_t>(spot.submesh)] != PartRole::Skin) {
+    const Eigen::Vector3i& tri = parts[static_cast<std::size_t>(spot.submesh)]
+                                     .triangles[static_cast<std::size_t>(spot.triangle)];
+    Eigen::Vector3d picked = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k)
+      picked += spot.barycentric[k] * mesh_->positions.col(tri[k]).cast<double>();
+    if (const auto skin = snapToRole(picked, PartRole::Skin)) on = *skin;
+  }
+  const HeadSubmesh& part = parts[static_cast<std::size_t>(on.submesh)];
   rigging::SurfacePoint at;
   at.submesh = part.name;
   Eigen::Index corner = 0;
   // A click on a corner names the vertex, as hand-made files do; elsewhere the spot itself.
-  if (spot.barycentric.maxCoeff(&corner) >= 1.0 - 1e-3) {
-    at.vertex = part.triangles[static_cast<std::size_t>(spot.triangle)][corner] - part.firstVertex;
+  if (on.barycentric.maxCoeff(&corner) >= 1.0 - 1e-3) {
+    at.vertex = part.triangles[static_cast<std::size_t>(on.triangle)][corner] - part.firstVertex;
   } else {
-    at.triangle = spot.triangle;
-    const Eigen::Vector3d b = spot.barycentric.cwiseMax(0.0);
+    at.triangle = on.triangle;
+    const Eigen::Vector3d b = on.barycentric.cwiseMax(0.0);
     at.barycentric = b / b.sum();
   }
   PlacedPoint placed;
@@ -183,6 +193,12 @@ void HeadSetup::movePoint(const std::string& id, const Eigen::Vector3d& target) 
   moved.spec.placedByHand = true;
   undo_.push(
       new SetPointCommand(*this, id, old, moved, tr("Move %1").arg(QString::fromStdString(id))));
+}
+
+bool HeadSetup::belongsOnSkin(const std::string& id) {
+  static const std::vector<std::string> elsewhere{"3.5", "3.6", "9.8", "9.9", "9.10", "9.11"};
+  return id.rfind("6.", 0) != 0 &&
+         std::find(elsewhere.begin(), elsewhere.end(), id) == elsewhere.end();
 }
 
 void HeadSetup::removePoint(const std::string& id) {

@@ -563,9 +563,11 @@ void HeadWorkspace::updateMarkers() {
 
 void HeadWorkspace::updatePickable() {
   if (!setup_->hasMesh()) return;
+  // Feature points sit on the skin, eyes, teeth and tongue: clicks go through lashes and tear
+  // films (which lie over the eye corners) and through ignored parts.
   std::vector<bool> pickable;
   for (editing::PartRole role : setup_->roles())
-    pickable.push_back(role != editing::PartRole::Ignored);
+    pickable.push_back(role != editing::PartRole::Ignored && role != editing::PartRole::Attached);
   viewport_->setPickableSubmeshes(std::move(pickable));
 }
 

@@ -85,13 +85,18 @@ class HeadSetup : public QObject {
   const PlacedPoint* point(const std::string& id) const;
   std::optional<Eigen::Vector3d> position(const std::string& id) const;
   // Places `id` by hand at `spot` (a corner within 1e-3 of weight 1 becomes that vertex).
-  // Throws std::invalid_argument for a spot outside the mesh.
+  // A point that belongs on the skin (every one but the pupils 3.5/3.6, the teeth's 9.8-9.11
+  // and the tongue's 6.x) picked on another part (the eyeball shows in front of the eye
+  // corners, lashes over the lids) goes to the closest skin point instead. Throws
+  // std::invalid_argument for a spot outside the mesh.
   void placePoint(const std::string& id, const SurfaceSpot& spot);
   // Moves `id` by hand to the closest point to `target` on the parts with the role of the
   // sub-mesh it is on (a skin point stays on the skin, an eye point on its eye). No-op for an
   // unknown id.
   void movePoint(const std::string& id, const Eigen::Vector3d& target);
   void removePoint(const std::string& id);
+  // Whether the FDP table puts `id` on the skin (see placePoint).
+  static bool belongsOnSkin(const std::string& id);
   // The closest spot to `target` on every sub-mesh whose role is `role`; nullopt when none has
   // triangles.
   std::optional<SurfaceSpot> snapToRole(const Eigen::Vector3d& target, PartRole role) const;

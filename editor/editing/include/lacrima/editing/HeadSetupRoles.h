@@ -11,7 +11,8 @@
 //   Attached                -> attached    ride on the skin (lashes, brows, tear films)
 //   TeethUpper, Rigid,
 //   Ignored                 -> (unlisted)  follow the head rotation only
-// Ignored parts are also left out of picking: a click goes through them to the head.
+// The Head workspace leaves attached and ignored parts out of picking: a click goes through
+// lashes and tear films (which lie over the eye corners) to the skin or eye below.
 #include <lacrima/common/HeadMesh.h>
 
 #include <array>
