@@ -12,6 +12,7 @@ int runPoses(int argc, char** argv);
 int runTearsSweep(int argc, char** argv);
 int runEditor(int argc, char** argv);
 int runPlayer(int argc, char** argv);
+int runPick(int argc, char** argv);
 }  // namespace lacrima::bench
 
 namespace {
@@ -42,6 +43,8 @@ const Subcommand kSubcommands[] = {
     {"player",
      "the whole player (playback + OGRE render) on the demo at 1280x720: fps, stage shares",
      lacrima::bench::runPlayer},
+    {"pick", "picking a head under the mouse (Head workspace): hierarchy build, refit, one ray",
+     lacrima::bench::runPick},
 };
 
 void printUsage(FILE* out) {
