@@ -302,9 +302,13 @@ void PreviewPanel::step(double dt) {
   const auto& view = state_->producer->produce(model_.currentValues(), dt, progress);
   lastProduceMs_ = timer.nsecsElapsed() / 1e6;
   state_->viewport->showFrame(view);
-  setStatus(tr("%1 particles · %2 ms")
-                .arg(state_->producer->particleCount())
-                .arg(lastProduceMs_, 0, 'f', 1));
+  QString text = tr("%1 particles · %2 ms")
+                     .arg(state_->producer->particleCount())
+                     .arg(lastProduceMs_, 0, 'f', 1);
+  // The rig's warnings stay in view (listed in the tooltip) once the figures take the line.
+  if (const auto count = static_cast<int>(state_->rig->warnings.size()); count > 0)
+    text += tr(" · %n rig warning(s)", nullptr, count);
+  setStatus(text);
 }
 
 void PreviewPanel::onValuesChanged() {
