@@ -2,6 +2,8 @@
 
 #include <lacrima/common/Diagnostics.h>
 
+#include <Eigen/Geometry>
+
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -90,12 +92,54 @@ std::string uniqueName(const std::string& base, std::set<std::string>& used) {
   return name;
 }
 
+// What a head file must hold, for the messages of files that do not.
+constexpr const char* kExpected =
+    "expected a mesh with faces (triangles or polygons), as a head exported from a modeller has";
+
+// "12 vertices, 3 lines and 2 points", from the meshes of a scene assimp read without
+// validating it (validation refuses scenes without faces, with a message about aiScene fields).
+std::string describeContent(const aiScene& scene) {
+  std::size_t vertices = 0, points = 0, lines = 0, polygons = 0;
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+    const aiMesh* mesh = scene.mMeshes[m];
+    if (!mesh) continue;
+    vertices += mesh->mNumVertices;
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+      const unsigned n = mesh->mFaces[f].mNumIndices;
+      (n == 1 ? points : n == 2 ? lines : polygons) += 1;
+    }
+  }
+  if (scene.mNumMeshes == 0) return "no mesh at all";
+  auto count = [](std::size_t n, const char* what) {
+    return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+  };
+  std::string out = std::to_string(vertices) + (vertices == 1 ? " vertex" : " vertices");
+  if (polygons > 0) out += ", " + count(polygons, "face");
+  if (lines > 0) out += ", " + count(lines, "line");
+  if (points > 0) out += ", " + count(points, "point");
+  return out + (polygons == 0 ? " and no face" : "");
+}
+
+// Whether any triangle has an area: a mesh of zero-area triangles only (every face a line or a
+// point in disguise) has no surface to rig.
+bool hasArea(const HeadMesh& head) {
+  for (const HeadSubmesh& s : head.submeshes)
+    for (const Eigen::Vector3i& t : s.triangles) {
+      const Eigen::Vector3f a = head.positions.col(t[0]), b = head.positions.col(t[1]),
+                            c = head.positions.col(t[2]);
+      if ((b - a).cross(c - a).squaredNorm() > 0.0f) return true;
+    }
+  return false;
+}
+
 }  // namespace
 
 HeadMesh importHeadMesh(const std::string& path) {
   std::error_code error;
   if (!fs::exists(path, error)) fail(path, "no such file");
   if (!fs::is_regular_file(path, error)) fail(path, "not a regular file");
+  if (fs::file_size(path, error) == 0 && !error)
+    fail(path, std::string("the file is empty; ") + kExpected);
 
   Assimp::Importer importer;
   // JoinIdenticalVertices merges the OBJ reader's per-corner copies (same position, uv and
@@ -104,7 +148,15 @@ HeadMesh importHeadMesh(const std::string& path) {
   const aiScene* scene =
       importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
                                   aiProcess_ValidateDataStructure);
-  if (!scene) fail(path, std::string("assimp cannot read it: ") + importer.GetErrorString());
+  if (!scene) {
+    const std::string why = importer.GetErrorString();
+    // Read again unvalidated: if that works, the file is readable but has nothing to rig (no
+    // faces), which deserves a plain message rather than assimp's validation text.
+    Assimp::Importer raw;
+    if (const aiScene* unvalidated = raw.ReadFile(path, 0))
+      fail(path, "no faces in it (" + describeContent(*unvalidated) + "); " + kExpected);
+    fail(path, "assimp cannot read it: " + why);
+  }
   if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode)
     fail(path, "assimp read an incomplete scene (no mesh data)");
 
@@ -164,7 +216,10 @@ HeadMesh importHeadMesh(const std::string& path) {
     head.submeshes.push_back(std::move(sub));
   }
   if (head.triangleCount() == 0)
-    fail(path, "no triangles in it (no meshes, or only points and lines)");
+    fail(path, "no triangles in it (" + describeContent(*scene) + "); " + kExpected);
+  if (!hasArea(head))
+    fail(path, "every one of its " + std::to_string(head.triangleCount()) +
+                   " triangles has zero area (no surface); " + kExpected);
   head.computeNormals();
   return head;
 }

@@ -11,16 +11,20 @@
 #include <algorithm>
 #include <limits>
 #include <memory>
+#include <set>
 #include <stdexcept>
 
 namespace lacrima::rigging {
 namespace {
 
+// The vertices of the named sub-meshes (a name the mesh lacks contributes none: validation
+// reports it, and an eye made only of missing sub-meshes is then an absent eye).
 std::vector<int> verticesOf(const HeadMesh& mesh, const std::vector<std::string>& names) {
   std::vector<int> out;
   for (const std::string& name : names) {
-    const HeadSubmesh& s = *mesh.findSubmesh(name);
-    for (int v = 0; v < s.vertexCount; ++v) out.push_back(s.firstVertex + v);
+    const HeadSubmesh* s = mesh.findSubmesh(name);
+    if (!s) continue;
+    for (int v = 0; v < s->vertexCount; ++v) out.push_back(s->firstVertex + v);
   }
   return out;
 }
@@ -108,15 +112,21 @@ void merge(FeaturePointInfluence& influence, const std::vector<std::pair<int, fl
   }
 }
 
+// An eye's rotation group, or an empty group and the reason when the head has no usable eye on
+// that side (no eye_<side> role, its sub-meshes missing or empty, or no centre to turn about).
 RotationGroup eyeGroup(const HeadMesh& mesh, const EyeSpec& spec, const std::string& side,
-                       const std::string& path, std::optional<Eigen::Vector3d>& centre,
-                       std::optional<double>& radius) {
+                       std::optional<Eigen::Vector3d>& centre, std::optional<double>& radius,
+                       std::string& absent) {
   RotationGroup group;
-  if (spec.submeshes.empty()) return group;
+  if (spec.submeshes.empty()) {
+    absent = "no sub-mesh has the role eye_" + side;
+    return group;
+  }
   group.vertices = verticesOf(mesh, spec.submeshes);
-  if (group.vertices.empty())
-    throw FileError({path, 0, 0},
-                    "submeshes.eye_" + side + ": the eye's sub-meshes have no vertices");
+  if (group.vertices.empty()) {
+    absent = "the sub-meshes of submeshes.eye_" + side + " are missing or have no vertices";
+    return group;
+  }
   if (spec.centre) {
     centre = *spec.centre;
   } else {
@@ -125,15 +135,68 @@ RotationGroup eyeGroup(const HeadMesh& mesh, const EyeSpec& spec, const std::str
       points.col(static_cast<Eigen::Index>(k)) =
           mesh.positions.col(group.vertices[k]).cast<double>();
     const auto sphere = fitSphere(points);
-    if (!sphere)
-      throw FileError({path, 0, 0},
-                      "eyes." + side + ".centre: not given, and the " + side +
-                          " eye's vertices do not span a sphere to fit one to; give it");
+    if (!sphere) {
+      absent = "eyes." + side + ".centre is not given and the " + side +
+               " eye's vertices do not span a sphere to fit one to (give it)";
+      group.vertices.clear();
+      return group;
+    }
     centre = sphere->centre;
     radius = sphere->radius;
   }
   group.centre = centre->cast<float>();
   return group;
+}
+
+// What a missing eye disables: its turns, thrust and pupil, and its tears. Tears need the eye:
+// its sub-meshes close the skin's eye opening in the tears' collision surface (a drop at the lid
+// margin would otherwise fall into the head), and the eye is what weeps.
+void disableEye(BuiltRig& rig, const std::string& side, const std::string& why) {
+  const bool left = side == "left";
+  const std::vector<int> faps = left ? std::vector<int>{23, 25, 27, 29, kTearLeftFap}
+                                     : std::vector<int>{24, 26, 28, 30, kTearRightFap};
+  rig.disabledFaps.insert(rig.disabledFaps.end(), faps.begin(), faps.end());
+  std::sort(rig.disabledFaps.begin(), rig.disabledFaps.end());
+  rig.warnings.push_back("no " + side + " eye (" + why + "): FAPs " + std::to_string(faps[0]) +
+                         ", " + std::to_string(faps[1]) + ", " + std::to_string(faps[2]) + " and " +
+                         std::to_string(faps[3]) +
+                         " (eyeball turns, thrust, pupil) are disabled; no eyes: tears " +
+                         "need the eye's sub-meshes to close the skin's eye opening, so the " +
+                         side + " tears (FAP " + std::to_string(faps[4]) + ") are disabled too");
+}
+
+// Skin points whose influence stops at the edge of their piece of a multi-piece skin (separate
+// lip or ear pieces that are not welded): the skin vertices within half the point's radius, in
+// a straight line, that lie on another piece (stray vertices on no triangle are no piece).
+// Geodesics cannot cross the gap, so those vertices do not follow the point; the warning names how
+// many and where.
+void warnUnreachedPieces(const HeadMesh& mesh, const SurfaceGraph& skin, const std::string& id,
+                         const std::vector<int>& sources, const Eigen::Vector3d& at, double radius,
+                         std::vector<std::string>& warnings) {
+  if (skin.componentCount < 2 || sources.empty()) return;
+  const int own = skin.component[static_cast<std::size_t>(
+      skin.nodeOfVertex[static_cast<std::size_t>(sources.front())])];
+  int unreached = 0;
+  std::set<std::string> where;
+  for (int n = 0; n < skin.nodeCount(); ++n) {
+    if (skin.component[static_cast<std::size_t>(n)] == own) continue;
+    const auto k = static_cast<std::size_t>(n);
+    if (skin.firstNeighbour[k] == skin.firstNeighbour[k + 1]) continue;  // a stray vertex
+    if ((skin.positions.col(n) - at).norm() >= 0.5 * radius) continue;
+    ++unreached;
+    where.insert(mesh.submeshes[static_cast<std::size_t>(mesh.submeshOfVertex(
+                                    skin.vertexOfNode[static_cast<std::size_t>(n)]))]
+                     .name);
+  }
+  if (unreached == 0) return;
+  std::string names;
+  for (const std::string& name : where) names += (names.empty() ? "\"" : ", \"") + name + "\"";
+  warnings.push_back("feature point " + id + ": its influence cannot reach " +
+                     std::to_string(unreached) + " skin vertices within half its radius (" +
+                     std::to_string(0.5 * radius) + ") that lie on another piece of the skin (" +
+                     names +
+                     "), not joined to its own; they will not follow it (weld the pieces, " +
+                     "or give them another role)");
 }
 
 TearSource tearSourceAt(const HeadMesh& mesh, int vertex) {
@@ -184,8 +247,12 @@ BuiltRig buildRig(const HeadMesh& mesh, const FeaturePointFile& fdp, const RigOp
   in.mesh = &mesh;
   in.fapu = rig.fapu;
   for (const auto& [id, p] : fp) in.featurePoints[id] = p.cast<float>();
-  in.eyeLeft = eyeGroup(mesh, fdp.eyeLeft, "left", path, rig.eyeCentreLeft, rig.eyeRadiusLeft);
-  in.eyeRight = eyeGroup(mesh, fdp.eyeRight, "right", path, rig.eyeCentreRight, rig.eyeRadiusRight);
+  std::string noLeftEye, noRightEye;
+  in.eyeLeft = eyeGroup(mesh, fdp.eyeLeft, "left", rig.eyeCentreLeft, rig.eyeRadiusLeft, noLeftEye);
+  in.eyeRight =
+      eyeGroup(mesh, fdp.eyeRight, "right", rig.eyeCentreRight, rig.eyeRadiusRight, noRightEye);
+  if (!noLeftEye.empty()) disableEye(rig, "left", noLeftEye);
+  if (!noRightEye.empty()) disableEye(rig, "right", noRightEye);
 
   progress(0.05, "surface graphs");
   const SurfaceGraph skinGraph = buildSurfaceGraph(mesh, fdp.skin);
@@ -220,6 +287,9 @@ BuiltRig buildRig(const HeadMesh& mesh, const FeaturePointFile& fdp, const RigOp
     const Eigen::VectorXi src = Eigen::Map<const Eigen::VectorXi>(
         sources.data(), static_cast<Eigen::Index>(sources.size()));
     FeaturePointInfluence influence;
+    // A pupil without its eye moves nothing: its FAPs (thrust, pupil) are disabled, and a pupil
+    // placed on the lids must not drag them.
+    if ((id == "3.5" && !noLeftEye.empty()) || (id == "3.6" && !noRightEye.empty())) continue;
     if (contains(fdp.eyeLeft.submeshes, sub) || contains(fdp.eyeRight.submeshes, sub)) {
       const RotationGroup& eye = contains(fdp.eyeLeft.submeshes, sub) ? in.eyeLeft : in.eyeRight;
       influence.vertices = eye.vertices;
@@ -244,6 +314,8 @@ BuiltRig buildRig(const HeadMesh& mesh, const FeaturePointFile& fdp, const RigOp
               : solver.atTriangle(Eigen::Vector3i(sources[0], sources[1], sources[2]), radius);
       rig.radii[id] = radius;
       rig.methods[id] = m;
+      if (onSkin)
+        warnUnreachedPieces(mesh, skinGraph, id, sources, fp.at(id), radius, rig.warnings);
       if (onSkin && !attached.empty()) merge(influence, attachment.weights(influence));
       // FAPs of this point that must not fold the skin over their range get an influence that
       // reaches farther along their own motion (InfluenceRadius.h, docs/rig.md "Folds"). Only

@@ -10,6 +10,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <tuple>
 #include <utility>
 
 namespace lacrima::rigging {
@@ -60,6 +61,10 @@ void checkParts(const FeaturePointFile& fdp, const BuiltRig& rig, std::vector<Ri
   for (const auto& [id, spec] : fdp.points) {
     const std::string expected = expectedPart(id);
     if (expected.empty()) continue;
+    // A head without that eye has its pupil where it can (the "no-eyes" check reports it).
+    if ((expected == "eye_left" && rig.disabled(23)) ||
+        (expected == "eye_right" && rig.disabled(24)))
+      continue;
     const auto found = rig.roles.find(spec.at.submesh);
     const std::string role = found == rig.roles.end() ? "none" : found->second;
     if (partFits(expected, role)) continue;
@@ -295,7 +300,8 @@ void checkPoses(const HeadMesh& mesh, const BuiltRig& rig, std::vector<RigCheck>
   for (int fap = 3; fap <= 68; ++fap) {
     const FapInfo& info = fapInfo(fap);
     const std::vector<std::string> points = pointsOf(info, rig);
-    if (points.empty()) continue;  // no feature point: validation already warned
+    if (points.empty()) continue;     // no feature point: validation already warned
+    if (rig.disabled(fap)) continue;  // no eye: the "no-eyes" check says so
     const double value =
         std::abs(info.sliderMax) >= std::abs(info.sliderMin) ? info.sliderMax : info.sliderMin;
     double moved = 0;
@@ -318,6 +324,19 @@ void checkPoses(const HeadMesh& mesh, const BuiltRig& rig, std::vector<RigCheck>
   }
 }
 
+// --- no eyes ----------------------------------------------------------------------------------
+
+void checkEyes(const BuiltRig& rig, std::vector<RigCheck>& out) {
+  for (const auto& [side, pupil, yaw, tears] : {std::tuple{"left", "3.5", 23, kTearLeftFap},
+                                                std::tuple{"right", "3.6", 24, kTearRightFap}}) {
+    if (!rig.disabled(yaw)) continue;
+    out.push_back(make(RigCheck::Severity::Warning, "no-eyes", {pupil}, 0,
+                       format("the head has no usable %s eye: FAPs %d, %d, %d and %d (eyeball "
+                              "turns, thrust, pupil) and its tears (FAP %d) are disabled",
+                              side, yaw, yaw + 2, yaw + 4, yaw + 6, tears)));
+  }
+}
+
 }  // namespace
 
 std::vector<RigCheck> checkRig(const HeadMesh& mesh, const FeaturePointFile& fdp,
@@ -328,6 +347,7 @@ std::vector<RigCheck> checkRig(const HeadMesh& mesh, const FeaturePointFile& fdp
   checkFapu(mesh, fdp, rig, out);
   checkLips(mesh, rig, out);
   checkPoses(mesh, rig, out);
+  checkEyes(rig, out);
   return out;
 }
 

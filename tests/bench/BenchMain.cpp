@@ -13,6 +13,7 @@ int runTearsSweep(int argc, char** argv);
 int runEditor(int argc, char** argv);
 int runPlayer(int argc, char** argv);
 int runPick(int argc, char** argv);
+int runHead(int argc, char** argv);
 }  // namespace lacrima::bench
 
 namespace {
@@ -40,6 +41,8 @@ const Subcommand kSubcommands[] = {
      lacrima::bench::runEditor},
     {"poses", "rig, bake and blend every FAP pose on synthetic and real (default, ICT) heads",
      lacrima::bench::runPoses},
+    {"head", "a head file to a rigged, checked head, ms per stage (ICT <= 1 s on one core)",
+     lacrima::bench::runHead},
     {"player",
      "the whole player (playback + OGRE render) on the demo at 1280x720: fps, stage shares",
      lacrima::bench::runPlayer},

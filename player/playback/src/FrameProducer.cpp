@@ -224,11 +224,15 @@ const FrameView& FrameProducer::produce(const FapValues& values, double dt, doub
   ++s.counters.frames;
   bool changed = s.blend(values);
   s.progress = progress;
-  const bool tearsWanted = commandsTears(values) || s.particles() > 0;
+  // A head without an eye has that eye's tears disabled (RigBuilder.h): it simulates none.
+  FapValues weeping = values;
+  for (int fap : {kTearLeftFap, kTearRightFap})
+    if (s.rig.rig.disabled(fap)) weeping[static_cast<std::size_t>(channelIndex(fap))] = 0.0f;
+  const bool tearsWanted = commandsTears(weeping) || s.particles() > 0;
   if (tearsWanted) {
     tears::TearSimulation& simulation = s.ensureSimulation();
     const auto start = SteadyClock::now();
-    simulation.step(s.positions, values, dt);
+    simulation.step(s.positions, weeping, dt);
     s.times.simulation = millisecondsSince(start);
     ++s.counters.simulationSteps;
     changed = true;

@@ -32,8 +32,10 @@ namespace lacrima::rigging {
 // file's folder). Embedded textures and texture files that do not exist are left out (plain
 // colour). transparent is set when the opacity is below 1 or an opacity map is present.
 //
-// Throws std::runtime_error naming `path` when it does not exist, when assimp cannot read it
-// (with assimp's message), or when it holds no triangles.
+// Throws FileError naming `path` and what was expected when it does not exist, is empty, when
+// assimp cannot read it (with assimp's message), or when it holds nothing to rig: no faces
+// (only vertices, points or lines; the message counts what it found) or only zero-area
+// triangles.
 HeadMesh importHeadMesh(const std::string& path);
 
 }  // namespace lacrima::rigging

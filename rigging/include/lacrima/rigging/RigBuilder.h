@@ -34,6 +34,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <optional>
@@ -73,13 +74,31 @@ struct BuiltRig {
   std::map<std::string, std::string> roles;  // sub-mesh name -> skin/eye_left/.../rigid
   RigInput input;                            // input.mesh points at the mesh given to buildRig
   PoseSet poses;
+  // FAPs this head cannot drive, ascending: a missing eye disables its turns, thrust and pupil
+  // (left 23, 25, 27, 29; right 24, 26, 28, 30) and its tears (69 / 70). See "Bad heads" below.
+  std::vector<int> disabledFaps;
   std::vector<std::string> warnings;  // rig and bake warnings, each naming its subject
+
+  bool disabled(int fap) const {
+    return std::binary_search(disabledFaps.begin(), disabledFaps.end(), fap);
+  }
 };
 
 // Builds and bakes the rig. `fdp` must have passed validateFeaturePoints for `mesh`; `mesh`
 // must outlive the result (input.mesh points at it). Throws FileError naming fdp.path when the
-// FAPU points give a non-positive distance (computeFapu's message) or an eye has no vertices
-// to fit a centre to.
+// FAPU points give a non-positive distance (computeFapu's message).
+//
+// Bad heads build with warnings rather than fail (docs/rig.md "Bad heads"):
+//  - No eye on a side (no eye_<side> role, its sub-meshes missing or without vertices, or no
+//    centre given and none to fit): that eye's FAPs and its tears are disabled (disabledFaps,
+//    one warning "no left eye (...): ... no eyes: tears need ..."); its pupil point, wherever it
+//    sits, gets no influence. Tears need the eye: its sub-meshes close the skin's eye opening in
+//    the tears' collision surface. The tear source is still computed (rig.json lists it).
+//  - A skin in several pieces (lip or ear pieces not welded to the face): each skin point whose
+//    influence cannot cross to skin of another piece within half its radius gets a warning
+//    naming the pieces; weights stay finite (unreached vertices get none).
+//  - Non-manifold edges, duplicate and zero-area triangles: the geodesics stay finite
+//    (SurfaceGraph.h, HeatGeodesics.h); nothing is reported.
 BuiltRig buildRig(const HeadMesh& mesh, const FeaturePointFile& fdp,
                   const RigOptions& options = {});
 

@@ -28,7 +28,10 @@
 //    the end of its slider range farthest from 0, moves no vertex by more than
 //    kPoseMovesNothingOfEs * ES0 (translations: |offset| * value; eye and head rotations: the
 //    chord 2 r sin(angle / 2) of the vertex farthest from the centre; the eye FAPs of a head
-//    without eyes).
+//    that lacks them is "no-eyes" instead).
+//  - "no-eyes" (Warning): the rig has no usable left (right) eye, so FAPs 23, 25, 27, 29 (24,
+//    26, 28, 30) and the tears 69 (70) are disabled (BuiltRig::disabledFaps); its pupil point
+//    is then not held to the eye by "wrong-part".
 #include <lacrima/common/HeadMesh.h>
 #include <lacrima/rigging/FeaturePointFile.h>
 #include <lacrima/rigging/RigBuilder.h>
@@ -42,7 +45,7 @@ struct RigCheck {
   enum class Severity { Warning, Error };
   Severity severity = Severity::Warning;
   std::string kind;                 // "wrong-part", "asymmetry", "zero-fapu",
-                                    // "lips-joined", "pose-moves-nothing"
+                                    // "lips-joined", "pose-moves-nothing", "no-eyes"
   std::vector<std::string> points;  // FDP ids concerned (may be empty)
   int fap = 0;                      // FAP number concerned, 0 = none
   std::string message;              // one sentence for the user, with the figures
