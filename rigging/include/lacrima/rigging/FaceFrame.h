@@ -42,9 +42,10 @@
 
 namespace lacrima::rigging {
 
-// Anatomy alone tilts the mouth-to-eyes line by a few degrees from the vertical (the default
-// head 3.4°, the ICT head 1.6°; a head held in a natural pose stays within about 10°); beyond
-// 20° the face is turned in the model, and "down" for the tears is the model's, not the chin's.
+// Anatomy alone turns the measured frame a few degrees from the axes of a head modelled upright
+// (the mouth sits in front of the eyes: the default head 5.0 degrees, the ICT head 2.5; a head
+// in a natural pose stays within about 10); beyond 20 the face is turned in the model, and
+// "down" for the tears is the model's, not the chin's.
 inline constexpr double kFaceTiltWarningDegrees = 20.0;
 
 struct FaceFrame {

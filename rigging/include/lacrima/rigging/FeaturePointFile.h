@@ -98,10 +98,10 @@ struct SurfacePoint {
 // is the shortest decimal that reads back as the float vertex exactly, so on the same mesh the
 // difference is 0; 1e-5 of the diagonal (3 µm on a 30 cm head) still accepts a mesh re-exported
 // through 32-bit floats or 6-digit OBJ text (errors about 1e-7 to 1e-6 of a coordinate) and is
-// far below the shortest edge of a real head (the default head's: 1.4e-4 of its diagonal, the
-// ICT head's 3e-4), so it never confuses two vertices. kPositionLost: 5% of the eye separation
-// (about 3 mm on a real head) is more than a remeshed or slightly edited surface moves, and less
-// than two different heads differ at a feature point.
+// far below the shortest edge of a real head (the default head's: 5.6e-4 of its diagonal, the
+// ICT head's 1.2e-4; test_rig_point_positions), so it never confuses two vertices. kPositionLost:
+// 5% of the eye separation (about 3 mm on a real head) is more than a remeshed or slightly edited
+// surface moves, and less than two different heads differ at a feature point.
 inline constexpr double kPositionMatch = 1e-5;
 inline constexpr double kPositionLost = 0.05;
 inline constexpr double kPositionLostDiagonal = 0.01;
