@@ -267,9 +267,9 @@ std::string bindingText(const SurfacePoint& p) {
          " of \"" + p.submesh + "\"";
 }
 
-// "the mesh head.glb (12345 vertices; sub-meshes skin 9000, eye_l 300, ...)".
+// "head.glb (12345 vertices; sub-meshes skin 9000, eye_l 300, ...)", "this mesh (...)" unnamed.
 std::string meshText(const HeadMesh& mesh, std::string_view name) {
-  std::string text = name.empty() ? "this mesh" : "the mesh " + std::string(name);
+  std::string text = name.empty() ? "this mesh" : std::string(name);
   text += " (" + std::to_string(mesh.vertexCount()) + " vertices; sub-meshes";
   constexpr std::size_t kListed = 6;
   for (std::size_t k = 0; k < mesh.submeshes.size() && k < kListed; ++k)

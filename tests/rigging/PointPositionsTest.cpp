@@ -12,7 +12,12 @@
 #include <lacrima/rigging/RigBuilder.h>
 
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -224,6 +229,7 @@ class PointPositionsTest : public QObject {
     QCOMPARE(snapped.tearLeft->vertex, mesh.findSubmesh("skin")->vertexCount - 1 - 100);
     verifyAtStoredPositions(snapped, moved);
     QCOMPARE(countContaining(warnings, "re-snapped"), 5);  // 4 vertex points and the tear
+    qInfo("e.g. %s", warnings.front().toString().c_str());
     const std::string text = joined(warnings);
     const std::string path = back.path;
     // e.g. "file:14:12: points."2.1": point 2.1 (vertex 5 of "skin", stored at [...]) is 0.7
@@ -313,11 +319,12 @@ class PointPositionsTest : public QObject {
     });
     QVERIFY2(contains(error, back.path + ": this feature-point file was placed on another mesh"),
              error.c_str());
-    QVERIFY2(contains(error, "the mesh big-sheet.obj (160 vertices; sub-meshes skin 144, lid 16)"),
+    QVERIFY2(contains(error, "big-sheet.obj (160 vertices; sub-meshes skin 144, lid 16)"),
              error.c_str());
     QVERIFY2(contains(error, "the file says it is for \"the sheet\""), error.c_str());
     QVERIFY2(contains(error, "points.\"2.1\".position: point 2.1"), error.c_str());
     QVERIFY2(contains(error, "and 2 more"), error.c_str());  // 7 mismatches, 5 shown
+    qInfo("%s", error.c_str());
 
     // Names that do not fit: the same file on a head whose sub-meshes are called otherwise.
     HeadMesh renamed = mesh;
@@ -377,6 +384,44 @@ class PointPositionsTest : public QObject {
             shortest / diagonal, rigging::kPositionMatch);
       QVERIFY(shortest > 10 * rigging::kPositionMatch * diagonal);
     }
+  }
+
+  // lacrima-rig writes positions into the file --complete saves, rig.json says which face
+  // frame it rigged in, and a file for another head is refused with the message.
+  void commandLine() {
+    if (!rigging::defaultHeadAvailable())
+      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!QFileInfo::exists(kIctMesh)) QSKIP("ICT-FaceKit head not present in the shared folder");
+    rigging::FeaturePointFile partial = rigging::readFeaturePointFile(kIctFdp.toStdString());
+    std::erase_if(partial.points, [](const auto& point) { return point.first[0] == '4'; });
+    const QString partialPath = QDir(tmp_.path()).filePath("ict-partial.fdp.json");
+    saveAtomically(partialPath.toStdString(), rigging::featurePointFileJson(partial));
+    const QString complete = QDir(tmp_.path()).filePath("ict-complete.fdp.json");
+    const QString out = QDir(tmp_.path()).filePath("ict-rig");
+    QProcess run;
+    run.start(kRigTool,
+              {"--mesh", kIctMesh, "--fdp", partialPath, "--complete", complete, "-o", out});
+    QVERIFY(run.waitForFinished(240000));
+    QVERIFY2(run.exitCode() == 0, run.readAllStandardError().constData());
+    const rigging::FeaturePointFile written = rigging::readFeaturePointFile(complete.toStdString());
+    QVERIFY(written.points.size() > partial.points.size());
+    for (const auto& [id, spec] : written.points) QVERIFY2(spec.at.position, id.c_str());
+    QFile rigJson(QDir(out).filePath("rig.json"));
+    QVERIFY(rigJson.open(QIODevice::ReadOnly));
+    const QJsonObject frame =
+        QJsonDocument::fromJson(rigJson.readAll()).object().value("face_frame").toObject();
+    QCOMPARE(frame.value("measured").toBool(), true);
+    QCOMPARE(frame.value("rotation").toArray().at(1).toArray().at(1).toDouble(), 1.0);
+
+    QProcess other;
+    other.start(kRigTool, {"--default", "--fdp", complete, "--report"});
+    QVERIFY(other.waitForFinished(120000));
+    QCOMPARE(other.exitCode(), 1);
+    const QByteArray message = other.readAllStandardError();
+    QVERIFY2(message.contains(complete.toUtf8() +
+                              ": this feature-point file was placed on another mesh") &&
+                 message.contains("do not fit the default head ("),
+             message.constData());
   }
 
   // The default head's file with positions, on the head with every sub-mesh's vertices in

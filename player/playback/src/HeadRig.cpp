@@ -63,7 +63,7 @@ std::unique_ptr<HeadRig> loadDefaultHeadRig() {
         "the default head is not in the cache; fetch it with packaging/fetch-default-head.sh "
         "(packaging/lacrima.sh does), or bring your own with --mesh FILE --fdp FILE");
   return rigHeadFromFile(rigging::loadDefaultHead(), findMediaFile("default-head.fdp.json"),
-                         "the default head (" + rigging::defaultHeadPackageDir() + ")");
+                         "the default head in " + rigging::defaultHeadPackageDir());
 }
 
 std::unique_ptr<HeadRig> loadHeadRig(const std::string& meshPath, const std::string& fdpPath) {
