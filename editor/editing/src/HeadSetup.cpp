@@ -51,8 +51,9 @@ bool unlisted(PartRole role) {
 std::shared_ptr<const ProposalReference> ProposalReference::loadDefault() {
   auto reference = std::make_shared<ProposalReference>();
   reference->mesh = rigging::loadDefaultHead();
-  reference->file = rigging::readFeaturePointFile(findMediaFile("default-head.fdp.json"));
-  rigging::validateFeaturePoints(reference->file, reference->mesh, nullptr);
+  reference->file = rigging::validateFeaturePoints(
+      rigging::readFeaturePointFile(findMediaFile("default-head.fdp.json")), reference->mesh,
+      nullptr);
   return reference;
 }
 
@@ -234,9 +235,10 @@ rigging::FeaturePointFile HeadSetup::handFile() const {
 
 PlacedPoints HeadSetup::computeProposal(const rigging::FeaturePointFile& hand, const HeadMesh& mesh,
                                         const ProposalReference& reference, Warnings* warnings) {
-  rigging::validateFeaturePoints(hand, mesh, warnings, rigging::FeaturePointSet::Partial);
+  const rigging::FeaturePointFile checked =
+      rigging::validateFeaturePoints(hand, mesh, warnings, rigging::FeaturePointSet::Partial);
   const rigging::FeaturePointFile complete =
-      rigging::proposeFeaturePoints(hand, mesh, reference.file, reference.mesh, warnings);
+      rigging::proposeFeaturePoints(checked, mesh, reference.file, reference.mesh, warnings);
   PlacedPoints out;
   for (const auto& [id, spec] : complete.points) {
     PlacedPoint p{spec};
@@ -273,6 +275,9 @@ rigging::FeaturePointFile HeadSetup::toFile() const {
       if (auto* list = roleList(file, roles_[s])) list->push_back(mesh_->submeshes[s].name);
   }
   for (const auto& [id, p] : points_) file.points.emplace(id, p.spec);
+  // Every point's position beside its index (FeaturePointFile.h), from the mesh as it is now:
+  // a moved point's old position would otherwise send it back when the file is validated.
+  if (hasMesh()) rigging::recordPositions(file, *mesh_);
   return file;
 }
 
@@ -286,8 +291,11 @@ void HeadSetup::save(const QString& path) {
 
 void HeadSetup::openFeaturePoints(const QString& path, Warnings* warnings) {
   if (!hasMesh()) throw std::invalid_argument("no head: import one first");
-  rigging::FeaturePointFile file = rigging::readFeaturePointFile(path.toStdString(), warnings);
-  rigging::validateFeaturePoints(file, *mesh_, warnings, rigging::FeaturePointSet::Partial);
+  // Validation re-snaps points whose stored position the index no longer leads to (a
+  // re-exported mesh) and refuses a file placed on another mesh.
+  rigging::FeaturePointFile file = rigging::validateFeaturePoints(
+      rigging::readFeaturePointFile(path.toStdString(), warnings), *mesh_, warnings,
+      rigging::FeaturePointSet::Partial, QFileInfo(meshPath_).fileName().toStdString());
 
   std::vector<PartRole> roles = guessPartRoles(*mesh_);
   for (std::size_t s = 0; s < roles.size(); ++s) {

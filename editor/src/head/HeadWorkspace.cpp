@@ -8,6 +8,7 @@
 #include <lacrima/editor/head/PointListModel.h>
 #include <lacrima/playback/FrameProducer.h>
 #include <lacrima/playback/HeadRig.h>
+#include <lacrima/rigging/FaceFrame.h>
 #include <lacrima/rigging/FeaturePointProposal.h>
 #include <lacrima/viewport/FaceViewport.h>
 
@@ -503,6 +504,9 @@ void HeadWorkspace::onRigFinished(std::shared_ptr<playback::HeadRig> rig) {
   producer_.reset();
   rig_ = std::move(rig);
   producer_ = std::make_unique<playback::FrameProducer>(*rig_, model_.document().scene);
+  // Orbit about the face's own up axis once the rig knows it (a Z-up head turns upright).
+  const Eigen::Matrix3d faceToMesh = rig_->frame.rotation.transpose();
+  if (!viewport_->viewFrame().isApprox(faceToMesh)) viewport_->setViewFrame(faceToMesh);
   pose();
   updateChecks();
   const auto errors = std::count_if(checks_.begin(), checks_.end(), [](const auto& c) {
@@ -517,11 +521,21 @@ void HeadWorkspace::onRigFinished(std::shared_ptr<playback::HeadRig> rig) {
 void HeadWorkspace::pose() {
   if (!producer_ || !shownMesh_) return;
   const playback::FrameView& posed = producer_->pose(model_.currentValues());
-  shownPositions_ = posed.positions;
   // Shown on the imported mesh, not the rig's copy of it (same vertices), so a new rig does
-  // not re-frame the camera.
+  // not re-frame the camera. The rig is in the face frame (FaceFrame.h); the workspace works in
+  // the mesh's own coordinates: imported = R^T rig, R one of the 24 axis rotations.
   playback::FrameView view = posed;
   view.neutral = shownMesh_.get();
+  const Eigen::Matrix3d& rotation = rig_->frame.rotation;
+  if (!rotation.isIdentity() && posed.positions && posed.normals) {
+    posedPositions_ = *posed.positions;
+    posedNormals_ = *posed.normals;
+    rigging::applyAxisRotation(rotation.transpose(), posedPositions_);
+    rigging::applyAxisRotation(rotation.transpose(), posedNormals_);
+    view.positions = &posedPositions_;
+    view.normals = &posedNormals_;
+  }
+  shownPositions_ = view.positions;
   viewport_->showFrame(view);
   updateMarkers();
 }

@@ -116,7 +116,8 @@ class HeadSetup : public QObject {
   void propose(const ProposalReference& reference, Warnings* warnings = nullptr);
 
   // --- files ------------------------------------------------------------------------------
-  // The document as a feature-point file (path: fdpPath(), or the mesh path + ".fdp.json").
+  // The document as a feature-point file (path: fdpPath(), or the mesh path + ".fdp.json"),
+  // every point with its position (recordPositions).
   rigging::FeaturePointFile toFile() const;
   // Saves toFile() atomically to `path`, which becomes fdpPath(); marks the history clean.
   // Throws FileError.

@@ -140,7 +140,8 @@ class HeadWorkspace : public QWidget {
   std::shared_ptr<const HeadMesh> shownMesh_;  // what the viewport's setHead was given
   std::shared_ptr<playback::HeadRig> rig_;
   std::unique_ptr<playback::FrameProducer> producer_;
-  const Eigen::Matrix3Xf* shownPositions_ = nullptr;  // the producer's last frame, or null
+  const Eigen::Matrix3Xf* shownPositions_ = nullptr;  // the posed head shown, or null
+  Eigen::Matrix3Xf posedPositions_, posedNormals_;    // a rotated rig's pose, in mesh axes
   std::vector<rigging::RigCheck> checks_;
   std::shared_ptr<std::vector<rigging::RigCheck>> pendingChecks_;
 
