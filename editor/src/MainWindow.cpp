@@ -165,6 +165,13 @@ void MainWindow::createDocks() {
   setCentralWidget(workspaces);
   connect(workspaces_, &QTabBar::currentChanged, this,
           [this](int index) { setWorkspace(static_cast<Workspace>(index)); });
+  connect(headWorkspace_, &head::HeadWorkspace::useInProjectRequested, this,
+          [this](const QString& mesh, const QString& fdp) {
+            if (!setHead(mesh, fdp)) return;
+            setWorkspace(Workspace::Animate);
+            statusBar()->showMessage(tr("The project now uses %1").arg(QFileInfo(mesh).fileName()),
+                                     5000);
+          });
   connect(banner_, &RecoveryBanner::restoreRequested, this, &MainWindow::restoreRecovery);
   connect(banner_, &RecoveryBanner::discardRequested, this, &MainWindow::discardRecovery);
 

@@ -7,6 +7,7 @@
 #include "../rigging/TestHeadFiles.h"
 
 #include <lacrima/common/AtomicSave.h>
+#include <lacrima/common/FdpTable.h>
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editing/HeadSetup.h>
 #include <lacrima/editor/MainWindow.h>
@@ -21,6 +22,7 @@
 #include <QElapsedTimer>
 #include <QFileInfo>
 #include <QImage>
+#include <QLabel>
 #include <QListWidget>
 #include <QSignalSpy>
 #include <QTableView>
@@ -143,6 +145,16 @@ class HeadWorkspaceTest : public QObject {
     const double importMs = wall.nsecsElapsed() / 1e6;
     const HeadMesh& mesh = setup.mesh();
     QCOMPARE(ws.partsView()->model()->rowCount(), static_cast<int>(mesh.submeshes.size()));
+
+    // The reference picture and description of the point to place first.
+    QCOMPARE(ws.currentPoint(), rigging::proposalAnchors().front());
+    QSignalSpy shown(&ws, &head::HeadWorkspace::referenceShown);
+    QVERIFY(shown.wait(30000));
+    QVERIFY(!ws.referencePicture().isNull());
+    const QString description = QString::fromUtf8(fdpDescription(ws.currentPoint()).data());
+    QVERIFY(!description.isEmpty());
+    QVERIFY(
+        ws.findChild<QLabel*>(QStringLiteral("head.referenceText"))->text().contains(description));
 
     // Assign: the teeth to the jaw through the table's combo box, then back with undo.
     const int teeth = rowNamed(mesh, "M_Teeth");
@@ -267,6 +279,13 @@ class HeadWorkspaceTest : public QObject {
     const auto rig = playback::rigHead(HeadMesh(mesh), file);
     QVERIFY(rig->rig.fapu.es0 > 0);
     QVERIFY(file.points.at(dragged).placedByHand);
+
+    // Use in project: the project names the head; the Animate workspace comes back.
+    ws.findChild<QToolButton*>(QStringLiteral("head.use"))->click();
+    QVERIFY(window.model().document().head.has_value());
+    QCOMPARE(QString::fromStdString(window.model().document().head->fdp), saved);
+    QCOMPARE(window.workspace(), MainWindow::Workspace::Animate);
+    window.setWorkspace(MainWindow::Workspace::Head);
 
     // Bad input: the workspace keeps its head and points, and says what went wrong.
     const std::size_t points = setup.points().size();

@@ -1,11 +1,13 @@
 #include <lacrima/editor/head/HeadWorkspace.h>
 
+#include <lacrima/common/FdpTable.h>
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editing/HeadSetup.h>
 #include <lacrima/editor/RigJob.h>
 #include <lacrima/editor/head/PartRoleDelegate.h>
 #include <lacrima/editor/head/PartsTableModel.h>
 #include <lacrima/editor/head/PointListModel.h>
+#include <lacrima/exporters/FeaturePointReference.h>
 #include <lacrima/playback/FrameProducer.h>
 #include <lacrima/playback/HeadRig.h>
 #include <lacrima/rigging/FaceFrame.h>
@@ -23,6 +25,7 @@
 #include <QListWidget>
 #include <QMessageBox>
 #include <QMouseEvent>
+#include <QPixmap>
 #include <QProgressBar>
 #include <QSplitter>
 #include <QTableView>
@@ -214,7 +217,13 @@ QWidget* HeadWorkspace::createSidePanel() {
   partsView_->horizontalHeader()->setStretchLastSection(true);
   side->addWidget(partsView_);
 
-  pointList_ = new PointListModel(*setup_, PointListModel::Describe{}, this);
+  pointList_ = new PointListModel(
+      *setup_,
+      [](const std::string& id) {
+        const std::string_view text = fdpDescription(id);
+        return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
+      },
+      this);
   pointsView_ = new QTableView(side);
   pointsView_->setObjectName(QStringLiteral("head.points"));
   pointsView_->setModel(pointList_);
@@ -585,9 +594,81 @@ void HeadWorkspace::updatePickable() {
   viewport_->setPickableSubmeshes(std::move(pickable));
 }
 
+struct ReferenceResult {
+  std::shared_ptr<const exporters::ReferenceHead> head;
+  std::string id;
+  QImage image;
+  bool hidden = false;
+  QString error;
+};
+
 void HeadWorkspace::updateReference() {
-  referenceText_->setText(current_.empty() ? QString()
-                                           : tr("<b>%1</b>").arg(QString::fromStdString(current_)));
+  const std::string_view description = fdpDescription(current_);
+  QString caption;
+  if (!current_.empty())
+    caption =
+        tr("<b>%1</b><br>%2")
+            .arg(QString::fromStdString(current_),
+                 QString::fromUtf8(description.data(), static_cast<qsizetype>(description.size())));
+  if (!referenceProblem_.isEmpty())
+    caption += QStringLiteral("<br><i>%1</i>").arg(referenceProblem_);
+  referenceText_->setText(caption);
+
+  if (current_.empty() || !referenceProblem_.isEmpty()) {
+    referencePicture_->clear();
+    return;
+  }
+  if (const auto cached = referencePictures_.find(current_); cached != referencePictures_.end()) {
+    referencePicture_->setPixmap(QPixmap::fromImage(cached->second));
+    emit referenceShown(QString::fromStdString(current_));
+    return;
+  }
+  referencePicture_->setText(tr("…"));
+  if (referenceRendering_) return;  // the finished render asks again for the current point
+  referenceRendering_ = true;
+  // Loading the default head takes about 0.1 s, a picture some tens of ms: off the GUI thread.
+  auto* watcher = new QFutureWatcher<ReferenceResult>(this);
+  connect(watcher, &QFutureWatcher<ReferenceResult>::finished, this, [this, watcher] {
+    ReferenceResult r = watcher->result();
+    watcher->deleteLater();
+    referenceRendering_ = false;
+    if (r.head) referenceHead_ = r.head;
+    if (!r.error.isEmpty()) {
+      referenceProblem_ = tr("No reference picture: %1").arg(r.error);
+    } else if (!r.image.isNull()) {
+      referencePictures_[r.id] =
+          r.image.scaled(referencePicture_->size(), Qt::KeepAspectRatio, Qt::SmoothTransformation);
+    }
+    updateReference();
+  });
+  const int size = 2 * referencePicture_->width();
+  watcher->setFuture(QtConcurrent::run([head = referenceHead_, id = current_, size]() mutable {
+    ReferenceResult r;
+    r.id = id;
+    try {
+      if (!head)
+        head = std::make_shared<const exporters::ReferenceHead>(exporters::defaultReferenceHead());
+      r.head = head;
+      exporters::ReferenceStyle style;
+      style.size = size;
+      const exporters::ReferencePicture picture =
+          exporters::renderFeaturePointReference(*head, id, style);
+      r.image = picture.image;
+      r.hidden = picture.hidden;
+      if (r.image.isNull()) {  // a point the default head does not have: say so in place
+        r.image = QImage(size, size, QImage::Format_RGB32);
+        r.image.fill(QColor(40, 40, 44));
+      }
+    } catch (const std::exception& e) {
+      r.error = text(e);
+    }
+    return r;
+  }));
+}
+
+QImage HeadWorkspace::referencePicture() const {
+  const auto it = referencePictures_.find(current_);
+  return it == referencePictures_.end() ? QImage() : it->second;
 }
 
 void HeadWorkspace::updateChecks() {

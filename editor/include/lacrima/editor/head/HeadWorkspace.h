@@ -29,6 +29,9 @@
 #include <QString>
 #include <QWidget>
 
+#include <QImage>
+
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -51,6 +54,9 @@ class FrameProducer;
 }  // namespace lacrima::playback
 namespace lacrima::viewport {
 class FaceViewport;
+}
+namespace lacrima::exporters {
+struct ReferenceHead;
 }
 
 namespace lacrima::editor {
@@ -88,6 +94,10 @@ class HeadWorkspace : public QWidget {
   std::string currentPoint() const { return current_; }
   void setCurrentPoint(const std::string& id);
 
+  // The reference picture shown for the current point (null while it renders, or without the
+  // default head).
+  QImage referencePicture() const;
+
   // The rig of the newest finished job (null before the first, or after an edit that made the
   // points unrigable), and its checks.
   const playback::HeadRig* rig() const { return rig_.get(); }
@@ -108,6 +118,7 @@ class HeadWorkspace : public QWidget {
   void proposalFinished(bool ok);
   void rigFinished();
   void rigFailed(const QString& message);
+  void referenceShown(const QString& id);  // the current point's picture is up
   void statusChanged(const QString& text);
   // The saved head, for MainWindow::setHead.
   void useInProjectRequested(const QString& meshPath, const QString& fdpPath);
@@ -143,6 +154,12 @@ class HeadWorkspace : public QWidget {
   const Eigen::Matrix3Xf* shownPositions_ = nullptr;  // the posed head shown, or null
   Eigen::Matrix3Xf posedPositions_, posedNormals_;    // a rotated rig's pose, in mesh axes
   std::vector<rigging::RigCheck> checks_;
+  // The default head drawn with the current point highlighted, loaded and rendered off the GUI
+  // thread; pictures are kept per point.
+  std::shared_ptr<const exporters::ReferenceHead> referenceHead_;
+  std::map<std::string, QImage> referencePictures_;
+  bool referenceRendering_ = false;
+  QString referenceProblem_;  // why there is no picture (the default head not fetched)
   std::shared_ptr<std::vector<rigging::RigCheck>> pendingChecks_;
 
   viewport::FaceViewport* viewport_ = nullptr;
