@@ -302,6 +302,43 @@ class HeadSetupTest : public QObject {
     QVERIFY(rig->rig.fapu.es0 > 0);
   }
 
+  // The same head exported Z-up in millimetres (x, y, z) cm -> (x, -z, y) * 10 mm: the same
+  // clicks give the same proposal, point for point, and it rigs (turned upright by the rig).
+  void zUpMillimetreHeadGivesTheSameProposal() {
+    if (!reference_) QSKIP("default head not fetched");
+    HeadSetup upright;
+    rigging::FeaturePointFile hand;
+    if (const QString why = placeIctAnchors(upright, hand); !why.isEmpty()) QSKIP(qPrintable(why));
+    upright.propose(*reference_);
+
+    HeadMesh turned = upright.mesh();
+    const auto toZUp = [](const Eigen::Vector3d& p) {
+      return Eigen::Vector3d(10 * p.x(), -10 * p.z(), 10 * p.y());
+    };
+    for (Eigen::Index i = 0; i < turned.positions.cols(); ++i)
+      turned.positions.col(i) = toZUp(turned.positions.col(i).cast<double>()).cast<float>();
+    turned.computeNormals();
+    HeadSetup zUp;
+    zUp.setMesh(QStringLiteral("ict-z-up-mm.obj"), std::move(turned));
+    QVERIFY(zUp.roles() == upright.roles());
+    for (const std::string& id : rigging::proposalAnchors())
+      zUp.placePoint(id, spotAt(zUp.mesh(), hand.points.at(id).at));
+    zUp.propose(*reference_);
+
+    QCOMPARE(zUp.points().size(), upright.points().size());
+    const double size = (zUp.mesh().boundsMax() - zUp.mesh().boundsMin()).norm();
+    for (const auto& [id, p] : upright.points()) {
+      const Eigen::Vector3d expected = toZUp(*upright.position(id));
+      QVERIFY2((*zUp.position(id) - expected).norm() < 1e-4 * size, id.c_str());
+      QCOMPARE(zUp.point(id)->byHand(), p.byHand());
+    }
+    const auto rig = playback::rigHead(HeadMesh(zUp.mesh()), zUp.toFile());
+    QVERIFY(!rig->rig.featurePoints.empty());
+    QVERIFY(!rig->frame.rotation.isIdentity());
+    const auto uprightRig = playback::rigHead(HeadMesh(upright.mesh()), upright.toFile());
+    QVERIFY(std::abs(rig->rig.fapu.es0 - 10 * uprightRig->rig.fapu.es0) < 1e-4 * rig->rig.fapu.es0);
+  }
+
   // Bad input: an unreadable file, a mesh without faces, a feature-point file for another
   // mesh. Each gives a message naming the file; the document stays as it was.
   void badInputLeavesDocumentAlone() {
