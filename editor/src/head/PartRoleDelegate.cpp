@@ -14,7 +14,8 @@ QWidget* PartRoleDelegate::createEditor(QWidget* parent, const QStyleOptionViewI
   auto* combo = new QComboBox(parent);
   for (editing::PartRole role : editing::kPartRoles)
     combo->addItem(PartsTableModel::roleLabel(static_cast<int>(role)), static_cast<int>(role));
-  // Commit as soon as a role is picked: one undo step per choice.
+  // Commit as soon as a role is picked: one undo step per choice. (Qt declares createEditor
+  // const but its commit signals not: the delegate itself is not changed by emitting them.)
   connect(combo, &QComboBox::activated, this, [this, combo] {
     auto* self = const_cast<PartRoleDelegate*>(this);
     emit self->commitData(combo);

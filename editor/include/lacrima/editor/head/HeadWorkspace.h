@@ -160,7 +160,8 @@ class HeadWorkspace : public QWidget {
   std::map<std::string, QImage> referencePictures_;
   bool referenceRendering_ = false;
   QString referenceProblem_;  // why there is no picture (the default head not fetched)
-  std::shared_ptr<std::vector<rigging::RigCheck>> pendingChecks_;
+  std::shared_ptr<std::vector<rigging::RigCheck>> pendingChecks_;  // the newest job's checks
+  std::shared_ptr<const HeadMesh> pendingMesh_;                    // and the head it rigs
 
   viewport::FaceViewport* viewport_ = nullptr;
   PartsTableModel* parts_ = nullptr;
