@@ -153,6 +153,24 @@ class RigChecksTest : public QObject {
     QVERIFY(pupil.size() == 1 && pupil[0].points == std::vector<std::string>{"3.5"});
   }
 
+  // Teeth points: 9.9 (lower teeth) on the jaw's teeth is right, 9.10 (upper teeth) there is not.
+  void teethPointsBelongOnTheirTeeth() {
+    REQUIRE_DEFAULT_HEAD();
+    std::string jaw;
+    for (const auto& [name, role] : rig_->roles)
+      if (role == "jaw") jaw = name;
+    QVERIFY2(!jaw.empty(), "the default head's lower teeth follow the jaw");
+    rigging::FeaturePointFile fdp = *fdp_;
+    fdp.points["9.9"].at = {jaw, 0, -1, Eigen::Vector3d::Zero()};
+    fdp.points["9.10"].at = {jaw, 1, -1, Eigen::Vector3d::Zero()};
+    const auto wrong = ofKind(checksOf(fdp), "wrong-part");
+    QCOMPARE(static_cast<int>(wrong.size()), 1);
+    QCOMPARE(wrong[0].points, std::vector<std::string>{"9.10"});
+    QVERIFY2(wrong[0].message.find("upper teeth") != std::string::npos &&
+                 wrong[0].message.find("role jaw") != std::string::npos,
+             wrong[0].message.c_str());
+  }
+
   // 2.3 bound to 2.2's vertex: the lips share it and cannot part.
   void lipsSharingAVertexAreJoined() {
     REQUIRE_DEFAULT_HEAD();
