@@ -347,6 +347,9 @@ class RigBadHeadsTest : public QObject {
       options.geodesics = method;
       const rigging::BuiltRig rig = rigging::buildRig(s.head, s.fdp, options);
       verifyFiniteRig(s.head, rig);
+      // The brows' influences stretched along their motion (DirectionalGeodesics) were built
+      // on the damaged surface too.
+      QVERIFY(!rig.input.fapInfluences.empty());
       const auto checks = rigging::checkRig(s.head, s.fdp, rig);
       for (const rigging::RigCheck& c : checks)
         QVERIFY2(c.message.find("nan") == std::string::npos &&
