@@ -165,6 +165,12 @@ class EditorProjectHeadTest : public QObject {
     QVERIFY(!window.model().isModified());
     QVERIFY(!window.preview()->loadHead());  // back to the missing file
     QVERIFY(window.preview()->messageText().contains(QLatin1String("head.mesh")));
+
+    // The file is put back and the project opened again: the preview tries again and shows it.
+    QVERIFY(QFile::rename(moved, folder.filePath("heads/ict.obj")));
+    QVERIFY(window.openFile(project));
+    QVERIFY2(window.preview()->loadHead(), qPrintable(window.preview()->messageText()));
+    QCOMPARE(window.preview()->headVertexCount(), ictVertices_);
   }
 
   // Warnings from rigging the project's head reach the status line. Here the left iris is
