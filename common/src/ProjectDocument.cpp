@@ -8,7 +8,9 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <numeric>
+#include <system_error>
 
 namespace lacrima::inline common {
 namespace {
@@ -100,6 +102,47 @@ void writeScene(JsonWriter& out, const SceneSettings& scene) {
   out.key("simulation");
   writeSimulation(out, scene.simulation);
   out.endObject();
+}
+
+void writeHead(JsonWriter& out, const HeadFiles& head) {
+  out.beginObject();
+  out.key("mesh");
+  out.string(head.mesh);
+  out.key("fdp");
+  out.string(head.fdp);
+  out.endObject();
+}
+
+// ---------------------------------------------------------------------------------------
+// Head paths. Lexical only (no symlinks resolved): the paths stay the ones the user chose.
+
+namespace fs = std::filesystem;
+
+std::string absoluteIn(const std::string& path, const std::string& folder) {
+  const fs::path p(path);
+  if (p.is_absolute()) return p.lexically_normal().string();
+  fs::path base(folder.empty() ? std::string(".") : folder);  // "" is the current folder
+  if (base.is_relative()) {
+    std::error_code ignored;
+    base = fs::absolute(base, ignored);
+  }
+  return (base / p).lexically_normal().string();
+}
+
+// `path` relative to `folder` when they share a folder below the root ("../x" within one
+// tree), otherwise `path` unchanged: "../../../opt/heads" from a home folder would break as
+// soon as the project moves, while "/opt/heads" keeps working.
+std::string relativeTo(const std::string& path, const std::string& folder) {
+  const fs::path target = fs::path(absoluteIn(path, folder));
+  const fs::path base = fs::path(absoluteIn(".", folder));
+  if (target.root_path() != base.root_path()) return path;
+  const fs::path targetBelowRoot = target.relative_path();
+  const fs::path baseBelowRoot = base.relative_path();
+  if (targetBelowRoot.empty() || baseBelowRoot.empty() ||
+      *targetBelowRoot.begin() != *baseBelowRoot.begin())
+    return path;
+  const fs::path relative = target.lexically_relative(base);
+  return relative.empty() ? path : relative.generic_string();
 }
 
 // ---------------------------------------------------------------------------------------
@@ -263,12 +306,29 @@ SceneSettings readScene(const JsonValue& value) {
   return scene;
 }
 
+std::string readHeadPath(const JsonValue& value) {
+  const std::string path = value.isString() ? value.string() : std::string();
+  if (path.empty() || path.find('\0') != std::string::npos)
+    value.fail("expected a file path (relative to the project's folder), got " + value.describe());
+  return path;
+}
+
+HeadFiles readHead(const JsonValue& value) {
+  if (!value.isObject())
+    value.fail("expected an object {\"mesh\": path, \"fdp\": path}, got " + value.describe());
+  value.rejectUnknownMembers({"mesh", "fdp"});
+  HeadFiles head;
+  head.mesh = readHeadPath(value.required("mesh"));
+  head.fdp = readHeadPath(value.required("fdp"));
+  return head;
+}
+
 }  // namespace
 
 bool ProjectDocument::operator==(const ProjectDocument& other) const {
   return name == other.name && fps == other.fps &&
          defaultInterpolation == other.defaultInterpolation && keys.keys() == other.keys.keys() &&
-         tearSources == other.tearSources && scene == other.scene;
+         tearSources == other.tearSources && scene == other.scene && head == other.head;
 }
 
 std::string ProjectDocument::toJson() const {
@@ -295,14 +355,18 @@ std::string ProjectDocument::toJson() const {
   out.endObject();
   out.key("scene");
   writeScene(out, scene);
+  if (head) {
+    out.key("head");
+    writeHead(out, *head);
+  }
   out.endObject();
   return std::move(out).finish();
 }
 
 ProjectDocument ProjectDocument::read(const JsonValue& root) {
   checkFormatAndVersion(root);
-  root.rejectUnknownMembers(
-      {"format", "version", "name", "fps", "interpolation", "keys", "tearSources", "scene"});
+  root.rejectUnknownMembers({"format", "version", "name", "fps", "interpolation", "keys",
+                             "tearSources", "scene", "head"});
   ProjectDocument document;
   if (root.has("name")) document.name = root["name"].string();
   if (root.has("fps")) document.fps = readFps(root["fps"]);
@@ -313,6 +377,7 @@ ProjectDocument ProjectDocument::read(const JsonValue& root) {
   document.keys = readKeys(keys, document.defaultInterpolation);
   if (root.has("tearSources")) document.tearSources = readTearSources(root["tearSources"]);
   if (root.has("scene")) document.scene = readScene(root["scene"]);
+  if (root.has("head")) document.head = readHead(root["head"]);
   return document;
 }
 
@@ -321,10 +386,51 @@ ProjectDocument ProjectDocument::fromJson(std::string_view json, const std::stri
 }
 
 ProjectDocument ProjectDocument::load(const std::string& path) {
-  return read(JsonInput::load(path, {"project file", kMaxFileBytes}).root());
+  ProjectDocument document = read(JsonInput::load(path, {"project file", kMaxFileBytes}).root());
+  document.resolveHeadPaths(fs::path(path).parent_path().string());
+  return document;
 }
 
-void ProjectDocument::save(const std::string& path) const { saveAtomically(path, toJson()); }
+void ProjectDocument::save(const std::string& path) const {
+  if (!head) {
+    saveAtomically(path, toJson());
+    return;
+  }
+  ProjectDocument written = *this;
+  written.relativizeHeadPaths(fs::path(path).parent_path().string());
+  saveAtomically(path, written.toJson());
+}
+
+void ProjectDocument::resolveHeadPaths(const std::string& folder) {
+  if (!head) return;
+  head->mesh = absoluteIn(head->mesh, folder);
+  head->fdp = absoluteIn(head->fdp, folder);
+}
+
+void ProjectDocument::relativizeHeadPaths(const std::string& folder) {
+  if (!head) return;
+  head->mesh = relativeTo(head->mesh, folder);
+  head->fdp = relativeTo(head->fdp, folder);
+}
+
+std::optional<Diagnostic> ProjectDocument::missingHeadFile(const std::string& projectPath) const {
+  if (!head) return std::nullopt;
+  const std::pair<const char*, const std::string*> files[] = {{"head.mesh", &head->mesh},
+                                                              {"head.fdp", &head->fdp}};
+  for (const auto& [field, file] : files) {
+    std::error_code error;
+    if (fs::is_regular_file(*file, error)) continue;
+    const bool elsewhere = fs::exists(*file, error);
+    Diagnostic problem;
+    problem.where.file = projectPath;
+    problem.message = std::string(field) + ": " + (elsewhere ? "not a file: " : "no file at ") +
+                      *file +
+                      "; restore it there, or point the project at the head's files again "
+                      "(editor: File > Choose head...)";
+    return problem;
+  }
+  return std::nullopt;
+}
 
 ProjectDocument ProjectDocument::fromAnimation(const FapAnimation& animation) {
   ProjectDocument document;

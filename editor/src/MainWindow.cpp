@@ -84,7 +84,7 @@ MainWindow::MainWindow(EditorOptions options, QWidget* parent)
 
   newDocument();
   if (options_.offerRecovery) checkForRecovery();
-  if (options_.preview) QTimer::singleShot(0, preview_, &PreviewPanel::loadHead);
+  if (options_.preview) QTimer::singleShot(0, preview_, &PreviewPanel::followDocumentHead);
   statusBar()->showMessage(
       tr("Move a slider to key it at the playhead · K keys the whole pose · Space plays"), 8000);
 }
@@ -238,6 +238,9 @@ void MainWindow::createMenus() {
                 QKeySequence(QStringLiteral("Ctrl+E")),
                 tr("Bake the keys to a .fap file (22 fps; with tear channels, or strict 68 FAPs)")),
       &QAction::triggered, this, &MainWindow::exportDialog);
+  connect(addAction(file, QStringLiteral("file.chooseHead"), tr("Choose &head…"), {},
+                    tr("The mesh and feature-point file this project is animated on")),
+          &QAction::triggered, this, &MainWindow::chooseHeadDialog);
   file->addSeparator();
   connect(addAction(file, QStringLiteral("file.quit"), tr("&Quit"), QKeySequence::Quit),
           &QAction::triggered, this, &QWidget::close);

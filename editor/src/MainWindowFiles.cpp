@@ -93,7 +93,12 @@ bool MainWindow::openFile(const QString& path) {
     addRecentFile(filePath_);
     updateTitle();
     updateStatusFigures();
-    statusBar()->showMessage(tr("Opened %1").arg(path), 4000);
+    // A head that moved does not stop the project from opening: the preview explains, and the
+    // reference stays as it is so saving loses nothing.
+    if (auto missing = model_->document().missingHeadFile(path.toStdString()))
+      statusBar()->showMessage(QString::fromStdString(missing->toString()), 15000);
+    else
+      statusBar()->showMessage(tr("Opened %1").arg(path), 4000);
     return true;
   } catch (const std::exception& e) {
     reportError(tr("Cannot open the project"), QString::fromUtf8(e.what()));
@@ -122,6 +127,20 @@ bool MainWindow::saveTo(const QString& path) {
     reportError(tr("Cannot save"), QString::fromUtf8(e.what()));
     return false;
   }
+}
+
+bool MainWindow::setHead(const QString& meshPath, const QString& fdpPath) {
+  for (const QString& file : {meshPath, fdpPath}) {
+    if (!QFileInfo(file).isFile()) {
+      reportError(tr("Cannot use the head"), tr("%1: no such file").arg(file));
+      return false;
+    }
+  }
+  ProjectDocument changed = model_->document();
+  changed.head = HeadFiles{QFileInfo(meshPath).absoluteFilePath().toStdString(),
+                           QFileInfo(fdpPath).absoluteFilePath().toStdString()};
+  model_->setSettings(changed, tr("Choose head %1").arg(QFileInfo(meshPath).fileName()));
+  return true;
 }
 
 bool MainWindow::importFap(const QString& path, std::optional<double> reductionTolerance) {
@@ -267,6 +286,26 @@ void MainWindow::exportDialog() {
   if (path.isEmpty()) return;
   if (!path.endsWith(QLatin1String(".fap"), Qt::CaseInsensitive)) path += QStringLiteral(".fap");
   exportFap(path, editing::FapExportOptions{fps->value(), profile->currentIndex() == 1});
+}
+
+void MainWindow::chooseHeadDialog() {
+  if (!options_.interactive) return;
+  const std::optional<HeadFiles>& current = model_->document().head;
+  const QString start = current ? QFileInfo(QString::fromStdString(current->mesh)).path()
+                                : QFileInfo(filePath_).path();
+  const QString mesh = QFileDialog::getOpenFileName(
+      this, tr("Choose head: the mesh"), start,
+      tr("Meshes (*.obj *.glb *.gltf *.fbx *.dae *.ply);;All files (*)"));
+  if (mesh.isEmpty()) return;
+  // Feature-point files usually sit beside their mesh as NAME.fdp.json: offer that one.
+  const QFileInfo meshInfo(mesh);
+  const QString beside = meshInfo.path() + '/' + meshInfo.completeBaseName() + ".fdp.json";
+  const QString fdp =
+      QFileDialog::getOpenFileName(this, tr("Choose head: its feature points"),
+                                   QFileInfo::exists(beside) ? beside : meshInfo.path(),
+                                   tr("Feature points (*.fdp.json *.json);;All files (*)"));
+  if (fdp.isEmpty()) return;
+  setHead(mesh, fdp);
 }
 
 void MainWindow::loadPresetsDialog() {

@@ -4,12 +4,16 @@
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editing/FrameStepClock.h>
 #include <lacrima/editor/EditorTheme.h>
+#include <lacrima/editor/HeadRigWork.h>
+#include <lacrima/editor/RigJob.h>
 
 #include <lacrima/playback/FrameProducer.h>
 #include <lacrima/playback/HeadRig.h>
 #include <lacrima/viewport/FaceViewport.h>
 
 #include <QElapsedTimer>
+#include <QEventLoop>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QImage>
 #include <QLabel>
@@ -19,15 +23,31 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace lacrima::editor {
 
 struct PreviewPanel::State {
-  std::unique_ptr<playback::HeadRig> rig;
+  std::shared_ptr<playback::HeadRig> rig;  // the head shown (kept while a failure is shown)
   std::unique_ptr<playback::FrameProducer> producer;
   viewport::FaceViewport* viewport = nullptr;
-  bool attempted = false;
+  RigJob job;
+  bool following = false;  // followDocumentHead() was called: rig the document's head
+  bool failed = false;     // the target's rig failed (a file missing, a bad file)
+  // The head the panel shows or is rigging (nullopt inside: the default head); unset before
+  // the first request, so the first sync always starts a job.
+  std::optional<std::optional<HeadFiles>> target;
+  QElapsedTimer rigTimer;
 };
+
+namespace {
+
+QString headName(const std::optional<HeadFiles>& head) {
+  return head ? QFileInfo(QString::fromStdString(head->mesh)).fileName()
+              : PreviewPanel::tr("the default head");
+}
+
+}  // namespace
 
 PreviewPanel::PreviewPanel(editing::EditorModel& model, editing::FrameStepClock& clock,
                            QWidget* parent)
@@ -69,7 +89,7 @@ PreviewPanel::PreviewPanel(editing::EditorModel& model, editing::FrameStepClock&
   dark.setColor(QPalette::Window, QColor(0x17, 0x18, 0x1b));
   dark.setColor(QPalette::WindowText, QColor(0x9a, 0x9e, 0xa6));
   message_->setPalette(dark);
-  message_->setText(tr("Loading the head…"));
+  message_->setText(tr("The head loads once the window is up…"));
   message_->setMinimumSize(320, 240);
   layout->addWidget(message_, 1);
 
@@ -86,10 +106,21 @@ PreviewPanel::PreviewPanel(editing::EditorModel& model, editing::FrameStepClock&
   connect(&clock_, &editing::FrameStepClock::ticked, this, &PreviewPanel::step);
   connect(&clock_, &editing::FrameStepClock::playingChanged, this, &PreviewPanel::updateIdleTimer);
   connect(&model_, &editing::EditorModel::documentReset, this, [this] {
+    syncHead(true);  // a project naming another head, or the same one whose file is back
     if (state_->producer) state_->producer->reset();
     onValuesChanged();
   });
+  connect(&state_->job, &RigJob::progress, this, [this](double fraction, const QString& stage) {
+    const QString text = tr("rigging %1: %2 (%3%)")
+                             .arg(headName(*state_->target), stage)
+                             .arg(std::lround(100 * fraction));
+    setStatus(text);
+    if (!hasHead()) message_->setText(text);
+  });
+  connect(&state_->job, &RigJob::finished, this, &PreviewPanel::installRig);
+  connect(&state_->job, &RigJob::failed, this, &PreviewPanel::showRigFailure);
   connect(&model_, &editing::EditorModel::settingsChanged, this, [this] {
+    syncHead(false);  // File > Choose head…, or its undo
     if (!state_->producer) return;
     if (!(state_->producer->scene() == model_.document().scene))
       state_->producer->setScene(model_.document().scene);
@@ -101,7 +132,24 @@ PreviewPanel::~PreviewPanel() = default;
 
 bool PreviewPanel::hasHead() const { return state_->producer != nullptr; }
 
+bool PreviewPanel::headLoading() const { return state_->job.running(); }
+
+int PreviewPanel::headVertexCount() const {
+  return hasHead() ? state_->rig->head.vertexCount() : 0;
+}
+
+QStringList PreviewPanel::headWarnings() const {
+  QStringList lines;
+  if (state_->rig)
+    for (const std::string& w : state_->rig->warnings) lines << QString::fromStdString(w);
+  return lines;
+}
+
 QString PreviewPanel::statusText() const { return statusText_; }
+
+QString PreviewPanel::messageText() const {
+  return message_->isHidden() ? QString() : message_->text();
+}
 
 void PreviewPanel::setStatus(const QString& text) {
   if (text == statusText_) return;
@@ -110,41 +158,112 @@ void PreviewPanel::setStatus(const QString& text) {
   emit statusChanged(text);
 }
 
+void PreviewPanel::showMessage(const QString& text) {
+  message_->setText(text);
+  if (state_->viewport) state_->viewport->hide();
+  message_->show();
+}
+
+void PreviewPanel::followDocumentHead() {
+  state_->following = true;
+  syncHead(false);
+}
+
 bool PreviewPanel::loadHead() {
-  if (state_->attempted) return hasHead();
-  state_->attempted = true;
-  try {
-    QElapsedTimer timer;
-    timer.start();
-    state_->rig = playback::loadDefaultHeadRig();
-    state_->producer =
-        std::make_unique<playback::FrameProducer>(*state_->rig, model_.document().scene);
-    state_->producer->setTearSources(model_.document().tearSources);
+  followDocumentHead();
+  if (state_->job.running()) {
+    QEventLoop loop;
+    connect(this, &PreviewPanel::headReady, &loop, &QEventLoop::quit);
+    connect(this, &PreviewPanel::headFailed, &loop, &QEventLoop::quit);
+    loop.exec();
+  }
+  return hasHead();
+}
+
+// Starts rigging the document's head unless it is the one shown or being rigged already (or,
+// without `retryFailed`, the one that just failed: other settings edits do not rig it again).
+void PreviewPanel::syncHead(bool retryFailed) {
+  if (!state_->following) return;
+  const std::optional<HeadFiles>& wanted = model_.document().head;
+  if (state_->target && *state_->target == wanted && !(retryFailed && state_->failed)) return;
+  state_->target = wanted;
+  state_->failed = false;
+  state_->rigTimer.start();
+  const QString name = headName(wanted);
+  setStatus(tr("rigging %1…").arg(name));
+  if (!hasHead()) showMessage(tr("Rigging %1…").arg(name));
+  if (!wanted) {
+    state_->job.start(defaultHeadWork());
+    return;
+  }
+  // Checked here, not left to the mesh reader, so the message names the project's field.
+  ProjectDocument probe;
+  probe.head = wanted;
+  if (auto missing = probe.missingHeadFile(model_.document().name)) {
+    state_->job.start(failingWork(std::move(*missing)));
+    return;
+  }
+  state_->job.start(headFilesWork(wanted->mesh, wanted->fdp));
+}
+
+void PreviewPanel::installRig(std::shared_ptr<playback::HeadRig> rig) {
+  // The producer and the viewport refer to the old rig's head: replace them first, then let
+  // the old rig go (at the end of this function).
+  std::shared_ptr<playback::HeadRig> old = std::move(state_->rig);
+  state_->producer.reset();
+  state_->rig = std::move(rig);
+  if (!state_->viewport) {
     state_->viewport = new viewport::FaceViewport(this);
     state_->viewport->setObjectName(QStringLiteral("faceViewport"));
-    state_->viewport->setHead(state_->rig->head);
-    layout()->replaceWidget(message_, state_->viewport);
-    message_->hide();
-    state_->viewport->show();  // a child added to a visible parent stays hidden until shown
-    layout()->activate();
-    if (!state_->viewport->usesOgre()) {
-      // Nothing can be drawn here (no X display): say why, and spend no time simulating.
-      setStatus(state_->viewport->message());
-      state_->producer.reset();
-      return false;
-    }
-    setStatus(tr("head ready in %1 ms").arg(timer.elapsed()));
-    onValuesChanged();
-    return true;
-  } catch (const std::exception& e) {
-    state_->producer.reset();
-    state_->rig.reset();
-    message_->setText(
-        tr("No preview: %1\n\nThe editor works without it; the tear channels still export.")
-            .arg(QString::fromUtf8(e.what())));
-    setStatus(tr("no head"));
-    return false;
+    static_cast<QVBoxLayout*>(layout())->addWidget(state_->viewport, 1);
   }
+  state_->viewport->setHead(state_->rig->head);
+  message_->hide();
+  state_->viewport->show();  // a child added to a visible parent stays hidden until shown
+  layout()->activate();
+  if (!state_->viewport->usesOgre()) {
+    // Nothing can be drawn here (no X display): say why, and spend no time simulating.
+    setStatus(state_->viewport->message());
+    emit headReady();
+    return;
+  }
+  state_->producer =
+      std::make_unique<playback::FrameProducer>(*state_->rig, model_.document().scene);
+  state_->producer->setTearSources(model_.document().tearSources);
+  QString text = tr("%1 ready in %2 ms · %3 vertices")
+                     .arg(headName(*state_->target))
+                     .arg(state_->rigTimer.elapsed())
+                     .arg(state_->rig->head.vertexCount());
+  const QStringList warnings = headWarnings();
+  if (!warnings.isEmpty()) {
+    // The first warning in the line (a head without eyes: "tears disabled"), all in the tooltip.
+    text += tr(" · %n warning(s): %1", nullptr, static_cast<int>(warnings.size()))
+                .arg(warnings.front());
+  }
+  status_->setToolTip(warnings.join(QLatin1Char('\n')));
+  setStatus(text);
+  onValuesChanged();
+  emit headReady();
+}
+
+void PreviewPanel::showRigFailure(const QString& error) {
+  state_->failed = true;
+  state_->producer.reset();  // keeps the rig: the hidden viewport still points at its head
+  idle_->stop();
+  status_->setToolTip({});
+  if (*state_->target) {
+    showMessage(tr("No preview: the project's head could not be loaded.\n\n%1\n\nUse File > "
+                   "Choose head… to point the project at the mesh and feature-point files. Until "
+                   "then the editor works without a preview, and saving keeps the project's head "
+                   "entry as it is.")
+                    .arg(error));
+    setStatus(tr("head missing"));
+  } else {
+    showMessage(tr("No preview: %1\n\nThe editor works without it; the tear channels still export.")
+                    .arg(error));
+    setStatus(tr("no head"));
+  }
+  emit headFailed(error);
 }
 
 void PreviewPanel::setTearPreview(bool on) {
@@ -159,10 +278,12 @@ int PreviewPanel::particleCount() const {
   return state_->producer ? state_->producer->particleCount() : 0;
 }
 
-QWidget* PreviewPanel::viewportWidget() const { return state_->viewport; }
+QWidget* PreviewPanel::viewportWidget() const {
+  return state_->viewport && !state_->viewport->isHidden() ? state_->viewport : nullptr;
+}
 
 QImage PreviewPanel::grabFrame() {
-  if (state_->viewport) return state_->viewport->grabFrame();
+  if (viewportWidget()) return state_->viewport->grabFrame();
   return {};
 }
 
@@ -185,9 +306,13 @@ void PreviewPanel::step(double dt) {
   const auto& view = state_->producer->produce(model_.currentValues(), dt, progress);
   lastProduceMs_ = timer.nsecsElapsed() / 1e6;
   state_->viewport->showFrame(view);
-  setStatus(tr("%1 particles · %2 ms")
-                .arg(state_->producer->particleCount())
-                .arg(lastProduceMs_, 0, 'f', 1));
+  QString text = tr("%1 particles · %2 ms")
+                     .arg(state_->producer->particleCount())
+                     .arg(lastProduceMs_, 0, 'f', 1);
+  // The rig's warnings stay in view (listed in the tooltip) once the figures take the line.
+  if (const auto count = static_cast<int>(state_->rig->warnings.size()); count > 0)
+    text += tr(" · %n rig warning(s)", nullptr, count);
+  setStatus(text);
 }
 
 void PreviewPanel::onValuesChanged() {

@@ -4,6 +4,7 @@
 #include <lacrima/player/BatchRender.h>
 #include <lacrima/player/ErrorReport.h>
 #include <lacrima/player/PlayerWindow.h>
+#include <lacrima/player/ProjectHead.h>
 
 #include <lacrima/common/Diagnostics.h>
 #include <lacrima/common/ImageSize.h>
@@ -37,11 +38,27 @@ bool hasOption(int argc, char** argv, const char* name) {
   return false;
 }
 
-std::unique_ptr<playback::HeadRig> loadRig(const QCommandLineParser& parser) {
+// The head to animate: --mesh/--fdp, else the project's own head ("head" in FILE), else the
+// default head. `fixed`: given on the command line, so opening another project keeps it.
+struct HeadChoice {
+  std::optional<HeadFiles> files;  // nullopt: the default head
+  bool fixed = false;
+};
+
+HeadChoice chooseHead(const QCommandLineParser& parser) {
   if (parser.isSet("mesh"))
-    return playback::loadHeadRig(parser.value("mesh").toStdString(),
-                                 parser.value("fdp").toStdString());
-  return playback::loadDefaultHeadRig();
+    return {HeadFiles{parser.value("mesh").toStdString(), parser.value("fdp").toStdString()}, true};
+  const QStringList files = parser.positionalArguments();
+  if (files.size() != 1) return {};
+  return {player::headOfFile(files.front().toStdString()), false};
+}
+
+// Throws FileError naming the project, its JSON path and the file when a project's head file
+// is missing.
+std::unique_ptr<playback::HeadRig> loadRig(const QCommandLineParser& parser,
+                                           const HeadChoice& head) {
+  if (head.fixed) return playback::loadHeadRig(head.files->mesh, head.files->fdp);
+  return player::loadHeadFor(head.files, parser.positionalArguments().value(0).toStdString());
 }
 
 // One line per step on a log, a bar redrawn in place on a terminal.
@@ -70,7 +87,8 @@ int renderMode(const QCommandLineParser& parser, const QSize& size) {
                  std::string(scene::cameraPresetNames()).c_str(), viewName.c_str());
     return kExitUsage;
   }
-  const auto rig = loadRig(parser);
+  const auto rig = loadRig(parser, chooseHead(parser));
+  for (const std::string& w : rig->warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   player::BatchRenderOptions options;
   options.input = files.front();
   options.outputDir = parser.value("render");
@@ -91,7 +109,15 @@ int windowMode(QApplication& app, const QCommandLineParser& parser, const QSize*
     std::fprintf(stderr, "lacrima-player: give at most one FILE to open\n");
     return kExitUsage;
   }
-  player::PlayerWindow window(loadRig(parser));
+  HeadChoice head;
+  try {
+    head = chooseHead(parser);
+  } catch (const FileError&) {
+    // An unreadable project: the window opens on the default head and openFile() reports the
+    // problem the way it reports any file it cannot use.
+  }
+  player::PlayerWindow window(loadRig(parser, head));
+  window.setHeadSource(head.files, head.fixed);
   for (const std::string& w : window.rig().warnings)
     std::fprintf(stderr, "warning: %s\n", w.c_str());
   window.resize(size ? *size : QSize(1360, 820));
@@ -159,12 +185,14 @@ int main(int argc, char** argv) {
   QCommandLineParser parser;
   parser.setApplicationDescription(
       "Plays MPEG-4 facial animation with real-time tears: a FAP file (.fap) or a Lacrima project\n"
-      "(.json) on the default head or your own (--mesh, --fdp).\n\n"
+      "(.json) on the default head, on the head the project names (its \"head\" entry), or on\n"
+      "your own (--mesh, --fdp, which override the project's head).\n\n"
       "Examples:\n"
       "  lacrima-player media/demo/crying.fap\n"
       "  xvfb-run -a lacrima-player --render out/ --size 1280x720 media/demo/crying.fap\n"
       "  xvfb-run -a lacrima-player --render close/ --view close-left media/demo/crying.fap\n"
-      "  lacrima-player --mesh head.obj --fdp head.fdp.json animation.fap\n\n"
+      "  lacrima-player --mesh head.obj --fdp head.fdp.json animation.fap\n"
+      "  lacrima-player my-character/project.json\n\n"
       "Keys: Space play/pause, Home reset, Left/Right one frame, V reset the view, Ctrl+O open.\n"
       "Mouse: left drag orbits, right drag pans, the wheel zooms, double-click frames the face.\n\n"
       "Exit codes: 0 success, 1 bad input or failed write, 2 wrong usage.");
@@ -184,7 +212,9 @@ int main(int argc, char** argv) {
        "three-quarter, profile, close-left or close-right (a cheek and its tear filling the "
        "image).",
        "NAME", "framing"},
-      {"mesh", "Your own head (any format assimp reads) instead of the default head; needs --fdp.",
+      {"mesh",
+       "Your own head (any format assimp reads) instead of the default head or the project's; "
+       "needs --fdp.",
        "FILE"},
       {"fdp", "The feature-point file (*.fdp.json) of --mesh.", "FILE"},
       {"play", "Start playing as soon as the file is open."},

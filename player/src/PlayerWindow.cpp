@@ -1,9 +1,11 @@
 #include <lacrima/player/PlayerWindow.h>
 
 #include <lacrima/player/ErrorReport.h>
+#include <lacrima/player/ProjectHead.h>
 #include <lacrima/player/TearParametersPanel.h>
 
 #include <lacrima/common/MediaFiles.h>
+#include <lacrima/playback/AnimationFile.h>
 #include <lacrima/viewport/EffectsPanel.h>
 #include <lacrima/viewport/FaceViewport.h>
 
@@ -214,17 +216,44 @@ void PlayerWindow::buildLayout() {
   }
 }
 
+void PlayerWindow::setHeadSource(std::optional<HeadFiles> head, bool fixed) {
+  head_ = std::move(head);
+  headFixed_ = fixed;
+}
+
 bool PlayerWindow::openFile(const QString& path) {
   pause();
   QApplication::setOverrideCursor(Qt::WaitCursor);
+  // A project on another head: rig it and open the file on it before anything is replaced, so
+  // a failure leaves the previous head and animation playing.
+  std::unique_ptr<playback::HeadRig> newRig;
+  std::unique_ptr<playback::Playback> newPlayback;
+  std::optional<HeadFiles> newHead;
   try {
-    playback_->open(path.toStdString());
+    const std::string file = path.toStdString();
+    if (!headFixed_ && playback::isProjectPath(file)) {
+      newHead = headOfFile(file);
+      if (newHead != head_) {
+        newRig = loadHeadFor(newHead, file);
+        newPlayback = std::make_unique<playback::Playback>(*newRig, kCheckpointInterval);
+        newPlayback->open(file);
+      }
+    }
+    if (!newRig) playback_->open(file);
   } catch (const std::exception& e) {
     QApplication::restoreOverrideCursor();
     reportError(e, path);
     return false;
   }
   QApplication::restoreOverrideCursor();
+  if (newRig) {
+    for (const std::string& w : newRig->warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    viewport_->setHead(newRig->head);
+    playback_ = std::move(newPlayback);  // the old playback goes before the rig it refers to
+    rig_ = std::move(newRig);
+    head_ = std::move(newHead);
+    viewport_->resetView();
+  }
   clock_.setTime(0);
   fileParameters_ = playback_->scene().simulation;
   effects_->display(playback_->scene());

@@ -7,6 +7,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -89,7 +90,22 @@ ProjectDocument randomDocument(unsigned seed) {
   scene.blush = coin(random);
   scene.redness = coin(random) ? SceneSettings::Redness::Tears : SceneSettings::Redness::Animation;
   scene.simulation = randomSimulation(random);
+  // Absolute paths outside any temporary folder: they survive a save anywhere unchanged.
+  if (coin(random)) document.head = HeadFiles{"/opt/faces/head.obj", "/opt/faces/head.fdp.json"};
   return document;
+}
+
+// Writes `text` to `path`, creating its folder.
+void writeFile(const QString& path, const QByteArray& text) {
+  QDir().mkpath(QFileInfo(path).absolutePath());
+  QFile file(path);
+  QVERIFY(file.open(QIODevice::WriteOnly));
+  file.write(text);
+}
+
+QString readFile(const QString& path) {
+  QFile file(path);
+  return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()) : QString();
 }
 
 // A valid document with `fields` spliced into the top level.
@@ -341,6 +357,114 @@ class ProjectDocumentTest : public QObject {
         << R"({"format": "lacrima-project", "version": 1, "keys": [{"time": 0}]})"
         << "doc.json:1:54"
         << "keys[0].values: missing";
+  }
+
+  void rejectsInvalidHeads_data() {
+    QTest::addColumn<QString>("head");
+    QTest::addColumn<QString>("message");  // expected at the start of FileError::message()
+    QTest::newRow("not an object") << R"("heads/ict.obj")"
+                                   << R"(head: expected an object {"mesh": path, "fdp": path})";
+    QTest::newRow("no mesh") << R"({"fdp": "a.fdp.json"})"
+                             << R"(head: missing field "mesh")";
+    QTest::newRow("no fdp") << R"({"mesh": "a.obj"})"
+                            << R"(head: missing field "fdp")";
+    QTest::newRow("empty mesh") << R"({"mesh": "", "fdp": "a.fdp.json"})"
+                                << "head.mesh: expected a file path";
+    QTest::newRow("number fdp") << R"({"mesh": "a.obj", "fdp": 3})"
+                                << "head.fdp: expected a file path";
+    QTest::newRow("unknown member") << R"({"mesh": "a.obj", "fdp": "a.fdp.json", "rig": "x"})"
+                                    << "head.rig: unknown field";
+  }
+
+  void rejectsInvalidHeads() {
+    QFETCH(QString, head);
+    QFETCH(QString, message);
+    const FileError error = parseError(withTopLevel("\"head\": " + head.toStdString()));
+    QVERIFY2(QString::fromStdString(error.message()).startsWith(message), error.what());
+    QCOMPARE(error.where().line, 1);  // the line of the bad value, as for every other field
+    QVERIFY(error.where().column > 1);
+  }
+
+  void headIsOptionalAndKeptAsWritten() {
+    QVERIFY(!ProjectDocument::fromJson(withTopLevel(""), kDisplayName).head);
+    QVERIFY(ProjectDocument{}.toJson().find("\"head\"") == std::string::npos);
+    const ProjectDocument document = ProjectDocument::fromJson(
+        withTopLevel(R"("head": {"mesh": "heads/ict.obj", "fdp": "/abs/ict.fdp.json"})"),
+        kDisplayName);
+    QVERIFY(document.head);
+    QCOMPARE(document.head->mesh, std::string("heads/ict.obj"));
+    QCOMPARE(document.head->fdp, std::string("/abs/ict.fdp.json"));
+    const QString json = QString::fromStdString(document.toJson());
+    QVERIFY2(json.contains("\"head\": {\n    \"mesh\": \"heads/ict.obj\",\n    \"fdp\": "
+                           "\"/abs/ict.fdp.json\"\n  }"),
+             qPrintable(json));
+    QVERIFY(json.indexOf("\"scene\"") < json.indexOf("\"head\""));
+    QVERIFY(ProjectDocument::fromJson(document.toJson(), kDisplayName) == document);
+  }
+
+  // A project names its head relative to its own folder; loading makes the paths absolute and
+  // saving elsewhere (Save As) rewrites them so they name the same files.
+  void headPathsFollowTheProjectFile() {
+    QTemporaryDir folder;
+    QVERIFY(folder.isValid());
+    const QString original = folder.filePath("shots/crying.lacrima");
+    writeFile(original,
+              QByteArray::fromStdString(withTopLevel(
+                  R"("head": {"mesh": "heads/ict.obj", "fdp": "./heads/../heads/ict.fdp.json"})")));
+    const ProjectDocument loaded = ProjectDocument::load(original.toStdString());
+    QVERIFY(loaded.head);
+    const std::string mesh = QDir::cleanPath(folder.filePath("shots/heads/ict.obj")).toStdString();
+    const std::string fdp =
+        QDir::cleanPath(folder.filePath("shots/heads/ict.fdp.json")).toStdString();
+    QCOMPARE(loaded.head->mesh, mesh);
+    QCOMPARE(loaded.head->fdp, fdp);
+
+    // Saved in its own folder: relative again, as written (normalised).
+    loaded.save(original.toStdString());
+    QVERIFY(readFile(original).contains(R"("mesh": "heads/ict.obj")"));
+    QVERIFY(readFile(original).contains(R"("fdp": "heads/ict.fdp.json")"));
+
+    // Save As into a sibling folder: the same files, through "..".
+    const QString moved = folder.filePath("final/v2/crying.lacrima");
+    QDir().mkpath(folder.filePath("final/v2"));
+    loaded.save(moved.toStdString());
+    QVERIFY2(readFile(moved).contains(R"("mesh": "../../shots/heads/ict.obj")"),
+             qPrintable(readFile(moved)));
+    const ProjectDocument reloaded = ProjectDocument::load(moved.toStdString());
+    QCOMPARE(reloaded.head->mesh, mesh);
+    QCOMPARE(reloaded.head->fdp, fdp);
+    QVERIFY(reloaded == loaded);
+
+    // A head sharing only the filesystem root with the project stays absolute.
+    ProjectDocument elsewhere = loaded;
+    elsewhere.head = HeadFiles{"/opt/faces/head.obj", "/opt/faces/head.fdp.json"};
+    elsewhere.save(moved.toStdString());
+    QVERIFY(readFile(moved).contains(R"("mesh": "/opt/faces/head.obj")"));
+    QVERIFY(ProjectDocument::load(moved.toStdString()) == elsewhere);
+  }
+
+  void missingHeadFilesAreNamed() {
+    QTemporaryDir folder;
+    QVERIFY(folder.isValid());
+    ProjectDocument document;
+    QVERIFY(!document.missingHeadFile("p.lacrima"));  // the default head: nothing to check
+    document.head = HeadFiles{folder.filePath("ict.obj").toStdString(),
+                              folder.filePath("ict.fdp.json").toStdString()};
+    auto problem = document.missingHeadFile("p.lacrima");
+    QVERIFY(problem);
+    QCOMPARE(problem->where.file, std::string("p.lacrima"));
+    QVERIFY2(problem->message.starts_with("head.mesh: no file at " + document.head->mesh),
+             problem->message.c_str());
+    QVERIFY(problem->message.find("Choose head") != std::string::npos);
+    writeFile(folder.filePath("ict.obj"), "v 0 0 0\n");
+    problem = document.missingHeadFile("p.lacrima");
+    QVERIFY(problem);
+    QVERIFY(problem->message.starts_with("head.fdp: no file at " + document.head->fdp));
+    QDir().mkpath(folder.filePath("ict.fdp.json"));  // a folder where the file should be
+    QVERIFY(document.missingHeadFile("p.lacrima")->message.starts_with("head.fdp: not a file"));
+    QDir(folder.filePath("ict.fdp.json")).removeRecursively();
+    writeFile(folder.filePath("ict.fdp.json"), "{}");
+    QVERIFY(!document.missingHeadFile("p.lacrima"));
   }
 
   void rejectsInvalidDocuments() {

@@ -412,6 +412,7 @@ void EditorModel::applySettings(const ProjectDocument& settings) {
   document_.defaultInterpolation = settings.defaultInterpolation;
   document_.tearSources = settings.tearSources;
   document_.scene = settings.scene;
+  document_.head = settings.head;
   emit settingsChanged();
   if (oldFps != document_.fps) setCurrentTime(time_);
 }

@@ -9,8 +9,13 @@
 //   "tearSources": { "left": [x, y, z], "right": null },          (head frame; null = rig default)
 //   "scene": { "particles": false, "surface": true, "trails": true, "textureBlending": true,
 //              "redness": "animation" | "tears", "blush": false,
-//              "simulation": { "adhesion": 20, ... } }           (overrides of TearParameters)
+//              "simulation": { "adhesion": 20, ... } },          (overrides of TearParameters)
+//   "head": { "mesh": "heads/ict.obj", "fdp": "heads/ict.fdp.json" }  (optional; absent = the
+//                                                                     default head)
 // }
+// Head paths in the file are relative to the project file's folder (absolute ones are read as
+// they are). load() makes them absolute, so the document names the same files wherever it is
+// saved next; save() writes them relative to the new file's folder again (see HeadFiles).
 // Unknown or invalid fields are errors naming the JSON path and, for syntax errors, the
 // line and column. A document written and read back compares equal.
 #include <lacrima/common/Diagnostics.h>
@@ -46,6 +51,15 @@ struct SceneSettings {
   bool operator==(const SceneSettings&) const = default;
 };
 
+// The head a project is animated on: a mesh assimp reads and its feature-point file
+// (lacrima-fdp). In memory the paths are absolute once a project is loaded (or chosen in the
+// editor); only a document read with fromJson()/read() keeps them as written.
+struct HeadFiles {
+  std::string mesh;
+  std::string fdp;
+  bool operator==(const HeadFiles&) const = default;
+};
+
 struct ProjectDocument {
   static constexpr int kSchemaVersion = 1;
 
@@ -55,18 +69,32 @@ struct ProjectDocument {
   KeyframeSequence keys;
   TearSources tearSources;
   SceneSettings scene;
+  std::optional<HeadFiles> head;  // nullopt: the default head
 
   bool operator==(const ProjectDocument& other) const;
 
-  std::string toJson() const;
+  std::string toJson() const;  // head paths as stored
   // Throws FileError with `displayName` and the line/column or JSON path of the problem.
   static ProjectDocument fromJson(std::string_view json, const std::string& displayName);
   // A project stored as a value of a larger document (a recovery file holds one). Throws
   // FileError naming the line, column and JSON path of the problem.
   static ProjectDocument read(const JsonValue& value);
 
+  // Reads `path` and resolves the head's relative paths against its folder.
   static ProjectDocument load(const std::string& path);
-  void save(const std::string& path) const;  // atomic: temporary file, then rename
+  // Atomic (temporary file, then rename). The head's paths are written relative to the folder
+  // of `path` when the two share more than the filesystem root, absolute otherwise, so a
+  // "Save As" elsewhere still names the same files and a project folder can be moved whole.
+  void save(const std::string& path) const;
+
+  // Head paths made absolute against `folder` (what load() does), or relative to it (what
+  // save() writes). No-ops without a head.
+  void resolveHeadPaths(const std::string& folder);
+  void relativizeHeadPaths(const std::string& folder);
+  // The first head file that does not exist, as "project: head.mesh: ..." naming the missing
+  // file and what to do; nullopt when both exist or there is no head. `projectPath` names the
+  // project in the message.
+  std::optional<Diagnostic> missingHeadFile(const std::string& projectPath) const;
 
   FapAnimation bake() const { return keys.bake(fps); }
   static ProjectDocument fromAnimation(const FapAnimation& animation);  // a key per frame

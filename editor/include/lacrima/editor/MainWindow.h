@@ -76,6 +76,10 @@ class MainWindow : public QMainWindow {
   bool importFap(const QString& path, std::optional<double> reductionTolerance);
   bool exportFap(const QString& path, const editing::FapExportOptions& options);
   QString filePath() const { return filePath_; }
+  // The project's head: a mesh and its feature-point file (File > Choose head…), as one undoable
+  // edit; the preview rigs it in the background. False (reason in lastError()) when either file
+  // does not exist.
+  bool setHead(const QString& meshPath, const QString& fdpPath);
   QString lastError() const { return lastError_; }
 
   // --- autosave and recovery --------------------------------------------------------------
@@ -113,6 +117,7 @@ class MainWindow : public QMainWindow {
   bool saveDialog();
   void importDialog();
   void exportDialog();
+  void chooseHeadDialog();
   void settingsDialog();
   void loadPresetsDialog();
   void showShortcuts();

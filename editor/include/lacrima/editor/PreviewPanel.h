@@ -1,6 +1,7 @@
 #pragma once
 // The live preview: the shared face viewport (lacrima::viewport::FaceViewport) showing the
-// default head posed by the current slider values, with its tears.
+// project's head (ProjectDocument::head, or the default head) posed by the current slider
+// values, with its tears.
 //
 // Driving the playback layer (lacrima::playback::FrameProducer on a HeadRig):
 //   paused, no tears shown      -> producer.pose(values): the face only, nothing simulated;
@@ -9,16 +10,28 @@
 //   paused, a tear channel > 0
 //   and "tear preview" on       -> produce() on an idle timer at the project's rate, so tears
 //                                  keep running down the face while the animator works.
-// A document change (new/open) resets the tears. The head is loaded once, after the window is
-// up; when it is not fetched (or the viewport cannot render, e.g. on the offscreen platform)
-// the panel says so and the editor works on without a preview.
+// A document change (new/open) resets the tears.
+//
+// The head: once followDocumentHead() has been called (the window does, after it is up), the
+// panel rigs the document's head on a worker thread (RigJob; progress in the message or the
+// status) and rigs again whenever a document naming another head is opened or the head is
+// changed (File > Choose head…). A head file that is missing, or a rig that fails, leaves the
+// editor working without a preview and says what is wrong and what to do; the document keeps
+// its head reference, so saving loses nothing. Rig warnings (a head without eyes: no tears)
+// go to the status. When the viewport cannot render (the offscreen platform) the panel says so.
 #include <QWidget>
+
+#include <QStringList>
 
 #include <memory>
 
 class QLabel;
 class QToolButton;
 class QTimer;
+
+namespace lacrima::playback {
+struct HeadRig;
+}
 
 namespace lacrima::editing {
 class EditorModel;
@@ -34,11 +47,21 @@ class PreviewPanel : public QWidget {
                QWidget* parent = nullptr);
   ~PreviewPanel() override;
 
-  // Loads the default head now (also scheduled by the constructor). Returns whether a head is
-  // shown.
+  // Starts showing the document's head (in the background) and follows it from now on.
+  void followDocumentHead();
+  // followDocumentHead(), then waits (turning the event loop) until the head is rigged or has
+  // failed: for tests and batch screenshots. Returns whether a head is shown.
   bool loadHead();
   bool hasHead() const;
+  bool headLoading() const;
+  // Vertices of the head shown (0 when none): which head the preview animates.
+  int headVertexCount() const;
+  // The rig's warnings for the head shown ("file: message").
+  QStringList headWarnings() const;
   QString statusText() const;
+  // The text shown instead of the viewport (loading, a missing head file, no display); empty
+  // while the viewport shows a head.
+  QString messageText() const;
 
   bool tearPreview() const { return tearPreview_; }
   void setTearPreview(bool on);
@@ -57,11 +80,18 @@ class PreviewPanel : public QWidget {
 
  signals:
   void statusChanged(const QString& text);
+  // A head was installed (hasHead() may still be false without a display) or failed.
+  void headReady();
+  void headFailed(const QString& message);
 
  private:
   void onValuesChanged();
   void updateIdleTimer();
   void setStatus(const QString& text);
+  void syncHead(bool retryFailed);
+  void installRig(std::shared_ptr<playback::HeadRig> rig);
+  void showRigFailure(const QString& error);
+  void showMessage(const QString& text);
 
   struct State;
   std::unique_ptr<State> state_;

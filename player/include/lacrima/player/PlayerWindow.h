@@ -12,7 +12,8 @@
 //
 // Files come in through one path, openFile(): the Open dialog, drag and drop, the command
 // line and the "Open demo" action all use it. A file that cannot be read gives a dialog naming
-// the file, line and what was expected; the animation that was playing stays.
+// the file, line and what was expected; the animation that was playing stays. A project that
+// names its own head is played on it (see setHeadSource).
 #include <lacrima/player/RealTimeClock.h>
 
 #include <lacrima/playback/HeadRig.h>
@@ -23,6 +24,7 @@
 
 #include <deque>
 #include <memory>
+#include <optional>
 
 class QAction;
 class QLabel;
@@ -53,6 +55,10 @@ class PlayerWindow : public QMainWindow {
   void togglePlay();
   void resetPlayback();  // neutral face, no tears, time 0
   void seek(double seconds);
+  // What the rig was built from: a project's head files, or nullopt (the default head). Opening
+  // a project that names another head (or none) rigs that head first, unless `fixed` (the
+  // command line's --mesh/--fdp). A FAP file plays on the head shown.
+  void setHeadSource(std::optional<HeadFiles> head, bool fixed);
 
   bool playing() const { return clock_.running(); }
   double renderedFramesPerSecond() const { return fps_; }
@@ -97,6 +103,8 @@ class PlayerWindow : public QMainWindow {
 
   std::unique_ptr<playback::HeadRig> rig_;
   std::unique_ptr<playback::Playback> playback_;
+  std::optional<HeadFiles> head_;  // setHeadSource()
+  bool headFixed_ = false;
   RealTimeClock clock_;
   QTimer* ticker_;
   viewport::FaceViewport* viewport_;

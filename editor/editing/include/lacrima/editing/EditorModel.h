@@ -100,7 +100,8 @@ class EditorModel : public QObject {
   // Mirrors left <-> right: the selected keys, else the key at the current time, else the
   // current pose as a new key.
   void mirror();
-  // Name, fps, default interpolation, tear sources and scene (the keys of `settings` are ignored).
+  // Name, fps, default interpolation, tear sources, scene and head (the keys of `settings` are
+  // ignored).
   void setSettings(const ProjectDocument& settings, const QString& text);
 
   // --- for the commands only ----------------------------------------------------------
