@@ -235,9 +235,10 @@ class PointPositionsTest : public QObject {
     // e.g. "file:14:12: points."2.1": point 2.1 (vertex 5 of "skin", stored at [...]) is 0.7
     // from its stored position: re-snapped to vertex 138 of "skin", moved 0.7, 0 from ..."
     QVERIFY2(contains(text, path + ":"), text.c_str());
-    QVERIFY2(contains(text, "points.\"2.1\": point 2.1 (vertex 5 of \"skin\""), text.c_str());
+    QVERIFY2(contains(text, "points.\"2.1\".position: point 2.1 (vertex 5 of \"skin\""),
+             text.c_str());
     QVERIFY2(contains(text, "re-snapped to vertex 138 of \"skin\", moved "), text.c_str());
-    QVERIFY2(contains(text, "tear_sources.left: tear source left"), text.c_str());
+    QVERIFY2(contains(text, "tear_sources.left.position: tear source left"), text.c_str());
     for (const Diagnostic& d : warnings)
       QVERIFY2(d.where.line > 0 && d.where.column > 0, d.toString().c_str());
     // The corrected file validates silently: it now says where each point is.
@@ -356,8 +357,9 @@ class PointPositionsTest : public QObject {
         rigging::validateFeaturePoints(back, edited, &warnings, rigging::FeaturePointSet::Partial);
     QVERIFY(snapped.points.at("2.1").at.vertex != 5);
     const std::string text = joined(warnings);
+    QCOMPARE(warnings.size(), std::size_t{1});
     QVERIFY2(contains(text, "points.\"2.1\".position: point 2.1") &&
-                 contains(text, "a re-exported mesh allows"),
+                 contains(text, "a re-exported mesh allows; check this point"),
              text.c_str());
   }
 
