@@ -501,9 +501,10 @@ FeaturePointFile validateFeaturePoints(const FeaturePointFile& input, const Head
                                             " from its stored position"
                                       : " has no place on this mesh");
       if (!std::isfinite(snap.residual)) {
-        unsnappable.push_back(v.note(entry.at / "position",
-                                     was + "; sub-mesh \"" + submesh->name +
-                                         "\" has no vertex or triangle with area to snap it to"));
+        unsnappable.push_back(
+            v.note(entry.at / "position", was + "; nothing to snap it to (\"" + submesh->name +
+                                              "\" has no vertex or triangle with area, or the "
+                                              "position is beyond the range of a float)"));
         continue;
       }
       const std::string far = " (more than the " + number(tolerance.lost) +

@@ -278,6 +278,24 @@ class PointPositionsTest : public QObject {
     QVERIFY2(!contains(error, "another mesh"), error.c_str());
   }
 
+  // Absurd stored positions (far beyond any float) give a clear error, never a crash or NaN.
+  void absurdPositionsAreRefused() {
+    const HeadMesh mesh = sheetMesh();
+    rigging::FeaturePointFile f = sheetFile();
+    rigging::recordPositions(f, mesh);
+    f.points["2.1"].at.position = Eigen::Vector3d(1e300, 0, 0);
+    f.points["8.3"].at.position = Eigen::Vector3d(0, -1e300, 1e300);
+    const rigging::FeaturePointFile back = saved(f, "absurd.fdp.json");
+    Warnings warnings;
+    const std::string error = fileErrorOf([&] {
+      rigging::validateFeaturePoints(back, mesh, &warnings, rigging::FeaturePointSet::Partial);
+    });
+    QVERIFY2(contains(error, "points.\"2.1\".position") && contains(error, "nothing to snap it to"),
+             error.c_str());
+    QVERIFY2(contains(error, "points.\"8.3\".position"), error.c_str());
+    QVERIFY2(!contains(error, "nan"), error.c_str());
+  }
+
   // Within kPositionMatch of the diagonal a point is where the file says (float rounding of a
   // re-export); well beyond it, it is re-snapped.
   void toleranceIsRelativeToTheMesh() {
