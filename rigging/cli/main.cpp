@@ -12,6 +12,7 @@
 #include <lacrima/exporters/GlbExport.h>
 #include <lacrima/exporters/OgreMeshExport.h>
 #include <lacrima/rigging/DefaultHead.h>
+#include <lacrima/rigging/FaceFrame.h>
 #include <lacrima/rigging/FeaturePointFile.h>
 #include <lacrima/rigging/FeaturePointProposal.h>
 #include <lacrima/rigging/MeshImport.h>
@@ -83,9 +84,11 @@ PreviewPoints pointsForPreview(const HeadMesh& mesh, const rigging::FeaturePoint
 
 // --complete: the partial file's points plus the default head's others, carried onto `mesh`
 // (FeaturePointProposal.h).
-rigging::FeaturePointFile completeFeaturePoints(const rigging::FeaturePointFile& partial,
-                                                const HeadMesh& mesh, Warnings* warnings) {
-  rigging::validateFeaturePoints(partial, mesh, warnings, rigging::FeaturePointSet::Partial);
+rigging::FeaturePointFile completeFeaturePoints(const rigging::FeaturePointFile& file,
+                                                const HeadMesh& mesh, std::string_view meshName,
+                                                Warnings* warnings) {
+  const rigging::FeaturePointFile partial = rigging::validateFeaturePoints(
+      file, mesh, warnings, rigging::FeaturePointSet::Partial, meshName);
   if (!rigging::defaultHeadAvailable())
     throw FileError({rigging::defaultHeadPackageDir(), 0, 0},
                     "--complete carries the default head's feature points, but the default head "
@@ -94,7 +97,10 @@ rigging::FeaturePointFile completeFeaturePoints(const rigging::FeaturePointFile&
   const rigging::FeaturePointFile referenceFdp =
       rigging::readFeaturePointFile(findMediaFile("default-head.fdp.json"));
   rigging::validateFeaturePoints(referenceFdp, reference, nullptr);
-  return rigging::proposeFeaturePoints(partial, mesh, referenceFdp, reference, warnings);
+  rigging::FeaturePointFile complete =
+      rigging::proposeFeaturePoints(partial, mesh, referenceFdp, reference, warnings);
+  rigging::recordPositions(complete, mesh);  // so that a re-exported mesh can be re-snapped
+  return complete;
 }
 
 void savePng(const QImage& image, const std::string& path) {
@@ -140,6 +146,7 @@ int run(QCommandLineParser& parser) {
   timer.start();
   HeadMesh mesh;
   std::string fdpPath = parser.value("fdp").toStdString();
+  const std::string meshName = useDefault ? "the default head" : parser.value("mesh").toStdString();
   if (useDefault) {
     if (!rigging::defaultHeadAvailable())
       throw FileError(
@@ -153,20 +160,24 @@ int run(QCommandLineParser& parser) {
   Warnings warnings;
   rigging::FeaturePointFile fdp = rigging::readFeaturePointFile(fdpPath, &warnings);
   if (complete) {
-    fdp = completeFeaturePoints(fdp, mesh, &warnings);
+    fdp = completeFeaturePoints(fdp, mesh, meshName, &warnings);
     const std::string out = parser.value("complete").toStdString();
     saveAtomically(out, rigging::featurePointFileJson(fdp));
     std::fprintf(stderr, "lacrima-rig: wrote %s (%zu feature points)\n", out.c_str(),
                  fdp.points.size());
     fdp = rigging::readFeaturePointFile(out);  // so that messages name the complete file's lines
   }
-  rigging::validateFeaturePoints(fdp, mesh, &warnings);
+  fdp = rigging::validateFeaturePoints(fdp, mesh, &warnings, rigging::FeaturePointSet::Complete,
+                                       meshName);
   for (const std::string& w : rigging::checkSkinTopology(mesh, fdp.skin)) {
     Diagnostic d;
     d.where.file = fdpPath;
     d.message = w;
     warnings.push_back(std::move(d));
   }
+  // From here on head and points are in the face frame (+y up, face towards +z), whatever axes
+  // the head was exported with: the rig, rig.json and the images.
+  const rigging::FaceFrame frame = rigging::bringToFaceFrame(mesh, fdp, &warnings);
   printWarnings(warnings);
 
   std::optional<rigging::BuiltRig> rig;
@@ -191,7 +202,7 @@ int run(QCommandLineParser& parser) {
     const std::string base = QDir(dir).absolutePath().toStdString() + "/";
     exporters::exportOgreMesh(mesh, rig->poses, base + "head.mesh");
     exporters::exportGlb(mesh, rig->poses, base + "head.glb");
-    saveAtomically(base + "rig.json", rigging::rigDescriptionJson(mesh, *rig));
+    saveAtomically(base + "rig.json", rigging::rigDescriptionJson(mesh, *rig, {}, frame));
     std::fprintf(
         stderr,
         "lacrima-rig: wrote %shead.mesh, head.material, head.glb, rig.json (%.2f s in all)\n",

@@ -1,5 +1,7 @@
 #include <lacrima/rigging/FeaturePointFile.h>
 
+#include "FeaturePointFileSnap.h"
+
 #include <lacrima/common/FapTable.h>
 #include <lacrima/common/JsonInput.h>
 
@@ -8,6 +10,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <set>
 
@@ -117,7 +120,7 @@ class Reader {
             "\"barycentric\")");
       return std::nullopt;
     }
-    std::vector<std::string_view> known{"submesh", "vertex", "triangle", "barycentric"};
+    std::vector<std::string_view> known{"submesh", "vertex", "triangle", "barycentric", "position"};
     known.insert(known.end(), extraKeys.begin(), extraKeys.end());
     allowKeys(value, known);
     SurfacePoint p;
@@ -128,6 +131,10 @@ class Reader {
       good = false;
     } else {
       p.submesh = submesh.string();
+    }
+    if (value.has("position")) {
+      p.position = vector3(value["position"]);
+      good = good && p.position.has_value();
     }
     const bool hasVertex = value.has("vertex"), hasTriangle = value.has("triangle");
     if (hasVertex == hasTriangle) {
@@ -167,56 +174,127 @@ class Validator {
   void error(const JsonPath& at, const std::string& what) {
     errors_.push_back(source_.problem(at, what));
   }
+  void error(Diagnostic problem) { errors_.push_back(std::move(problem)); }
   Diagnostic note(const JsonPath& at, const std::string& what) const {
     return source_.problem(at, what);
   }
+  const std::vector<Diagnostic>& errors() const { return errors_; }
   void throwIfErrors() const {
     if (!errors_.empty()) throwAll(errors_);
   }
 
+  std::string unknownSubmesh(const std::string& name) const {
+    std::string known;
+    for (const HeadSubmesh& each : mesh_.submeshes)
+      known += (known.empty() ? "" : ", ") + each.name;
+    return "unknown sub-mesh \"" + name + "\" (the head has: " + known + ")";
+  }
+
   const HeadSubmesh* submesh(const std::string& name, const JsonPath& at) {
     const HeadSubmesh* s = mesh_.findSubmesh(name);
-    if (!s) {
-      std::string known;
-      for (const HeadSubmesh& each : mesh_.submeshes)
-        known += (known.empty() ? "" : ", ") + each.name;
-      error(at, "unknown sub-mesh \"" + name + "\" (the head has: " + known + ")");
-    }
+    if (!s) error(at, unknownSubmesh(name));
     return s;
   }
 
-  void checkPoint(const SurfacePoint& p, const JsonPath& at) {
-    const HeadSubmesh* s = submesh(p.submesh, at / "submesh");
-    if (!s) return;
+  // Whether a point's indices lead anywhere on the mesh, and if not, what is wrong (at `where`).
+  struct Binding {
+    const HeadSubmesh* submesh = nullptr;  // nullptr: no such sub-mesh
+    std::optional<Diagnostic> problem;     // unknown sub-mesh, index out of range, no area
+  };
+  Binding bind(const SurfacePoint& p, const JsonPath& at) const {
+    Binding b;
+    b.submesh = mesh_.findSubmesh(p.submesh);
+    if (!b.submesh) {
+      b.problem = note(at / "submesh", unknownSubmesh(p.submesh));
+      return b;
+    }
+    const HeadSubmesh& s = *b.submesh;
     if (p.vertex >= 0) {
-      if (p.vertex >= s->vertexCount)
-        error(at / "vertex", "index " + std::to_string(p.vertex) + " out of range; sub-mesh \"" +
-                                 p.submesh + "\" has vertices 0.." +
-                                 std::to_string(s->vertexCount - 1));
-      return;
+      if (p.vertex >= s.vertexCount)
+        b.problem = note(at / "vertex",
+                         "index " + std::to_string(p.vertex) + " out of range; sub-mesh \"" +
+                             p.submesh + "\" has vertices 0.." + std::to_string(s.vertexCount - 1));
+      return b;
     }
-    if (p.triangle >= static_cast<int>(s->triangles.size())) {
-      error(at / "triangle", "index " + std::to_string(p.triangle) + " out of range; sub-mesh \"" +
-                                 p.submesh + "\" has triangles 0.." +
-                                 std::to_string(static_cast<int>(s->triangles.size()) - 1));
-      return;
+    if (p.triangle >= static_cast<int>(s.triangles.size())) {
+      b.problem = note(at / "triangle",
+                       "index " + std::to_string(p.triangle) + " out of range; sub-mesh \"" +
+                           p.submesh + "\" has triangles 0.." +
+                           std::to_string(static_cast<int>(s.triangles.size()) - 1));
+      return b;
     }
-    const Eigen::Vector3i t = s->triangles[static_cast<std::size_t>(p.triangle)];
+    const Eigen::Vector3i t = s.triangles[static_cast<std::size_t>(p.triangle)];
     const Eigen::Vector3d a = mesh_.positions.col(t[0]).cast<double>();
-    const Eigen::Vector3d b = mesh_.positions.col(t[1]).cast<double>();
+    const Eigen::Vector3d b2 = mesh_.positions.col(t[1]).cast<double>();
     const Eigen::Vector3d c = mesh_.positions.col(t[2]).cast<double>();
-    const double area2 = (b - a).cross(c - a).norm();
-    const double scale = (b - a).squaredNorm() + (c - a).squaredNorm() + (c - b).squaredNorm();
+    const double area2 = (b2 - a).cross(c - a).norm();
+    const double scale = (b2 - a).squaredNorm() + (c - a).squaredNorm() + (c - b2).squaredNorm();
     if (!(area2 > 1e-8 * scale))
-      error(at / "triangle",
-            "triangle " + std::to_string(p.triangle) + " of \"" + p.submesh +
-                "\" is degenerate (no area); bind the point to a vertex or another triangle");
+      b.problem =
+          note(at / "triangle", "triangle " + std::to_string(p.triangle) + " of \"" + p.submesh +
+                                    "\" is degenerate (no area); bind the point to a "
+                                    "vertex or another triangle");
+    return b;
   }
 
  private:
   JsonSource source_;
   const HeadMesh& mesh_;
   std::vector<Diagnostic> errors_;
+};
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return text;
+}
+
+std::string vectorText(const Eigen::Vector3d& v) {
+  std::string text = "[";  // appended piece by piece: GCC 12 warns (-Wrestrict) about "[" + ...
+  text += number(v.x());
+  text += ", ";
+  text += number(v.y());
+  text += ", ";
+  text += number(v.z());
+  text += "]";
+  return text;
+}
+
+// "vertex 812 of \"skin\"" or "triangle 97 of \"skin\"".
+std::string bindingText(const SurfacePoint& p) {
+  return (p.vertex >= 0 ? "vertex " + std::to_string(p.vertex)
+                        : "triangle " + std::to_string(p.triangle)) +
+         " of \"" + p.submesh + "\"";
+}
+
+// "head.glb (12345 vertices; sub-meshes skin 9000, eye_l 300, ...)", "this mesh (...)" unnamed.
+std::string meshText(const HeadMesh& mesh, std::string_view name) {
+  std::string text = name.empty() ? "this mesh" : std::string(name);
+  text += " (" + std::to_string(mesh.vertexCount()) + " vertices; sub-meshes";
+  constexpr std::size_t kListed = 6;
+  for (std::size_t k = 0; k < mesh.submeshes.size() && k < kListed; ++k)
+    text += (k ? ", " : " ") + mesh.submeshes[k].name + " " +
+            std::to_string(mesh.submeshes[k].vertexCount);
+  if (mesh.submeshes.size() > kListed)
+    text += " and " + std::to_string(mesh.submeshes.size() - kListed) + " more";
+  if (mesh.submeshes.empty()) text += ": none";
+  return text + ")";
+}
+
+// A problem of the whole file, with no line (built member by member: GCC 12 warns about an
+// aggregate initialiser here).
+Diagnostic fileProblem(const std::string& file, std::string message) {
+  Diagnostic d;
+  d.where.file = file;
+  d.message = std::move(message);
+  return d;
+}
+
+// One surface point of the file (a feature point or a tear source) as validation sees it.
+struct SurfaceEntry {
+  JsonPath at;
+  std::string name;  // "feature point 2.1", "tear source left"
+  SurfacePoint* point;
 };
 
 }  // namespace
@@ -352,8 +430,10 @@ FeaturePointFile readFeaturePointFile(const std::string& path, Warnings* warning
   return out;
 }
 
-void validateFeaturePoints(const FeaturePointFile& file, const HeadMesh& mesh, Warnings* warnings,
-                           FeaturePointSet set) {
+FeaturePointFile validateFeaturePoints(const FeaturePointFile& input, const HeadMesh& mesh,
+                                       Warnings* warnings, FeaturePointSet set,
+                                       std::string_view meshName) {
+  FeaturePointFile file = input;
   Validator v(file, mesh);
   const JsonPath roles = JsonPath() / "submeshes";
   std::map<std::string, std::string> roleOf;  // sub-mesh -> role, to catch a name in two roles
@@ -374,20 +454,110 @@ void validateFeaturePoints(const FeaturePointFile& file, const HeadMesh& mesh, W
   checkRole(file.attached, "attached");
 
   const JsonPath points = JsonPath() / "points";
-  for (const auto& [id, spec] : file.points) v.checkPoint(spec.at, points / id);
-  if (file.tearLeft) v.checkPoint(*file.tearLeft, JsonPath() / "tear_sources" / "left");
-  if (file.tearRight) v.checkPoint(*file.tearRight, JsonPath() / "tear_sources" / "right");
+  std::vector<SurfaceEntry> entries;
+  for (auto& [id, spec] : file.points) entries.push_back({points / id, "point " + id, &spec.at});
+  for (auto [side, tear] : {std::pair{"left", &file.tearLeft}, std::pair{"right", &file.tearRight}})
+    if (*tear)
+      entries.push_back(
+          {JsonPath() / "tear_sources" / side, std::string("tear source ") + side, &**tear});
+
+  // Indices first; a point with a stored position that its index does not lead to (or cannot:
+  // out of range, no area) is re-snapped below instead of refused.
+  const detail::PositionTolerances tolerance = detail::positionTolerances(file, mesh);
+  std::vector<Diagnostic> misfits;  // points that do not fit and cannot be re-snapped
+  std::map<const HeadSubmesh*, std::vector<std::size_t>> toSnap;  // entries by sub-mesh
+  std::map<std::size_t, std::optional<Eigen::Vector3d>> boundBefore;
+  int positioned = 0;
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    const SurfacePoint& p = *entries[k].point;
+    const Validator::Binding b = v.bind(p, entries[k].at);
+    if (!b.submesh || (b.problem && !p.position)) {
+      misfits.push_back(*b.problem);
+      continue;
+    }
+    if (!p.position) continue;
+    ++positioned;
+    std::optional<Eigen::Vector3d> bound;
+    if (!b.problem) bound = surfacePosition(p, mesh);
+    if (bound && (*bound - *p.position).norm() <= tolerance.match) continue;
+    toSnap[b.submesh].push_back(k);
+    boundBefore[k] = bound;
+  }
+
+  std::vector<Diagnostic> lost;         // re-snapped, but nothing of the sub-mesh is near
+  std::vector<Diagnostic> unsnappable;  // nothing to re-snap to at all
+  Warnings snapped;
+  for (const auto& [submesh, which] : toSnap) {
+    std::vector<const SurfacePoint*> queries;
+    for (std::size_t k : which) queries.push_back(entries[k].point);
+    const std::vector<detail::Snap> snaps = detail::snapToSubmesh(mesh, *submesh, queries);
+    for (std::size_t q = 0; q < which.size(); ++q) {
+      const SurfaceEntry& entry = entries[which[q]];
+      const detail::Snap& snap = snaps[q];
+      const std::optional<Eigen::Vector3d>& before = boundBefore[which[q]];
+      const std::string was = entry.name + " (" + bindingText(*entry.point) + ", stored at " +
+                              vectorText(*entry.point->position) + ")" +
+                              (before ? " is " + number((*before - *entry.point->position).norm()) +
+                                            " from its stored position"
+                                      : " has no place on this mesh");
+      if (!std::isfinite(snap.residual)) {
+        unsnappable.push_back(
+            v.note(entry.at / "position", was + "; nothing to snap it to (\"" + submesh->name +
+                                              "\" has no vertex or triangle with area, or the "
+                                              "position is beyond the range of a float)"));
+        continue;
+      }
+      const std::string far = " (more than the " + number(tolerance.lost) +
+                              " a re-exported mesh allows; check this point)";
+      if (snap.residual > tolerance.lost)
+        lost.push_back(v.note(entry.at / "position", was + "; the nearest of \"" + submesh->name +
+                                                         "\" is " + number(snap.residual) +
+                                                         " away" + far));
+      const std::string moved =
+          before ? ", moved " + number((*snap.point.position - *before).norm()) : std::string();
+      snapped.push_back(v.note(entry.at / "position",
+                               was + ": re-snapped to " + bindingText(snap.point) + moved + ", " +
+                                   number(snap.residual) + " from the stored position" +
+                                   (snap.residual > tolerance.lost ? far : std::string())));
+      *entry.point = snap.point;
+    }
+  }
+
+  // Most points not fitting is another mesh, not a few misplaced points: say so first.
+  const bool mostLost =
+      2 * (lost.size() + unsnappable.size()) > static_cast<std::size_t>(positioned);
+  const bool mostMisfit = 2 * misfits.size() > entries.size();
+  if (mostLost || mostMisfit) {
+    std::vector<Diagnostic> mismatches = lost;
+    mismatches.insert(mismatches.end(), unsnappable.begin(), unsnappable.end());
+    mismatches.insert(mismatches.end(), misfits.begin(), misfits.end());
+    std::string summary =
+        "this feature-point file was placed on another mesh: " + std::to_string(mismatches.size()) +
+        " of " + std::to_string(entries.size()) + " points do not fit " + meshText(mesh, meshName);
+    if (!file.meshNote.empty()) summary += "; the file says it is for \"" + file.meshNote + "\"";
+    constexpr std::size_t kShown = 5;
+    std::vector<Diagnostic> report{fileProblem(file.path, summary + ". First mismatches:")};
+    for (std::size_t k = 0; k < mismatches.size() && k < kShown; ++k)
+      report.push_back(mismatches[k]);
+    if (mismatches.size() > kShown)
+      report.push_back(
+          fileProblem(file.path, "and " + std::to_string(mismatches.size() - kShown) + " more"));
+    throwAll(report);
+  }
+  for (Diagnostic& d : misfits) v.error(std::move(d));
+  for (Diagnostic& d : unsnappable) v.error(std::move(d));
+  if (warnings) warnings->insert(warnings->end(), snapped.begin(), snapped.end());
 
   if (set == FeaturePointSet::Partial) {
     v.throwIfErrors();
-    return;
+    return file;
   }
   for (const std::string& id : fapuFeaturePoints())
     if (!file.points.count(id))
       v.error(points, "missing required feature point " + id + " (it defines a FAPU: expected \"" +
                           id + "\": {\"submesh\": ..., \"vertex\": ...})");
   v.throwIfErrors();
-  if (!warnings) return;
+  if (!warnings) return file;
   for (const std::string& id : animatedFeaturePoints()) {
     if (file.points.count(id)) continue;
     std::string faps;
@@ -417,6 +587,7 @@ void validateFeaturePoints(const FeaturePointFile& file, const HeadMesh& mesh, W
   if (!file.neckPivot)
     warnings->push_back(v.note(JsonPath() / "neck_pivot",
                                "not given; using the centre of the skin's lowest open boundary"));
+  return file;
 }
 
 std::vector<int> surfaceVertices(const SurfacePoint& point, const HeadMesh& mesh) {

@@ -1,4 +1,5 @@
-// Writing a feature-point file: the format of FeaturePointFile.h, in its documented key order.
+// Writing a feature-point file: the format of FeaturePointFile.h, in its documented key order,
+// and the positions every written file carries.
 #include <lacrima/common/JsonWriter.h>
 #include <lacrima/rigging/FeaturePointFile.h>
 
@@ -21,14 +22,24 @@ void writeSurfacePoint(JsonWriter& w, const SurfacePoint& p) {
   w.field("submesh", p.submesh);
   if (p.vertex >= 0) {
     w.field("vertex", p.vertex);
-    return;
+  } else {
+    w.field("triangle", p.triangle);
+    w.key("barycentric");
+    writeVector(w, p.barycentric);
   }
-  w.field("triangle", p.triangle);
-  w.key("barycentric");
-  writeVector(w, p.barycentric);
+  if (p.position) {
+    w.key("position");
+    writeVector(w, *p.position);
+  }
 }
 
 }  // namespace
+
+void recordPositions(FeaturePointFile& file, const HeadMesh& mesh) {
+  for (auto& [id, spec] : file.points) spec.at.position = surfacePosition(spec.at, mesh);
+  for (std::optional<SurfacePoint>* tear : {&file.tearLeft, &file.tearRight})
+    if (*tear) (*tear)->position = surfacePosition(**tear, mesh);
+}
 
 std::string featurePointFileJson(const FeaturePointFile& file) {
   JsonWriter w;

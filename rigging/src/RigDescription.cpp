@@ -44,13 +44,24 @@ Eigen::Vector3d featurePointDisplacement(const BuiltRig& rig, const std::string&
   return d;
 }
 
-std::string rigDescriptionJson(const HeadMesh& mesh, const BuiltRig& rig, const RigFiles& files) {
+std::string rigDescriptionJson(const HeadMesh& mesh, const BuiltRig& rig, const RigFiles& files,
+                               const FaceFrame& frame) {
   JsonWriter w;
   w.beginObject();
   w.field("format", "lacrima-rig");
   w.field("version", 1);
   w.field("mesh", files.ogreMesh);
   w.field("glb", files.glb);
+  w.key("face_frame");
+  w.beginObject();
+  w.field("axes", "+x the face's left, +y up, +z forward");
+  w.key("rotation");  // rows: face frame = rotation x the imported mesh's coordinates
+  w.beginArray();
+  for (int i = 0; i < 3; ++i) row(w, frame.rotation.row(i).transpose());
+  w.endArray();
+  w.field("measured", frame.wasMeasured);
+  w.field("tilt_degrees", frame.tiltDegrees);
+  w.endObject();
   w.key("fapu");
   fapuObject(w, rig.fapu);
   w.key("feature_points");

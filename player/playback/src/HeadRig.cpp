@@ -15,26 +15,17 @@ namespace lacrima::playback {
 
 namespace {
 
-// Reads the feature-point file at `fdpPath` and rigs `head` with it.
-std::unique_ptr<HeadRig> rigHeadFromFile(HeadMesh head, const std::string& fdpPath) {
-  Warnings warnings;
-  const rigging::FeaturePointFile fdp = rigging::readFeaturePointFile(fdpPath, &warnings);
-  auto rig = rigHead(std::move(head), fdp);
-  std::vector<std::string> fileWarnings;
-  for (const Diagnostic& d : warnings) fileWarnings.push_back(d.toString());
-  rig->warnings.insert(rig->warnings.begin(), fileWarnings.begin(), fileWarnings.end());
-  return rig;
-}
-
-}  // namespace
-
-std::unique_ptr<HeadRig> rigHead(HeadMesh head, const rigging::FeaturePointFile& fdp,
-                                 const rigging::RigOptions& options) {
+// rigHead, with the mesh's file named in the messages of a feature-point file that does not fit.
+std::unique_ptr<HeadRig> rigNamedHead(HeadMesh head, const rigging::FeaturePointFile& fdp,
+                                      const rigging::RigOptions& options,
+                                      std::string_view meshName) {
   auto rig = std::make_unique<HeadRig>();
   rig->head = std::move(head);
   Warnings warnings;
-  rigging::validateFeaturePoints(fdp, rig->head, &warnings);
-  rig->rig = rigging::buildRig(rig->head, fdp, options);
+  rigging::FeaturePointFile points = rigging::validateFeaturePoints(
+      fdp, rig->head, &warnings, rigging::FeaturePointSet::Complete, meshName);
+  rig->frame = rigging::bringToFaceFrame(rig->head, points, &warnings);
+  rig->rig = rigging::buildRig(rig->head, points, options);
   for (const Diagnostic& d : warnings) rig->warnings.push_back(d.toString());
   for (const std::string& w : rig->rig.warnings) rig->warnings.push_back(fdp.path + ": " + w);
   try {
@@ -46,13 +37,33 @@ std::unique_ptr<HeadRig> rigHead(HeadMesh head, const rigging::FeaturePointFile&
   return rig;
 }
 
+// Reads the feature-point file at `fdpPath` and rigs `head` (read from `meshName`) with it.
+std::unique_ptr<HeadRig> rigHeadFromFile(HeadMesh head, const std::string& fdpPath,
+                                         std::string_view meshName) {
+  Warnings warnings;
+  const rigging::FeaturePointFile fdp = rigging::readFeaturePointFile(fdpPath, &warnings);
+  auto rig = rigNamedHead(std::move(head), fdp, {}, meshName);
+  std::vector<std::string> fileWarnings;
+  for (const Diagnostic& d : warnings) fileWarnings.push_back(d.toString());
+  rig->warnings.insert(rig->warnings.begin(), fileWarnings.begin(), fileWarnings.end());
+  return rig;
+}
+
+}  // namespace
+
+std::unique_ptr<HeadRig> rigHead(HeadMesh head, const rigging::FeaturePointFile& fdp,
+                                 const rigging::RigOptions& options) {
+  return rigNamedHead(std::move(head), fdp, options, {});
+}
+
 std::unique_ptr<HeadRig> loadDefaultHeadRig() {
   if (!rigging::defaultHeadAvailable())
     throw FileError(
         {rigging::defaultHeadPackageDir(), 0, 0},
         "the default head is not in the cache; fetch it with packaging/fetch-default-head.sh "
         "(packaging/lacrima.sh does), or bring your own with --mesh FILE --fdp FILE");
-  return rigHeadFromFile(rigging::loadDefaultHead(), findMediaFile("default-head.fdp.json"));
+  return rigHeadFromFile(rigging::loadDefaultHead(), findMediaFile("default-head.fdp.json"),
+                         "the default head in " + rigging::defaultHeadPackageDir());
 }
 
 std::unique_ptr<HeadRig> loadHeadRig(const std::string& meshPath, const std::string& fdpPath) {
@@ -65,7 +76,7 @@ std::unique_ptr<HeadRig> loadHeadRig(const std::string& meshPath, const std::str
     // importHeadMesh's message already names the file; keep it as the location for dialogs.
     throw FileError({meshPath, 0, 0}, e.what());
   }
-  return rigHeadFromFile(std::move(head), fdpPath);
+  return rigHeadFromFile(std::move(head), fdpPath, meshPath);
 }
 
 namespace {

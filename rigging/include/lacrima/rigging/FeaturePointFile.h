@@ -1,7 +1,9 @@
 #pragma once
 // Feature-point files (*.fdp.json): where the MPEG-4 feature points sit on one particular head,
 // plus what the rig needs besides them (which sub-meshes are skin, eyes, jaw; eye centres; the
-// neck pivot; tear sources). Indices only, no geometry, so a file is tied to its mesh file.
+// neck pivot; tear sources). Points are bound by index (a vertex, or a triangle and barycentric
+// weights) and may carry their position beside it, so that a reader can tell when the vertex
+// order changed (re-snap) or the file belongs to another mesh (refuse).
 //
 // Format, version 1 (UTF-8 JSON; unknown keys are warned about, never silently ignored):
 //
@@ -20,7 +22,7 @@
 //     },                                  other sub-meshes only follow the head rotation
 //     "defaults": { "geodesics": "dijkstra" },   optional: "dijkstra" or "heat"
 //     "points": {                         by FDP id "group.index"
-//       "2.1": { "submesh": "skin", "vertex": 812 },
+//       "2.1": { "submesh": "skin", "vertex": 812, "position": [0.01, 5.93, 0.88] },
 //       "2.2": { "submesh": "skin", "triangle": 97, "barycentric": [0.2, 0.3, 0.5] },
 //       "4.3": { "submesh": "skin", "vertex": 17, "radius": 0.25, "geodesics": "heat" }
 //     },
@@ -37,6 +39,22 @@
 // triangle t of S (local triangle index) with barycentric weights of its three corners, each in
 // [0, 1] and summing to 1 within 1e-4. "radius" (model units, > 0) overrides the influence
 // radius from InfluenceRadius.h; "geodesics" overrides the file's default method.
+//
+// "position" (optional, on points and tear sources): where the point was, in the mesh's own
+// coordinates (before any face-frame rotation, FaceFrame.h), written by every Lacrima tool
+// (recordPositions). validateFeaturePoints compares it with where the index now leads:
+//  - within kPositionMatch x the mesh's bounding-box diagonal: the point is where the file says;
+//  - else (the mesh was re-exported with its vertices in another order, or a vertex index is out
+//    of range) the point is re-snapped to the nearest vertex of the same sub-mesh (a triangle
+//    point: the closest surface point of that sub-mesh, as triangle + barycentric), with a
+//    warning naming the file, line, column, JSON path, the point and how far it moved;
+//  - when most positioned points have nothing of their sub-mesh within kPositionLost x ES0
+//    (|3.5 - 3.6| from the stored positions; else kPositionLostDiagonal x the diagonal), or most
+//    points name sub-meshes the head does not have or indices beyond its vertex counts, the file
+//    is refused: "this feature-point file was placed on another mesh", naming the file, the
+//    mesh and the first mismatches.
+// A file without positions is bound by index alone: it stays valid and means what it says, but a
+// file for another mesh whose indices happen to be in range cannot be told from a right one.
 //
 // Required points: the FAPU-defining ones (3.1-3.6, 9.15, 2.2, 8.3, 8.4); a missing one is an
 // error. The other points moved by FAPs 3-68 are optional: a missing one is a named warning
@@ -73,7 +91,20 @@ struct SurfacePoint {
   int vertex = -1;    // local vertex index, or -1 for a triangle point
   int triangle = -1;  // local triangle index, or -1 for a vertex point
   Eigen::Vector3d barycentric = Eigen::Vector3d::Zero();
+  std::optional<Eigen::Vector3d> position;  // where it was, in mesh coordinates ("position")
 };
+
+// Position tolerances, as fractions (see the format above). kPositionMatch: the stored position
+// is the shortest decimal that reads back as the float vertex exactly, so on the same mesh the
+// difference is 0; 1e-5 of the diagonal (3 µm on a 30 cm head) still accepts a mesh re-exported
+// through 32-bit floats or 6-digit OBJ text (errors about 1e-7 to 1e-6 of a coordinate) and is
+// far below the shortest edge of a real head (the default head's: 5.6e-4 of its diagonal, the
+// ICT head's 1.2e-4; test_rig_point_positions), so it never confuses two vertices. kPositionLost:
+// 5% of the eye separation (about 3 mm on a real head) is more than a remeshed or slightly edited
+// surface moves, and less than two different heads differ at a feature point.
+inline constexpr double kPositionMatch = 1e-5;
+inline constexpr double kPositionLost = 0.05;
+inline constexpr double kPositionLostDiagonal = 0.01;
 
 struct FeaturePointSpec {
   SurfacePoint at;
@@ -109,15 +140,27 @@ const std::vector<std::string>& animatedFeaturePoints();
 // same way) when `warnings` is given.
 FeaturePointFile readFeaturePointFile(const std::string& path, Warnings* warnings = nullptr);
 
-// Checks the file against `mesh`: every named sub-mesh exists, indices are in range,
-// barycentrics are valid, the required points exist and no sub-mesh has two roles. Throws
-// FileError listing every error, each naming the line, column and JSON path of the feature point
-// (or role) and what was expected; appends named warnings for missing optional points.
+// Checks the file against `mesh` and returns it as the rig must use it: every named sub-mesh
+// exists, indices are in range, barycentrics are valid, the required points exist and no
+// sub-mesh has two roles; points with a "position" that the index no longer leads to are
+// re-snapped (see the format above; the returned file has the new binding and its position).
+// Throws FileError listing every error, each naming the line, column and JSON path of the
+// feature point (or role) and what was expected, or, for a file that does not fit the mesh at
+// all, "this feature-point file was placed on another mesh" with `meshName` (the mesh file, for
+// the message; may be empty) and the first mismatches. Appends named warnings for re-snapped
+// points and missing optional points. A file without positions comes back unchanged, so
+// callers that only check may ignore the result.
 // A Partial file (the input of proposeFeaturePoints, FeaturePointProposal.h) is checked the same
 // way except that no point is required and missing ones are not warned about.
 enum class FeaturePointSet { Complete, Partial };
-void validateFeaturePoints(const FeaturePointFile& file, const HeadMesh& mesh, Warnings* warnings,
-                           FeaturePointSet set = FeaturePointSet::Complete);
+FeaturePointFile validateFeaturePoints(const FeaturePointFile& file, const HeadMesh& mesh,
+                                       Warnings* warnings,
+                                       FeaturePointSet set = FeaturePointSet::Complete,
+                                       std::string_view meshName = {});
+
+// Sets every point's and tear source's "position" to where it is on `mesh` (validated), so a
+// saved file can be checked against a re-exported mesh. Every file Lacrima writes has them.
+void recordPositions(FeaturePointFile& file, const HeadMesh& mesh);
 
 // The file as JSON text in the format above (points by id, in FdpIdLess order), for saving with
 // saveAtomically; readFeaturePointFile reads it back to the same content.

@@ -2,8 +2,15 @@
 // rig.json: what the player needs to know about a rig besides the .mesh, and what --report
 // prints. Both are JSON with fields in a fixed, documented order (JsonWriter).
 //
-// rig.json, version 1 (lengths in the head's own model units):
+// rig.json, version 1 (lengths in the head's own model units; every position in the face frame,
+// FaceFrame.h: +x the face's left, +y up, +z forward, whatever axes the head was exported with):
 //   format "lacrima-rig", version 1, mesh (the .mesh file name), glb,
+//   face_frame { axes, rotation [[r00,r01,r02],[..],[..]], measured, tilt_degrees }
+//                                                   the axis rotation applied to the imported
+//                                                   mesh (face frame = rotation x mesh; identity
+//                                                   for a Y-up head facing +z), whether it was
+//                                                   measured from the feature points, and the
+//                                                   face's remaining turn in the model
 //   fapu { IRISD0, ES0, ENS0, MNS0, MW0 }          the neutral distances X0 (unit = X0 / 1024)
 //   feature_points { "2.1": { position [x,y,z], radius, geodesics }, ... }   radius/geodesics
 //                                                   only for points with a falloff influence
@@ -15,6 +22,7 @@
 //                                                   jaw, tongue, attached, rigid
 //   poses [3, 4, ...]                                FAPs with a pose or rotation group
 //   warnings [ "..." ]
+#include <lacrima/rigging/FaceFrame.h>
 #include <lacrima/rigging/RigBuilder.h>
 
 #include <string>
@@ -26,8 +34,10 @@ struct RigFiles {
   std::string glb = "head.glb";
 };
 
+// `mesh` and `rig` are in the face frame (bringToFaceFrame ran before buildRig); `frame` says
+// which rotation brought them there.
 std::string rigDescriptionJson(const HeadMesh& mesh, const BuiltRig& rig,
-                               const RigFiles& files = {});
+                               const RigFiles& files = {}, const FaceFrame& frame = {});
 
 // The --report text: FAPU values and, for each translational FAP 3-68, its feature point,
 // pose size (vertices), X0, the displacement of the point for a value of 1024 computed by

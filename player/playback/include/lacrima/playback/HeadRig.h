@@ -4,6 +4,7 @@
 // with any head the rigging layer accepts, not only pre-exported ones.
 #include <lacrima/common/HeadMesh.h>
 #include <lacrima/common/PoseSet.h>
+#include <lacrima/rigging/FaceFrame.h>
 #include <lacrima/rigging/RigBuilder.h>
 
 #include <Eigen/Core>
@@ -18,6 +19,9 @@ struct HeadRig {
   HeadMesh head;
   rigging::BuiltRig rig;  // rig.input.mesh points at `head`: a HeadRig is never copied or moved
   std::unique_ptr<PoseBlender> blender;
+  // The axis rotation that brought the head as imported into the face frame (FaceFrame.h):
+  // head and rig are in the face frame; imported coordinates = frame.rotation^T x head's.
+  rigging::FaceFrame frame;
   // Feature-point file and rig warnings ("file: message"), for a status line or stderr.
   std::vector<std::string> warnings;
 
@@ -32,8 +36,11 @@ std::unique_ptr<HeadRig> loadDefaultHeadRig();
 // Any mesh assimp reads, with its feature-point file (lacrima-fdp v1). Throws FileError.
 std::unique_ptr<HeadRig> loadHeadRig(const std::string& meshPath, const std::string& fdpPath);
 // A head already in memory with its feature points (the editor's Head workspace rigs what the
-// user placed without writing files): validates `fdp` against `head` (messages name fdp.path),
-// builds the rig and the blender. Throws FileError; `options.progress` reports the stages.
+// user placed without writing files): validates `fdp` against `head` (messages name fdp.path;
+// points whose stored position moved are re-snapped with a warning), brings head and points
+// into the face frame (bringToFaceFrame: any export axes play upright), builds the rig and the
+// blender. The one path from a mesh and its feature points to a rig: loadHeadRig and
+// loadDefaultHeadRig go through it too. Throws FileError; `options.progress` reports the stages.
 std::unique_ptr<HeadRig> rigHead(HeadMesh head, const rigging::FeaturePointFile& fdp,
                                  const rigging::RigOptions& options = {});
 
