@@ -58,8 +58,26 @@ double similarityScale(const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& t
 // `partial.path` and every missing anchor when one of proposalAnchors() is missing.
 // Precondition: `partial` was validated against `mesh` (FeaturePointSet::Partial) and
 // `reference` against `referenceMesh`.
+enum class ProposalMethod {
+  Warp,          // steps 1 and 2 alone (the method before step 3; kept for comparison)
+  FeatureAware,  // and step 3: eye points from the eyes, the ears' extremes slid there
+};
+
+struct ProposalOptions {
+  ProposalMethod method = ProposalMethod::FeatureAware;
+};
+
+// Milliseconds of each stage, for lacrima-bench proposal.
+struct ProposalTimings {
+  double fitMs = 0;   // anchors, eye centres, similarity and spline (steps 1 and 2)
+  double eyesMs = 0;  // step 3
+  double snapMs = 0;  // the snap to the vertices of each part
+};
+
 FeaturePointFile proposeFeaturePoints(const FeaturePointFile& partial, const HeadMesh& mesh,
                                       const FeaturePointFile& reference,
-                                      const HeadMesh& referenceMesh, Warnings* warnings = nullptr);
+                                      const HeadMesh& referenceMesh, Warnings* warnings = nullptr,
+                                      const ProposalOptions& options = {},
+                                      ProposalTimings* timings = nullptr);
 
 }  // namespace lacrima::rigging
