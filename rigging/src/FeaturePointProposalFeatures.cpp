@@ -11,7 +11,7 @@ namespace lacrima::rigging {
 namespace {
 
 // An eye's cornea must stand out of its sphere by this factor for its gaze to be found, and its
-// cap is the part within this fraction of the bulge from the apex (see gazeOf).
+// cap is what stands out by more than this fraction of the bulge (see frontOf).
 constexpr double kMinimumBulge = 1.03;
 constexpr double kCapDepth = 0.3;
 // Gazes that differ by more than 30 degrees from the carried one are not believed (an eye
@@ -33,16 +33,17 @@ const EyeSide kSides[] = {
     {"eye_right", rightEye, "3.6", {"3.2", "3.4", "3.10", "3.14"}},
 };
 
-// Where an eye looks: from its centre to the middle of its cornea, the cap of its front half
-// (the side `front` points to) that bulges out of the eyeball's sphere: the vertices farther
-// from the centre than the median distance r plus 0.7 of the bulge. Only the front half, as an
-// eyeball may be longer than wide (the ICT head's is), its back as far out as its cornea.
-// nullopt for an eye without a bulge of at least 3% of r (a plain sphere has no front to find).
 struct EyeFront {
   Eigen::Vector3d gaze;  // unit
   double apex = 0;       // the cornea's farthest distance from the centre
 };
 
+// Where an eye looks: from its centre to the middle of its cornea, the cap of its front half
+// (the side `front` points to) that bulges out of the eyeball's sphere: the vertices farther
+// from the centre than r + 0.3 (a - r), r the median distance and a the farthest. Only the
+// front half, as an eyeball may be longer than wide (the ICT head's is), its back as far out as
+// its cornea. nullopt for an eye without a bulge of at least 3% of r (a plain sphere has no
+// front to find).
 std::optional<EyeFront> frontOf(const HeadMesh& mesh, const std::vector<std::string>& parts,
                                 const Eigen::Vector3d& centre, const Eigen::Vector3d& front) {
   std::vector<Eigen::Vector3d> points;

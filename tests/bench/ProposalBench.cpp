@@ -67,6 +67,8 @@ struct MethodResult {
   Timing fit, eyes, snap, total;
   std::map<int, GroupError> groups;  // by FDP group number
   GroupError all;
+  rigging::FeaturePointFile proposed;
+  bool sameVertices = true;  // as the first orientation's proposal by the same method
 };
 
 struct OrientationResult {
@@ -88,9 +90,9 @@ MethodResult measure(rigging::ProposalMethod method, const rigging::FeaturePoint
                      const HeadMesh& mesh, const rigging::FeaturePointFile& hand,
                      const rigging::FeaturePointFile& reference, const HeadMesh& referenceMesh,
                      double es0, int runs) {
-  MethodResult out{method, {}, {}, {}, {}, {}, {}};
+  MethodResult out{method, {}, {}, {}, {}, {}, {}, {}, true};
   std::vector<rigging::ProposalTimings> stages;
-  rigging::FeaturePointFile proposed;
+  rigging::FeaturePointFile& proposed = out.proposed;
   out.total = timeRuns(runs, [&] {
     rigging::ProposalTimings t;
     proposed = rigging::proposeFeaturePoints(partial, mesh, reference, referenceMesh, nullptr,
@@ -130,6 +132,17 @@ MethodResult measure(rigging::ProposalMethod method, const rigging::FeaturePoint
   return out;
 }
 
+bool sameVertices(const rigging::FeaturePointFile& a, const rigging::FeaturePointFile& b) {
+  if (a.points.size() != b.points.size()) return false;
+  for (const auto& [id, spec] : a.points) {
+    const auto other = b.points.find(id);
+    if (other == b.points.end() || other->second.at.submesh != spec.at.submesh ||
+        other->second.at.vertex != spec.at.vertex)
+      return false;
+  }
+  return true;
+}
+
 void printTable(const std::vector<OrientationResult>& results, const Timing& import) {
   std::printf(
       "proposal: the default head's feature points proposed on the ICT-FaceKit head from the 8 "
@@ -165,8 +178,9 @@ void printTable(const std::vector<OrientationResult>& results, const Timing& imp
     std::vector<const GroupError*> all;
     for (const MethodResult& m : r.methods) all.push_back(&m.all);
     row("all", r.methods.front().all.points, all);
-    std::printf("    targets met (%s): %s\n", nameOf(r.methods.back().method),
-                meetsTargets(r.methods.back().all) ? "yes" : "NO");
+    std::printf("    targets met (%s): %s;  the same vertices as in the first orientation: %s\n",
+                nameOf(r.methods.back().method), meetsTargets(r.methods.back().all) ? "yes" : "NO",
+                r.methods.front().sameVertices && r.methods.back().sameVertices ? "yes" : "NO");
   }
 }
 
@@ -201,6 +215,7 @@ void printJson(const std::vector<OrientationResult>& results, const Timing& impo
       writeTiming(json, "eyes_ms", m.eyes);
       writeTiming(json, "snap_ms", m.snap);
       writeTiming(json, "total_ms", m.total);
+      json.field("same_vertices", m.sameVertices);
       json.key("groups");
       json.beginArray();
       for (const auto& [group, error] : m.groups) {
@@ -219,6 +234,7 @@ void printJson(const std::vector<OrientationResult>& results, const Timing& impo
     json.endArray();
     json.endObject();
     pass = pass && meetsTargets(r.methods.back().all);
+    for (const MethodResult& m : r.methods) pass = pass && m.sameVertices;
   }
   json.endArray();
   json.field("target_mean_es0", kMeanTarget);
@@ -267,9 +283,14 @@ int runProposal(int argc, char** argv) {
                rigging::surfacePosition(ict->fdp.points.at("3.6").at, mesh))
                   .norm();
       for (const rigging::ProposalMethod method :
-           {rigging::ProposalMethod::Warp, rigging::ProposalMethod::FeatureAware})
-        r.methods.push_back(measure(method, partial, mesh, ict->fdp, referenceFdp, *reference,
-                                    r.es0, options.runs));
+           {rigging::ProposalMethod::Warp, rigging::ProposalMethod::FeatureAware}) {
+        MethodResult m =
+            measure(method, partial, mesh, ict->fdp, referenceFdp, *reference, r.es0, options.runs);
+        if (!results.empty())
+          m.sameVertices =
+              sameVertices(m.proposed, results.front().methods[r.methods.size()].proposed);
+        r.methods.push_back(std::move(m));
+      }
       results.push_back(std::move(r));
     }
     if (options.json) {
