@@ -21,8 +21,8 @@ namespace {
 
 // How far the spline's correction reaches from the nearest anchor, in units of the anchors' RMS
 // distance from their centroid. Chosen on the ICT head (8 anchors and the eye centres, with the
-// eyes' step): 0.4 to 0.7 give a mean error of 0.079 to 0.0795 ES0, 0.3 0.081, 1.0 0.083 and
-// the undamped spline 0.085.
+// eyes' step): 0.4 to 0.7 give a mean error of 0.076 to 0.078 ES0, 0.2, 0.3 and 1.0 0.080 and
+// the undamped spline 0.082.
 constexpr double kSplineReach = 0.5;
 
 void checkAnchors(const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target) {

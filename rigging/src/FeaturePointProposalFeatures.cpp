@@ -117,9 +117,14 @@ void placeEyePoints(const std::vector<std::string>& ids, const FeaturePointFile&
       pupil = carried.col(c);
     else
       continue;
+    // (3) A lid the warp left inside the eye out onto it.
     for (const char* lid : side.lids)
-      if (const Eigen::Index c = column(lid); c >= 0)
+      if (const Eigen::Index c = column(lid); c >= 0) {
         carried.col(c) += leftRight * leftRight.dot(pupil - carried.col(c));
+        const Eigen::Vector3d out = carried.col(c) - eye->second.head;
+        if (to && out.norm() < to->apex)
+          carried.col(c) = eye->second.head + to->apex * out.normalized();
+      }
   }
 }
 

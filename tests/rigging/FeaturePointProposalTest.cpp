@@ -25,14 +25,15 @@ using namespace lacrima::rigtest;
 
 namespace {
 
-// Issue 13's targets on the ICT head, in ES0 (measured 0.0795 and 0.284, see docs/rig.md,
+// Issue 13's targets on the ICT head, in ES0 (measured 0.077 and 0.284, see docs/rig.md,
 // "Proposing feature points").
 constexpr double kMeanBound = 0.08;
 constexpr double kWorstBound = 0.3;
 // The eyes' step puts the pupils on the cornea vertex over the pupil's centre (measured 0.000;
-// the warp alone 0.037) and the lower lids within 0.03 ES0 (measured 0.026).
+// the warp alone 0.037) and the lids on their margins over it (measured 0.023 and 0.007; the
+// warp alone 0.052 and 0.026).
 constexpr double kPupilBound = 0.01;
-constexpr double kLidBound = 0.06;
+constexpr double kLidBound = 0.03;
 
 // The hand-made file with only the points `keep`.
 rigging::FeaturePointFile partialOf(const rigging::FeaturePointFile& complete,
@@ -182,10 +183,10 @@ class FeaturePointProposalTest : public QObject {
     const auto [mean, worst] = report(error, "y up, centimetres");
     QVERIFY2(mean <= kMeanBound, qPrintable(QString::number(mean)));
     QVERIFY2(worst <= kWorstBound, qPrintable(QString::number(worst)));
-    // The eyes' step: pupils on the pupils, lower lids straddling them.
+    // The eyes' step: pupils on the pupils, lids on their margins straddling them.
     for (const char* id : {"3.5", "3.6"})
       QVERIFY2(error.at(id) <= kPupilBound, qPrintable(QString::number(error.at(id))));
-    for (const char* id : {"3.3", "3.4"})
+    for (const char* id : {"3.1", "3.2", "3.3", "3.4"})
       QVERIFY2(error.at(id) <= kLidBound, qPrintable(QString::number(error.at(id))));
     // Every point on the part its reference point is on.
     const rigging::FeaturePointFile proposed = proposalOn(*ict_);
@@ -205,7 +206,7 @@ class FeaturePointProposalTest : public QObject {
     const auto [warpMean, warpWorst] = report(warp, "warp alone");
     const auto [eyesMean, eyesWorst] = report(eyes, "with the eyes' step");
     QVERIFY(eyesMean < warpMean && eyesWorst <= warpWorst);
-    QVERIFY(warp.at("3.5") > kPupilBound);
+    QVERIFY(warp.at("3.5") > kPupilBound && warp.at("3.1") > kLidBound);
   }
 
   // Z up facing -y, millimetres; and facing +y, inches, moved away from the origin: the same

@@ -27,7 +27,8 @@
 // 3. The eyes (FeaturePointProposalFeatures.h): an eye is a rigid ball, so the pupils are carried
 //    rigidly about the eye's centre, along the new eye's own gaze (found from its cornea), onto
 //    its cornea; the lid points the standard puts above and below the pupil are moved along the
-//    face's left-right axis onto the pupil's vertical plane.
+//    face's left-right axis onto the pupil's vertical plane, and out onto the eye when the warp
+//    left them inside it.
 // The point is then snapped to the closest vertex of the part the default point is on (skin to
 // skin, an eye's points to that eye, jaw to jaw, tongue to tongue): a feature point is a vertex
 // of the new head, as a hand-made file names it.
