@@ -25,15 +25,15 @@
 //   (3) and a lid point that is then inside the eye, nearer its centre than the cornea's apex,
 //       is pushed out along its direction from the centre to the apex distance: a lid rests on
 //       the eye, and the warp, which knows nothing of the eye being solid, had left the ICT
-//       head's lid points 15% of the eye's radius inside it, where the snap took the lining
+//       head's lid points a tenth of the eye's radius inside it, where the snap took the lining
 //       tucked behind the eyeball instead of the lid's margin.
-// On the ICT head the warp alone put the pupils 1.8 mm beside the pupil's centre, and the upper
+// On the ICT head the warp alone put the pupils 2.4 mm from the pupil's centre, and the upper
 // lids 3.4 mm from their margins; with this step the pupils are on the vertex over the pupil's
 // centre and the lids within 1.5 mm.
 //
-// Both are similarity-invariant: they use only the anchors' similarity and the eyes' centres and
-// shapes. The reference head must be in the face frame (+x its own left, +y up, +z forward),
-// as the default head is.
+// All three are similarity-invariant: they use only the anchors' similarity and the eyes' centres
+// and shapes. The reference head must be in the face frame (+x its own left, +y up, +z forward), as
+// the default head is.
 #include <lacrima/common/HeadMesh.h>
 #include <lacrima/rigging/FeaturePointFile.h>
 
