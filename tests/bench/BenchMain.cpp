@@ -13,6 +13,7 @@ int runTearsSweep(int argc, char** argv);
 int runEditor(int argc, char** argv);
 int runPlayer(int argc, char** argv);
 int runHead(int argc, char** argv);
+int runProposal(int argc, char** argv);
 }  // namespace lacrima::bench
 
 namespace {
@@ -45,6 +46,10 @@ const Subcommand kSubcommands[] = {
     {"player",
      "the whole player (playback + OGRE render) on the demo at 1280x720: fps, stage shares",
      lacrima::bench::runPlayer},
+    {"proposal",
+     "feature-point proposal on the ICT head from 8 anchors: error per FDP group beside ms per "
+     "stage, two orientations",
+     lacrima::bench::runProposal},
 };
 
 void printUsage(FILE* out) {
