@@ -10,6 +10,8 @@
 #include <lacrima/common/Milliseconds.h>
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/rigging/MeshImport.h>
+#include <lacrima/scene/FaceRenderer.h>
+#include <lacrima/scene/FaceScene.h>
 #include <lacrima/viewport/FaceViewport.h>
 
 #include <QtTest>
@@ -145,6 +147,14 @@ class ViewportPickingTest : public QObject {
         return -1;
       }
       const Eigen::Vector3i& tri = globalTriangle(head, hit->triangle);
+      // The same triangle by its sub-mesh's own numbering; the nearest corner is one of it.
+      const Eigen::Vector3i& local = head.submeshes[hit->submesh].triangles[hit->submeshTriangle];
+      if (local != tri ||
+          hit->triangle != viewport::firstTriangleOf(head, hit->submesh) + hit->submeshTriangle)
+        return -1;
+      int corner = 0;
+      hit->barycentric.maxCoeff(&corner);
+      if (hit->vertex != tri[corner]) return -1;
       const std::set<int> ring = oneRing(head, weld, v);
       if (ring.count(weld[tri[0]]) || ring.count(weld[tri[1]]) || ring.count(weld[tri[2]])) {
         ++onRing;
@@ -383,6 +393,22 @@ class ViewportPickingTest : public QObject {
     qInfo("ICT pick: first (builds the hierarchy) %.2f ms, then %.4f ms each", first,
           millisecondsSince(start) / 200);
     viewport_->setHead(*head_);
+  }
+
+  void theOffscreenRendererInvertsItsProjectionToo() {
+    scene::FaceRenderer renderer(*head_, QSize(320, 240));
+    renderer.orbit(25, -10);
+    for (int v = 0; v < head_->vertexCount(); v += 997) {
+      const Eigen::Vector3d p = head_->positions.col(v).cast<double>();
+      const auto ray = renderer.rayAt(renderer.project(p));
+      QVERIFY(ray);
+      QVERIFY(std::abs(ray->direction.norm() - 1) < 1e-12);
+      // The ray passes through the point (float camera matrices: a few millionths of the view).
+      QVERIFY((p - ray->origin).cross(ray->direction).norm() <
+              1e-5 * renderer.scene().view().distance);
+      QVERIFY((p - ray->origin).dot(ray->direction) > 0);
+    }
+    QVERIFY(!renderer.rayAt(QPointF(qQNaN(), 0)));
   }
 
   void withoutAHeadNothingIsProjectedOrPicked() {
