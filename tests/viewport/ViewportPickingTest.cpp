@@ -16,6 +16,7 @@
 
 #include <QtTest>
 
+#include <limits>
 #include <map>
 #include <memory>
 #include <set>
@@ -331,6 +332,16 @@ class ViewportPickingTest : public QObject {
     QVERIFY(colourAt(highlighted, nosePoint).luminance() > colourAt(marked, nosePoint).luminance());
     const MeanColour ring = meanColour(highlighted, tip + QPointF(7 + 1.5 + 1.2, 0), 0);
     QVERIFY2(ring.r > 230 && ring.g > 230 && ring.b > 230, "no white ring round the highlight");
+    // Markers nobody can draw (not finite, behind the eye, no size, absurdly large) are left
+    // out or clamped; the others still show.
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    markers.push_back({Eigen::Vector3d(nan, 0, 0), blue, 9, false, true});
+    markers.push_back({eyeOfView() + 10 * (eyeOfView() - nosePoint), blue, 9, false, true});
+    markers.push_back({backPoint, blue, 0, false, true});
+    markers.push_back({backPoint, blue, -4, false, true});
+    markers.push_back({nosePoint + Eigen::Vector3d(0, 0.3, 0), blue, 1e9, false, false});
+    viewport_->setMarkers(markers);
+    QVERIFY(near(colourAt(viewport_->grabFrame(), nosePoint), green.lighter(130)));
     // Cleared: exactly the picture before.
     viewport_->setMarkers({});
     QCOMPARE(differingPixels(before, viewport_->grabFrame(), 0).size(), std::size_t{0});
