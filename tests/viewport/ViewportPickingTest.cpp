@@ -406,6 +406,60 @@ class ViewportPickingTest : public QObject {
     viewport_->setHead(*head_);
   }
 
+  void aToolCanTakeADragOver() {
+    viewport_->resetView();
+    settle();
+    auto send = [&](QEvent::Type type, QPoint at, Qt::MouseButton button,
+                    Qt::MouseButtons buttons) {
+      QMouseEvent event(type, QPointF(at), QPointF(viewport_->mapToGlobal(at)), button, buttons,
+                        Qt::NoModifier);
+      QCoreApplication::sendEvent(viewport_.get(), &event);
+    };
+    // The tool claims presses on the head (a feature point to drag), not those beside it.
+    QSignalSpy pressed(viewport_.get(), &viewport::FaceViewport::pointerPressed);
+    QSignalSpy dragged(viewport_.get(), &viewport::FaceViewport::pointerDragged);
+    QSignalSpy released(viewport_.get(), &viewport::FaceViewport::pointerReleased);
+    QSignalSpy clicked(viewport_.get(), &viewport::FaceViewport::clicked);
+    QSignalSpy hovered(viewport_.get(), &viewport::FaceViewport::hovered);
+    const auto connection = connect(viewport_.get(), &viewport::FaceViewport::pointerPressed, this,
+                                    [&](QPointF pixel, Qt::MouseButton button) {
+                                      if (button == Qt::LeftButton && viewport_->pick(pixel))
+                                        viewport_->claimDrag();
+                                    });
+    const QImage before = viewport_->grabFrame();
+    const QPoint onHead = viewport_->project(head_->positions.col(0).cast<double>())->toPoint();
+    QVERIFY(viewport_->pick(onHead));
+    send(QEvent::MouseButtonPress, onHead, Qt::LeftButton, Qt::LeftButton);
+    send(QEvent::MouseMove, onHead + QPoint(30, 10), Qt::NoButton, Qt::LeftButton);
+    send(QEvent::MouseMove, onHead + QPoint(50, 20), Qt::NoButton, Qt::LeftButton);
+    send(QEvent::MouseButtonRelease, onHead + QPoint(50, 20), Qt::LeftButton, Qt::NoButton);
+    settle();
+    QCOMPARE(pressed.count(), 1);
+    QCOMPARE(dragged.count(), 2);
+    QCOMPARE(dragged.last().at(0).toPointF(), QPointF(onHead + QPoint(50, 20)));
+    QCOMPARE(released.count(), 1);
+    QCOMPARE(clicked.count(), 0);
+    // The camera did not move.
+    QCOMPARE(differingPixels(before, viewport_->grabFrame(), 0).size(), std::size_t{0});
+    // Beside the head the same drag orbits as always.
+    send(QEvent::MouseButtonPress, QPoint(3, 3), Qt::LeftButton, Qt::LeftButton);
+    send(QEvent::MouseMove, QPoint(60, 13), Qt::NoButton, Qt::LeftButton);
+    send(QEvent::MouseButtonRelease, QPoint(60, 13), Qt::LeftButton, Qt::NoButton);
+    settle();
+    QCOMPARE(dragged.count(), 2);
+    QVERIFY(differingPixels(before, viewport_->grabFrame(), 10).size() > 1000);
+    // A press and release in place is a click; a move with no button a hover.
+    send(QEvent::MouseButtonPress, QPoint(5, 5), Qt::LeftButton, Qt::LeftButton);
+    send(QEvent::MouseButtonRelease, QPoint(6, 5), Qt::LeftButton, Qt::NoButton);
+    QCOMPARE(clicked.count(), 1);
+    QCOMPARE(clicked.last().at(0).toPointF(), QPointF(6, 5));
+    send(QEvent::MouseMove, QPoint(40, 40), Qt::NoButton, Qt::NoButton);
+    QCOMPARE(hovered.count(), 1);
+    disconnect(connection);
+    viewport_->resetView();
+    settle();
+  }
+
   void theOffscreenRendererInvertsItsProjectionToo() {
     scene::FaceRenderer renderer(*head_, QSize(320, 240));
     renderer.orbit(25, -10);
