@@ -16,7 +16,7 @@
 // bounding box (in the view frame) seen from the same direction, so any head in any unit and
 // orientation is seen whole.
 //
-// The view frame: all of the above is in the face's frame, whose axes (right-to-left, up,
+// The view frame: all of the above is in the face's frame, whose axes (the face's left, up,
 // forward) are the columns of `frame` in head coordinates; identity for heads already in the
 // face frame (HeadMesh.h). A head in another convention gets its frame from its anchors
 // (setViewFrame in FaceScene / FaceViewport): the orbit then turns about the face's up and yaw 0

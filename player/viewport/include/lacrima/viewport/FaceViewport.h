@@ -6,7 +6,7 @@
 // widget pixels, rayAt() a pixel back to a ray, pick() finds where that ray meets the head as
 // shown (HeadPicker.h). Markers (Marker.h) are discs drawn over the face, cheap to replace on
 // every mouse move. setViewFrame() says which way an imported head's face looks, so the orbit
-// turns about its up axis; until then a head is framed by its bounding sphere whatever its units
+// turns about its up axis; until then a head is framed by its bounding box whatever its units
 // and axes (OrbitView.h).
 //
 // Mouse: left drag orbits, right (or middle) drag pans, the wheel zooms; double-click or
@@ -48,7 +48,7 @@ class FaceViewport : public QWidget {
   // Shows `view` on the next render when its revision differs from the last one shown.
   void showFrame(const playback::FrameView& view);
   void resetView();
-  // Which way the face looks (FaceScene::setViewFrame): columns are the face's right-to-left,
+  // Which way the face looks (FaceScene::setViewFrame): columns are the face's left (its +x),
   // up and forward axes in head coordinates. Re-frames the view. setHead() resets it to identity.
   void setViewFrame(const Eigen::Matrix3d& faceToHead);
   Eigen::Matrix3d viewFrame() const;
