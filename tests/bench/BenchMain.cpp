@@ -14,6 +14,7 @@ int runEditor(int argc, char** argv);
 int runPlayer(int argc, char** argv);
 int runHead(int argc, char** argv);
 int runProposal(int argc, char** argv);
+int runPick(int argc, char** argv);
 }  // namespace lacrima::bench
 
 namespace {
@@ -50,6 +51,8 @@ const Subcommand kSubcommands[] = {
      "feature-point proposal on the ICT head from 8 anchors: error per FDP group beside ms per "
      "stage, two orientations",
      lacrima::bench::runProposal},
+    {"pick", "picking a head under the mouse (Head workspace): hierarchy build, refit, one ray",
+     lacrima::bench::runPick},
 };
 
 void printUsage(FILE* out) {

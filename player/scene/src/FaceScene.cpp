@@ -2,6 +2,7 @@
 
 #include "HeadGeometry.h"
 #include "HeadLook.h"
+#include "MarkerLayer.h"
 #include "StreamedGeometry.h"
 #include "TearLayers.h"
 
@@ -92,6 +93,10 @@ struct FaceScene::State {
   std::unique_ptr<detail::HeadGeometry> geometry;
   std::unique_ptr<detail::HeadLook> look;
   std::unique_ptr<detail::TearLayers> tears;
+  std::unique_ptr<detail::MarkerLayer> markers;
+  Ogre::SceneNode* markerNode = nullptr;
+  Ogre::Viewport* viewport = nullptr;  // of attach(): its pixel size sizes the markers
+  Eigen::Matrix3d frame = Eigen::Matrix3d::Identity();
   const HeadMesh* head = nullptr;
   OrbitView view = defaultView();
   double framingDistance = 0;  // of the head shown (skinDetailStrength)
@@ -107,6 +112,7 @@ struct FaceScene::State {
     // Objects of the scene first (they reference its nodes and our materials), then the
     // scene manager; the runtime (shared_ptr) goes last.
     tears.reset();
+    markers.reset();
     geometry.reset();
     look.reset();
     if (backdrop && backdropNode) backdropNode->detachObject(backdrop.get());
@@ -126,6 +132,25 @@ struct FaceScene::State {
     camera->setFarClipDistance(Ogre::Real(4.0 * view.maxDistance + view.distance));
     camera->setAspectRatio(Ogre::Real(aspect));
     if (look) look->setDetailStrength(skinDetailStrength(view.distance, framingDistance));
+    updateMarkers();
+  }
+
+  // Head frame to clip space under the current camera (what project() and the markers use).
+  Eigen::Matrix4d viewProjection() const {
+    const Ogre::Matrix4 m = camera->getProjectionMatrix() * camera->getViewMatrix();
+    Eigen::Matrix4d out;
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) out(r, c) = m[r][c];
+    return out;
+  }
+
+  void updateMarkers() {
+    if (!markers || markers->empty() || !viewport) {
+      if (markers) markers->update(Eigen::Matrix4d::Identity(), Eigen::Vector3d::Zero(), 0, 0);
+      return;
+    }
+    markers->update(viewProjection(), view.eye(), viewport->getActualWidth(),
+                    viewport->getActualHeight());
   }
 
   // A head without vertices or triangles shows nothing (only the backdrop and any tears).
@@ -133,6 +158,7 @@ struct FaceScene::State {
     look.reset();
     geometry.reset();
     head = &mesh;
+    frame = Eigen::Matrix3d::Identity();
     if (mesh.vertexCount() > 0 && mesh.triangleCount() > 0) {
       detail::StaticShading shading{headOcclusion(mesh), headTangents(mesh), {}};
       shading.horizons = skinHorizons(mesh, shading.tangents);
@@ -170,6 +196,9 @@ FaceScene::FaceScene(std::shared_ptr<OgreRuntime> runtime) : state_(std::make_un
 
   s.tears = std::make_unique<detail::TearLayers>(
       *s.scene, *s.tearNode, s.runtime->uniqueName("tears"), s.runtime->resourceGroup());
+  s.markerNode = s.scene->getRootSceneNode()->createChildSceneNode();
+  s.markers = std::make_unique<detail::MarkerLayer>(*s.markerNode, s.runtime->uniqueName("markers"),
+                                                    s.runtime->resourceGroup());
   s.applyCamera();
 }
 
@@ -208,6 +237,7 @@ Ogre::Viewport& FaceScene::attach(Ogre::RenderTarget& target) {
   viewport->setClearEveryFrame(true, Ogre::FBT_DEPTH | Ogre::FBT_STENCIL);
   viewport->setShadowsEnabled(false);
   state_->camera->setAutoAspectRatio(false);
+  state_->viewport = viewport;
   if (target.getHeight() > 0) setAspect(double(target.getWidth()) / double(target.getHeight()));
   return *viewport;
 }
@@ -226,7 +256,19 @@ void FaceScene::setView(const OrbitView& view) {
 }
 
 void FaceScene::resetView() {
-  setView(state_->head ? OrbitView::framing(*state_->head) : State::defaultView());
+  setView(state_->head ? OrbitView::framing(*state_->head, state_->frame) : State::defaultView());
+}
+
+void FaceScene::setViewFrame(const Eigen::Matrix3d& faceToHead) {
+  state_->frame = faceFrameRotation(faceToHead);
+  resetView();
+}
+
+const Eigen::Matrix3d& FaceScene::viewFrame() const { return state_->frame; }
+
+void FaceScene::setMarkers(std::vector<Marker> markers) {
+  state_->markers->setMarkers(std::move(markers));
+  state_->updateMarkers();
 }
 
 QPointF FaceScene::project(const Eigen::Vector3d& point, QSize size) const {
@@ -239,6 +281,21 @@ QPointF FaceScene::project(const Eigen::Vector3d& point, QSize size) const {
     return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
   const double x = clip.x / clip.w, y = clip.y / clip.w;
   return {(x + 1) * 0.5 * size.width(), (1 - y) * 0.5 * size.height()};
+}
+
+std::optional<Ray> FaceScene::rayAt(QPointF pixel, QSize size) const {
+  if (size.isEmpty() || !std::isfinite(pixel.x()) || !std::isfinite(pixel.y())) return std::nullopt;
+  // Undo project(): pixel to normalised device coordinates, then the points of the near and far
+  // planes there back through (P V)^-1 (in double: the far plane is thousands of near-plane
+  // distances away and float loses the direction's last digits).
+  const double x = 2 * pixel.x() / size.width() - 1, y = 1 - 2 * pixel.y() / size.height();
+  const Eigen::Matrix4d inverse = state_->viewProjection().inverse();
+  const Eigen::Vector4d nearPoint = inverse * Eigen::Vector4d(x, y, -1, 1);
+  const Eigen::Vector4d farPoint = inverse * Eigen::Vector4d(x, y, 1, 1);
+  const Eigen::Vector3d origin = nearPoint.head<3>() / nearPoint.w();
+  const Eigen::Vector3d direction = farPoint.head<3>() / farPoint.w() - origin;
+  if (!origin.allFinite() || !(direction.norm() > 0) || !direction.allFinite()) return std::nullopt;
+  return Ray{origin, direction.normalized()};
 }
 
 OgreRuntime& FaceScene::runtime() const { return *state_->runtime; }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace lacrima::scene {
 namespace {
@@ -10,40 +11,84 @@ namespace {
 constexpr double kDegree = std::numbers::pi / 180.0;
 constexpr double kPitchLimit = 85.0;
 
-Eigen::AlignedBox3d boundsOf(const HeadMesh& head, const HeadSubmesh& sub) {
+// Bounds of a vertex range in the face frame: the head's positions seen through F^T.
+Eigen::AlignedBox3d boundsOf(const HeadMesh& head, int first, int count,
+                             const Eigen::Matrix3d& toFace) {
   Eigen::AlignedBox3d box;
-  for (int v = sub.firstVertex; v < sub.firstVertex + sub.vertexCount; ++v)
-    box.extend(head.positions.col(v).cast<double>());
+  for (int v = first; v < first + count; ++v)
+    box.extend(toFace * head.positions.col(v).cast<double>());
   return box;
+}
+
+// Whether the eyes are where a face in this frame has them: apart mostly across (x), level,
+// in the upper half. False for a head in another axis convention seen through the identity.
+bool eyesFitTheFrame(const Eigen::Vector3d& left, const Eigen::Vector3d& right,
+                     const Eigen::AlignedBox3d& all) {
+  const Eigen::Vector3d apart = left - right;
+  return std::abs(apart.x()) > 0.8 * apart.norm() &&
+         0.5 * (left.y() + right.y()) > all.center().y();
 }
 
 }  // namespace
 
-OrbitView OrbitView::framing(const HeadMesh& head) {
+Eigen::Matrix3d faceFrameRotation(const Eigen::Matrix3d& frame) {
+  // Gram-Schmidt from the axes that matter most: up kept, forward made perpendicular to it,
+  // the side axis completing a right-handed frame (x = y cross z).
+  const Eigen::Vector3d up = frame.col(1).normalized();
+  const Eigen::Vector3d forward = (frame.col(2) - up.dot(frame.col(2)) * up).normalized();
+  Eigen::Matrix3d rotation;
+  rotation << up.cross(forward), up, forward;
+  if (!rotation.allFinite() || std::abs(rotation.determinant() - 1) > 1e-6)
+    return Eigen::Matrix3d::Identity();
+  return rotation;
+}
+
+OrbitView OrbitView::framing(const HeadMesh& head, const Eigen::Matrix3d& requestedFrame) {
   OrbitView view;
-  Eigen::AlignedBox3d all;
-  for (int v = 0; v < head.vertexCount(); ++v) all.extend(head.positions.col(v).cast<double>());
-  if (all.isEmpty()) return view;
+  view.frame = faceFrameRotation(requestedFrame);
+  const Eigen::Matrix3d toFace = view.frame.transpose();
+  const Eigen::AlignedBox3d all = boundsOf(head, 0, head.vertexCount(), toFace);
+  if (all.isEmpty() || !all.sizes().allFinite()) return view;
   const double height = all.sizes().y();
   const HeadSubmesh* left = head.findSubmesh("eye_l");
   const HeadSubmesh* right = head.findSubmesh("eye_r");
-  double visibleHeight = 0;
-  if (left && right && left->vertexCount > 0 && right->vertexCount > 0) {
-    const Eigen::Vector3d eyes =
-        0.5 * (boundsOf(head, *left).center() + boundsOf(head, *right).center());
-    // Brows to chin: the eyes sit about 0.09 head heights above the middle of the face.
-    view.target =
-        Eigen::Vector3d(eyes.x(), eyes.y() - 0.03 * height, 0.5 * (eyes.z() + all.center().z()));
-    visibleHeight = 0.92 * height;
-  } else {
-    view.target = all.center();
-    visibleHeight = 1.1 * height;
-  }
   view.fovYDegrees = 28;
   view.yawDegrees = 16;
   view.pitchDegrees = 4;
-  view.distance =
-      0.5 * visibleHeight / std::tan(0.5 * view.fovYDegrees * kDegree) + 0.25 * all.sizes().z();
+  Eigen::Vector3d target;  // in the face frame
+  std::optional<Eigen::Vector3d> leftEye, rightEye;
+  if (left && right && left->vertexCount > 0 && right->vertexCount > 0) {
+    leftEye = boundsOf(head, left->firstVertex, left->vertexCount, toFace).center();
+    rightEye = boundsOf(head, right->firstVertex, right->vertexCount, toFace).center();
+  }
+  if (leftEye && rightEye && eyesFitTheFrame(*leftEye, *rightEye, all)) {
+    const Eigen::Vector3d eyes = 0.5 * (*leftEye + *rightEye);
+    // Brows to chin: the eyes sit about 0.09 head heights above the middle of the face.
+    target =
+        Eigen::Vector3d(eyes.x(), eyes.y() - 0.03 * height, 0.5 * (eyes.z() + all.center().z()));
+    const double visibleHeight = 0.92 * height;
+    view.distance =
+        0.5 * visibleHeight / std::tan(0.5 * view.fovYDegrees * kDegree) + 0.25 * all.sizes().z();
+  } else {
+    // Aimed at the bounding box's centre, the head's vertices fill 0.85 of the view from the
+    // reset direction: with c a vertex relative to the target in camera axes (looking along -z),
+    // a camera at distance d sees it at the tangent |c.y| / (d - c.z), so
+    //   d = max over vertices of c.z + max(|c.x|, |c.y|) / (0.85 tan(fov / 2)),
+    // the width counted like the height (conservative for any landscape view).
+    target = all.center();
+    const Eigen::Matrix3d toCamera = view.cameraAxesInFace().transpose() * toFace;
+    const double tangent = 0.85 * std::tan(0.5 * view.fovYDegrees * kDegree);
+    const Eigen::Vector3d centre = view.frame * target;
+    view.distance = 0;
+    for (int v = 0; v < head.vertexCount(); ++v) {
+      const Eigen::Vector3d c = toCamera * (head.positions.col(v).cast<double>() - centre);
+      if (c.allFinite())
+        view.distance =
+            std::max(view.distance, c.z() + std::max(std::abs(c.x()), std::abs(c.y())) / tangent);
+    }
+  }
+  if (!(view.distance > 0)) view.distance = 1;  // a single point: any distance shows it
+  view.target = view.frame * target;
   view.minDistance = 0.12 * view.distance;
   view.maxDistance = 8.0 * view.distance;
   return view;
@@ -68,13 +113,19 @@ void OrbitView::pan(double right, double up) {
 
 Eigen::Vector3d OrbitView::eye() const {
   const double yaw = yawDegrees * kDegree, pitch = pitchDegrees * kDegree;
-  return target + distance * Eigen::Vector3d(std::sin(yaw) * std::cos(pitch), std::sin(pitch),
-                                             std::cos(yaw) * std::cos(pitch));
+  return target + distance * frame *
+                      Eigen::Vector3d(std::sin(yaw) * std::cos(pitch), std::sin(pitch),
+                                      std::cos(yaw) * std::cos(pitch));
+}
+
+Eigen::Matrix3d OrbitView::cameraAxesInFace() const {
+  return (Eigen::AngleAxisd(yawDegrees * kDegree, Eigen::Vector3d::UnitY()) *
+          Eigen::AngleAxisd(-pitchDegrees * kDegree, Eigen::Vector3d::UnitX()))
+      .toRotationMatrix();
 }
 
 Eigen::Quaterniond OrbitView::orientation() const {
-  return Eigen::Quaterniond(Eigen::AngleAxisd(yawDegrees * kDegree, Eigen::Vector3d::UnitY()) *
-                            Eigen::AngleAxisd(-pitchDegrees * kDegree, Eigen::Vector3d::UnitX()));
+  return Eigen::Quaterniond(frame * cameraAxesInFace());
 }
 
 }  // namespace lacrima::scene

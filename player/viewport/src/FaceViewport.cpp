@@ -7,6 +7,7 @@
 #include <OgreRenderWindow.h>
 #include <OgreRoot.h>
 
+#include <QApplication>
 #include <QCoreApplication>
 #include <QGuiApplication>
 #include <QLabel>
@@ -48,6 +49,19 @@ struct FaceViewport::State {
   double lastMilliseconds = 0;
   QPoint lastMouse;
   Qt::MouseButton dragButton = Qt::NoButton;
+  QPoint pressedAt;
+  bool claimed = false;    // the current drag belongs to a tool (claimDrag)
+  bool movedAway = false;  // the current press has moved beyond the drag distance
+
+  // What the scene is told once it exists (and again whenever it is re-created).
+  std::vector<Marker> markers;
+  Eigen::Matrix3d frame = Eigen::Matrix3d::Identity();
+  // Picking: the positions of the last frame shown (copied: the frame's pointers expire), built
+  // into a hierarchy on the first pick and refitted on the first pick after a new frame.
+  std::vector<bool> pickable;
+  Eigen::Matrix3Xf shownPositions;  // 3 x 0: the neutral positions are shown
+  mutable std::unique_ptr<HeadPicker> picker;
+  mutable bool pickerStale = false;
 
   void destroyWindow() {
     if (window && runtime) runtime->root().destroyRenderTarget(window);
@@ -66,6 +80,7 @@ FaceViewport::FaceViewport(QWidget* parent) : QWidget(parent), state_(std::make_
   setAttribute(Qt::WA_NoSystemBackground);
   setFocusPolicy(Qt::StrongFocus);
   setMinimumSize(64, 48);
+  setMouseTracking(true);  // hovered()
   state_->ogre = QGuiApplication::platformName() == QLatin1String("xcb");
   if (state_->ogre) {
     setAttribute(Qt::WA_NativeWindow);
@@ -114,7 +129,11 @@ bool FaceViewport::ensureScene() {
   try {
     s.runtime = scene::OgreRuntime::acquire();
     s.scene = std::make_unique<scene::FaceScene>(s.runtime);
-    if (s.head) s.scene->setHead(*s.head);
+    if (s.head) {
+      s.scene->setHead(*s.head);
+      s.scene->setViewFrame(s.frame);
+    }
+    s.scene->setMarkers(s.markers);
     return true;
   } catch (const std::exception& e) {
     showMessage(tr("3-D preview unavailable: %1").arg(QString::fromStdString(e.what())));
@@ -148,6 +167,9 @@ void FaceViewport::setHead(const HeadMesh& neutral) {
   State& s = *state_;
   s.head = &neutral;
   s.shownRevision.reset();
+  s.frame = Eigen::Matrix3d::Identity();
+  s.shownPositions.resize(3, 0);
+  s.picker.reset();
   if (!s.ogre || !ensureScene()) return;
   s.scene->setHead(neutral);
   requestRender();
@@ -162,12 +184,72 @@ void FaceViewport::showFrame(const playback::FrameView& view) {
   // Upload now: the frame's pointers are only valid until the producer's next frame.
   s.scene->show(view);
   s.shownRevision = view.revision;
+  if (view.positions && s.head && view.positions->cols() == s.head->vertexCount()) {
+    s.shownPositions = *view.positions;
+    s.pickerStale = true;
+  } else if (s.shownPositions.cols() > 0) {
+    s.shownPositions.resize(3, 0);
+    s.pickerStale = true;
+  }
   requestRender();
 }
 
 void FaceViewport::resetView() {
   if (!state_->scene) return;
   state_->scene->resetView();
+  requestRender();
+}
+
+void FaceViewport::setViewFrame(const Eigen::Matrix3d& faceToHead) {
+  State& s = *state_;
+  s.frame = scene::faceFrameRotation(faceToHead);
+  if (!s.scene) return;
+  s.scene->setViewFrame(s.frame);
+  requestRender();
+}
+
+Eigen::Matrix3d FaceViewport::viewFrame() const { return state_->frame; }
+
+std::optional<QPointF> FaceViewport::project(const Eigen::Vector3d& point) const {
+  const State& s = *state_;
+  if (!s.scene || !s.scene->head()) return std::nullopt;
+  const QPointF pixel = s.scene->project(point, size());
+  if (!std::isfinite(pixel.x()) || !std::isfinite(pixel.y())) return std::nullopt;
+  return pixel;
+}
+
+std::optional<Ray> FaceViewport::rayAt(QPointF pixel) const {
+  const State& s = *state_;
+  if (!s.scene) return std::nullopt;
+  return s.scene->rayAt(pixel, size());
+}
+
+std::optional<SurfaceHit> FaceViewport::pick(QPointF pixel) const {
+  const State& s = *state_;
+  if (!s.head || s.head->triangleCount() == 0) return std::nullopt;
+  const auto ray = rayAt(pixel);
+  if (!ray) return std::nullopt;
+  if (!s.picker) {
+    s.picker = std::make_unique<HeadPicker>(*s.head, s.pickable);
+    s.pickerStale = s.shownPositions.cols() > 0;
+  }
+  if (s.pickerStale) {
+    s.picker->setPositions(s.shownPositions.cols() > 0 ? s.shownPositions : s.head->positions);
+    s.pickerStale = false;
+  }
+  return s.picker->pick(*ray);
+}
+
+void FaceViewport::setPickableSubmeshes(std::vector<bool> pickable) {
+  state_->pickable = std::move(pickable);
+  state_->picker.reset();
+}
+
+void FaceViewport::setMarkers(std::vector<Marker> markers) {
+  State& s = *state_;
+  s.markers = std::move(markers);
+  if (!s.scene) return;
+  s.scene->setMarkers(s.markers);
   requestRender();
 }
 
@@ -249,9 +331,15 @@ void FaceViewport::resizeEvent(QResizeEvent* event) {
   requestRender();
 }
 
+void FaceViewport::claimDrag() { state_->claimed = true; }
+
 void FaceViewport::mousePressEvent(QMouseEvent* event) {
-  state_->lastMouse = event->position().toPoint();
-  state_->dragButton = event->button();
+  State& s = *state_;
+  s.lastMouse = s.pressedAt = event->position().toPoint();
+  s.dragButton = event->button();
+  s.claimed = false;
+  s.movedAway = false;
+  emit pointerPressed(event->position(), event->button(), event->modifiers());
   event->accept();
 }
 
@@ -260,6 +348,17 @@ void FaceViewport::mouseMoveEvent(QMouseEvent* event) {
   const QPoint now = event->position().toPoint();
   const QPoint delta = now - s.lastMouse;
   s.lastMouse = now;
+  if (event->buttons() == Qt::NoButton) {
+    emit hovered(event->position());
+    return;
+  }
+  if ((now - s.pressedAt).manhattanLength() >= QApplication::startDragDistance())
+    s.movedAway = true;
+  if (s.claimed) {
+    emit pointerDragged(event->position());
+    event->accept();
+    return;
+  }
   if (!s.scene || delta.isNull()) return;
   scene::OrbitView view = s.scene->view();
   if (event->buttons() & Qt::LeftButton) {
@@ -277,7 +376,14 @@ void FaceViewport::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void FaceViewport::mouseReleaseEvent(QMouseEvent* event) {
-  state_->dragButton = Qt::NoButton;
+  State& s = *state_;
+  const bool claimed = s.claimed, moved = s.movedAway;
+  s.dragButton = Qt::NoButton;
+  s.claimed = false;
+  if (claimed)
+    emit pointerReleased(event->position());
+  else if (!moved)
+    emit clicked(event->position(), event->button(), event->modifiers());
   event->accept();
 }
 

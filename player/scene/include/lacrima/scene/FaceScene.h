@@ -8,7 +8,9 @@
 // show() uploads at once (positions, normals, tear geometry, overlay weights), so the frame's
 // pointers need to stay valid only during the call; drawing happens whenever the owner updates
 // its render target.
+#include <lacrima/common/RayMesh.h>
 #include <lacrima/playback/FrameView.h>
+#include <lacrima/scene/Marker.h>
 #include <lacrima/scene/OrbitView.h>
 
 #include <Eigen/Core>
@@ -17,6 +19,8 @@
 #include <QSize>
 
 #include <memory>
+#include <optional>
+#include <vector>
 
 namespace Ogre {
 class RenderTarget;
@@ -37,7 +41,8 @@ class FaceScene {
   FaceScene(const FaceScene&) = delete;
   FaceScene& operator=(const FaceScene&) = delete;
 
-  // Rebuilds geometry, materials and masks for another head (about 50-100 ms), resets the view.
+  // Rebuilds geometry, materials and masks for another head (about 50-100 ms), resets the view
+  // and the view frame (identity: the head is taken to be in the face frame until told).
   void setHead(const HeadMesh& head);
   const HeadMesh* head() const;  // nullptr before the first head
 
@@ -52,11 +57,24 @@ class FaceScene {
 
   const OrbitView& view() const;
   void setView(const OrbitView& view);
-  void resetView();
+  void resetView();  // OrbitView::framing of the head in the view frame
+  // Which way the face looks in head coordinates: the columns of `faceToHead` are the face's own
+  // left (+x), up and forward axes (made a rotation first, OrbitView.h). Re-frames the view:
+  // the orbit then turns about the face's up and yaw 0 looks at the face.
+  void setViewFrame(const Eigen::Matrix3d& faceToHead);
+  const Eigen::Matrix3d& viewFrame() const;
+
+  // Markers drawn over the face (Marker.h), replacing the previous ones; cheap enough for every
+  // mouse move (a few hundred discs are rebuilt on the CPU).
+  void setMarkers(std::vector<Marker> markers);
 
   // Pixel position of a head-frame point in an image of `size` under the current camera
   // (y down); non-finite when the point is behind the camera.
   QPointF project(const Eigen::Vector3d& headPoint, QSize size) const;
+  // The inverse: the ray through pixel `pixel` of an image of `size` (pixel centres at +0.5),
+  // from the near plane away from the eye, in the head frame, unit direction. nullopt for an
+  // empty size or a non-finite pixel.
+  std::optional<Ray> rayAt(QPointF pixel, QSize size) const;
 
   OgreRuntime& runtime() const;
 

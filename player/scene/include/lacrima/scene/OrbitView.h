@@ -11,7 +11,17 @@
 // framing(head): the reset view. The face (brows to chin, about 0.8 of the head's height) fills
 // the view; the target sits on the face's mid line at the eyes' depth between the eyes and the
 // mouth, a little to the side and above so the cheeks (where tears run) show their relief.
-// Heads without eye_l / eye_r sub-meshes are framed by their bounding box.
+// Heads without eye_l / eye_r sub-meshes, or whose eyes do not sit side by side in the upper
+// half of the head in the view frame (a head in another axis convention), are framed whole from
+// the same direction, aimed at their bounding box's centre (in the view frame) with every vertex
+// inside 0.85 of the view, so any head in any unit and orientation is seen whole.
+//
+// The view frame: all of the above is in the face's frame, whose axes (the face's left, up,
+// forward) are the columns of `frame` in head coordinates; identity for heads already in the
+// face frame (HeadMesh.h). A head in another convention gets its frame from its anchors
+// (setViewFrame in FaceScene / FaceViewport): the orbit then turns about the face's up and yaw 0
+// looks at the face. With F = frame,
+//   eye = target + distance F (sin(yaw) cos(pitch), sin(pitch), cos(yaw) cos(pitch)).
 #include <lacrima/common/HeadMesh.h>
 
 #include <Eigen/Core>
@@ -24,9 +34,12 @@ struct OrbitView {
   double yawDegrees = 0, pitchDegrees = 0;
   double distance = 1;
   double fovYDegrees = 28;
-  double minDistance = 0.01, maxDistance = 100;  // zoom limits
+  double minDistance = 0.01, maxDistance = 100;         // zoom limits
+  Eigen::Matrix3d frame = Eigen::Matrix3d::Identity();  // face axes in head coordinates
 
-  static OrbitView framing(const HeadMesh& head);
+  // `frame` is made a rotation first (faceFrameRotation).
+  static OrbitView framing(const HeadMesh& head,
+                           const Eigen::Matrix3d& frame = Eigen::Matrix3d::Identity());
 
   void orbit(double yawDelta, double pitchDelta);
   void zoom(double factor);  // < 1 moves closer; clamped to [minDistance, maxDistance]
@@ -36,7 +49,14 @@ struct OrbitView {
   Eigen::Vector3d eye() const;
   // Camera orientation (camera looks along its -z, +y up), in the head frame.
   Eigen::Quaterniond orientation() const;
+  // The same without the view frame: the camera's axes in the face frame.
+  Eigen::Matrix3d cameraAxesInFace() const;
   bool operator==(const OrbitView&) const = default;
 };
+
+// `frame` made a rotation: its up axis (column 1) kept, its forward axis (column 2) made
+// perpendicular to up, the side axis up x forward (column 0 only needs to point roughly the same
+// way); identity when up and forward are zero, parallel or not finite.
+Eigen::Matrix3d faceFrameRotation(const Eigen::Matrix3d& frame);
 
 }  // namespace lacrima::scene
