@@ -182,8 +182,8 @@ class EditorProjectHeadTest : public QObject {
     const QByteArray eye = R"("eye_left": ["M_ScleraLeft", "M_IrisLeft"])";
     const QByteArray attached = R"("attached": [)";
     QVERIFY(fdp.contains(eye) && fdp.contains(attached));
-    fdp.replace(eye, R"("eye_left": ["M_ScleraLeft"])");
-    fdp.replace(attached, R"("attached": ["M_IrisLeft", )");
+    fdp.replace(eye, R"("eye_left": ["M_IrisLeft"])");
+    fdp.replace(attached, R"("attached": ["M_ScleraLeft", )");
     QTemporaryDir folder;
     const QString project = rigtest::writeIctProject(folder.path(), kKeys, fdp);
     MainWindow window(options());
@@ -194,7 +194,7 @@ class EditorProjectHeadTest : public QObject {
     const QStringList warnings = window.preview()->headWarnings();
     QVERIFY2(
         warnings.filter(QLatin1String(
-                            "feature point 3.5: sub-mesh \"M_IrisLeft\" has no deforming role"))
+                            "feature point 3.5: sub-mesh \"M_ScleraLeft\" has no deforming role"))
                 .size() == 1,
         qPrintable(warnings.join('\n')));
     // The status line counts them and shows the first; its tooltip lists them all.

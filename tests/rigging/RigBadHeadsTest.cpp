@@ -120,7 +120,8 @@ SyntheticHead syntheticFace(bool lipPiece = false) {
     const bool onLips = lipPiece && (id.rfind("2.", 0) == 0 || id.rfind("8.", 0) == 0) &&
                         std::abs(xy.x()) < 0.2 && xy.y() > 0.35 && xy.y() < 0.5;
     const HeadSubmesh& s = head.submeshes[onLips ? 1 : 0];
-    fdp.points[id].at = {s.name, nearestLocalVertex(head, s, xy), -1, Eigen::Vector3d::Zero()};
+    fdp.points[id].at = {s.name, nearestLocalVertex(head, s, xy), -1, Eigen::Vector3d::Zero(),
+                         std::nullopt};
   }
   head.computeNormals();
   return out;
