@@ -15,9 +15,13 @@
 #include <lacrima/rigging/MeshImport.h>
 #include <lacrima/rigging/RigBuilder.h>
 #include <lacrima/rigging/RigChecks.h>
+#include <lacrima/rigging/RigDescription.h>
 
 #include <QDir>
 #include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -245,6 +249,12 @@ class RigBadHeadsTest : public QObject {
                qPrintable(QString("FAP %1").arg(fap)));
     QVERIFY(!rig.input.influences.count("3.5") && !rig.input.influences.count("3.6"));
     QVERIFY(rig.input.influences.count("3.1"));  // the lids still close
+    // rig.json tells other tools what the head cannot play.
+    const QJsonObject description =
+        QJsonDocument::fromJson(QByteArray::fromStdString(rigging::rigDescriptionJson(s.head, rig)))
+            .object();
+    QCOMPARE(description.value("disabled_faps").toArray(),
+             (QJsonArray{23, 24, 25, 26, 27, 28, 29, 30, 69, 70}));
 
     // The checks say it once per eye, and neither call the pupils misplaced nor the eye poses
     // empty.
