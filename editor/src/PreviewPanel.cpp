@@ -33,6 +33,7 @@ struct PreviewPanel::State {
   viewport::FaceViewport* viewport = nullptr;
   RigJob job;
   bool following = false;  // followDocumentHead() was called: rig the document's head
+  bool failed = false;     // the target's rig failed (a file missing, a bad file)
   // The head the panel shows or is rigging (nullopt inside: the default head); unset before
   // the first request, so the first sync always starts a job.
   std::optional<std::optional<HeadFiles>> target;
@@ -105,7 +106,7 @@ PreviewPanel::PreviewPanel(editing::EditorModel& model, editing::FrameStepClock&
   connect(&clock_, &editing::FrameStepClock::ticked, this, &PreviewPanel::step);
   connect(&clock_, &editing::FrameStepClock::playingChanged, this, &PreviewPanel::updateIdleTimer);
   connect(&model_, &editing::EditorModel::documentReset, this, [this] {
-    syncHead();  // a project naming another head
+    syncHead(true);  // a project naming another head, or the same one whose file is back
     if (state_->producer) state_->producer->reset();
     onValuesChanged();
   });
@@ -119,7 +120,7 @@ PreviewPanel::PreviewPanel(editing::EditorModel& model, editing::FrameStepClock&
   connect(&state_->job, &RigJob::finished, this, &PreviewPanel::installRig);
   connect(&state_->job, &RigJob::failed, this, &PreviewPanel::showRigFailure);
   connect(&model_, &editing::EditorModel::settingsChanged, this, [this] {
-    syncHead();  // File > Choose head…, or its undo
+    syncHead(false);  // File > Choose head…, or its undo
     if (!state_->producer) return;
     if (!(state_->producer->scene() == model_.document().scene))
       state_->producer->setScene(model_.document().scene);
@@ -165,7 +166,7 @@ void PreviewPanel::showMessage(const QString& text) {
 
 void PreviewPanel::followDocumentHead() {
   state_->following = true;
-  syncHead();
+  syncHead(false);
 }
 
 bool PreviewPanel::loadHead() {
@@ -179,12 +180,14 @@ bool PreviewPanel::loadHead() {
   return hasHead();
 }
 
-// Starts rigging the document's head unless it is the one shown or being rigged already.
-void PreviewPanel::syncHead() {
+// Starts rigging the document's head unless it is the one shown or being rigged already (or,
+// without `retryFailed`, the one that just failed: other settings edits do not rig it again).
+void PreviewPanel::syncHead(bool retryFailed) {
   if (!state_->following) return;
   const std::optional<HeadFiles>& wanted = model_.document().head;
-  if (state_->target && *state_->target == wanted) return;
+  if (state_->target && *state_->target == wanted && !(retryFailed && state_->failed)) return;
   state_->target = wanted;
+  state_->failed = false;
   state_->rigTimer.start();
   const QString name = headName(wanted);
   setStatus(tr("rigging %1…").arg(name));
@@ -244,6 +247,7 @@ void PreviewPanel::installRig(std::shared_ptr<playback::HeadRig> rig) {
 }
 
 void PreviewPanel::showRigFailure(const QString& error) {
+  state_->failed = true;
   state_->producer.reset();  // keeps the rig: the hidden viewport still points at its head
   idle_->stop();
   status_->setToolTip({});

@@ -508,21 +508,24 @@ FeaturePointFile validateFeaturePoints(const FeaturePointFile& input, const Head
                                             " from its stored position"
                                       : " has no place on this mesh");
       if (!std::isfinite(snap.residual)) {
-        unsnappable.push_back(v.note(entry.at / "position",
-                                     was + "; sub-mesh \"" + submesh->name +
-                                         "\" has no vertex or triangle with area to snap it to"));
+        unsnappable.push_back(
+            v.note(entry.at / "position", was + "; nothing to snap it to (\"" + submesh->name +
+                                              "\" has no vertex or triangle with area, or the "
+                                              "position is beyond the range of a float)"));
         continue;
       }
+      const std::string far = " (more than the " + number(tolerance.lost) +
+                              " a re-exported mesh allows; check this point)";
       if (snap.residual > tolerance.lost)
-        lost.push_back(v.note(entry.at / "position",
-                              was + "; the nearest of \"" + submesh->name + "\" is " +
-                                  number(snap.residual) + " away (more than the " +
-                                  number(tolerance.lost) + " a re-exported mesh allows)"));
+        lost.push_back(v.note(entry.at / "position", was + "; the nearest of \"" + submesh->name +
+                                                         "\" is " + number(snap.residual) +
+                                                         " away" + far));
       const std::string moved =
           before ? ", moved " + number((*snap.point.position - *before).norm()) : std::string();
-      snapped.push_back(v.note(entry.at, was + ": re-snapped to " + bindingText(snap.point) +
-                                             moved + ", " + number(snap.residual) +
-                                             " from the stored position"));
+      snapped.push_back(v.note(entry.at / "position",
+                               was + ": re-snapped to " + bindingText(snap.point) + moved + ", " +
+                                   number(snap.residual) + " from the stored position" +
+                                   (snap.residual > tolerance.lost ? far : std::string())));
       *entry.point = snap.point;
     }
   }
@@ -550,10 +553,7 @@ FeaturePointFile validateFeaturePoints(const FeaturePointFile& input, const Head
   }
   for (Diagnostic& d : misfits) v.error(std::move(d));
   for (Diagnostic& d : unsnappable) v.error(std::move(d));
-  if (warnings) {
-    warnings->insert(warnings->end(), lost.begin(), lost.end());
-    warnings->insert(warnings->end(), snapped.begin(), snapped.end());
-  }
+  if (warnings) warnings->insert(warnings->end(), snapped.begin(), snapped.end());
 
   if (set == FeaturePointSet::Partial) {
     v.throwIfErrors();

@@ -3,27 +3,38 @@
 #include <lacrima/rigging/ClosestSurfacePoints.h>
 #include <lacrima/rigging/SphereFit.h>
 
+#include "FeaturePointProposalFeatures.h"
+
 #include <Eigen/Geometry>
 #include <Eigen/LU>
+#include <Eigen/SVD>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <stdexcept>
+#include <tuple>
 
 namespace lacrima::rigging {
 namespace {
 
 // How far the spline's correction reaches from the nearest anchor, in units of the anchors' RMS
-// distance from their centroid. Chosen on the ICT head (8 anchors and the eye centres): 0.3
-// gives a mean error of 0.114 ES0, the undamped spline 0.118 (0.172 without the eye centres)
-// and 0.2 to 1 all within 0.003 of it.
-constexpr double kSplineReach = 0.3;
+// distance from their centroid. Chosen on the ICT head (8 anchors and the eye centres, with the
+// eyes' step): 0.4 to 0.7 give a mean error of 0.076 to 0.078 ES0, 0.2, 0.3 and 1.0 0.080 and
+// the undamped spline 0.082.
+constexpr double kSplineReach = 0.5;
 
 void checkAnchors(const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target) {
   if (source.cols() != target.cols() || source.cols() < 4)
     throw std::invalid_argument(
         "warpPoints: expected the same number (>= 4) of source and target anchors");
+  // Umeyama divides by the source's spread: all anchors at one place would give NaN.
+  for (const Eigen::Matrix3Xd* anchors : {&source, &target})
+    if (!anchors->allFinite() ||
+        !((anchors->colwise() - anchors->rowwise().mean()).squaredNorm() > 0))
+      throw std::invalid_argument(
+          "warpPoints: the anchors are degenerate (not finite, or all at one place)");
 }
 
 // The thin-plate spline's system [K P; P^T 0] [w; c A] = [b - a'; 0], with K_ij = |a'_i - a'_j|
@@ -109,6 +120,38 @@ std::vector<SurfacePoint> snapToVertices(const Eigen::Matrix3Xd& queries, const 
   return out;
 }
 
+// The anchors' names in the order of the columns of the anchor matrices, for messages.
+std::string anchorList(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+// Anchors that cannot define a warp get an error naming the file and the anchors, not a NaN
+// later: two at one place (the spline would have to send one point to two), all on one line
+// (no rotation about it is determined) or all in one plane (the spline's affine part is not).
+// Relative tolerances, so that the test does not depend on the head's units.
+void checkAnchorGeometry(const Eigen::Matrix3Xd& target, const std::vector<std::string>& names,
+                         const std::string& path) {
+  const auto fail = [&](const std::string& what) {
+    throw FileError({path, 0, 0}, "points: the anchors " + what +
+                                      "; place the eye corners, nose tip, mouth corners and "
+                                      "chin where they are on the head");
+  };
+  if (!target.allFinite()) fail(anchorList(names) + " are not all finite");
+  const Eigen::Matrix3Xd centred = target.colwise() - target.rowwise().mean();
+  const double spread = std::sqrt(centred.squaredNorm() / static_cast<double>(target.cols()));
+  constexpr double kTolerance = 1e-3;
+  for (Eigen::Index i = 0; i < target.cols(); ++i)
+    for (Eigen::Index j = i + 1; j < target.cols(); ++j)
+      if (!((target.col(i) - target.col(j)).norm() > kTolerance * spread))
+        fail(names[static_cast<std::size_t>(i)] + " and " + names[static_cast<std::size_t>(j)] +
+             " are at the same place");
+  const Eigen::Vector3d sigma = Eigen::JacobiSVD<Eigen::MatrixXd>(centred).singularValues();
+  if (!(sigma[1] > kTolerance * sigma[0])) fail(anchorList(names) + " lie on one line");
+  if (!(sigma[2] > kTolerance * sigma[0])) fail(anchorList(names) + " lie in one plane");
+}
+
 }  // namespace
 
 const std::vector<std::string>& proposalAnchors() {
@@ -150,7 +193,13 @@ Eigen::Matrix3Xd warpPoints(const Eigen::Matrix3Xd& source, const Eigen::Matrix3
 
 FeaturePointFile proposeFeaturePoints(const FeaturePointFile& partial, const HeadMesh& mesh,
                                       const FeaturePointFile& reference,
-                                      const HeadMesh& referenceMesh, Warnings* warnings) {
+                                      const HeadMesh& referenceMesh, Warnings* warnings,
+                                      const ProposalOptions& options, ProposalTimings* timings) {
+  using Clock = std::chrono::steady_clock;
+  const auto millisecondsSince = [](Clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+  };
+  const Clock::time_point start = Clock::now();
   std::string missing;
   for (const std::string& id : proposalAnchors())
     if (!partial.points.count(id)) missing += (missing.empty() ? "" : ", ") + id;
@@ -163,53 +212,82 @@ FeaturePointFile proposeFeaturePoints(const FeaturePointFile& partial, const Hea
 
   // Every point both files have is an anchor; every reference point the partial lacks, by part.
   std::vector<const SurfacePoint*> sourceAnchors, targetAnchors;
+  std::vector<std::string> anchorNames;
   std::map<std::string, std::vector<std::string>> proposedByPart;
   for (const auto& [id, spec] : reference.points) {
     if (const auto given = partial.points.find(id); given != partial.points.end()) {
       sourceAnchors.push_back(&spec.at);
       targetAnchors.push_back(&given->second.at);
+      anchorNames.push_back(id);
     } else {
       proposedByPart[partOf(reference, spec.at.submesh)].push_back(id);
     }
   }
   Eigen::Matrix3Xd source = positionsOf(sourceAnchors, referenceMesh);
   Eigen::Matrix3Xd target = positionsOf(targetAnchors, mesh);
-  for (const auto& [from, to] : {std::pair{&reference.eyeLeft, &partial.eyeLeft},
-                                 std::pair{&reference.eyeRight, &partial.eyeRight}}) {
+  EyeCentres eyes;
+  for (const auto& [side, from, to] :
+       {std::tuple{"left", &reference.eyeLeft, &partial.eyeLeft},
+        std::tuple{"right", &reference.eyeRight, &partial.eyeRight}}) {
     const auto a = eyeCentre(*from, referenceMesh), b = eyeCentre(*to, mesh);
     if (!a || !b) continue;
     source.conservativeResize(3, source.cols() + 1);
     target.conservativeResize(3, target.cols() + 1);
     source.rightCols<1>() = *a;
     target.rightCols<1>() = *b;
+    anchorNames.push_back(std::string("the ") + side + " eye's centre");
+    eyes[std::string("eye_") + side] = {*a, *b};
   }
+  checkAnchorGeometry(target, anchorNames, partial.path);
   const double scale = similarityScale(source, target);
 
+  // Every proposed point, carried by the similarity and the faded spline.
+  std::vector<std::string> ids;
+  std::vector<const SurfacePoint*> at;
+  for (const auto& [part, partIds] : proposedByPart)
+    for (const std::string& id : partIds) {
+      ids.push_back(id);
+      at.push_back(&reference.points.at(id).at);
+    }
+  Eigen::Matrix3Xd carried = warpPoints(source, target, positionsOf(at, referenceMesh));
+  if (timings) timings->fitMs = millisecondsSince(start);
+
+  const Clock::time_point eyeStart = Clock::now();
+  if (options.method == ProposalMethod::FeatureAware) {
+    const Eigen::Matrix3d rotation =
+        Eigen::umeyama(source, target, true).topLeftCorner<3, 3>() / scale;
+    placeEyePoints(ids, reference, referenceMesh, partial, mesh, eyes, rotation, scale, carried);
+  }
+  if (timings) timings->eyesMs = millisecondsSince(eyeStart);
+
+  const Clock::time_point snapStart = Clock::now();
   FeaturePointFile out = partial;
-  for (const auto& [part, ids] : proposedByPart) {
+  Eigen::Index next = 0;
+  for (const auto& [part, partIds] : proposedByPart) {
+    const Eigen::Index first = next;
+    next += static_cast<Eigen::Index>(partIds.size());
     const std::vector<std::string>* names = nullptr;
     for (const auto& [role, roleNames] : parts(partial))
       if (role == part && !roleNames->empty()) names = roleNames;
     if (!names) {
       if (warnings)
-        for (const std::string& id : ids)
+        for (const std::string& id : partIds)
           warnings->push_back(Diagnostic{SourceLocation{partial.path, 0, 0},
                                          "no feature point " + id +
                                              " proposed: the head has no sub-mesh in role \"" +
                                              part + "\" for it"});
       continue;
     }
-    std::vector<const SurfacePoint*> at;
-    for (const std::string& id : ids) at.push_back(&reference.points.at(id).at);
-    const Eigen::Matrix3Xd warped = warpPoints(source, target, positionsOf(at, referenceMesh));
-    const std::vector<SurfacePoint> snapped = snapToVertices(warped, mesh, *names);
-    for (std::size_t k = 0; k < ids.size(); ++k) {
-      FeaturePointSpec spec = reference.points.at(ids[k]);
+    const std::vector<SurfacePoint> snapped = snapToVertices(
+        carried.middleCols(first, static_cast<Eigen::Index>(partIds.size())), mesh, *names);
+    for (std::size_t k = 0; k < partIds.size(); ++k) {
+      FeaturePointSpec spec = reference.points.at(partIds[k]);
       spec.at = snapped[k];
       if (spec.radius) *spec.radius *= scale;
-      out.points[ids[k]] = spec;
+      out.points[partIds[k]] = spec;
     }
   }
+  if (timings) timings->snapMs = millisecondsSince(snapStart);
   return out;
 }
 

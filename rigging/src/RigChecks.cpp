@@ -50,10 +50,11 @@ std::string expectedPart(const std::string& id) {
   return "skin";
 }
 
+// The upper teeth stay with the skull (no role: rigid); the lower teeth follow the jaw ("jaw"),
+// or stay rigid on heads whose teeth are one sub-mesh (the ICT head).
 bool partFits(const std::string& expected, const std::string& role) {
-  if (expected == "upper teeth" || expected == "lower teeth")
-    return role != "skin" && role != "eye_left" && role != "eye_right" && role != "tongue" &&
-           role != "attached";
+  if (expected == "upper teeth") return role == "rigid";
+  if (expected == "lower teeth") return role == "jaw" || role == "rigid";
   return expected == role;
 }
 

@@ -126,6 +126,10 @@ std::string rigDescriptionJson(const HeadMesh& mesh, const BuiltRig& rig, const 
   for (int fap = 1; fap <= kChannelCount; ++fap)
     if (driven.test(channelIndex(fap))) w.integer(fap);
   w.endArray();
+  w.key("disabled_faps");
+  w.beginArray();
+  for (int fap : rig.disabledFaps) w.integer(fap);
+  w.endArray();
   w.key("warnings");
   w.beginArray();
   for (const std::string& warning : rig.warnings) w.string(warning);

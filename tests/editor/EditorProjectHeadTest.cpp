@@ -165,6 +165,12 @@ class EditorProjectHeadTest : public QObject {
     QVERIFY(!window.model().isModified());
     QVERIFY(!window.preview()->loadHead());  // back to the missing file
     QVERIFY(window.preview()->messageText().contains(QLatin1String("head.mesh")));
+
+    // The file is put back and the project opened again: the preview tries again and shows it.
+    QVERIFY(QFile::rename(moved, folder.filePath("heads/ict.obj")));
+    QVERIFY(window.openFile(project));
+    QVERIFY2(window.preview()->loadHead(), qPrintable(window.preview()->messageText()));
+    QCOMPARE(window.preview()->headVertexCount(), ictVertices_);
   }
 
   // Warnings from rigging the project's head reach the status line. Here the left iris is
@@ -176,8 +182,8 @@ class EditorProjectHeadTest : public QObject {
     const QByteArray eye = R"("eye_left": ["M_ScleraLeft", "M_IrisLeft"])";
     const QByteArray attached = R"("attached": [)";
     QVERIFY(fdp.contains(eye) && fdp.contains(attached));
-    fdp.replace(eye, R"("eye_left": ["M_ScleraLeft"])");
-    fdp.replace(attached, R"("attached": ["M_IrisLeft", )");
+    fdp.replace(eye, R"("eye_left": ["M_IrisLeft"])");
+    fdp.replace(attached, R"("attached": ["M_ScleraLeft", )");
     QTemporaryDir folder;
     const QString project = rigtest::writeIctProject(folder.path(), kKeys, fdp);
     MainWindow window(options());
@@ -188,7 +194,7 @@ class EditorProjectHeadTest : public QObject {
     const QStringList warnings = window.preview()->headWarnings();
     QVERIFY2(
         warnings.filter(QLatin1String(
-                            "feature point 3.5: sub-mesh \"M_IrisLeft\" has no deforming role"))
+                            "feature point 3.5: sub-mesh \"M_ScleraLeft\" has no deforming role"))
                 .size() == 1,
         qPrintable(warnings.join('\n')));
     // The status line counts them and shows the first; its tooltip lists them all.

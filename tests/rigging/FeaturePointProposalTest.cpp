@@ -25,10 +25,15 @@ using namespace lacrima::rigtest;
 
 namespace {
 
-// Bounds met on the ICT head, in ES0 (measured 0.114 and 0.586). Issue 13's targets, mean 0.08
-// and worst 0.3, are not met: see docs/rig.md, "Proposing feature points".
-constexpr double kMeanBound = 0.12;
-constexpr double kWorstBound = 0.59;
+// Issue 13's targets on the ICT head, in ES0 (measured 0.077 and 0.284, see docs/rig.md,
+// "Proposing feature points").
+constexpr double kMeanBound = 0.08;
+constexpr double kWorstBound = 0.3;
+// The eyes' step puts the pupils on the cornea vertex over the pupil's centre (measured 0.000;
+// the warp alone 0.037) and the lids on their margins over it (measured 0.023 and 0.007; the
+// warp alone 0.052 and 0.026).
+constexpr double kPupilBound = 0.01;
+constexpr double kLidBound = 0.03;
 
 // The hand-made file with only the points `keep`.
 rigging::FeaturePointFile partialOf(const rigging::FeaturePointFile& complete,
@@ -102,12 +107,51 @@ class FeaturePointProposalTest : public QObject {
     return {};
   }
 
-  std::map<std::string, double, rigging::FdpIdLess> proposeOn(const HeadMesh& mesh) {
+  rigging::FeaturePointFile proposalOn(
+      const HeadMesh& mesh,
+      rigging::ProposalMethod method = rigging::ProposalMethod::FeatureAware) {
     const rigging::FeaturePointFile partial = partialOf(ictFdp_, rigging::proposalAnchors());
     rigging::validateFeaturePoints(partial, mesh, nullptr, rigging::FeaturePointSet::Partial);
-    const rigging::FeaturePointFile proposed =
-        rigging::proposeFeaturePoints(partial, mesh, referenceFdp_, *reference_);
-    return errors(proposed, ictFdp_, mesh);
+    return rigging::proposeFeaturePoints(partial, mesh, referenceFdp_, *reference_, nullptr,
+                                         {method});
+  }
+
+  std::map<std::string, double, rigging::FdpIdLess> proposeOn(const HeadMesh& mesh) {
+    return errors(proposalOn(mesh), ictFdp_, mesh);
+  }
+
+  // The ICT head moved by the similarity x -> scale R x + t (normals left as they are: the
+  // proposal must not need them).
+  HeadMesh moved(const Eigen::Matrix3f& rotation, float scale, const Eigen::Vector3f& shift) const {
+    HeadMesh out = *ict_;
+    out.positions = ((scale * rotation) * ict_->positions).colwise() + shift;
+    return out;
+  }
+
+  // The proposal on `mesh`, a moved ICT head, names the same vertices as on the ICT head.
+  void expectSameProposal(const HeadMesh& mesh, const char* what) {
+    const rigging::FeaturePointFile original = proposalOn(*ict_), turned = proposalOn(mesh);
+    report(errors(turned, ictFdp_, mesh), what);
+    QCOMPARE(turned.points.size(), original.points.size());
+    for (const auto& [id, spec] : original.points) {
+      const rigging::SurfacePoint& at = turned.points.at(id).at;
+      QVERIFY2(at.submesh == spec.at.submesh && at.vertex == spec.at.vertex,
+               qPrintable(QString("%1: %2 %3 vs %4 %5")
+                              .arg(QString::fromStdString(id), QString::fromStdString(at.submesh))
+                              .arg(at.vertex)
+                              .arg(QString::fromStdString(spec.at.submesh))
+                              .arg(spec.at.vertex)));
+    }
+  }
+
+  // The message of the FileError proposeFeaturePoints throws for `partial` on `mesh`.
+  std::string proposalError(const rigging::FeaturePointFile& partial, const HeadMesh& mesh) {
+    try {
+      rigging::proposeFeaturePoints(partial, mesh, referenceFdp_, *reference_);
+    } catch (const FileError& e) {
+      return e.what();
+    }
+    return "no error";
   }
 
  private slots:
@@ -139,25 +183,88 @@ class FeaturePointProposalTest : public QObject {
     const auto [mean, worst] = report(error, "y up, centimetres");
     QVERIFY2(mean <= kMeanBound, qPrintable(QString::number(mean)));
     QVERIFY2(worst <= kWorstBound, qPrintable(QString::number(worst)));
+    // The eyes' step: pupils on the pupils, lids on their margins straddling them.
+    for (const char* id : {"3.5", "3.6"})
+      QVERIFY2(error.at(id) <= kPupilBound, qPrintable(QString::number(error.at(id))));
+    for (const char* id : {"3.1", "3.2", "3.3", "3.4"})
+      QVERIFY2(error.at(id) <= kLidBound, qPrintable(QString::number(error.at(id))));
+    // Every point on the part its reference point is on.
+    const rigging::FeaturePointFile proposed = proposalOn(*ict_);
+    for (const auto& [id, spec] : proposed.points) {
+      const std::string& part = spec.at.submesh;
+      const bool onEye = part.rfind("M_Sclera", 0) == 0 || part.rfind("M_Iris", 0) == 0;
+      QVERIFY2(onEye == (id == "3.5" || id == "3.6"), id.c_str());
+      QVERIFY2(onEye || part == "M_Face" || part == "M_BackHead", id.c_str());
+    }
   }
 
-  // Z up, millimetres: the same points, whatever the head's units and axes.
+  // The warp alone (the method before the eyes' step) is still selectable and no better.
+  void eyesStepImprovesOnTheWarp() {
+    if (const QString why = missing(); !why.isEmpty()) QSKIP(qPrintable(why));
+    const auto warp = errors(proposalOn(*ict_, rigging::ProposalMethod::Warp), ictFdp_, *ict_);
+    const auto eyes = proposeOn(*ict_);
+    const auto [warpMean, warpWorst] = report(warp, "warp alone");
+    const auto [eyesMean, eyesWorst] = report(eyes, "with the eyes' step");
+    QVERIFY(eyesMean < warpMean && eyesWorst <= warpWorst);
+    QVERIFY(warp.at("3.5") > kPupilBound && warp.at("3.1") > kLidBound);
+  }
+
+  // Z up facing -y, millimetres; and facing +y, inches, moved away from the origin: the same
+  // vertices, whatever the head's units and axes.
   void doesNotDependOnUnitsOrAxes() {
     if (const QString why = missing(); !why.isEmpty()) QSKIP(qPrintable(why));
-    HeadMesh turned = *ict_;
     const Eigen::Matrix3f yUpToZUp =
         Eigen::AngleAxisf(static_cast<float>(EIGEN_PI / 2), Eigen::Vector3f::UnitX())
             .toRotationMatrix();
-    turned.positions = 10.0f * yUpToZUp * ict_->positions;  // centimetres to millimetres
-    const auto original = proposeOn(*ict_);
-    const auto moved = proposeOn(turned);
-    report(moved, "z up, millimetres");
-    QCOMPARE(moved.size(), original.size());
-    for (const auto& [id, e] : original)
-      QVERIFY2(std::abs(moved.at(id) - e) < 1e-4, qPrintable(QString("%1: %2 vs %3 ES0")
-                                                                 .arg(QString::fromStdString(id))
-                                                                 .arg(e)
-                                                                 .arg(moved.at(id))));
+    expectSameProposal(moved(yUpToZUp, 10.0f, Eigen::Vector3f::Zero()), "z up, millimetres");
+    const Eigen::Matrix3f facingPlusY =
+        (Eigen::AngleAxisf(static_cast<float>(EIGEN_PI / 3), Eigen::Vector3f::UnitY()) *
+         Eigen::AngleAxisf(static_cast<float>(-EIGEN_PI / 2), Eigen::Vector3f::UnitX()))
+            .toRotationMatrix();
+    expectSameProposal(moved(facingPlusY, 1.0f / 2.54f, Eigen::Vector3f(40.0f, -7.0f, 120.0f)),
+                       "facing +y, turned, inches");
+  }
+
+  // Anchors that cannot define a warp: a clear error naming the file and the anchors.
+  void degenerateAnchorsAreNamed() {
+    if (const QString why = missing(); !why.isEmpty()) QSKIP(qPrintable(why));
+    rigging::FeaturePointFile partial = partialOf(ictFdp_, rigging::proposalAnchors());
+    partial.path = "partial.fdp.json";
+    rigging::FeaturePointFile coincident = partial;
+    coincident.points["8.4"] = coincident.points["8.3"];
+    const std::string same = proposalError(coincident, *ict_);
+    QVERIFY2(same.find("partial.fdp.json") == 0 &&
+                 same.find("8.3 and 8.4 are at the same place") != std::string::npos,
+             same.c_str());
+
+    // Without eyes (so no eye centres join the anchors), every anchor moved onto one line, then
+    // into one plane.
+    rigging::FeaturePointFile eyeless = partial;
+    eyeless.eyeLeft = {};
+    eyeless.eyeRight = {};
+    for (const auto& [shape, expected] :
+         {std::pair{Eigen::Vector3f(1, 0, 0), "lie on one line"},
+          std::pair{Eigen::Vector3f(1, 1, 0), "lie in one plane"}}) {
+      HeadMesh flat = *ict_;
+      int k = 0;
+      for (const auto& [id, spec] : eyeless.points) {
+        const int v = rigging::surfaceVertices(spec.at, flat).front();
+        flat.positions.col(v) =
+            Eigen::Vector3f(static_cast<float>(k), static_cast<float>(k * k), 0.0f)
+                .cwiseProduct(shape);
+        ++k;
+      }
+      const std::string message = proposalError(eyeless, flat);
+      QVERIFY2(message.find("partial.fdp.json") == 0 && message.find(expected) != std::string::npos,
+               message.c_str());
+    }
+
+    // warpPoints itself: anchors all at one place are an error, not NaN.
+    Eigen::Matrix3Xd source = Eigen::Matrix3Xd::Ones(3, 5), target = Eigen::Matrix3Xd::Random(3, 5);
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                             rigging::warpPoints(source, target, Eigen::Matrix3Xd::Zero(3, 1)));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                             rigging::warpPoints(target, source, Eigen::Matrix3Xd::Zero(3, 1)));
   }
 
   void tooFewAnchorsNamesTheMissingOnes() {

@@ -12,6 +12,7 @@
 #include <lacrima/rigging/RigBuilder.h>
 
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -235,9 +236,10 @@ class PointPositionsTest : public QObject {
     // e.g. "file:14:12: points."2.1": point 2.1 (vertex 5 of "skin", stored at [...]) is 0.7
     // from its stored position: re-snapped to vertex 138 of "skin", moved 0.7, 0 from ..."
     QVERIFY2(contains(text, path + ":"), text.c_str());
-    QVERIFY2(contains(text, "points.\"2.1\": point 2.1 (vertex 5 of \"skin\""), text.c_str());
+    QVERIFY2(contains(text, "points.\"2.1\".position: point 2.1 (vertex 5 of \"skin\""),
+             text.c_str());
     QVERIFY2(contains(text, "re-snapped to vertex 138 of \"skin\", moved "), text.c_str());
-    QVERIFY2(contains(text, "tear_sources.left: tear source left"), text.c_str());
+    QVERIFY2(contains(text, "tear_sources.left.position: tear source left"), text.c_str());
     for (const Diagnostic& d : warnings)
       QVERIFY2(d.where.line > 0 && d.where.column > 0, d.toString().c_str());
     // The corrected file validates silently: it now says where each point is.
@@ -274,6 +276,24 @@ class PointPositionsTest : public QObject {
     });
     QVERIFY2(contains(error, "points.\"2.10\".vertex: index 5000 out of range"), error.c_str());
     QVERIFY2(!contains(error, "another mesh"), error.c_str());
+  }
+
+  // Absurd stored positions (far beyond any float) give a clear error, never a crash or NaN.
+  void absurdPositionsAreRefused() {
+    const HeadMesh mesh = sheetMesh();
+    rigging::FeaturePointFile f = sheetFile();
+    rigging::recordPositions(f, mesh);
+    f.points["2.1"].at.position = Eigen::Vector3d(1e300, 0, 0);
+    f.points["8.3"].at.position = Eigen::Vector3d(0, -1e300, 1e300);
+    const rigging::FeaturePointFile back = saved(f, "absurd.fdp.json");
+    Warnings warnings;
+    const std::string error = fileErrorOf([&] {
+      rigging::validateFeaturePoints(back, mesh, &warnings, rigging::FeaturePointSet::Partial);
+    });
+    QVERIFY2(contains(error, "points.\"2.1\".position") && contains(error, "nothing to snap it to"),
+             error.c_str());
+    QVERIFY2(contains(error, "points.\"8.3\".position"), error.c_str());
+    QVERIFY2(!contains(error, "nan"), error.c_str());
   }
 
   // Within kPositionMatch of the diagonal a point is where the file says (float rounding of a
@@ -356,8 +376,9 @@ class PointPositionsTest : public QObject {
         rigging::validateFeaturePoints(back, edited, &warnings, rigging::FeaturePointSet::Partial);
     QVERIFY(snapped.points.at("2.1").at.vertex != 5);
     const std::string text = joined(warnings);
+    QCOMPARE(warnings.size(), std::size_t{1});
     QVERIFY2(contains(text, "points.\"2.1\".position: point 2.1") &&
-                 contains(text, "a re-exported mesh allows"),
+                 contains(text, "a re-exported mesh allows; check this point"),
              text.c_str());
   }
 
@@ -437,8 +458,12 @@ class PointPositionsTest : public QObject {
     std::vector<int> newIndex;
     const HeadMesh moved = reversed(head, newIndex);
     Warnings warnings;
+    QElapsedTimer timer;
+    timer.start();
     const rigging::FeaturePointFile snapped =
         rigging::validateFeaturePoints(back, moved, &warnings);
+    qInfo("default head, vertices reversed: %d points re-snapped in %.1f ms",
+          countContaining(warnings, "re-snapped"), static_cast<double>(timer.nsecsElapsed()) / 1e6);
     QVERIFY2(countContaining(warnings, "re-snapped") >= static_cast<int>(back.points.size()) - 2,
              joined(warnings).c_str());
     verifyAtStoredPositions(snapped, moved);

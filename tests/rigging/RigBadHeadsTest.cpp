@@ -15,9 +15,13 @@
 #include <lacrima/rigging/MeshImport.h>
 #include <lacrima/rigging/RigBuilder.h>
 #include <lacrima/rigging/RigChecks.h>
+#include <lacrima/rigging/RigDescription.h>
 
 #include <QDir>
 #include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -120,7 +124,8 @@ SyntheticHead syntheticFace(bool lipPiece = false) {
     const bool onLips = lipPiece && (id.rfind("2.", 0) == 0 || id.rfind("8.", 0) == 0) &&
                         std::abs(xy.x()) < 0.2 && xy.y() > 0.35 && xy.y() < 0.5;
     const HeadSubmesh& s = head.submeshes[onLips ? 1 : 0];
-    fdp.points[id].at = {s.name, nearestLocalVertex(head, s, xy), -1, Eigen::Vector3d::Zero()};
+    fdp.points[id].at = {s.name, nearestLocalVertex(head, s, xy), -1, Eigen::Vector3d::Zero(),
+                         std::nullopt};
   }
   head.computeNormals();
   return out;
@@ -244,6 +249,12 @@ class RigBadHeadsTest : public QObject {
                qPrintable(QString("FAP %1").arg(fap)));
     QVERIFY(!rig.input.influences.count("3.5") && !rig.input.influences.count("3.6"));
     QVERIFY(rig.input.influences.count("3.1"));  // the lids still close
+    // rig.json tells other tools what the head cannot play.
+    const QJsonObject description =
+        QJsonDocument::fromJson(QByteArray::fromStdString(rigging::rigDescriptionJson(s.head, rig)))
+            .object();
+    QCOMPARE(description.value("disabled_faps").toArray(),
+             (QJsonArray{23, 24, 25, 26, 27, 28, 29, 30, 69, 70}));
 
     // The checks say it once per eye, and neither call the pupils misplaced nor the eye poses
     // empty.
@@ -347,6 +358,9 @@ class RigBadHeadsTest : public QObject {
       options.geodesics = method;
       const rigging::BuiltRig rig = rigging::buildRig(s.head, s.fdp, options);
       verifyFiniteRig(s.head, rig);
+      // The brows' influences stretched along their motion (DirectionalGeodesics) were built
+      // on the damaged surface too.
+      QVERIFY(!rig.input.fapInfluences.empty());
       const auto checks = rigging::checkRig(s.head, s.fdp, rig);
       for (const rigging::RigCheck& c : checks)
         QVERIFY2(c.message.find("nan") == std::string::npos &&

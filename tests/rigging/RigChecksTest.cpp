@@ -114,7 +114,7 @@ class RigChecksTest : public QObject {
     const double es0 = rig_->fapu.es0;
     const int v = nearestSkinVertex(from + Eigen::Vector3d(0, 0.2 * es0, 0),
                                     [](const Eigen::Vector3d&) { return true; });
-    fdp.points["3.7"].at = {"skin", v, -1, Eigen::Vector3d::Zero()};
+    fdp.points["3.7"].at = {"skin", v, -1, Eigen::Vector3d::Zero(), std::nullopt};
     const auto checks = ofKind(checksOf(fdp), "asymmetry");
     const auto hit = std::find_if(checks.begin(), checks.end(),
                                   [](const RigCheck& c) { return concerns(c, "3.7"); });
@@ -137,7 +137,7 @@ class RigChecksTest : public QObject {
   void lowerLipOnAnEyeIsOnTheWrongPart() {
     REQUIRE_DEFAULT_HEAD();
     rigging::FeaturePointFile fdp = *fdp_;
-    fdp.points["2.3"].at = {"eye_l", 0, -1, Eigen::Vector3d::Zero()};
+    fdp.points["2.3"].at = {"eye_l", 0, -1, Eigen::Vector3d::Zero(), std::nullopt};
     const auto checks = checksOf(fdp);
     const auto wrong = ofKind(checks, "wrong-part");
     QCOMPARE(static_cast<int>(wrong.size()), 1);
@@ -151,6 +151,24 @@ class RigChecksTest : public QObject {
     fdp.points["3.5"].at = fdp.points["3.7"].at;
     const auto pupil = ofKind(checksOf(fdp), "wrong-part");
     QVERIFY(pupil.size() == 1 && pupil[0].points == std::vector<std::string>{"3.5"});
+  }
+
+  // Teeth points: 9.9 (lower teeth) on the jaw's teeth is right, 9.10 (upper teeth) there is not.
+  void teethPointsBelongOnTheirTeeth() {
+    REQUIRE_DEFAULT_HEAD();
+    std::string jaw;
+    for (const auto& [name, role] : rig_->roles)
+      if (role == "jaw") jaw = name;
+    QVERIFY2(!jaw.empty(), "the default head's lower teeth follow the jaw");
+    rigging::FeaturePointFile fdp = *fdp_;
+    fdp.points["9.9"].at = {jaw, 0, -1, Eigen::Vector3d::Zero(), std::nullopt};
+    fdp.points["9.10"].at = {jaw, 1, -1, Eigen::Vector3d::Zero(), std::nullopt};
+    const auto wrong = ofKind(checksOf(fdp), "wrong-part");
+    QCOMPARE(static_cast<int>(wrong.size()), 1);
+    QCOMPARE(wrong[0].points, std::vector<std::string>{"9.10"});
+    QVERIFY2(wrong[0].message.find("upper teeth") != std::string::npos &&
+                 wrong[0].message.find("role jaw") != std::string::npos,
+             wrong[0].message.c_str());
   }
 
   // 2.3 bound to 2.2's vertex: the lips share it and cannot part.
@@ -207,7 +225,7 @@ class RigChecksTest : public QObject {
       if (role == "rigid") rigid = name;
     QVERIFY2(!rigid.empty(), "the default head has a rigid sub-mesh (the upper teeth)");
     rigging::FeaturePointFile fdp = *fdp_;
-    fdp.points["8.1"].at = {rigid, 0, -1, Eigen::Vector3d::Zero()};
+    fdp.points["8.1"].at = {rigid, 0, -1, Eigen::Vector3d::Zero(), std::nullopt};
     const auto checks = checksOf(fdp);
     const auto nothing = ofKind(checks, "pose-moves-nothing");
     QCOMPARE(static_cast<int>(nothing.size()), 1);
@@ -225,7 +243,7 @@ class RigChecksTest : public QObject {
     const Eigen::Vector3d from = rig_->featurePoints.at("3.7");
     const int v = nearestSkinVertex(from + Eigen::Vector3d(0, 0.2 * rig_->fapu.es0, 0),
                                     [](const Eigen::Vector3d&) { return true; });
-    fdp.points["3.7"].at = {"skin", v, -1, Eigen::Vector3d::Zero()};
+    fdp.points["3.7"].at = {"skin", v, -1, Eigen::Vector3d::Zero(), std::nullopt};
     const rigging::BuiltRig upright = rigging::buildRig(*head_, fdp);
     const auto before = rigging::checkRig(*head_, fdp, upright);
 
@@ -262,7 +280,7 @@ class RigChecksTest : public QObject {
     QCOMPARE(goodOut.count('\n'), static_cast<qsizetype>(checks_.size()) + 1);  // + summary
 
     rigging::FeaturePointFile fdp = *fdp_;
-    fdp.points["2.3"].at = {"eye_l", 0, -1, Eigen::Vector3d::Zero()};
+    fdp.points["2.3"].at = {"eye_l", 0, -1, Eigen::Vector3d::Zero(), std::nullopt};
     const QString broken = QDir(tmp_.path()).filePath("broken.fdp.json");
     saveAtomically(broken.toStdString(), rigging::featurePointFileJson(fdp));
     QProcess bad;

@@ -39,6 +39,13 @@ class FaceViewportOffscreenTest : public QObject {
       QTest::mousePress(&viewport, Qt::LeftButton, {}, QPoint(10, 10));
       QTest::mouseMove(&viewport, QPoint(60, 40));
       QTest::mouseRelease(&viewport, Qt::LeftButton, {}, QPoint(60, 40));
+      // The Head workspace's calls: nothing to project or pick without a scene, no crash.
+      viewport.setMarkers({viewport::Marker{}});
+      viewport.setViewFrame(Eigen::Matrix3d::Identity());
+      viewport.setPickableSubmeshes({true});
+      QVERIFY(!viewport.project(Eigen::Vector3d::Zero()));
+      QVERIFY(!viewport.rayAt(QPointF(100, 100)));
+      QVERIFY(!viewport.pick(QPointF(100, 100)));
       viewport.update();
       QTest::qWait(50);
       QVERIFY(viewport.grabFrame().isNull());

@@ -10,10 +10,13 @@
 #include <lacrima/common/Milliseconds.h>
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/rigging/MeshImport.h>
+#include <lacrima/scene/FaceRenderer.h>
+#include <lacrima/scene/FaceScene.h>
 #include <lacrima/viewport/FaceViewport.h>
 
 #include <QtTest>
 
+#include <limits>
 #include <map>
 #include <memory>
 #include <set>
@@ -145,6 +148,14 @@ class ViewportPickingTest : public QObject {
         return -1;
       }
       const Eigen::Vector3i& tri = globalTriangle(head, hit->triangle);
+      // The same triangle by its sub-mesh's own numbering; the nearest corner is one of it.
+      const Eigen::Vector3i& local = head.submeshes[hit->submesh].triangles[hit->submeshTriangle];
+      if (local != tri ||
+          hit->triangle != viewport::firstTriangleOf(head, hit->submesh) + hit->submeshTriangle)
+        return -1;
+      int corner = 0;
+      hit->barycentric.maxCoeff(&corner);
+      if (hit->vertex != tri[corner]) return -1;
       const std::set<int> ring = oneRing(head, weld, v);
       if (ring.count(weld[tri[0]]) || ring.count(weld[tri[1]]) || ring.count(weld[tri[2]])) {
         ++onRing;
@@ -321,6 +332,16 @@ class ViewportPickingTest : public QObject {
     QVERIFY(colourAt(highlighted, nosePoint).luminance() > colourAt(marked, nosePoint).luminance());
     const MeanColour ring = meanColour(highlighted, tip + QPointF(7 + 1.5 + 1.2, 0), 0);
     QVERIFY2(ring.r > 230 && ring.g > 230 && ring.b > 230, "no white ring round the highlight");
+    // Markers nobody can draw (not finite, behind the eye, no size, absurdly large) are left
+    // out or clamped; the others still show.
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    markers.push_back({Eigen::Vector3d(nan, 0, 0), blue, 9, false, true});
+    markers.push_back({eyeOfView() + 10 * (eyeOfView() - nosePoint), blue, 9, false, true});
+    markers.push_back({backPoint, blue, 0, false, true});
+    markers.push_back({backPoint, blue, -4, false, true});
+    markers.push_back({nosePoint + Eigen::Vector3d(0, 0.3, 0), blue, 1e9, false, false});
+    viewport_->setMarkers(markers);
+    QVERIFY(near(colourAt(viewport_->grabFrame(), nosePoint), green.lighter(130)));
     // Cleared: exactly the picture before.
     viewport_->setMarkers({});
     QCOMPARE(differingPixels(before, viewport_->grabFrame(), 0).size(), std::size_t{0});
@@ -343,7 +364,7 @@ class ViewportPickingTest : public QObject {
     qInfo("head pixels %d,%d %dx%d in 400x300", box.x(), box.y(), box.width(), box.height());
     // Whole: a margin all round; and large: most of the height or width.
     QVERIFY(box.left() > 8 && box.top() > 6 && box.right() < 392 && box.bottom() < 294);
-    QVERIFY(box.height() > 135 || box.width() > 180);  // 45% of the picture
+    QVERIFY(box.height() > 180 || box.width() > 240);  // 60% of the picture
 
     // The workspace knows the face frame: face left +x, up +z, forward -y.
     Eigen::Matrix3d faceToHead;
@@ -358,6 +379,7 @@ class ViewportPickingTest : public QObject {
           faceBox.height());
     QVERIFY(faceBox.left() > 8 && faceBox.top() > 6 && faceBox.right() < 392 &&
             faceBox.bottom() < 294);
+    QVERIFY(faceBox.height() > 180 || faceBox.width() > 240);
     // Up on screen is the face's up; the face looks at the camera: the nose (most forward, -y)
     // is picked at its own pixel and sits between the top of the head and the chin.
     int top = 0, nose = 0, bottom = 0;
@@ -383,6 +405,76 @@ class ViewportPickingTest : public QObject {
     qInfo("ICT pick: first (builds the hierarchy) %.2f ms, then %.4f ms each", first,
           millisecondsSince(start) / 200);
     viewport_->setHead(*head_);
+  }
+
+  void aToolCanTakeADragOver() {
+    viewport_->resetView();
+    settle();
+    auto send = [&](QEvent::Type type, QPoint at, Qt::MouseButton button,
+                    Qt::MouseButtons buttons) {
+      QMouseEvent event(type, QPointF(at), QPointF(viewport_->mapToGlobal(at)), button, buttons,
+                        Qt::NoModifier);
+      QCoreApplication::sendEvent(viewport_.get(), &event);
+    };
+    // The tool claims presses on the head (a feature point to drag), not those beside it.
+    QSignalSpy pressed(viewport_.get(), &viewport::FaceViewport::pointerPressed);
+    QSignalSpy dragged(viewport_.get(), &viewport::FaceViewport::pointerDragged);
+    QSignalSpy released(viewport_.get(), &viewport::FaceViewport::pointerReleased);
+    QSignalSpy clicked(viewport_.get(), &viewport::FaceViewport::clicked);
+    QSignalSpy hovered(viewport_.get(), &viewport::FaceViewport::hovered);
+    const auto connection = connect(viewport_.get(), &viewport::FaceViewport::pointerPressed, this,
+                                    [&](QPointF pixel, Qt::MouseButton button) {
+                                      if (button == Qt::LeftButton && viewport_->pick(pixel))
+                                        viewport_->claimDrag();
+                                    });
+    const QImage before = viewport_->grabFrame();
+    const QPoint onHead = viewport_->project(head_->positions.col(0).cast<double>())->toPoint();
+    QVERIFY(viewport_->pick(onHead));
+    send(QEvent::MouseButtonPress, onHead, Qt::LeftButton, Qt::LeftButton);
+    send(QEvent::MouseMove, onHead + QPoint(30, 10), Qt::NoButton, Qt::LeftButton);
+    send(QEvent::MouseMove, onHead + QPoint(50, 20), Qt::NoButton, Qt::LeftButton);
+    send(QEvent::MouseButtonRelease, onHead + QPoint(50, 20), Qt::LeftButton, Qt::NoButton);
+    settle();
+    QCOMPARE(pressed.count(), 1);
+    QCOMPARE(dragged.count(), 2);
+    QCOMPARE(dragged.last().at(0).toPointF(), QPointF(onHead + QPoint(50, 20)));
+    QCOMPARE(released.count(), 1);
+    QCOMPARE(clicked.count(), 0);
+    // The camera did not move.
+    QCOMPARE(differingPixels(before, viewport_->grabFrame(), 0).size(), std::size_t{0});
+    // Beside the head the same drag orbits as always.
+    send(QEvent::MouseButtonPress, QPoint(3, 3), Qt::LeftButton, Qt::LeftButton);
+    send(QEvent::MouseMove, QPoint(60, 13), Qt::NoButton, Qt::LeftButton);
+    send(QEvent::MouseButtonRelease, QPoint(60, 13), Qt::LeftButton, Qt::NoButton);
+    settle();
+    QCOMPARE(dragged.count(), 2);
+    QVERIFY(differingPixels(before, viewport_->grabFrame(), 10).size() > 1000);
+    // A press and release in place is a click; a move with no button a hover.
+    send(QEvent::MouseButtonPress, QPoint(5, 5), Qt::LeftButton, Qt::LeftButton);
+    send(QEvent::MouseButtonRelease, QPoint(6, 5), Qt::LeftButton, Qt::NoButton);
+    QCOMPARE(clicked.count(), 1);
+    QCOMPARE(clicked.last().at(0).toPointF(), QPointF(6, 5));
+    send(QEvent::MouseMove, QPoint(40, 40), Qt::NoButton, Qt::NoButton);
+    QCOMPARE(hovered.count(), 1);
+    disconnect(connection);
+    viewport_->resetView();
+    settle();
+  }
+
+  void theOffscreenRendererInvertsItsProjectionToo() {
+    scene::FaceRenderer renderer(*head_, QSize(320, 240));
+    renderer.orbit(25, -10);
+    for (int v = 0; v < head_->vertexCount(); v += 997) {
+      const Eigen::Vector3d p = head_->positions.col(v).cast<double>();
+      const auto ray = renderer.rayAt(renderer.project(p));
+      QVERIFY(ray);
+      QVERIFY(std::abs(ray->direction.norm() - 1) < 1e-12);
+      // The ray passes through the point (float camera matrices: a few millionths of the view).
+      QVERIFY((p - ray->origin).cross(ray->direction).norm() <
+              1e-5 * renderer.scene().view().distance);
+      QVERIFY((p - ray->origin).dot(ray->direction) > 0);
+    }
+    QVERIFY(!renderer.rayAt(QPointF(qQNaN(), 0)));
   }
 
   void withoutAHeadNothingIsProjectedOrPicked() {

@@ -136,6 +136,10 @@ QPointF FaceRenderer::project(const Eigen::Vector3d& headPoint) const {
   return state_->scene->project(headPoint, state_->size);
 }
 
+std::optional<Ray> FaceRenderer::rayAt(QPointF pixel) const {
+  return state_->scene->rayAt(pixel, state_->size);
+}
+
 const RenderTimes& FaceRenderer::lastTimes() const { return state_->times; }
 
 FaceScene& FaceRenderer::scene() { return *state_->scene; }

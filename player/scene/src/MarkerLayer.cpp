@@ -20,11 +20,12 @@ constexpr double kOutline = 1.5, kRing = 2.5;  // pixels
 constexpr double kDepthNudge = 0.01;
 
 std::unique_ptr<StreamedGeometry> makeLayer(Ogre::SceneNode& node, const std::string& name,
-                                            const std::string& material, const std::string& group) {
+                                            const std::string& material, const std::string& group,
+                                            unsigned char queue) {
   auto layer = std::make_unique<StreamedGeometry>(name, kLayout);
   layer->setUseIdentityProjection(true);
   layer->setUseIdentityView(true);
-  layer->setRenderQueueGroup(kMarkerQueue);
+  layer->setRenderQueueGroup(queue);
   layer->setMaterial(Ogre::MaterialManager::getSingleton().getByName(material, group));
   node.attachObject(layer.get());
   return layer;
@@ -82,8 +83,9 @@ Eigen::Vector3f rgb(const QColor& colour) {
 
 MarkerLayer::MarkerLayer(Ogre::SceneNode& node, const std::string& name, const std::string& group)
     : node_(node),
-      onTop_(makeLayer(node, name + "/top", "Lacrima/MarkerOnTop", group)),
-      depthTested_(makeLayer(node, name + "/depth", "Lacrima/MarkerDepthTested", group)) {}
+      onTop_(makeLayer(node, name + "/top", "Lacrima/MarkerOnTop", group, kMarkerQueue + 1)),
+      depthTested_(
+          makeLayer(node, name + "/depth", "Lacrima/MarkerDepthTested", group, kMarkerQueue)) {}
 
 MarkerLayer::~MarkerLayer() {
   node_.detachObject(onTop_.get());

@@ -4,7 +4,8 @@
 // drawn as a dark outline disc under a disc of its colour, highlighted ones with a white ring
 // outside, all of its diameter in pixels whatever the distance. onTop markers go in a geometry
 // drawn without a depth test; the others sit at their point's depth (nudged towards the eye) and
-// are hidden where the face is nearer. Both are drawn last (kMarkerQueue), in the order given.
+// are hidden where the face is nearer. Both are drawn last, the depth-tested ones first
+// (kMarkerQueue) so on-top markers stay above them (kMarkerQueue + 1), each in the order given.
 // Hundreds of markers are a few thousand vertices: rebuilding them every mouse move is free.
 #include "StreamedGeometry.h"
 

@@ -70,19 +70,21 @@ OrbitView OrbitView::framing(const HeadMesh& head, const Eigen::Matrix3d& reques
     view.distance =
         0.5 * visibleHeight / std::tan(0.5 * view.fovYDegrees * kDegree) + 0.25 * all.sizes().z();
   } else {
-    // The bounding box fits in 0.85 of the view from the reset direction: with c a corner
-    // relative to the target in camera axes (looking along -z), a camera at distance d sees it
-    // at the tangent |c.y| / (d - c.z), so d = max over corners of c.z + |c.y| / (0.85 tan(fov/2))
-    // (and the same for c.x: the width, conservative for any landscape view).
+    // Aimed at the bounding box's centre, the head's vertices fill 0.85 of the view from the
+    // reset direction: with c a vertex relative to the target in camera axes (looking along -z),
+    // a camera at distance d sees it at the tangent |c.y| / (d - c.z), so
+    //   d = max over vertices of c.z + max(|c.x|, |c.y|) / (0.85 tan(fov / 2)),
+    // the width counted like the height (conservative for any landscape view).
     target = all.center();
-    const Eigen::Matrix3d toCamera = view.cameraAxesInFace().transpose();
+    const Eigen::Matrix3d toCamera = view.cameraAxesInFace().transpose() * toFace;
     const double tangent = 0.85 * std::tan(0.5 * view.fovYDegrees * kDegree);
+    const Eigen::Vector3d centre = view.frame * target;
     view.distance = 0;
-    for (int k = 0; k < 8; ++k) {
-      const Eigen::Vector3d c =
-          toCamera * (all.corner(static_cast<Eigen::AlignedBox3d::CornerType>(k)) - target);
-      view.distance =
-          std::max(view.distance, c.z() + std::max(std::abs(c.x()), std::abs(c.y())) / tangent);
+    for (int v = 0; v < head.vertexCount(); ++v) {
+      const Eigen::Vector3d c = toCamera * (head.positions.col(v).cast<double>() - centre);
+      if (c.allFinite())
+        view.distance =
+            std::max(view.distance, c.z() + std::max(std::abs(c.x()), std::abs(c.y())) / tangent);
     }
   }
   if (!(view.distance > 0)) view.distance = 1;  // a single point: any distance shows it

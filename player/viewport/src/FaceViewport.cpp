@@ -7,6 +7,7 @@
 #include <OgreRenderWindow.h>
 #include <OgreRoot.h>
 
+#include <QApplication>
 #include <QCoreApplication>
 #include <QGuiApplication>
 #include <QLabel>
@@ -48,6 +49,9 @@ struct FaceViewport::State {
   double lastMilliseconds = 0;
   QPoint lastMouse;
   Qt::MouseButton dragButton = Qt::NoButton;
+  QPoint pressedAt;
+  bool claimed = false;    // the current drag belongs to a tool (claimDrag)
+  bool movedAway = false;  // the current press has moved beyond the drag distance
 
   // What the scene is told once it exists (and again whenever it is re-created).
   std::vector<Marker> markers;
@@ -76,6 +80,7 @@ FaceViewport::FaceViewport(QWidget* parent) : QWidget(parent), state_(std::make_
   setAttribute(Qt::WA_NoSystemBackground);
   setFocusPolicy(Qt::StrongFocus);
   setMinimumSize(64, 48);
+  setMouseTracking(true);  // hovered()
   state_->ogre = QGuiApplication::platformName() == QLatin1String("xcb");
   if (state_->ogre) {
     setAttribute(Qt::WA_NativeWindow);
@@ -326,9 +331,15 @@ void FaceViewport::resizeEvent(QResizeEvent* event) {
   requestRender();
 }
 
+void FaceViewport::claimDrag() { state_->claimed = true; }
+
 void FaceViewport::mousePressEvent(QMouseEvent* event) {
-  state_->lastMouse = event->position().toPoint();
-  state_->dragButton = event->button();
+  State& s = *state_;
+  s.lastMouse = s.pressedAt = event->position().toPoint();
+  s.dragButton = event->button();
+  s.claimed = false;
+  s.movedAway = false;
+  emit pointerPressed(event->position(), event->button(), event->modifiers());
   event->accept();
 }
 
@@ -337,6 +348,17 @@ void FaceViewport::mouseMoveEvent(QMouseEvent* event) {
   const QPoint now = event->position().toPoint();
   const QPoint delta = now - s.lastMouse;
   s.lastMouse = now;
+  if (event->buttons() == Qt::NoButton) {
+    emit hovered(event->position());
+    return;
+  }
+  if ((now - s.pressedAt).manhattanLength() >= QApplication::startDragDistance())
+    s.movedAway = true;
+  if (s.claimed) {
+    emit pointerDragged(event->position());
+    event->accept();
+    return;
+  }
   if (!s.scene || delta.isNull()) return;
   scene::OrbitView view = s.scene->view();
   if (event->buttons() & Qt::LeftButton) {
@@ -354,7 +376,14 @@ void FaceViewport::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void FaceViewport::mouseReleaseEvent(QMouseEvent* event) {
-  state_->dragButton = Qt::NoButton;
+  State& s = *state_;
+  const bool claimed = s.claimed, moved = s.movedAway;
+  s.dragButton = Qt::NoButton;
+  s.claimed = false;
+  if (claimed)
+    emit pointerReleased(event->position());
+  else if (!moved)
+    emit clicked(event->position(), event->button(), event->modifiers());
   event->accept();
 }
 

@@ -5,8 +5,8 @@ namespace {
 
 std::vector<Eigen::Vector3i> pickableTriangles(const HeadMesh& head,
                                                const std::vector<bool>& pickable,
-                                               std::vector<int>& global,
-                                               std::vector<int>& submesh) {
+                                               std::vector<int>& global, std::vector<int>& submesh,
+                                               std::vector<int>& local) {
   std::vector<Eigen::Vector3i> triangles;
   int first = 0;
   for (std::size_t s = 0; s < head.submeshes.size(); ++s) {
@@ -16,6 +16,7 @@ std::vector<Eigen::Vector3i> pickableTriangles(const HeadMesh& head,
         triangles.push_back(own[t]);
         global.push_back(first + static_cast<int>(t));
         submesh.push_back(static_cast<int>(s));
+        local.push_back(static_cast<int>(t));
       }
     }
     first += static_cast<int>(own.size());
@@ -33,7 +34,7 @@ int firstTriangleOf(const HeadMesh& head, int submesh) {
 }
 
 HeadPicker::HeadPicker(const HeadMesh& head, const std::vector<bool>& pickable)
-    : mesh_(head.positions, pickableTriangles(head, pickable, global_, submesh_)) {}
+    : mesh_(head.positions, pickableTriangles(head, pickable, global_, submesh_, local_)) {}
 
 void HeadPicker::setPositions(const Eigen::Matrix3Xf& positions) { mesh_.refit(positions); }
 
@@ -43,6 +44,10 @@ std::optional<SurfaceHit> HeadPicker::pick(const Ray& ray) const {
   SurfaceHit out;
   out.triangle = global_[hit->triangle];
   out.submesh = submesh_[hit->triangle];
+  out.submeshTriangle = local_[hit->triangle];
+  int corner = 0;
+  hit->barycentric.maxCoeff(&corner);
+  out.vertex = mesh_.triangles()[hit->triangle][corner];
   out.barycentric = hit->barycentric;
   out.position = hit->point;
   out.distance = hit->distance;

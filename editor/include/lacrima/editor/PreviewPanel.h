@@ -88,7 +88,7 @@ class PreviewPanel : public QWidget {
   void onValuesChanged();
   void updateIdleTimer();
   void setStatus(const QString& text);
-  void syncHead();
+  void syncHead(bool retryFailed);
   void installRig(std::shared_ptr<playback::HeadRig> rig);
   void showRigFailure(const QString& error);
   void showMessage(const QString& text);

@@ -5,7 +5,7 @@
 // Given n >= 8 anchors placed on both heads (source a_i on the default head, target b_i on the
 // new one; at least the eye corners 3.7, 3.8, 3.11, 3.12, the nose tip 9.3, the mouth corners
 // 8.3, 8.4 and the chin 2.10; proposeFeaturePoints adds the eye centres when both heads have
-// eyes), every other default point p is carried over in two steps:
+// eyes), every other default point p is carried over in three steps:
 //
 // 1. A similarity (Umeyama 1991, "Least-squares estimation of transformation parameters between
 //    two point patterns"): s, R, t minimising sum |s R a_i + t - b_i|^2, with R from the SVD of
@@ -22,11 +22,24 @@
 //    or axes either. Far from the anchors the spline extrapolates their local differences
 //    (on the ICT head, without the eye centres, it put the ears 0.6 ES0 off, the similarity
 //    alone 0.15 ES0), so its correction fades with the distance d to the nearest fitted anchor:
-//      x' = sRp + t,   p' = x' + exp(-(d / r)^2) (f(x') - x'),   r = 0.3 RMS_i |a'_i - mean a'|,
+//      x' = sRp + t,   p' = x' + exp(-(d / r)^2) (f(x') - x'),   r = 0.5 RMS_i |a'_i - mean a'|,
 //    exact at the anchors, the similarity far from them, and still similarity-invariant.
-// The warped point is then snapped to the closest vertex of the part the default point is on
-// (skin to skin, an eye's points to that eye, jaw to jaw, tongue to tongue): a feature point is
-// a vertex of the new head, as a hand-made file names it.
+// 3. The eyes (FeaturePointProposalFeatures.h): an eye is a rigid ball, so the pupils are carried
+//    rigidly about the eye's centre, along the new eye's own gaze (found from its cornea), onto
+//    its cornea; the lid points the standard puts above and below the pupil are moved along the
+//    face's left-right axis onto the pupil's vertical plane, and out onto the eye when the warp
+//    left them inside it.
+// The point is then snapped to the closest vertex of the part the default point is on (skin to
+// skin, an eye's points to that eye, jaw to jaw, tongue to tongue): a feature point is a vertex
+// of the new head, as a hand-made file names it.
+//
+// Why not more: a non-rigid registration of the default skin onto the new one (closest-point
+// pairs on 800 skin samples fed back into a smoothing spline over 5 to 8 rounds, non-rigid ICP
+// after Amberg et al. 2007) was tried on the ICT head and gave no gain (mean 0.115 against
+// 0.114 ES0 at the time) for 150 to 400 ms: closest points pull the skin together along its
+// normals, which the snap already does, and what is left is along the surface, where the two
+// heads' files differ in convention (the default head's long brows end on the temple, its chin
+// point is under the chin) rather than in shape. Step 3 costs well under a millisecond.
 #include <lacrima/common/Diagnostics.h>
 #include <lacrima/common/HeadMesh.h>
 #include <lacrima/rigging/FeaturePointFile.h>
@@ -50,16 +63,36 @@ Eigen::Matrix3Xd warpPoints(const Eigen::Matrix3Xd& source, const Eigen::Matrix3
 // The similarity's scale s alone (target units per source unit), e.g. to carry radii.
 double similarityScale(const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target);
 
+enum class ProposalMethod {
+  Warp,          // steps 1 and 2 alone (the method before step 3; kept for comparison)
+  FeatureAware,  // and step 3, the eyes
+};
+
+struct ProposalOptions {
+  ProposalMethod method = ProposalMethod::FeatureAware;
+};
+
+// Milliseconds of each stage, for lacrima-bench proposal.
+struct ProposalTimings {
+  double fitMs = 0;   // anchors, eye centres, similarity and spline (steps 1 and 2)
+  double eyesMs = 0;  // step 3
+  double snapMs = 0;  // the snap to the vertices of each part
+};
+
 // The partial file `partial` (points placed on `mesh`) completed with every point of `reference`
 // (a complete file on `referenceMesh`, e.g. the default head's) that it lacks. Given points are
 // kept as they are; every given point the reference also has is an anchor of the warp. A
 // reference point whose part the new head lacks (no tongue sub-mesh, say) is left out with a
 // warning. Radii of proposed points are scaled by the similarity's scale. Throws FileError naming
-// `partial.path` and every missing anchor when one of proposalAnchors() is missing.
+// `partial.path` and every missing anchor when one of proposalAnchors() is missing, and naming
+// the anchors when they cannot define a warp (two at one place, all on one line or in one
+// plane, or not finite). `timings`, when given, receives each stage's milliseconds.
 // Precondition: `partial` was validated against `mesh` (FeaturePointSet::Partial) and
 // `reference` against `referenceMesh`.
 FeaturePointFile proposeFeaturePoints(const FeaturePointFile& partial, const HeadMesh& mesh,
                                       const FeaturePointFile& reference,
-                                      const HeadMesh& referenceMesh, Warnings* warnings = nullptr);
+                                      const HeadMesh& referenceMesh, Warnings* warnings = nullptr,
+                                      const ProposalOptions& options = {},
+                                      ProposalTimings* timings = nullptr);
 
 }  // namespace lacrima::rigging

@@ -4,8 +4,9 @@
 //
 //  - "wrong-part" (Error): a feature point on a sub-mesh of the wrong role. The FDP table puts
 //    the pupils 3.5 / 3.6 on the left / right eye, 6.x on the tongue, 9.8 / 9.10 on the upper
-//    teeth and 9.9 / 9.11 on the lower teeth (any role but skin, eyes or tongue: "jaw" or
-//    rigid), every other point on the skin. 7.1 (the neck pivot) is not a surface point.
+//    teeth (no role: rigid, they stay with the skull) and 9.9 / 9.11 on the lower teeth ("jaw",
+//    or rigid where the teeth are one sub-mesh), every other point on the skin. 7.1 (the neck
+//    pivot) is not a surface point.
 //  - "asymmetry" (Warning): a left point mirrored across the mid-sagittal plane lands farther
 //    than options.asymmetryTolerance * ES0 from its right twin (3.7 <-> 3.12, 3.11 <-> 3.8,
 //    8.3 <-> 8.4, ...). The plane is the least-squares plane through the midline points

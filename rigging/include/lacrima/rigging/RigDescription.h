@@ -21,6 +21,8 @@
 //   submeshes [ { name, role, first_vertex, vertex_count } ]   roles: skin, eye_left, eye_right,
 //                                                   jaw, tongue, attached, rigid
 //   poses [3, 4, ...]                                FAPs with a pose or rotation group
+//   disabled_faps [23, 25, ...]                      FAPs the head cannot play (no usable eye:
+//                                                    its turns and its tears; rig.md, Bad heads)
 //   warnings [ "..." ]
 #include <lacrima/rigging/FaceFrame.h>
 #include <lacrima/rigging/RigBuilder.h>

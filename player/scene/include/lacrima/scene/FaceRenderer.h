@@ -4,6 +4,7 @@
 //
 // Needs an X display (OGRE on Debian is GLX only); the constructor throws std::runtime_error
 // saying so (run under xvfb-run) when there is none.
+#include <lacrima/common/RayMesh.h>
 #include <lacrima/playback/FrameView.h>
 
 #include <Eigen/Core>
@@ -13,6 +14,7 @@
 #include <QSize>
 
 #include <memory>
+#include <optional>
 
 namespace lacrima::scene {
 
@@ -46,6 +48,8 @@ class FaceRenderer {
   // Pixel position of a point in the head frame under the current camera (tests: where the
   // eyes and cheeks are in the image); y grows downwards.
   QPointF project(const Eigen::Vector3d& headPoint) const;
+  // The inverse: the ray through an image pixel, in the head frame (FaceScene::rayAt).
+  std::optional<Ray> rayAt(QPointF pixel) const;
   const RenderTimes& lastTimes() const;
 
   // Multisampling of the render target: 0 (none), 2 or 4 (other values round down to these).

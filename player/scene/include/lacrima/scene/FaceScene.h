@@ -58,8 +58,8 @@ class FaceScene {
   const OrbitView& view() const;
   void setView(const OrbitView& view);
   void resetView();  // OrbitView::framing of the head in the view frame
-  // Which way the face looks in head coordinates: the columns of `faceToHead` are the face's
-  // right-to-left, up and forward axes (made a rotation first, OrbitView.h). Re-frames the view:
+  // Which way the face looks in head coordinates: the columns of `faceToHead` are the face's own
+  // left (+x), up and forward axes (made a rotation first, OrbitView.h). Re-frames the view:
   // the orbit then turns about the face's up and yaw 0 looks at the face.
   void setViewFrame(const Eigen::Matrix3d& faceToHead);
   const Eigen::Matrix3d& viewFrame() const;

@@ -12,11 +12,11 @@
 // the view; the target sits on the face's mid line at the eyes' depth between the eyes and the
 // mouth, a little to the side and above so the cheeks (where tears run) show their relief.
 // Heads without eye_l / eye_r sub-meshes, or whose eyes do not sit side by side in the upper
-// half of the head in the view frame (a head in another axis convention), are framed by their
-// bounding box (in the view frame) seen from the same direction, so any head in any unit and
-// orientation is seen whole.
+// half of the head in the view frame (a head in another axis convention), are framed whole from
+// the same direction, aimed at their bounding box's centre (in the view frame) with every vertex
+// inside 0.85 of the view, so any head in any unit and orientation is seen whole.
 //
-// The view frame: all of the above is in the face's frame, whose axes (right-to-left, up,
+// The view frame: all of the above is in the face's frame, whose axes (the face's left, up,
 // forward) are the columns of `frame` in head coordinates; identity for heads already in the
 // face frame (HeadMesh.h). A head in another convention gets its frame from its anchors
 // (setViewFrame in FaceScene / FaceViewport): the orbit then turns about the face's up and yaw 0

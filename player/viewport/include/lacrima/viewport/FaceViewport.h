@@ -6,11 +6,14 @@
 // widget pixels, rayAt() a pixel back to a ray, pick() finds where that ray meets the head as
 // shown (HeadPicker.h). Markers (Marker.h) are discs drawn over the face, cheap to replace on
 // every mouse move. setViewFrame() says which way an imported head's face looks, so the orbit
-// turns about its up axis; until then a head is framed by its bounding sphere whatever its units
+// turns about its up axis; until then a head is framed by its bounding box whatever its units
 // and axes (OrbitView.h).
 //
 // Mouse: left drag orbits, right (or middle) drag pans, the wheel zooms; double-click or
-// resetView() frames the face again. Rendering is on demand: a new frame revision, a camera move
+// resetView() frames the face again. Tools get every press first (pointerPressed); a slot that
+// calls claimDrag() there takes that drag over (pointerDragged, pointerReleased: dragging a
+// feature point) and the camera stays put. A press and release without moving is clicked();
+// moves without a button are hovered(). Rendering is on demand: a new frame revision, a camera move
 // or a resize schedules one render; a static scene is not re-rendered.
 //
 // Needs an X display (OGRE on Debian is GLX only): run tests under xvfb-run. On any Qt platform
@@ -45,7 +48,7 @@ class FaceViewport : public QWidget {
   // Shows `view` on the next render when its revision differs from the last one shown.
   void showFrame(const playback::FrameView& view);
   void resetView();
-  // Which way the face looks (FaceScene::setViewFrame): columns are the face's right-to-left,
+  // Which way the face looks (FaceScene::setViewFrame): columns are the face's left (its +x),
   // up and forward axes in head coordinates. Re-frames the view. setHead() resets it to identity.
   void setViewFrame(const Eigen::Matrix3d& faceToHead);
   Eigen::Matrix3d viewFrame() const;
@@ -65,6 +68,10 @@ class FaceViewport : public QWidget {
   // Replaces the markers drawn over the face and renders once (Marker.h).
   void setMarkers(std::vector<Marker> markers);
 
+  // Called from a slot of pointerPressed: the drag that press starts is the caller's (no
+  // orbit or pan), reported by pointerDragged and pointerReleased.
+  void claimDrag();
+
   // Renders now and returns the picture (tests, screenshots).
   QImage grabFrame();
   double lastRenderMilliseconds() const;
@@ -78,6 +85,13 @@ class FaceViewport : public QWidget {
 
  signals:
   void rendered(double milliseconds);
+  // Widget pixels. Every press, before the camera does anything with it.
+  void pointerPressed(QPointF pixel, Qt::MouseButton button, Qt::KeyboardModifiers modifiers);
+  void pointerDragged(QPointF pixel);   // a claimed drag moved
+  void pointerReleased(QPointF pixel);  // a claimed drag ended
+  // Pressed and released within the drag distance (QApplication::startDragDistance), unclaimed.
+  void clicked(QPointF pixel, Qt::MouseButton button, Qt::KeyboardModifiers modifiers);
+  void hovered(QPointF pixel);  // the mouse moved with no button down
 
  protected:
   void showEvent(QShowEvent* event) override;

@@ -21,7 +21,9 @@ struct SurfaceHit {
   Eigen::Vector3d barycentric = Eigen::Vector3d::Zero();  // weights of the triangle's corners
   Eigen::Vector3d position = Eigen::Vector3d::Zero();     // head frame
   int submesh = -1;
-  double distance = 0;  // along the ray
+  int submeshTriangle = -1;  // the same triangle within its sub-mesh (FeaturePointFile's index)
+  int vertex = -1;           // global index of the corner with the largest weight
+  double distance = 0;       // along the ray
 };
 
 // The global index of a sub-mesh's first triangle (sum of the triangle counts before it).
@@ -43,6 +45,7 @@ class HeadPicker {
   // Declared before mesh_: the constructor fills them while building mesh_'s triangle list.
   std::vector<int> global_;   // RayMesh triangle -> global triangle
   std::vector<int> submesh_;  // RayMesh triangle -> sub-mesh
+  std::vector<int> local_;    // RayMesh triangle -> index within its sub-mesh
   RayMesh mesh_;
 };
 
