@@ -46,7 +46,7 @@ HeadWorkspace::HeadWorkspace(editing::EditorModel& model, QWidget* parent)
   viewport_ = new viewport::FaceViewport(split);
   viewport_->setObjectName(QStringLiteral("headViewport"));
   viewport_->setMinimumSize(320, 240);
-  viewport_->installEventFilter(this);
+  connectViewport();
   split->addWidget(viewport_);
   split->addWidget(createSidePanel());
   split->setStretchFactor(0, 3);

@@ -11,8 +11,6 @@
 #include <lacrima/rigging/FeaturePointProposal.h>
 #include <lacrima/viewport/FaceViewport.h>
 
-#include <QMouseEvent>
-
 #include <algorithm>
 #include <utility>
 
@@ -26,13 +24,6 @@ constexpr double kClickSlop = 4.0;
 constexpr double kGrabRadius = 9.0;
 
 QString text(const std::exception& e) { return QString::fromUtf8(e.what()); }
-
-// The local triangle index of a global one (HeadMesh order over the sub-meshes).
-int localTriangle(const HeadMesh& mesh, int submesh, int global) {
-  for (int s = 0; s < submesh; ++s)
-    global -= static_cast<int>(mesh.submeshes[static_cast<std::size_t>(s)].triangles.size());
-  return global;
-}
 
 }  // namespace
 
@@ -132,9 +123,7 @@ bool HeadWorkspace::clickPlaces(QPointF pixel) {
     setStatus(tr("Missed the head: click on it to place %1").arg(QString::fromStdString(current_)));
     return false;
   }
-  const HeadMesh& mesh = setup_->mesh();
-  editing::SurfaceSpot spot{hit->submesh, localTriangle(mesh, hit->submesh, hit->triangle),
-                            hit->barycentric};
+  editing::SurfaceSpot spot{hit->submesh, hit->submeshTriangle, hit->barycentric};
   try {
     setup_->placePoint(current_, spot);
   } catch (const std::exception& e) {
@@ -147,76 +136,65 @@ bool HeadWorkspace::clickPlaces(QPointF pixel) {
   return true;
 }
 
-bool HeadWorkspace::eventFilter(QObject* watched, QEvent* event) {
-  if (watched != viewport_ || !setup_->hasMesh()) return QWidget::eventFilter(watched, event);
-  switch (event->type()) {
-    case QEvent::MouseButtonPress: {
-      auto* e = static_cast<QMouseEvent*>(event);
-      if (e->button() != Qt::LeftButton) break;
-      pressAt_ = e->position();
-      pressed_ = true;
-      const std::string grabbed = markerAt(pressAt_);
-      if (!grabbed.empty()) {
-        dragged_ = grabbed;
-        setCurrentPoint(grabbed);
-        return true;  // the viewport does not orbit while a marker is dragged
-      }
-      break;
-    }
-    case QEvent::MouseMove: {
-      if (dragged_.empty()) break;
-      auto* e = static_cast<QMouseEvent*>(event);
-      // Follow the mouse on the surface; the document changes once, on release.
-      if (const auto hit = viewport_->pick(e->position())) {
-        std::vector<viewport::Marker> markers;
-        viewport::Marker m;
-        m.position = hit->position;
-        m.colour = PointColours::current();
-        m.highlighted = true;
-        m.sizePixels = 12;
-        markers.push_back(m);
-        for (const auto& [id, p] : setup_->points()) {
-          if (id == dragged_) continue;
-          viewport::Marker other;
-          other.position = shownPosition(id);
-          other.colour = p.byHand() ? PointColours::hand() : PointColours::proposed();
-          other.onTop = false;
-          markers.push_back(other);
-        }
-        viewport_->setMarkers(std::move(markers));
-      }
-      return true;
-    }
-    case QEvent::MouseButtonRelease: {
-      auto* e = static_cast<QMouseEvent*>(event);
-      if (e->button() != Qt::LeftButton) break;
-      const bool click = pressed_ && (e->position() - pressAt_).manhattanLength() <= kClickSlop;
-      pressed_ = false;
-      if (!dragged_.empty()) {
-        const std::string id = std::exchange(dragged_, std::string());
-        if (!click) {
-          if (const auto hit = viewport_->pick(e->position())) {
-            // The neutral position under the hit (the head may be shown posed).
-            const HeadMesh& mesh = setup_->mesh();
-            const Eigen::Vector3i& tri = mesh.submeshes[static_cast<std::size_t>(hit->submesh)]
-                                             .triangles[static_cast<std::size_t>(
-                                                 localTriangle(mesh, hit->submesh, hit->triangle))];
-            Eigen::Vector3d neutral = Eigen::Vector3d::Zero();
-            for (int k = 0; k < 3; ++k)
-              neutral += hit->barycentric[k] * mesh.positions.col(tri[k]).cast<double>();
-            setup_->movePoint(id, neutral);
-          }
-        }
-        updateMarkers();
-        return true;
-      }
-      if (click) clickPlaces(e->position());
-      break;
-    }
-    default:
-      break;
+void HeadWorkspace::connectViewport() {
+  // A press on a marker takes the drag over from the camera; anywhere else the camera orbits.
+  connect(viewport_, &viewport::FaceViewport::pointerPressed, this,
+          [this](QPointF pixel, Qt::MouseButton button, Qt::KeyboardModifiers) {
+            if (button != Qt::LeftButton || !setup_->hasMesh()) return;
+            const std::string grabbed = markerAt(pixel);
+            if (grabbed.empty()) return;
+            dragged_ = grabbed;
+            pressAt_ = pixel;
+            setCurrentPoint(grabbed);
+            viewport_->claimDrag();
+          });
+  connect(viewport_, &viewport::FaceViewport::pointerDragged, this, &HeadWorkspace::dragMarker);
+  connect(viewport_, &viewport::FaceViewport::pointerReleased, this, &HeadWorkspace::dropMarker);
+  connect(viewport_, &viewport::FaceViewport::clicked, this,
+          [this](QPointF pixel, Qt::MouseButton button, Qt::KeyboardModifiers) {
+            if (button == Qt::LeftButton) clickPlaces(pixel);
+          });
+}
+
+void HeadWorkspace::dragMarker(QPointF pixel) {
+  if (dragged_.empty()) return;
+  // Follow the mouse on the surface; the document changes once, on release.
+  const auto hit = viewport_->pick(pixel);
+  if (!hit) return;
+  std::vector<viewport::Marker> markers;
+  viewport::Marker m;
+  m.position = hit->position;
+  m.colour = PointColours::current();
+  m.highlighted = true;
+  m.sizePixels = 12;
+  markers.push_back(m);
+  for (const auto& [id, p] : setup_->points()) {
+    if (id == dragged_) continue;
+    viewport::Marker other;
+    other.position = shownPosition(id);
+    other.colour = p.byHand() ? PointColours::hand() : PointColours::proposed();
+    other.onTop = false;
+    markers.push_back(other);
   }
-  return QWidget::eventFilter(watched, event);
+  viewport_->setMarkers(std::move(markers));
+}
+
+void HeadWorkspace::dropMarker(QPointF pixel) {
+  const std::string id = std::exchange(dragged_, std::string());
+  // Pressed and released in place: the marker was only selected.
+  if (!id.empty() && (pixel - pressAt_).manhattanLength() > kClickSlop) {
+    if (const auto hit = viewport_->pick(pixel)) {
+      // The neutral position under the hit (the head may be shown posed).
+      const HeadMesh& mesh = setup_->mesh();
+      const Eigen::Vector3i& tri = mesh.submeshes[static_cast<std::size_t>(hit->submesh)]
+                                       .triangles[static_cast<std::size_t>(hit->submeshTriangle)];
+      Eigen::Vector3d neutral = Eigen::Vector3d::Zero();
+      for (int k = 0; k < 3; ++k)
+        neutral += hit->barycentric[k] * mesh.positions.col(tri[k]).cast<double>();
+      setup_->movePoint(id, neutral);
+    }
+  }
+  updateMarkers();
 }
 
 }  // namespace lacrima::editor::head

@@ -8,10 +8,11 @@
 // progress and status), the face viewport in the middle, and on the right the parts table, the
 // point list, the reference picture of the current point and the rig checks.
 //
-// Mouse on the viewport: a click (press and release within a few pixels) places the current
-// point where it hits the head, then selects the next anchor still missing; pressing on a
-// marker and dragging moves that point (snapped to its part's surface when released, one undo
-// step); every other drag orbits, pans or zooms as in the preview. Markers: hand points green,
+// Mouse on the viewport (FaceViewport's pointer signals): a click places the current point
+// where it hits the head, then selects the next anchor still missing; pressing on a marker
+// claims the drag and moves that point (snapped to its part's surface when released, one undo
+// step; released in place it only selects the point); every other drag orbits, pans or zooms
+// as in the preview. Markers: hand points green,
 // proposed ones blue, the current point yellow and ringed.
 //
 // Nothing blocks the window: the import (assimp), the proposal and the rig run on worker
@@ -123,9 +124,6 @@ class HeadWorkspace : public QWidget {
   // The saved head, for MainWindow::setHead.
   void useInProjectRequested(const QString& meshPath, const QString& fdpPath);
 
- protected:
-  bool eventFilter(QObject* watched, QEvent* event) override;
-
  private:
   QWidget* createToolBar();
   QWidget* createSidePanel();
@@ -140,8 +138,11 @@ class HeadWorkspace : public QWidget {
   void setStatus(const QString& text);
   void fail(const QString& what, const QString& message);
   void selectNextMissingAnchor();
-  // The head point under a widget pixel as a spot on the neutral mesh (via the viewport).
+  // Mouse on the viewport (its pointer signals): place the current point, drag a marker.
+  void connectViewport();
   bool clickPlaces(QPointF pixel);
+  void dragMarker(QPointF pixel);
+  void dropMarker(QPointF pixel);
   std::string markerAt(QPointF pixel) const;
   Eigen::Vector3d shownPosition(const std::string& id) const;
 
@@ -181,8 +182,7 @@ class HeadWorkspace : public QWidget {
 
   std::string current_;
   std::string dragged_;  // the point whose marker is being dragged
-  QPointF pressAt_;
-  bool pressed_ = false;
+  QPointF pressAt_;      // where the marker drag started
   bool importing_ = false;
   bool proposing_ = false;
   bool interactive_ = true;
