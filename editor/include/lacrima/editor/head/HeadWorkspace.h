@@ -12,8 +12,8 @@
 // where it hits the head, then selects the next anchor still missing; pressing on a marker
 // claims the drag and moves that point (snapped to its part's surface when released, one undo
 // step; released in place it only selects the point); every other drag orbits, pans or zooms
-// as in the preview. Markers: hand points green,
-// proposed ones blue, the current point yellow and ringed.
+// as in the preview. Markers: hand points green, proposed ones blue, the current point yellow
+// and ringed. Clicks go through attached and ignored parts (lashes, tear films).
 //
 // Nothing blocks the window: the import (assimp), the proposal and the rig run on worker
 // threads; an edit restarts the rig after a short pause (rigDelay), with progress, and a newer
@@ -26,11 +26,10 @@
 #include <lacrima/rigging/RigChecks.h>
 
 #include <Eigen/Core>
+#include <QImage>
 #include <QPointF>
 #include <QString>
 #include <QWidget>
-
-#include <QImage>
 
 #include <map>
 #include <memory>
@@ -99,11 +98,11 @@ class HeadWorkspace : public QWidget {
   // default head).
   QImage referencePicture() const;
 
-  // The rig of the newest finished job (null before the first, or after an edit that made the
-  // points unrigable), and its checks.
+  // The rig of the newest finished job and its checks: null before the first rig of a head; an
+  // edit the rig fails on keeps the last one shown (the status line says why).
   const playback::HeadRig* rig() const { return rig_.get(); }
   const std::vector<rigging::RigCheck>& checks() const { return checks_; }
-  bool rigging() const;
+  bool rigging() const;  // a rig is waiting for the edits to pause, or running
   // How long the workspace waits after an edit before rigging again.
   void setRigDelay(int milliseconds);
 
