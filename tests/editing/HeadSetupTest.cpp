@@ -388,6 +388,24 @@ class HeadSetupTest : public QObject {
     }
     unchanged();
 
+    // A "placed" that is neither "hand" nor "proposed" is a located error.
+    const QString oddPlaced = dir_.filePath(QStringLiteral("odd-placed.fdp.json"));
+    saveAtomically(oddPlaced.toStdString(),
+                   R"({ "format": "lacrima-fdp", "version": 1,
+  "submeshes": { "skin": ["M_Face"] },
+  "points": { "9.3": { "submesh": "M_Face", "vertex": 10, "placed": "robot" } } })");
+    try {
+      setup.openFeaturePoints(oddPlaced);
+      QFAIL("took an unknown placement");
+    } catch (const FileError& e) {
+      const QString message = QString::fromUtf8(e.what());
+      QVERIFY2(
+          message.contains(QStringLiteral("odd-placed.fdp.json:3:59: points.\"9.3\".placed:")) &&
+              message.contains(QStringLiteral("expected \"hand\" or \"proposed\"")),
+          e.what());
+    }
+    unchanged();
+
     // A pick off the mesh is refused, not stored.
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
                              setup.placePoint("2.1", SurfaceSpot{99, 0, {1, 0, 0}}));
