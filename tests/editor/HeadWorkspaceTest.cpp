@@ -303,6 +303,47 @@ class HeadWorkspaceTest : public QObject {
     QVERIFY(ws.rig());
     window.model().markSaved();
   }
+
+  // A head exported Z-up (x, y, z) -> (x, -z, y): once the eye corners and the chin are placed,
+  // the view turns to the face's frame (the face's up is the mesh's +z), before any rig.
+  void zUpHeadStandsUpOnceTheAnchorsArePlaced() {
+    if (!QFileInfo::exists(kIctMesh)) QSKIP("ICT-FaceKit head not in ../shared");
+    MainWindow window(options());
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.setWorkspace(MainWindow::Workspace::Head);
+    head::HeadWorkspace& ws = *window.headWorkspace();
+    ws.setRigDelay(60000);  // not rigged: the anchors alone turn the view
+    HeadMesh mesh = editing::HeadSetup::importMesh(kIctMesh);
+    for (Eigen::Index i = 0; i < mesh.positions.cols(); ++i) {
+      const Eigen::Vector3f p = mesh.positions.col(i);
+      mesh.positions.col(i) = Eigen::Vector3f(p.x(), -p.z(), p.y());
+    }
+    mesh.computeNormals();
+    ws.setup().setMesh(QStringLiteral("ict-z-up.obj"), std::move(mesh));
+    QVERIFY(ws.viewport()->viewFrame().isIdentity());
+    const rigging::FeaturePointFile hand = rigging::readFeaturePointFile(kIctFdp.toStdString());
+    for (const std::string& id : rigging::proposalAnchors()) {
+      const auto& at = hand.points.at(id).at;
+      const HeadMesh& m = ws.setup().mesh();
+      const HeadSubmesh& part = m.submeshes[static_cast<std::size_t>(rowNamed(m, at.submesh))];
+      for (std::size_t t = 0; t < part.triangles.size(); ++t)
+        for (int c = 0; c < 3; ++c)
+          if (part.triangles[t][c] == part.firstVertex + at.vertex) {
+            editing::SurfaceSpot spot{rowNamed(m, at.submesh), int(t), Eigen::Vector3d::Zero()};
+            spot.barycentric[c] = 1;
+            ws.setup().placePoint(id, spot);
+            t = part.triangles.size();
+            break;
+          }
+    }
+    QVERIFY(!ws.rig());
+    // Columns: the face's left, up and forward in mesh axes: +x, +z, -y.
+    Eigen::Matrix3d expected;
+    expected << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+    QVERIFY(ws.viewport()->viewFrame().isApprox(expected));
+    window.model().markSaved();
+  }
 };
 
 QTEST_MAIN(HeadWorkspaceTest)

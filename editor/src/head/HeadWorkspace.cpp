@@ -340,6 +340,7 @@ void HeadWorkspace::onMeshChanged() {
 
 void HeadWorkspace::onDocumentEdited() {
   if (!setup_->hasMesh()) return;
+  orientView();
   rigDelay_->start();  // restarts: a burst of edits rigs once
 }
 

@@ -136,6 +136,16 @@ bool HeadWorkspace::clickPlaces(QPointF pixel) {
   return true;
 }
 
+void HeadWorkspace::orientView() {
+  // As soon as the eyes and the mouth (or chin) are placed, the face frame is known
+  // (FaceFrame.h): orbit about the face's own up axis, so a Z-up head stands upright before it
+  // is rigged. The view changes only when the nearest axis rotation does (not for a Y-up head).
+  const auto axes = rigging::faceAxes(setup_->toFile(), setup_->mesh());
+  if (!axes) return;
+  const Eigen::Matrix3d faceToMesh = rigging::nearestAxisRotation(*axes).transpose();
+  if (!viewport_->viewFrame().isApprox(faceToMesh)) viewport_->setViewFrame(faceToMesh);
+}
+
 void HeadWorkspace::connectViewport() {
   // A press on a marker takes the drag over from the camera; anywhere else the camera orbits.
   connect(viewport_, &viewport::FaceViewport::pointerPressed, this,

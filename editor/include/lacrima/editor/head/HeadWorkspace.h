@@ -13,7 +13,9 @@
 // claims the drag and moves that point (snapped to its part's surface when released, one undo
 // step; released in place it only selects the point); every other drag orbits, pans or zooms
 // as in the preview. Markers: hand points green, proposed ones blue, the current point yellow
-// and ringed. Clicks go through attached and ignored parts (lashes, tear films).
+// and ringed. Clicks go through attached and ignored parts (lashes, tear films). Once the eye
+// corners and the chin are placed the view turns to the face's own frame (a Z-up head stands
+// up; FaceFrame.h).
 //
 // Nothing blocks the window: the import (assimp), the proposal and the rig run on worker
 // threads; an edit restarts the rig after a short pause (rigDelay), with progress, and a newer
@@ -139,6 +141,7 @@ class HeadWorkspace : public QWidget {
   void selectNextMissingAnchor();
   // Mouse on the viewport (its pointer signals): place the current point, drag a marker.
   void connectViewport();
+  void orientView();  // the view frame from the placed eyes and mouth
   bool clickPlaces(QPointF pixel);
   void dragMarker(QPointF pixel);
   void dropMarker(QPointF pixel);
