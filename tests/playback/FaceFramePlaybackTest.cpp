@@ -70,6 +70,8 @@ class FaceFramePlaybackTest : public QObject {
     rigging::FeaturePointFile zUpFdp = fdp;
     zUpFdp.path = "z-up.fdp.json";
     if (zUpFdp.neckPivot) zUpFdp.neckPivot = turn * *zUpFdp.neckPivot;
+    for (auto& [id, point] : zUpFdp.points)  // the stored positions are in mesh coordinates too
+      if (point.at.position) point.at.position = turn * *point.at.position;
 
     // Down the face in the Z-up head's own coordinates, from its points alone.
     auto at = [&](const char* id) {
