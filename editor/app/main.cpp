@@ -2,6 +2,8 @@
 //
 //   lacrima-editor [FILE]                 a project (.json) or a FAP file to import
 //   lacrima-editor FILE --screenshot PNG  render the window (with the preview) to PNG and exit
+//   lacrima-editor --head MESH [--points FDP] [--propose]
+//                                         the Head workspace on MESH (bring your own head)
 // Exit status: 0 on success, 1 when FILE or the screenshot cannot be read or written, 2 on
 // wrong usage.
 #include <lacrima/common/ImageSize.h>
@@ -11,10 +13,12 @@
 #include <lacrima/editor/PresetPanel.h>
 #include <lacrima/editor/PreviewPanel.h>
 #include <lacrima/editor/SliderPanel.h>
+#include <lacrima/editor/head/HeadWorkspace.h>
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QElapsedTimer>
+#include <QEventLoop>
 #include <QImage>
 #include <QLineEdit>
 #include <QTimer>
@@ -23,6 +27,45 @@
 #include <cstdio>
 
 using namespace lacrima::editor;
+
+namespace {
+
+// Runs the event loop until `signal` of `sender` fires (its first argument, when a bool, is
+// the outcome) or `timeoutMs` passes; false on timeout or a false outcome.
+template <typename Signal>
+bool waitFor(const head::HeadWorkspace* sender, Signal signal, int timeoutMs = 60000) {
+  QEventLoop loop;
+  bool outcome = false;
+  QObject::connect(sender, signal, &loop, [&](auto... args) {
+    outcome = true;
+    if constexpr (sizeof...(args) == 1) outcome = (args, ...);
+    loop.quit();
+  });
+  QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+  loop.exec();
+  return outcome;
+}
+
+// --head: the Head workspace on a mesh, with a points file and the proposal when asked. In a
+// batch run (--screenshot) each step is waited for, so the picture shows the rigged head.
+bool setUpHead(MainWindow& window, const QString& mesh, const QString& points, bool propose,
+               bool batch) {
+  head::HeadWorkspace& workspace = *window.headWorkspace();
+  window.setWorkspace(MainWindow::Workspace::Head);
+  workspace.importHead(mesh);
+  if (!batch && points.isEmpty() && !propose) return true;
+  if (!waitFor(&workspace, &head::HeadWorkspace::importFinished)) return false;
+  if (!points.isEmpty() && !workspace.openPoints(points)) return false;
+  if (propose) {
+    workspace.proposePoints();
+    if (!waitFor(&workspace, &head::HeadWorkspace::proposalFinished)) return false;
+  }
+  if (batch && workspace.rigging() && !waitFor(&workspace, &head::HeadWorkspace::rigFinished))
+    return false;
+  return true;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   QApplication app(argc, argv);
@@ -62,7 +105,19 @@ int main(int argc, char** argv) {
       QStringLiteral("warm-up"),
       QStringLiteral("For --screenshot: simulate this many frames of tears first."),
       QStringLiteral("frames"), QStringLiteral("0"));
-  parser.addOptions({screenshot, size, time, filter, focus, presets, noPreview, warm});
+  const QCommandLineOption headMesh(
+      QStringLiteral("head"),
+      QStringLiteral("Open the Head workspace and import this mesh (any format assimp reads)."),
+      QStringLiteral("mesh"));
+  const QCommandLineOption headPoints(
+      QStringLiteral("points"),
+      QStringLiteral("With --head: open this feature-point file (complete or partial)."),
+      QStringLiteral("fdp"));
+  const QCommandLineOption propose(
+      QStringLiteral("propose"),
+      QStringLiteral("With --head: propose every feature point not placed by hand."));
+  parser.addOptions({screenshot, size, time, filter, focus, presets, noPreview, warm, headMesh,
+                     headPoints, propose});
   parser.process(app);
 
   const bool batch = parser.isSet(screenshot);
@@ -87,12 +142,20 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "lacrima-editor: %s\n", qPrintable(window.lastError()));
     if (batch) return 1;
   }
+  if ((parser.isSet(headPoints) || parser.isSet(propose)) && !parser.isSet(headMesh)) {
+    std::fprintf(stderr, "lacrima-editor: --points and --propose need --head MESH\n");
+    return 2;
+  }
   if (parser.isSet(time)) window.model().setCurrentTime(parser.value(time).toDouble());
   if (parser.isSet(filter)) window.sliders()->setFilterText(parser.value(filter));
   if (parser.isSet(focus)) window.model().setFocusChannel(parser.value(focus).toInt());
 
   if (!batch) {
     window.show();
+    if (parser.isSet(headMesh) &&
+        !setUpHead(window, parser.value(headMesh), parser.value(headPoints), parser.isSet(propose),
+                   false))
+      std::fprintf(stderr, "lacrima-editor: %s\n", qPrintable(window.headWorkspace()->lastError()));
     return app.exec();
   }
 
@@ -108,7 +171,15 @@ int main(int argc, char** argv) {
   QElapsedTimer settle;
   settle.start();
   while (settle.elapsed() < 300) app.processEvents(QEventLoop::AllEvents, 50);
-  window.preview()->loadHead();
+  if (parser.isSet(headMesh)) {
+    if (!setUpHead(window, parser.value(headMesh), parser.value(headPoints), parser.isSet(propose),
+                   true)) {
+      std::fprintf(stderr, "lacrima-editor: %s\n", qPrintable(window.headWorkspace()->lastError()));
+      return 1;
+    }
+  } else {
+    window.preview()->loadHead();
+  }
   for (int i = 0; i < parser.value(warm).toInt(); ++i)
     window.preview()->step(window.model().frameDuration());
   settle.restart();

@@ -396,7 +396,7 @@ FeaturePointFile readFeaturePointFile(const std::string& path, Warnings* warning
       }
       auto at = r.surfacePoint(point, {"radius", "geodesics", "placed"});
       if (!at) continue;
-      FeaturePointSpec spec{*at, std::nullopt, std::nullopt, false};
+      FeaturePointSpec spec{*at, std::nullopt, std::nullopt, true};  // "placed" defaults to hand
       if (point.has("radius")) {
         const JsonValue radius = point["radius"];
         if (!radius.isNumber() || !(radius.number() > 0.0))

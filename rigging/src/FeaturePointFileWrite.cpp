@@ -70,7 +70,7 @@ std::string featurePointFileJson(const FeaturePointFile& file) {
     writeSurfacePoint(w, spec.at);
     if (spec.radius) w.field("radius", *spec.radius);
     if (spec.geodesics) w.field("geodesics", toString(*spec.geodesics));
-    if (spec.placedByHand) w.field("placed", "hand");
+    if (!spec.placedByHand) w.field("placed", "proposed");
     w.endObject();
   }
   w.endObject();

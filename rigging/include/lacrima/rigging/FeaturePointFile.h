@@ -40,9 +40,10 @@
 // triangle t of S (local triangle index) with barycentric weights of its three corners, each in
 // [0, 1] and summing to 1 within 1e-4. "radius" (model units, > 0) overrides the influence
 // radius from InfluenceRadius.h; "geodesics" overrides the file's default method. "placed"
-// ("hand" or "proposed", default "proposed") records how the editor's Head workspace got the
-// point: the user placed it, or proposeFeaturePoints carried it over (re-proposing keeps the
-// hand ones). The rig ignores it.
+// ("hand" or "proposed", default "hand": a point somebody wrote into the file) records how the
+// point came to be: placed by a person (in the editor's Head workspace or by hand), or carried
+// over by proposeFeaturePoints (re-proposing replaces those and keeps the hand ones). The rig
+// ignores it.
 //
 // "position" (optional, on points and tear sources): where the point was, in the mesh's own
 // coordinates (before any face-frame rotation, FaceFrame.h), written by every Lacrima tool
@@ -114,7 +115,7 @@ struct FeaturePointSpec {
   SurfacePoint at;
   std::optional<double> radius;
   std::optional<GeodesicMethod> geodesics;
-  bool placedByHand = false;  // "placed": "hand"
+  bool placedByHand = true;  // "placed": "hand" (the default) or "proposed"
 };
 
 struct EyeSpec {

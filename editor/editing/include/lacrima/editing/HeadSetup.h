@@ -10,10 +10,10 @@
 // point, propose (replaces every proposed point at once and keeps the hand ones).
 //
 // The document maps to a lacrima-fdp v1 file (FeaturePointFile.h): roles become the
-// "submeshes" lists (see HeadSetupRoles.h), hand points carry "placed": "hand". Opening a file
-// reads the roles back (unlisted parts keep their guess when it is an unlisted role, else
-// become Rigid) and keeps what the editor does not edit (eye centres, neck pivot, tear
-// sources, radii) so saving does not lose it.
+// "submeshes" lists (see HeadSetupRoles.h), proposed points carry "placed": "proposed" (hand is the
+// default). Opening a file reads the roles back (unlisted parts keep their guess when it is an
+// unlisted role, else become Rigid) and keeps what the editor does not edit (eye centres, neck
+// pivot, tear sources, radii) so saving does not lose it.
 #include <lacrima/common/HeadMesh.h>
 #include <lacrima/editing/HeadSetupRoles.h>
 #include <lacrima/rigging/FeaturePointFile.h>
