@@ -15,6 +15,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 using namespace lacrima;
@@ -103,12 +104,13 @@ class HeadViewsTest : public QObject {
   void badLandmarksFallBackToTheMesh() {
     scene::FaceLandmarks face = *player::faceLandmarks(*default_);
     const scene::OrbitView meshOnly = scene::presetView(default_->head, CameraPreset::CloseLeft);
-    for (int bad = 0; bad < 4; ++bad) {
+    for (int bad = 0; bad < 5; ++bad) {
       scene::FaceLandmarks broken = face;
       if (bad == 0) broken.eyeSeparation = 0;
       if (bad == 1) broken.eyeLeft.x() = std::nan("");
       if (bad == 2) std::swap(broken.eyeLeft, broken.eyeRight);  // left at -x
       if (bad == 3) broken.chin.y() = std::numeric_limits<double>::infinity();
+      if (bad == 4) broken.chin.y() = 1e6;  // the neck cut above the whole head: nothing left
       const scene::OrbitView view =
           scene::presetView(default_->head, CameraPreset::CloseLeft, broken);
       QVERIFY(view == meshOnly);
