@@ -74,19 +74,24 @@ void showProgress(int done, int total) {
   }
 }
 
+// --view, or nullopt after saying what it takes.
+std::optional<scene::CameraPreset> cameraPreset(const QCommandLineParser& parser) {
+  const std::string viewName = parser.value("view").toStdString();
+  const std::optional<scene::CameraPreset> view = scene::parseCameraPreset(viewName);
+  if (!view)
+    std::fprintf(stderr, "lacrima-player: --view: expected one of %s, not '%s'\n",
+                 std::string(scene::cameraPresetNames()).c_str(), viewName.c_str());
+  return view;
+}
+
 int renderMode(const QCommandLineParser& parser, const QSize& size) {
   const QStringList files = parser.positionalArguments();
   if (files.size() != 1) {
     std::fprintf(stderr, "lacrima-player: --render needs exactly one FILE to render\n");
     return kExitUsage;
   }
-  const std::string viewName = parser.value("view").toStdString();
-  const std::optional<scene::CameraPreset> view = scene::parseCameraPreset(viewName);
-  if (!view) {
-    std::fprintf(stderr, "lacrima-player: --view: expected one of %s, not '%s'\n",
-                 std::string(scene::cameraPresetNames()).c_str(), viewName.c_str());
-    return kExitUsage;
-  }
+  const std::optional<scene::CameraPreset> view = cameraPreset(parser);
+  if (!view) return kExitUsage;
   const auto rig = loadRig(parser, chooseHead(parser));
   for (const std::string& w : rig->warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   player::BatchRenderOptions options;
@@ -109,6 +114,8 @@ int windowMode(QApplication& app, const QCommandLineParser& parser, const QSize*
     std::fprintf(stderr, "lacrima-player: give at most one FILE to open\n");
     return kExitUsage;
   }
+  const std::optional<scene::CameraPreset> view = cameraPreset(parser);
+  if (!view) return kExitUsage;
   HeadChoice head;
   try {
     head = chooseHead(parser);
@@ -121,6 +128,7 @@ int windowMode(QApplication& app, const QCommandLineParser& parser, const QSize*
   for (const std::string& w : window.rig().warnings)
     std::fprintf(stderr, "warning: %s\n", w.c_str());
   window.resize(size ? *size : QSize(1360, 820));
+  if (*view != scene::CameraPreset::Framing) window.setCameraPreset(*view);
   const bool screenshot = parser.isSet("screenshot");
   if (screenshot) window.setErrorDialogsEnabled(false);
   window.show();
@@ -208,9 +216,9 @@ int main(int argc, char** argv) {
       {"size", "Image size for --render, window size otherwise (default 1280x720 for --render).",
        "WxH"},
       {"view",
-       "Camera for --render: framing (the viewport's reset view, the default), front, "
-       "three-quarter, profile, close-left or close-right (a cheek and its tear filling the "
-       "image).",
+       "Camera of --render, --screenshot and the window: framing (the viewport's reset view, "
+       "the default), front, three-quarter, profile, close-left or close-right (a cheek and its "
+       "tear filling the image), measured on the head shown.",
        "NAME", "framing"},
       {"mesh",
        "Your own head (any format assimp reads) instead of the default head or the project's; "

@@ -1,6 +1,7 @@
 #include <lacrima/player/BatchRender.h>
 
 #include <lacrima/player/ContactSheet.h>
+#include <lacrima/player/HeadViews.h>
 #include <lacrima/player/PngWriter.h>
 
 #include <lacrima/common/Diagnostics.h>
@@ -26,7 +27,7 @@ BatchRenderResult renderAnimation(const playback::HeadRig& rig, const BatchRende
     throw FileError({options.outputDir.toStdString(), 0, 0}, "cannot create the output folder");
 
   scene::FaceRenderer renderer(rig.head, options.size);
-  renderer.scene().setView(scene::presetView(rig.head, options.view));
+  renderer.scene().setView(presetView(rig, options.view));
   const int frames = playback.frameCount();
   const std::vector<int> picked = evenlySpacedFrames(frames, options.sheetFrames);
   std::vector<SheetFrame> sheet;

@@ -1,6 +1,7 @@
 #include <lacrima/player/PlayerWindow.h>
 
 #include <lacrima/player/ErrorReport.h>
+#include <lacrima/player/HeadViews.h>
 #include <lacrima/player/ProjectHead.h>
 #include <lacrima/player/TearParametersPanel.h>
 
@@ -253,6 +254,8 @@ bool PlayerWindow::openFile(const QString& path) {
     rig_ = std::move(newRig);
     head_ = std::move(newHead);
     viewport_->resetView();
+    if (cameraPreset_ != scene::CameraPreset::Framing)
+      viewport_->setView(presetView(*rig_, cameraPreset_));
   }
   clock_.setTime(0);
   fileParameters_ = playback_->scene().simulation;
@@ -431,6 +434,11 @@ void PlayerWindow::countRender() {
       renderTimes_.size() > 1 ? static_cast<double>(renderTimes_.back() - renderTimes_.front()) : 0;
   fps_ = span > 0 ? (static_cast<double>(renderTimes_.size()) - 1) * 1000.0 / span : 0;
   fpsLabel_->setText(playing() ? tr("%1 fps").arg(fps_, 0, 'f', 0) : tr("paused"));
+}
+
+void PlayerWindow::setCameraPreset(scene::CameraPreset preset) {
+  cameraPreset_ = preset;
+  viewport_->setView(presetView(*rig_, preset));
 }
 
 QImage PlayerWindow::screenshot() {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <utility>
 
 namespace lacrima::scene {
 namespace {
@@ -43,49 +44,84 @@ Eigen::Matrix3d faceFrameRotation(const Eigen::Matrix3d& frame) {
   return rotation;
 }
 
+namespace {
+
+// namedEyeCentres and framingFace with `frame` already a rotation (faceFrameRotation).
+std::optional<std::pair<Eigen::Vector3d, Eigen::Vector3d>> eyeCentresIn(
+    const HeadMesh& head, const Eigen::Matrix3d& frame) {
+  const Eigen::Matrix3d toFace = frame.transpose();
+  const HeadSubmesh* left = head.findSubmesh("eye_l");
+  const HeadSubmesh* right = head.findSubmesh("eye_r");
+  if (!left || !right || left->vertexCount <= 0 || right->vertexCount <= 0) return std::nullopt;
+  const Eigen::AlignedBox3d all = boundsOf(head, 0, head.vertexCount(), toFace);
+  const Eigen::Vector3d leftEye =
+      boundsOf(head, left->firstVertex, left->vertexCount, toFace).center();
+  const Eigen::Vector3d rightEye =
+      boundsOf(head, right->firstVertex, right->vertexCount, toFace).center();
+  if (!eyesFitTheFrame(leftEye, rightEye, all)) return std::nullopt;
+  return std::pair{leftEye, rightEye};
+}
+
+OrbitView framedByEyes(const Eigen::Vector3d& leftEye, const Eigen::Vector3d& rightEye,
+                       const Eigen::AlignedBox3d& headBox, const Eigen::Matrix3d& frame) {
+  OrbitView view;
+  view.frame = frame;
+  const double height = headBox.sizes().y();
+  view.fovYDegrees = 28;
+  view.yawDegrees = 16;
+  view.pitchDegrees = 4;
+  const Eigen::Vector3d eyes = 0.5 * (leftEye + rightEye);
+  // Brows to chin: the eyes sit about 0.09 head heights above the middle of the face.
+  const Eigen::Vector3d target(eyes.x(), eyes.y() - 0.03 * height,
+                               0.5 * (eyes.z() + headBox.center().z()));
+  const double visibleHeight = 0.92 * height;
+  view.distance =
+      0.5 * visibleHeight / std::tan(0.5 * view.fovYDegrees * kDegree) + 0.25 * headBox.sizes().z();
+  if (!(view.distance > 0)) view.distance = 1;  // a single point: any distance shows it
+  view.target = view.frame * target;
+  view.minDistance = 0.12 * view.distance;
+  view.maxDistance = 8.0 * view.distance;
+  return view;
+}
+
+}  // namespace
+
+std::optional<std::pair<Eigen::Vector3d, Eigen::Vector3d>> namedEyeCentres(
+    const HeadMesh& head, const Eigen::Matrix3d& frame) {
+  return eyeCentresIn(head, faceFrameRotation(frame));
+}
+
+OrbitView OrbitView::framingFace(const Eigen::Vector3d& leftEye, const Eigen::Vector3d& rightEye,
+                                 const Eigen::AlignedBox3d& headBox, const Eigen::Matrix3d& frame) {
+  return framedByEyes(leftEye, rightEye, headBox, faceFrameRotation(frame));
+}
+
 OrbitView OrbitView::framing(const HeadMesh& head, const Eigen::Matrix3d& requestedFrame) {
   OrbitView view;
   view.frame = faceFrameRotation(requestedFrame);
   const Eigen::Matrix3d toFace = view.frame.transpose();
   const Eigen::AlignedBox3d all = boundsOf(head, 0, head.vertexCount(), toFace);
   if (all.isEmpty() || !all.sizes().allFinite()) return view;
-  const double height = all.sizes().y();
-  const HeadSubmesh* left = head.findSubmesh("eye_l");
-  const HeadSubmesh* right = head.findSubmesh("eye_r");
+  if (const auto eyes = eyeCentresIn(head, view.frame))
+    return framedByEyes(eyes->first, eyes->second, all, view.frame);
   view.fovYDegrees = 28;
   view.yawDegrees = 16;
   view.pitchDegrees = 4;
-  Eigen::Vector3d target;  // in the face frame
-  std::optional<Eigen::Vector3d> leftEye, rightEye;
-  if (left && right && left->vertexCount > 0 && right->vertexCount > 0) {
-    leftEye = boundsOf(head, left->firstVertex, left->vertexCount, toFace).center();
-    rightEye = boundsOf(head, right->firstVertex, right->vertexCount, toFace).center();
-  }
-  if (leftEye && rightEye && eyesFitTheFrame(*leftEye, *rightEye, all)) {
-    const Eigen::Vector3d eyes = 0.5 * (*leftEye + *rightEye);
-    // Brows to chin: the eyes sit about 0.09 head heights above the middle of the face.
-    target =
-        Eigen::Vector3d(eyes.x(), eyes.y() - 0.03 * height, 0.5 * (eyes.z() + all.center().z()));
-    const double visibleHeight = 0.92 * height;
-    view.distance =
-        0.5 * visibleHeight / std::tan(0.5 * view.fovYDegrees * kDegree) + 0.25 * all.sizes().z();
-  } else {
-    // Aimed at the bounding box's centre, the head's vertices fill 0.85 of the view from the
-    // reset direction: with c a vertex relative to the target in camera axes (looking along -z),
-    // a camera at distance d sees it at the tangent |c.y| / (d - c.z), so
-    //   d = max over vertices of c.z + max(|c.x|, |c.y|) / (0.85 tan(fov / 2)),
-    // the width counted like the height (conservative for any landscape view).
-    target = all.center();
-    const Eigen::Matrix3d toCamera = view.cameraAxesInFace().transpose() * toFace;
-    const double tangent = 0.85 * std::tan(0.5 * view.fovYDegrees * kDegree);
-    const Eigen::Vector3d centre = view.frame * target;
-    view.distance = 0;
-    for (int v = 0; v < head.vertexCount(); ++v) {
-      const Eigen::Vector3d c = toCamera * (head.positions.col(v).cast<double>() - centre);
-      if (c.allFinite())
-        view.distance =
-            std::max(view.distance, c.z() + std::max(std::abs(c.x()), std::abs(c.y())) / tangent);
-    }
+  // Aimed at the bounding box's centre, the head's vertices fill 0.85 of the view from the
+  // reset direction: with c a vertex relative to the target in camera axes (looking along -z),
+  // a camera at distance d sees it at the tangent |c.y| / (d - c.z), so
+  //   d = max over vertices of c.z + max(|c.x|, |c.y|) / (0.85 tan(fov / 2)),
+  // the width counted like the height (conservative for any landscape view).
+  const Eigen::Vector3d target = all.center();
+  const Eigen::Matrix3d toCamera = view.cameraAxesInFace().transpose() * toFace;
+  const double tangent = 0.85 * std::tan(0.5 * view.fovYDegrees * kDegree);
+  const Eigen::Vector3d centre = view.frame * target;
+  view.distance = 0;
+  for (int v = 0; v < head.vertexCount(); ++v) {
+    const Eigen::Vector3d c = toCamera * (head.positions.col(v).cast<double>() - centre);
+    if (c.allFinite())
+      view.distance =
+          std::max(view.distance, c.z() + std::max(std::abs(c.x()), std::abs(c.y())) / tangent);
   }
   if (!(view.distance > 0)) view.distance = 1;  // a single point: any distance shows it
   view.target = view.frame * target;

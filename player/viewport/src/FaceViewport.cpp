@@ -200,6 +200,12 @@ void FaceViewport::resetView() {
   requestRender();
 }
 
+void FaceViewport::setView(const scene::OrbitView& view) {
+  if (!ensureScene()) return;
+  state_->scene->setView(view);
+  requestRender();
+}
+
 void FaceViewport::setViewFrame(const Eigen::Matrix3d& faceToHead) {
   State& s = *state_;
   s.frame = scene::faceFrameRotation(faceToHead);

@@ -18,6 +18,7 @@
 
 #include <lacrima/playback/HeadRig.h>
 #include <lacrima/playback/Playback.h>
+#include <lacrima/scene/CameraPreset.h>
 
 #include <QImage>
 #include <QMainWindow>
@@ -59,6 +60,9 @@ class PlayerWindow : public QMainWindow {
   // a project that names another head (or none) rigs that head first, unless `fixed` (the
   // command line's --mesh/--fdp). A FAP file plays on the head shown.
   void setHeadSource(std::optional<HeadFiles> head, bool fixed);
+  // The camera the face is shown from (--view), measured on the head shown and kept when a
+  // project brings another head; Reset view (V) still goes back to the framing.
+  void setCameraPreset(scene::CameraPreset preset);
 
   bool playing() const { return clock_.running(); }
   double renderedFramesPerSecond() const { return fps_; }
@@ -102,6 +106,7 @@ class PlayerWindow : public QMainWindow {
   void reportError(const std::exception& error, const QString& path);
 
   std::unique_ptr<playback::HeadRig> rig_;
+  scene::CameraPreset cameraPreset_ = scene::CameraPreset::Framing;
   std::unique_ptr<playback::Playback> playback_;
   std::optional<HeadFiles> head_;  // setHeadSource()
   bool headFixed_ = false;

@@ -27,6 +27,9 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <optional>
+#include <utility>
+
 namespace lacrima::scene {
 
 struct OrbitView {
@@ -40,6 +43,12 @@ struct OrbitView {
   // `frame` is made a rotation first (faceFrameRotation).
   static OrbitView framing(const HeadMesh& head,
                            const Eigen::Matrix3d& frame = Eigen::Matrix3d::Identity());
+  // framing's rule for a head whose eyes are known: eye centres and the head's box (the head
+  // proper, without neck or shoulders) in the face frame. framing(head) is this with the
+  // eye sub-meshes' centres (namedEyeCentres) and the whole head's box.
+  static OrbitView framingFace(const Eigen::Vector3d& leftEye, const Eigen::Vector3d& rightEye,
+                               const Eigen::AlignedBox3d& headBox,
+                               const Eigen::Matrix3d& frame = Eigen::Matrix3d::Identity());
 
   void orbit(double yawDelta, double pitchDelta);
   void zoom(double factor);  // < 1 moves closer; clamped to [minDistance, maxDistance]
@@ -53,6 +62,11 @@ struct OrbitView {
   Eigen::Matrix3d cameraAxesInFace() const;
   bool operator==(const OrbitView&) const = default;
 };
+
+// The centres (bounding boxes, in the face frame) of the eye_l / eye_r sub-meshes when the head
+// has both and they sit side by side in the upper half of the head in that frame; else nullopt.
+std::optional<std::pair<Eigen::Vector3d, Eigen::Vector3d>> namedEyeCentres(
+    const HeadMesh& head, const Eigen::Matrix3d& frame = Eigen::Matrix3d::Identity());
 
 // `frame` made a rotation: its up axis (column 1) kept, its forward axis (column 2) made
 // perpendicular to up, the side axis up x forward (column 0 only needs to point roughly the same

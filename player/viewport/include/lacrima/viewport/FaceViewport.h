@@ -22,6 +22,7 @@
 // grabFrame() returns a null image. If OGRE fails to start, the widget shows why the same way.
 #include <lacrima/playback/FrameView.h>
 #include <lacrima/scene/Marker.h>
+#include <lacrima/scene/OrbitView.h>
 #include <lacrima/viewport/HeadPicker.h>
 
 #include <Eigen/Core>
@@ -48,6 +49,9 @@ class FaceViewport : public QWidget {
   // Shows `view` on the next render when its revision differs from the last one shown.
   void showFrame(const playback::FrameView& view);
   void resetView();
+  // Shows the head from `view` (a named camera, scene::presetView) until the user moves it;
+  // resetView() goes back to the framing.
+  void setView(const scene::OrbitView& view);
   // Which way the face looks (FaceScene::setViewFrame): columns are the face's left (its +x),
   // up and forward axes in head coordinates. Re-frames the view. setHead() resets it to identity.
   void setViewFrame(const Eigen::Matrix3d& faceToHead);
