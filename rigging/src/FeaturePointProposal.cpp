@@ -4,6 +4,7 @@
 #include <lacrima/rigging/SphereFit.h>
 
 #include "FeaturePointProposalFeatures.h"
+#include "FeaturePointProposalLips.h"
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
@@ -259,6 +260,16 @@ FeaturePointFile proposeFeaturePoints(const FeaturePointFile& partial, const Hea
     placeEyePoints(ids, reference, referenceMesh, partial, mesh, eyes, rotation, scale, carried);
   }
   if (timings) timings->eyesMs = millisecondsSince(eyeStart);
+
+  // Step 4: the inner lips on their own lips.
+  const Clock::time_point mouthStart = Clock::now();
+  if (options.method == ProposalMethod::FeatureAware) {
+    std::map<std::string, Eigen::Vector3d> given;
+    for (std::size_t k = 0; k < targetAnchors.size(); ++k)
+      given[anchorNames[k]] = target.col(static_cast<Eigen::Index>(k));
+    placeLipPoints(ids, mesh, partial.skin, given, partial.path, warnings, carried);
+  }
+  if (timings) timings->mouthMs = millisecondsSince(mouthStart);
 
   const Clock::time_point snapStart = Clock::now();
   FeaturePointFile out = partial;
