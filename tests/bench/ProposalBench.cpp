@@ -1,8 +1,9 @@
 // lacrima-bench proposal: what proposing feature points costs and how close it lands. The
 // default head's points proposed on the ICT-FaceKit head from the 8 anchors of its hand-made
 // file, as imported (y up, centimetres) and turned to z up in millimetres, by the warp alone
-// and with the eyes' step (FeaturePointProposal.h): the error against the hand-made points per
-// FDP group, in ES0 and in millimetres, beside the milliseconds of each stage.
+// and feature-aware, with the eyes' and the lips' steps (FeaturePointProposal.h): the error
+// against the hand-made points per FDP group, in ES0 and in millimetres, beside the
+// milliseconds of each stage (fit, eyes, mouth = the lips' step, snap).
 #include "BenchCommandLine.h"
 #include "BenchSupport.h"
 #include "RealHeads.h"
@@ -41,7 +42,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& options) {
                         "Feature-point proposal on the ICT-FaceKit head from its 8 anchors: error "
                         "against the\nhand-made points per FDP group (ES0 and mm) beside "
                         "milliseconds per stage, for the\nhead as imported (y up, cm) and turned "
-                        "to z up in mm; warp alone and with the eyes' step.");
+                        "to z up in mm; warp alone and feature-aware (eyes' and lips'\nsteps).");
   line.wholeNumber("runs", "N", "Timed runs of each proposal, after one warm-up (default 5).", 1,
                    1000, options.runs);
   line.flag("json", "Print one JSON object instead of the tables.", options.json);

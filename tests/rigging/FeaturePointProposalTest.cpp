@@ -27,13 +27,13 @@ using namespace lacrima::rigtest;
 
 namespace {
 
-// Issue 13's targets on the ICT head, in ES0 (measured 0.077 and 0.284, see docs/rig.md,
+// Issue 13's targets on the ICT head, in ES0 (measured 0.078 and 0.283, see docs/rig.md,
 // "Proposing feature points").
 constexpr double kMeanBound = 0.08;
 constexpr double kWorstBound = 0.3;
 // The eyes' step puts the pupils on the cornea vertex over the pupil's centre (measured 0.000;
-// the warp alone 0.037) and the lids on their margins over it (measured 0.023 and 0.007; the
-// warp alone 0.052 and 0.026).
+// the warp alone 0.062) and the lids on their margins over it (measured 0.023 and 0.007 on the
+// left, 0.023 and 0.027 on the right; the warp alone 0.052 and 0.026).
 constexpr double kPupilBound = 0.01;
 constexpr double kLidBound = 0.03;
 // The default head proposed from its own anchors: every point back on its own vertex but the
@@ -290,7 +290,8 @@ class FeaturePointProposalTest : public QObject {
   }
 
   // The lips' step: the inner-lip points on their own lips, so that the rigged mouth opens (the
-  // nearest skin vertex put 2.3 on the upper lip, and checkRig reported "lips-joined").
+  // nearest skin vertex put 2.3 on the upper lip, and checkRig reported "lips-joined"); and a
+  // symmetric head's proposal symmetric (checkRig reported "asymmetry" for 5.1 / 5.2).
   void innerLipsAreOnTheirLips() {
     if (const QString why = missing(); !why.isEmpty()) QSKIP(qPrintable(why));
     const rigging::FeaturePointFile proposed = proposalOn(*ict_);
@@ -312,11 +313,12 @@ class FeaturePointProposalTest : public QObject {
       QVERIFY2(proposed.points.at(upper).at.vertex != proposed.points.at(lower).at.vertex, upper);
       QVERIFY2(height(proposed, upper) > height(proposed, lower), upper);
     }
-    // The proposal rigs with no error from the checks (the lips part when the jaw opens).
+    // The proposal rigs with no error from the checks (the lips part when the jaw opens), and
+    // no asymmetry warning (the snap gives mirror-image vertices on the symmetric ICT head).
     const rigging::BuiltRig rig = rigging::buildRig(*ict_, proposed);
     for (const rigging::RigCheck& check : rigging::checkRig(*ict_, proposed, rig)) {
       qInfo("%s", rigging::toString(check).c_str());
-      QVERIFY2(check.severity != rigging::RigCheck::Severity::Error,
+      QVERIFY2(check.severity != rigging::RigCheck::Severity::Error && check.kind != "asymmetry",
                rigging::toString(check).c_str());
     }
     // Without the step (the warp and the plain snap) the lips were joined.

@@ -34,9 +34,11 @@
 //    the upper lip's side when it is nearer the nose tip than the chin along the skin's edges;
 //    the nearest skin vertex alone put 2.3 on the upper lip of the ICT head, whose rig then never
 //    opened its mouth.
-// The point is then snapped to the closest vertex of the part the default point is on (skin to
-// skin, an eye's points to that eye, jaw to jaw, tongue to tongue): a feature point is a vertex
-// of the new head, as a hand-made file names it.
+// The point is then snapped to a vertex of the part the default point is on (skin to skin, an
+// eye's points to that eye, jaw to jaw, tongue to tongue): the vertex nearest its closest surface
+// point, which keeps mirror-image points on mirror-image vertices of a symmetric head whichever
+// way its quads were split. A feature point is a vertex of the new head, as a hand-made file
+// names it.
 //
 // Why not more: a non-rigid registration of the default skin onto the new one (closest-point
 // pairs on 800 skin samples fed back into a smoothing spline over 5 to 8 rounds, non-rigid ICP
