@@ -4,6 +4,7 @@
 #include <lacrima/rigging/SphereFit.h>
 
 #include "FeaturePointProposalFeatures.h"
+#include "FeaturePointProposalLips.h"
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
@@ -89,8 +90,13 @@ std::string partOf(const FeaturePointFile& file, const std::string& submesh) {
   return {};
 }
 
-// Snaps `queries` to the closest vertex of the sub-meshes `names` of `mesh`: the corner of the
-// closest surface point's triangle with the largest barycentric weight.
+// Snaps `queries` to the vertices of the sub-meshes `names` of `mesh`: the vertex nearest the
+// closest surface point. The closest surface point keeps a query on the sheet of skin under it
+// (not the lining behind a lid); the nearest vertex to it, rather than the corner of its
+// triangle with the largest barycentric weight, does not depend on which way the mesh's quads
+// were split, so that a symmetric head gives mirror-image vertices for mirror-image queries
+// (the largest-weight corner put the ICT head's cheek points 5.1 and 5.2 0.058 ES0 out of
+// mirror image, its quads being split the same way on both sides).
 std::vector<SurfacePoint> snapToVertices(const Eigen::Matrix3Xd& queries, const HeadMesh& mesh,
                                          const std::vector<std::string>& names) {
   std::vector<Eigen::Vector3i> triangles;
@@ -98,14 +104,25 @@ std::vector<SurfacePoint> snapToVertices(const Eigen::Matrix3Xd& queries, const 
     const HeadSubmesh& s = *mesh.findSubmesh(name);
     triangles.insert(triangles.end(), s.triangles.begin(), s.triangles.end());
   }
-  const SurfacePoints closest =
-      closestSurfacePoints(mesh.positions.cast<double>(), triangles, queries);
+  const Eigen::Matrix3Xd positions = mesh.positions.cast<double>();
+  const SurfacePoints closest = closestSurfacePoints(positions, triangles, queries);
+  std::vector<int> used;
+  for (const Eigen::Vector3i& t : triangles) used.insert(used.end(), {t[0], t[1], t[2]});
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  Eigen::Matrix3Xd candidates(3, static_cast<Eigen::Index>(used.size()));
+  for (std::size_t k = 0; k < used.size(); ++k)
+    candidates.col(static_cast<Eigen::Index>(k)) = positions.col(used[k]);
   std::vector<SurfacePoint> out;
   for (Eigen::Index j = 0; j < queries.cols(); ++j) {
     if (closest.triangle[j] < 0) throw std::invalid_argument("the part has no triangle with area");
-    Eigen::Index corner = 0;
-    closest.barycentric.col(j).maxCoeff(&corner);
-    const int vertex = triangles[static_cast<std::size_t>(closest.triangle[j])][corner];
+    const Eigen::Vector3i& t = triangles[static_cast<std::size_t>(closest.triangle[j])];
+    const Eigen::Vector3d onSurface = positions.col(t[0]) * closest.barycentric(0, j) +
+                                      positions.col(t[1]) * closest.barycentric(1, j) +
+                                      positions.col(t[2]) * closest.barycentric(2, j);
+    Eigen::Index nearest = 0;
+    (candidates.colwise() - onSurface).colwise().squaredNorm().minCoeff(&nearest);
+    const int vertex = used[static_cast<std::size_t>(nearest)];
     for (const std::string& name : names) {
       const HeadSubmesh& s = *mesh.findSubmesh(name);
       if (vertex >= s.firstVertex && vertex < s.firstVertex + s.vertexCount) {
@@ -259,6 +276,16 @@ FeaturePointFile proposeFeaturePoints(const FeaturePointFile& partial, const Hea
     placeEyePoints(ids, reference, referenceMesh, partial, mesh, eyes, rotation, scale, carried);
   }
   if (timings) timings->eyesMs = millisecondsSince(eyeStart);
+
+  // Step 4: the inner lips on their own lips.
+  const Clock::time_point mouthStart = Clock::now();
+  if (options.method == ProposalMethod::FeatureAware) {
+    std::map<std::string, Eigen::Vector3d> given;
+    for (std::size_t k = 0; k < targetAnchors.size(); ++k)
+      given[anchorNames[k]] = target.col(static_cast<Eigen::Index>(k));
+    placeLipPoints(ids, mesh, partial.skin, given, partial.path, warnings, carried);
+  }
+  if (timings) timings->mouthMs = millisecondsSince(mouthStart);
 
   const Clock::time_point snapStart = Clock::now();
   FeaturePointFile out = partial;

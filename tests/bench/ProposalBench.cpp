@@ -1,8 +1,9 @@
 // lacrima-bench proposal: what proposing feature points costs and how close it lands. The
 // default head's points proposed on the ICT-FaceKit head from the 8 anchors of its hand-made
 // file, as imported (y up, centimetres) and turned to z up in millimetres, by the warp alone
-// and with the eyes' step (FeaturePointProposal.h): the error against the hand-made points per
-// FDP group, in ES0 and in millimetres, beside the milliseconds of each stage.
+// and feature-aware, with the eyes' and the lips' steps (FeaturePointProposal.h): the error
+// against the hand-made points per FDP group, in ES0 and in millimetres, beside the
+// milliseconds of each stage (fit, eyes, mouth = the lips' step, snap).
 #include "BenchCommandLine.h"
 #include "BenchSupport.h"
 #include "RealHeads.h"
@@ -41,7 +42,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& options) {
                         "Feature-point proposal on the ICT-FaceKit head from its 8 anchors: error "
                         "against the\nhand-made points per FDP group (ES0 and mm) beside "
                         "milliseconds per stage, for the\nhead as imported (y up, cm) and turned "
-                        "to z up in mm; warp alone and with the eyes' step.");
+                        "to z up in mm; warp alone and feature-aware (eyes' and lips'\nsteps).");
   line.wholeNumber("runs", "N", "Timed runs of each proposal, after one warm-up (default 5).", 1,
                    1000, options.runs);
   line.flag("json", "Print one JSON object instead of the tables.", options.json);
@@ -64,7 +65,7 @@ struct GroupError {
 
 struct MethodResult {
   rigging::ProposalMethod method;
-  Timing fit, eyes, snap, total;
+  Timing fit, eyes, mouth, snap, total;
   std::map<int, GroupError> groups;  // by FDP group number
   GroupError all;
   rigging::FeaturePointFile proposed;
@@ -78,7 +79,7 @@ struct OrientationResult {
 };
 
 const char* nameOf(rigging::ProposalMethod method) {
-  return method == rigging::ProposalMethod::Warp ? "warp alone" : "with the eyes' step";
+  return method == rigging::ProposalMethod::Warp ? "warp alone" : "feature-aware";
 }
 
 bool meetsTargets(const GroupError& all) {
@@ -90,7 +91,7 @@ MethodResult measure(rigging::ProposalMethod method, const rigging::FeaturePoint
                      const HeadMesh& mesh, const rigging::FeaturePointFile& hand,
                      const rigging::FeaturePointFile& reference, const HeadMesh& referenceMesh,
                      double es0, int runs) {
-  MethodResult out{method, {}, {}, {}, {}, {}, {}, {}, true};
+  MethodResult out{method, {}, {}, {}, {}, {}, {}, {}, {}, true};
   std::vector<rigging::ProposalTimings> stages;
   rigging::FeaturePointFile& proposed = out.proposed;
   out.total = timeRuns(runs, [&] {
@@ -113,6 +114,7 @@ MethodResult measure(rigging::ProposalMethod method, const rigging::FeaturePoint
   };
   out.fit = median(&rigging::ProposalTimings::fitMs);
   out.eyes = median(&rigging::ProposalTimings::eyesMs);
+  out.mouth = median(&rigging::ProposalTimings::mouthMs);
   out.snap = median(&rigging::ProposalTimings::snapMs);
 
   for (const auto& [id, spec] : hand.points) {
@@ -154,10 +156,11 @@ void printTable(const std::vector<OrientationResult>& results, const Timing& imp
   for (const OrientationResult& r : results) {
     const double mm = r.es0 * r.orientation->millimetresPer;
     std::printf("\n  %s (ES0 = %.2f mm)\n", r.orientation->name, mm);
-    std::printf("    %-20s %9s %9s %9s %9s\n", "stage (median ms)", "fit", "eyes", "snap", "total");
+    std::printf("    %-20s %9s %9s %9s %9s %9s\n", "stage (median ms)", "fit", "eyes", "mouth",
+                "snap", "total");
     for (const MethodResult& m : r.methods)
-      std::printf("    %-20s %9.2f %9.2f %9.2f %9.2f\n", nameOf(m.method), m.fit.medianMs,
-                  m.eyes.medianMs, m.snap.medianMs, m.total.medianMs);
+      std::printf("    %-20s %9.2f %9.2f %9.2f %9.2f %9.2f\n", nameOf(m.method), m.fit.medianMs,
+                  m.eyes.medianMs, m.mouth.medianMs, m.snap.medianMs, m.total.medianMs);
     std::printf("    %-8s %6s", "group", "points");
     for (const MethodResult& m : r.methods)
       std::printf("   %-36s", (std::string(nameOf(m.method)) + ": mean / worst").c_str());
@@ -213,6 +216,7 @@ void printJson(const std::vector<OrientationResult>& results, const Timing& impo
       json.field("method", m.method == rigging::ProposalMethod::Warp ? "warp" : "feature-aware");
       writeTiming(json, "fit_ms", m.fit);
       writeTiming(json, "eyes_ms", m.eyes);
+      writeTiming(json, "mouth_ms", m.mouth);
       writeTiming(json, "snap_ms", m.snap);
       writeTiming(json, "total_ms", m.total);
       json.field("same_vertices", m.sameVertices);

@@ -29,9 +29,16 @@
 //    its cornea; the lid points the standard puts above and below the pupil are moved along the
 //    face's left-right axis onto the pupil's vertical plane, and out onto the eye when the warp
 //    left them inside it.
-// The point is then snapped to the closest vertex of the part the default point is on (skin to
-// skin, an eye's points to that eye, jaw to jaw, tongue to tongue): a feature point is a vertex
-// of the new head, as a hand-made file names it.
+// 4. The lips (FeaturePointProposalLips.h): the inner-lip points 2.2, 2.6, 2.7 go to the nearest
+//    vertex of the upper lip and 2.3, 2.8, 2.9 to the nearest of the lower one, a vertex being on
+//    the upper lip's side when it is nearer the nose tip than the chin along the skin's edges;
+//    the nearest skin vertex alone put 2.3 on the upper lip of the ICT head, whose rig then never
+//    opened its mouth.
+// The point is then snapped to a vertex of the part the default point is on (skin to skin, an
+// eye's points to that eye, jaw to jaw, tongue to tongue): the vertex nearest its closest surface
+// point, which keeps mirror-image points on mirror-image vertices of a symmetric head whichever
+// way its quads were split. A feature point is a vertex of the new head, as a hand-made file
+// names it.
 //
 // Why not more: a non-rigid registration of the default skin onto the new one (closest-point
 // pairs on 800 skin samples fed back into a smoothing spline over 5 to 8 rounds, non-rigid ICP
@@ -39,7 +46,8 @@
 // 0.114 ES0 at the time) for 150 to 400 ms: closest points pull the skin together along its
 // normals, which the snap already does, and what is left is along the surface, where the two
 // heads' files differ in convention (the default head's long brows end on the temple, its chin
-// point is under the chin) rather than in shape. Step 3 costs well under a millisecond.
+// point is under the chin) rather than in shape. Step 3 costs well under a millisecond, step 4
+// about 20 ms on the ICT head (two shortest-path searches over its skin).
 #include <lacrima/common/Diagnostics.h>
 #include <lacrima/common/HeadMesh.h>
 #include <lacrima/rigging/FeaturePointFile.h>
@@ -65,7 +73,7 @@ double similarityScale(const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& t
 
 enum class ProposalMethod {
   Warp,          // steps 1 and 2 alone (the method before step 3; kept for comparison)
-  FeatureAware,  // and step 3, the eyes
+  FeatureAware,  // and steps 3 and 4, the eyes and the lips
 };
 
 struct ProposalOptions {
@@ -74,9 +82,10 @@ struct ProposalOptions {
 
 // Milliseconds of each stage, for lacrima-bench proposal.
 struct ProposalTimings {
-  double fitMs = 0;   // anchors, eye centres, similarity and spline (steps 1 and 2)
-  double eyesMs = 0;  // step 3
-  double snapMs = 0;  // the snap to the vertices of each part
+  double fitMs = 0;    // anchors, eye centres, similarity and spline (steps 1 and 2)
+  double eyesMs = 0;   // step 3
+  double mouthMs = 0;  // step 4, the lips
+  double snapMs = 0;   // the snap to the vertices of each part
 };
 
 // The partial file `partial` (points placed on `mesh`) completed with every point of `reference`
