@@ -14,6 +14,7 @@
 #include <lacrima/editor/TransportBar.h>
 #include <lacrima/editor/head/HeadWorkspace.h>
 #include <lacrima/viewport/EffectsPanel.h>
+#include <lacrima/viewport/FaceViewport.h>
 
 #include <QApplication>
 #include <QClipboard>
@@ -458,14 +459,17 @@ void MainWindow::onDocumentChanged() {
 
 QImage MainWindow::screenshot() {
   QImage image = grab().toImage();
-  if (QWidget* viewport = preview_->viewportWidget(); viewport && viewport->isVisible()) {
-    const QImage frame = preview_->grabFrame();
-    if (!frame.isNull()) {
-      QPainter p(&image);
-      const QPoint at = viewport->mapTo(this, QPoint(0, 0)) * image.devicePixelRatio();
-      p.drawImage(QRect(at, viewport->size() * image.devicePixelRatio()), frame);
-    }
+  // grab() cannot read OpenGL windows: paint every visible 3-D view's own picture over its
+  // place (the preview in Animate, the Head workspace's view in Head).
+  QPainter p(&image);
+  for (viewport::FaceViewport* viewport : findChildren<viewport::FaceViewport*>()) {
+    if (!viewport->isVisible()) continue;
+    const QImage frame = viewport->grabFrame();
+    if (frame.isNull()) continue;
+    const QPoint at = viewport->mapTo(this, QPoint(0, 0)) * image.devicePixelRatio();
+    p.drawImage(QRect(at, viewport->size() * image.devicePixelRatio()), frame);
   }
+  p.end();
   return image;
 }
 

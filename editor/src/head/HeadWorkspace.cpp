@@ -48,7 +48,9 @@ HeadWorkspace::HeadWorkspace(editing::EditorModel& model, QWidget* parent)
   viewport_->setMinimumSize(320, 240);
   connectViewport();
   split->addWidget(viewport_);
-  split->addWidget(createSidePanel());
+  QWidget* side = createSidePanel();
+  side->setMinimumWidth(400);  // the parts' roles and the points' descriptions stay readable
+  split->addWidget(side);
   split->setStretchFactor(0, 3);
   split->setStretchFactor(1, 2);
   layout->addWidget(split, 1);
@@ -153,7 +155,6 @@ QWidget* HeadWorkspace::createToolBar() {
     row->addWidget(b);
   }
 
-  row->addStretch(1);
   progress_ = new QProgressBar(bar);
   progress_->setRange(0, 100);
   progress_->setMaximumWidth(260);
@@ -162,7 +163,11 @@ QWidget* HeadWorkspace::createToolBar() {
   row->addWidget(progress_);
   status_ = new QLabel(bar);
   status_->setObjectName(QStringLiteral("head.status"));
-  row->addWidget(status_);
+  // Messages can be long (a file's path and what was wrong with it): the label takes the room
+  // left over and the tooltip carries the whole text, so a message never widens the window.
+  status_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+  status_->setAlignment(Qt::AlignLeft | Qt::AlignVCenter);
+  row->addWidget(status_, 1);
   for (QToolButton* b : {proposeButton_, saveButton_, useButton_}) b->setEnabled(false);
   return bar;
 }
@@ -311,6 +316,7 @@ QString HeadWorkspace::statusText() const { return statusText_; }
 void HeadWorkspace::setStatus(const QString& text) {
   statusText_ = text;
   status_->setText(text);
+  status_->setToolTip(text);
   emit statusChanged(text);
 }
 
