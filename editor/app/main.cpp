@@ -60,9 +60,20 @@ bool setUpHead(MainWindow& window, const QString& mesh, const QString& points, b
     workspace.proposePoints();
     if (!waitFor(&workspace, &head::HeadWorkspace::proposalFinished)) return false;
   }
-  if (batch && workspace.rigging() && !waitFor(&workspace, &head::HeadWorkspace::rigFinished))
-    return false;
+  if (batch) {  // the rig starts after a short pause, or not at all while FAPU points miss
+    QElapsedTimer waited;
+    waited.start();
+    while (workspace.rigging() && waited.elapsed() < 60000)
+      QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+    if (workspace.rigging()) return false;
+  }
   return true;
+}
+
+QString headError(MainWindow& window) {
+  const QString error = window.headWorkspace()->lastError();
+  return error.isEmpty() ? QStringLiteral("the Head workspace did not finish within a minute")
+                         : error;
 }
 
 }  // namespace
@@ -155,7 +166,7 @@ int main(int argc, char** argv) {
     if (parser.isSet(headMesh) &&
         !setUpHead(window, parser.value(headMesh), parser.value(headPoints), parser.isSet(propose),
                    false))
-      std::fprintf(stderr, "lacrima-editor: %s\n", qPrintable(window.headWorkspace()->lastError()));
+      std::fprintf(stderr, "lacrima-editor: %s\n", qPrintable(headError(window)));
     return app.exec();
   }
 
@@ -174,7 +185,7 @@ int main(int argc, char** argv) {
   if (parser.isSet(headMesh)) {
     if (!setUpHead(window, parser.value(headMesh), parser.value(headPoints), parser.isSet(propose),
                    true)) {
-      std::fprintf(stderr, "lacrima-editor: %s\n", qPrintable(window.headWorkspace()->lastError()));
+      std::fprintf(stderr, "lacrima-editor: %s\n", qPrintable(headError(window)));
       return 1;
     }
   } else {

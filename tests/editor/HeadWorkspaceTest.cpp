@@ -18,12 +18,16 @@
 #include <lacrima/rigging/FeaturePointProposal.h>
 #include <lacrima/viewport/FaceViewport.h>
 
+#include <QColor>
 #include <QComboBox>
 #include <QElapsedTimer>
 #include <QFileInfo>
 #include <QImage>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
 #include <QListWidget>
+#include <QProcess>
 #include <QSignalSpy>
 #include <QTableView>
 #include <QTemporaryDir>
@@ -343,6 +347,58 @@ class HeadWorkspaceTest : public QObject {
     expected << 1, 0, 0, 0, 0, -1, 0, 1, 0;
     QVERIFY(ws.viewport()->viewFrame().isApprox(expected));
     window.model().markSaved();
+  }
+
+  // lacrima-editor --head MESH --points PARTIAL --propose --screenshot: the window comes up on
+  // the Head workspace with the head imported, proposed and rigged; wrong usage and a missing
+  // mesh are refused with their exit codes.
+  void commandLineOpensTheHeadWorkspace() {
+    if (!QFileInfo::exists(kIctMesh)) QSKIP("ICT-FaceKit head not in ../shared");
+    if (!rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
+    // The 8 anchors of the hand-made file, as a user's partial file.
+    QFile hand(kIctFdp);
+    QVERIFY(hand.open(QIODevice::ReadOnly));
+    QJsonObject fdp = QJsonDocument::fromJson(hand.readAll()).object();
+    QJsonObject points = fdp.value("points").toObject(), anchors;
+    for (const std::string& id : rigging::proposalAnchors()) {
+      const QString key = QString::fromStdString(id);
+      QVERIFY(points.contains(key));
+      anchors.insert(key, points.value(key));
+    }
+    fdp.insert("points", anchors);
+    fdp.remove("tear_sources");
+    const QString partial = dir_.filePath(QStringLiteral("cli-anchors.fdp.json"));
+    saveAtomically(partial.toStdString(), QJsonDocument(fdp).toJson().toStdString());
+
+    const QString editor = QStringLiteral(LACRIMA_BIN_DIR "/lacrima-editor");
+    const QString shot = dir_.filePath(QStringLiteral("cli-head.png"));
+    auto run = [&](const QStringList& arguments) {
+      QProcess process;
+      process.start(editor, arguments);
+      if (!process.waitForFinished(120000)) process.kill();
+      return std::pair{process.exitCode(), QString::fromUtf8(process.readAllStandardError())};
+    };
+    const auto [code, err] = run({"--head", kIctMesh, "--points", partial, "--propose",
+                                  "--screenshot", shot, "--size", "1440x900"});
+    QVERIFY2(code == 0, qPrintable(err));
+    const QImage image(shot);
+    QCOMPARE(image.size(), QSize(1440, 900));  // the editor's default size fits the workspace
+    // The head is drawn (light skin in the workspace's view), which grab() alone would leave
+    // black: more than 3% of the window is light grey.
+    int light = 0;
+    for (int y = 0; y < image.height(); y += 2)
+      for (int x = 0; x < image.width(); x += 2)
+        light += qGray(image.pixel(x, y)) > 170 && QColor(image.pixel(x, y)).saturation() < 40;
+    QVERIFY2(light * 4 > image.width() * image.height() * 3 / 100,
+             qPrintable(QString("light pixels: %1").arg(light * 4)));
+
+    const auto [usage, usageErr] = run({"--points", partial, "--screenshot", shot});
+    QCOMPARE(usage, 2);
+    QVERIFY2(usageErr.contains("--head"), qPrintable(usageErr));
+    const QString missing = dir_.filePath(QStringLiteral("no-such-head.obj"));
+    const auto [failed, failedErr] = run({"--head", missing, "--screenshot", shot});
+    QCOMPARE(failed, 1);
+    QVERIFY2(failedErr.contains("no-such-head.obj"), qPrintable(failedErr));
   }
 };
 

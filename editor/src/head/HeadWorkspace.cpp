@@ -45,11 +45,11 @@ HeadWorkspace::HeadWorkspace(editing::EditorModel& model, QWidget* parent)
   auto* split = new QSplitter(Qt::Horizontal, this);
   viewport_ = new viewport::FaceViewport(split);
   viewport_->setObjectName(QStringLiteral("headViewport"));
-  viewport_->setMinimumSize(320, 240);
+  viewport_->setMinimumSize(240, 240);
   connectViewport();
   split->addWidget(viewport_);
   QWidget* side = createSidePanel();
-  side->setMinimumWidth(400);  // the parts' roles and the points' descriptions stay readable
+  side->setMinimumWidth(300);  // the parts' roles and the points' descriptions stay readable
   split->addWidget(side);
   split->setStretchFactor(0, 3);
   split->setStretchFactor(1, 2);
@@ -147,17 +147,27 @@ QWidget* HeadWorkspace::createToolBar() {
   redo->setObjectName(QStringLiteral("head.redo"));
   redo->setShortcuts(
       {QKeySequence(QStringLiteral("Ctrl+Shift+Z")), QKeySequence(QStringLiteral("Ctrl+Y"))});
-  for (QAction* a : {undo, redo}) {
+  for (const auto& [a, label] : {std::pair{undo, tr("Undo")}, std::pair{redo, tr("Redo")}}) {
     addAction(a);
+    // A short fixed label; the action's own text ("Undo Propose points") goes to the tooltip,
+    // so a long command name never widens the bar (and the window with it).
     auto* b = new QToolButton(bar);
-    b->setDefaultAction(a);
+    b->setText(label);
     b->setObjectName(a->objectName());
+    b->setEnabled(a->isEnabled());
+    b->setToolTip(a->text());
+    connect(b, &QToolButton::clicked, a, &QAction::trigger);
+    connect(a, &QAction::changed, b, [a, b] {
+      b->setEnabled(a->isEnabled());
+      b->setToolTip(a->text());
+    });
     row->addWidget(b);
   }
 
   progress_ = new QProgressBar(bar);
   progress_->setRange(0, 100);
   progress_->setMaximumWidth(260);
+  progress_->setMinimumWidth(80);  // its text ("Rigging: weights") must not widen the window
   progress_->setTextVisible(true);
   progress_->hide();
   row->addWidget(progress_);
