@@ -125,6 +125,8 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 32> kMirrors
 
 std::span<const FdpInfo> fdpTable() { return kPoints; }
 
+std::span<const std::pair<std::string_view, std::string_view>> fdpMirrorPairs() { return kMirrors; }
+
 std::optional<FdpInfo> fdpInfo(std::string_view id) {
   const auto found =
       std::find_if(kPoints.begin(), kPoints.end(), [&](const FdpInfo& p) { return p.id == id; });

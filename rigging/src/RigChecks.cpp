@@ -1,6 +1,7 @@
 #include <lacrima/rigging/RigChecks.h>
 
 #include <lacrima/common/FapTable.h>
+#include <lacrima/common/FdpTable.h>
 
 #include <Eigen/Eigenvalues>
 
@@ -78,20 +79,6 @@ void checkParts(const FeaturePointFile& fdp, const BuiltRig& rig, std::vector<Ri
 
 // --- asymmetry --------------------------------------------------------------------------------
 
-// Left/right twins by meaning (the FDP table's own left first). Note the eye corners: 3.7 and
-// 3.12 are the outer corners, 3.11 and 3.8 the inner ones; 8.10 is the left Cupid's-bow peak.
-const std::vector<std::pair<const char*, const char*>>& twins() {
-  static const std::vector<std::pair<const char*, const char*>> table = {
-      {"2.4", "2.5"},    {"2.6", "2.7"},   {"2.8", "2.9"},   {"2.11", "2.12"}, {"2.13", "2.14"},
-      {"3.1", "3.2"},    {"3.3", "3.4"},   {"3.5", "3.6"},   {"3.7", "3.12"},  {"3.11", "3.8"},
-      {"3.9", "3.10"},   {"3.13", "3.14"}, {"4.1", "4.2"},   {"4.3", "4.4"},   {"4.5", "4.6"},
-      {"5.1", "5.2"},    {"5.3", "5.4"},   {"6.3", "6.4"},   {"8.3", "8.4"},   {"8.5", "8.6"},
-      {"8.7", "8.8"},    {"8.10", "8.9"},  {"9.1", "9.2"},   {"9.5", "9.4"},   {"9.7", "9.6"},
-      {"9.13", "9.14"},  {"10.1", "10.2"}, {"10.3", "10.4"}, {"10.5", "10.6"}, {"10.7", "10.8"},
-      {"10.9", "10.10"}, {"11.3", "11.2"}};
-  return table;
-}
-
 const std::vector<const char*>& midline() {
   static const std::vector<const char*> ids = {"2.1",  "2.2",  "2.3",  "2.10", "8.1",  "8.2",
                                                "9.3",  "9.8",  "9.9",  "9.10", "9.11", "9.12",
@@ -108,7 +95,7 @@ struct Plane {
 std::optional<Plane> midSagittalPlane(const Points& fp) {
   Eigen::Vector3d leftward = Eigen::Vector3d::Zero(), midpoints = Eigen::Vector3d::Zero();
   int pairs = 0;
-  for (const auto& [l, r] : twins()) {
+  for (const auto& [l, r] : fdpMirrorPairs()) {
     const auto a = fp.find(l), b = fp.find(r);
     if (a == fp.end() || b == fp.end()) continue;
     leftward += a->second - b->second;
@@ -144,9 +131,10 @@ void checkSymmetry(const BuiltRig& rig, const RigCheckOptions& options,
   const auto plane = midSagittalPlane(fp);
   const double es0 = rig.fapu.es0;
   if (!plane || !(es0 > 0)) return;
-  for (const auto& [l, r] : twins()) {
-    const auto a = fp.find(l), b = fp.find(r);
+  for (const auto& [leftId, rightId] : fdpMirrorPairs()) {
+    const auto a = fp.find(leftId), b = fp.find(rightId);
     if (a == fp.end() || b == fp.end()) continue;
+    const std::string l(leftId), r(rightId);
     const Eigen::Vector3d p = a->second;
     const Eigen::Vector3d mirrored =
         p - 2.0 * (p - plane->centre).dot(plane->normal) * plane->normal;
@@ -155,7 +143,7 @@ void checkSymmetry(const BuiltRig& rig, const RigCheckOptions& options,
     out.push_back(make(RigCheck::Severity::Warning, "asymmetry", {l, r}, 0,
                        format("%s mirrored across the mid-sagittal plane lands %.3f ES0 (%.4g "
                               "units) from its twin %s (tolerance %.3f ES0)",
-                              l, off, off * es0, r, options.asymmetryTolerance)));
+                              l.c_str(), off, off * es0, r.c_str(), options.asymmetryTolerance)));
   }
 }
 

@@ -1,6 +1,8 @@
 // The live preview in the editor window: the shared viewport on the default head, posed by
 // the sliders, with tears simulated while paused (tear preview) and while playing. Runs under
 // xvfb-run (OGRE needs X); skips when the default head is not fetched.
+#include "../support/ChangedPixels.h"
+
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editing/FrameStepClock.h>
@@ -15,24 +17,7 @@
 using namespace lacrima;
 using namespace lacrima::editor;
 
-namespace {
-
-// Fraction of pixels that differ by more than a little between two renders of one size.
-double changedFraction(const QImage& a, const QImage& b) {
-  if (a.size() != b.size() || a.isNull()) return 0;
-  const QImage x = a.convertToFormat(QImage::Format_RGB32);
-  const QImage y = b.convertToFormat(QImage::Format_RGB32);
-  long long changed = 0;
-  for (int row = 0; row < x.height(); ++row) {
-    const auto* p = reinterpret_cast<const QRgb*>(x.constScanLine(row));
-    const auto* q = reinterpret_cast<const QRgb*>(y.constScanLine(row));
-    for (int col = 0; col < x.width(); ++col)
-      if (std::abs(qGray(p[col]) - qGray(q[col])) > 12) ++changed;
-  }
-  return static_cast<double>(changed) / (x.width() * x.height());
-}
-
-}  // namespace
+using lacrima::testsupport::changedFraction;
 
 class EditorPreviewTest : public QObject {
   Q_OBJECT

@@ -2,6 +2,8 @@
 // background and animates it; a missing head file leaves the project open with a clear
 // message and a head reference that saving keeps; File > Choose head (setHead) is one undoable
 // edit. Runs under xvfb-run (OGRE needs X); skips without ../shared (the ICT-FaceKit head).
+#include "../support/ChangedPixels.h"
+
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editor/MainWindow.h>
@@ -19,22 +21,9 @@
 using namespace lacrima;
 using namespace lacrima::editor;
 
-namespace {
+using lacrima::testsupport::changedFraction;
 
-// Fraction of pixels that differ by more than a little between two renders of one size.
-double changedFraction(const QImage& a, const QImage& b) {
-  if (a.size() != b.size() || a.isNull()) return 0;
-  const QImage x = a.convertToFormat(QImage::Format_RGB32);
-  const QImage y = b.convertToFormat(QImage::Format_RGB32);
-  long long changed = 0;
-  for (int row = 0; row < x.height(); ++row) {
-    const auto* p = reinterpret_cast<const QRgb*>(x.constScanLine(row));
-    const auto* q = reinterpret_cast<const QRgb*>(y.constScanLine(row));
-    for (int col = 0; col < x.width(); ++col)
-      if (std::abs(qGray(p[col]) - qGray(q[col])) > 12) ++changed;
-  }
-  return static_cast<double>(changed) / (x.width() * x.height());
-}
+namespace {
 
 QString readText(const QString& path) {
   QFile file(path);

@@ -5,6 +5,7 @@
 // leaves the workspace as it was. Also measures the longest event-loop stall from import to a
 // rigged head (printed; a figure, not an assertion).
 #include "../rigging/TestHeadFiles.h"
+#include "../support/ChangedPixels.h"
 
 #include <lacrima/common/AtomicSave.h>
 #include <lacrima/common/FdpTable.h>
@@ -39,6 +40,8 @@ using namespace lacrima;
 using namespace lacrima::editor;
 using namespace lacrima::rigtest;
 
+using lacrima::testsupport::changedFraction;
+
 namespace {
 
 // The longest gap between two ticks of a 1 ms timer while it runs: how long the event loop
@@ -69,20 +72,6 @@ class StallMeter : public QObject {
   QElapsedTimer clock_;
   double longest_ = 0;
 };
-
-double changedFraction(const QImage& a, const QImage& b) {
-  if (a.size() != b.size() || a.isNull()) return 0;
-  const QImage x = a.convertToFormat(QImage::Format_RGB32);
-  const QImage y = b.convertToFormat(QImage::Format_RGB32);
-  long long changed = 0;
-  for (int row = 0; row < x.height(); ++row) {
-    const auto* p = reinterpret_cast<const QRgb*>(x.constScanLine(row));
-    const auto* q = reinterpret_cast<const QRgb*>(y.constScanLine(row));
-    for (int col = 0; col < x.width(); ++col)
-      if (std::abs(qGray(p[col]) - qGray(q[col])) > 12) ++changed;
-  }
-  return static_cast<double>(changed) / (x.width() * x.height());
-}
 
 int rowNamed(const HeadMesh& mesh, const std::string& name) {
   for (std::size_t i = 0; i < mesh.submeshes.size(); ++i)

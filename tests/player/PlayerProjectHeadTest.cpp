@@ -3,6 +3,8 @@
 // at zero), --mesh/--fdp override it, and a missing head file is a clear error (exit 1). The
 // window plays a project on its head too. Runs under xvfb-run; skips without ../shared (the
 // ICT-FaceKit head).
+#include "../support/ChangedPixels.h"
+
 #include <lacrima/player/PlayerWindow.h>
 #include <lacrima/player/ProjectHead.h>
 #include <lacrima/rigging/DefaultHead.h>
@@ -17,6 +19,8 @@
 #include <QtTest>
 
 using namespace lacrima;
+
+using lacrima::testsupport::changedFraction;
 
 namespace {
 
@@ -50,21 +54,6 @@ Run run(const QStringList& arguments) {
 }
 
 const QString kLastFrame = QStringLiteral("/frame_0013.png");
-
-// Fraction of pixels whose grey level differs by more than a little.
-double changedFraction(const QImage& a, const QImage& b) {
-  if (a.size() != b.size() || a.isNull()) return 0;
-  const QImage x = a.convertToFormat(QImage::Format_RGB32);
-  const QImage y = b.convertToFormat(QImage::Format_RGB32);
-  long long changed = 0;
-  for (int row = 0; row < x.height(); ++row) {
-    const auto* p = reinterpret_cast<const QRgb*>(x.constScanLine(row));
-    const auto* q = reinterpret_cast<const QRgb*>(y.constScanLine(row));
-    for (int col = 0; col < x.width(); ++col)
-      if (std::abs(qGray(p[col]) - qGray(q[col])) > 12) ++changed;
-  }
-  return static_cast<double>(changed) / (x.width() * x.height());
-}
 
 }  // namespace
 

@@ -7,6 +7,7 @@
 #include <optional>
 #include <span>
 #include <string_view>
+#include <utility>
 
 namespace lacrima::inline common {
 
@@ -34,5 +35,9 @@ std::string_view fdpGroupName(int group);
 // The counterpart on the other side (3.7 <-> 3.12, 8.3 <-> 8.4), or the id itself for a point
 // on the mid line; nullopt for an unknown id.
 std::optional<std::string_view> mirroredFdp(std::string_view id);
+
+// Every left/right twin as (left, right), the table's own left first: 3.7 / 3.12 (outer eye
+// corners), 3.11 / 3.8 (inner), 8.10 / 8.9 (the Cupid's-bow peaks), ...
+std::span<const std::pair<std::string_view, std::string_view>> fdpMirrorPairs();
 
 }  // namespace lacrima::inline common
