@@ -178,6 +178,7 @@ int run(QCommandLineParser& parser) {
   // From here on head and points are in the face frame (+y up, face towards +z), whatever axes
   // the head was exported with: the rig, rig.json and the images.
   const rigging::FaceFrame frame = rigging::bringToFaceFrame(mesh, fdp, &warnings);
+  rigging::dropIgnoredParts(mesh, fdp);
   printWarnings(warnings);
 
   std::optional<rigging::BuiltRig> rig;

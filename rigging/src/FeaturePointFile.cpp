@@ -364,14 +364,15 @@ FeaturePointFile readFeaturePointFile(const std::string& path, Warnings* warning
     r.error(roles,
             "expected an object with at least \"skin\": [sub-mesh names], got " + roles.describe());
   } else {
-    r.allowKeys(roles, {"skin", "eye_left", "eye_right", "jaw", "tongue", "attached"});
+    r.allowKeys(roles, {"skin", "eye_left", "eye_right", "jaw", "tongue", "attached", "ignored"});
     out.skin = r.names(roles["skin"]);
     if (roles["skin"].isArray() && out.skin.empty())
       r.error(roles["skin"], "expected at least one sub-mesh");
     for (auto [role, names] :
          {std::pair{"eye_left", &out.eyeLeft.submeshes},
           std::pair{"eye_right", &out.eyeRight.submeshes}, std::pair{"jaw", &out.jaw},
-          std::pair{"tongue", &out.tongue}, std::pair{"attached", &out.attached}})
+          std::pair{"tongue", &out.tongue}, std::pair{"attached", &out.attached},
+          std::pair{"ignored", &out.ignored}})
       if (roles.has(role)) *names = r.names(roles[role]);
   }
 
@@ -459,6 +460,7 @@ FeaturePointFile validateFeaturePoints(const FeaturePointFile& input, const Head
   checkRole(file.jaw, "jaw");
   checkRole(file.tongue, "tongue");
   checkRole(file.attached, "attached");
+  checkRole(file.ignored, "ignored");
 
   const JsonPath points = JsonPath() / "points";
   std::vector<SurfaceEntry> entries;
@@ -602,6 +604,12 @@ std::vector<int> surfaceVertices(const SurfacePoint& point, const HeadMesh& mesh
   if (point.vertex >= 0) return {s.firstVertex + point.vertex};
   const Eigen::Vector3i t = s.triangles[static_cast<std::size_t>(point.triangle)];
   return {t[0], t[1], t[2]};
+}
+
+void dropIgnoredParts(HeadMesh& mesh, const FeaturePointFile& file) {
+  for (HeadSubmesh& s : mesh.submeshes)
+    if (std::find(file.ignored.begin(), file.ignored.end(), s.name) != file.ignored.end())
+      s.triangles.clear();
 }
 
 Eigen::Vector3d surfacePosition(const SurfacePoint& point, const HeadMesh& mesh) {

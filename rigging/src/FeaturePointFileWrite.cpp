@@ -52,7 +52,8 @@ std::string featurePointFileJson(const FeaturePointFile& file) {
   for (auto [role, names] :
        {std::pair{"skin", &file.skin}, std::pair{"eye_left", &file.eyeLeft.submeshes},
         std::pair{"eye_right", &file.eyeRight.submeshes}, std::pair{"jaw", &file.jaw},
-        std::pair{"tongue", &file.tongue}, std::pair{"attached", &file.attached}})
+        std::pair{"tongue", &file.tongue}, std::pair{"attached", &file.attached},
+        std::pair{"ignored", &file.ignored}})
     if (!names->empty() || std::string_view(role) == "skin") {
       w.key(role);
       writeNames(w, *names);

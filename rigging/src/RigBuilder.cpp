@@ -241,6 +241,7 @@ BuiltRig buildRig(const HeadMesh& mesh, const FeaturePointFile& fdp, const RigOp
   for (const auto& name : fdp.jaw) rig.roles[name] = "jaw";
   for (const auto& name : fdp.tongue) rig.roles[name] = "tongue";
   for (const auto& name : fdp.attached) rig.roles[name] = "attached";
+  for (const auto& name : fdp.ignored) rig.roles[name] = "ignored";
   for (const HeadSubmesh& s : mesh.submeshes) rig.roles.emplace(s.name, "rigid");
 
   RigInput& in = rig.input;

@@ -100,9 +100,9 @@ class HeadSetupTest : public QObject {
     row("Cornea", "", HeadSide::Left, PartRole::CorneaLeft);
     row("eyelashes", "", none, PartRole::Attached);
     row("EyeBrow_L", "", none, PartRole::Attached);
-    row("mesh", "M_EyeBlend", none, PartRole::Attached);
-    row("mesh", "M_EyeOcclusion", none, PartRole::Attached);
-    row("mesh", "M_LacrimalFluid", none, PartRole::Attached);
+    row("mesh", "M_EyeBlend", none, PartRole::Ignored);
+    row("mesh", "M_EyeOcclusion", none, PartRole::Ignored);
+    row("mesh", "M_LacrimalFluid", none, PartRole::Ignored);
     row("teeth_upper", "", none, PartRole::TeethUpper);
     row("UpperTeeth", "", none, PartRole::TeethUpper);
     row("teeth_lower", "", none, PartRole::TeethLower);

@@ -341,6 +341,44 @@ class RigTest : public QObject {
     QVERIFY(!rig.input.eyeLeft.vertices.empty() && !rig.input.eyeRight.vertices.empty());
   }
 
+  // "ignored" parts (the ICT head's occlusion and blend shells and tear film) lose their
+  // triangles, so nothing draws, picks or collides with them, keep their vertices, so every
+  // index means what it meant, and survive a write and a read; a part cannot be ignored and
+  // something else.
+  void ignoredPartsAreLeftOut() {
+    if (!QFileInfo::exists(kIctMesh)) QSKIP("ICT-FaceKit head not present in the shared folder");
+    HeadMesh mesh = rigging::importHeadMesh(kIctMesh.toStdString());
+    const rigging::FeaturePointFile fdp = rigging::validateFeaturePoints(
+        rigging::readFeaturePointFile(kIctFdp.toStdString()), mesh, nullptr);
+    QCOMPARE(fdp.ignored,
+             (std::vector<std::string>{"M_LacrimalFluid", "M_EyeBlend", "M_EyeOcclusion"}));
+    const int vertices = mesh.vertexCount();
+    const int triangles = mesh.triangleCount();
+    const int shells = static_cast<int>(mesh.findSubmesh("M_EyeOcclusion")->triangles.size());
+    QVERIFY(shells > 0);
+    rigging::dropIgnoredParts(mesh, fdp);
+    QCOMPARE(mesh.vertexCount(), vertices);
+    QVERIFY(mesh.triangleCount() <= triangles - shells);
+    for (const std::string& name : fdp.ignored)
+      QVERIFY2(mesh.findSubmesh(name)->triangles.empty(), name.c_str());
+    QVERIFY(!mesh.findSubmesh("M_EyeLashes")->triangles.empty());
+    const rigging::BuiltRig rig = rigging::buildRig(mesh, fdp);
+    QCOMPARE(rig.roles.at("M_EyeBlend"), std::string("ignored"));
+
+    QTemporaryDir dir;
+    const QString path = dir.filePath("ict.fdp.json");
+    writeFile(path, QByteArray::fromStdString(rigging::featurePointFileJson(fdp)));
+    QCOMPARE(rigging::readFeaturePointFile(path.toStdString()).ignored, fdp.ignored);
+
+    rigging::FeaturePointFile twice = fdp;
+    twice.attached.push_back("M_EyeBlend");
+    const std::string error =
+        fileErrorOf([&] { rigging::validateFeaturePoints(twice, mesh, nullptr); });
+    QVERIFY2(error.find("already has role \"ignored\"") != std::string::npos ||
+                 error.find("already has role \"attached\"") != std::string::npos,
+             error.c_str());
+  }
+
   void loaderErrorsNameThePoint() {
     const QString path = QDir(tmp_.path()).filePath("bad.fdp.json");
     const QByteArray head =

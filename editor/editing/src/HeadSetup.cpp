@@ -34,17 +34,16 @@ std::vector<std::string>* roleList(rigging::FeaturePointFile& file, PartRole rol
       return &file.tongue;
     case PartRole::Attached:
       return &file.attached;
+    case PartRole::Ignored:
+      return &file.ignored;
     case PartRole::TeethUpper:
     case PartRole::Rigid:
-    case PartRole::Ignored:
       return nullptr;
   }
   return nullptr;
 }
 
-bool unlisted(PartRole role) {
-  return role == PartRole::TeethUpper || role == PartRole::Rigid || role == PartRole::Ignored;
-}
+bool unlisted(PartRole role) { return role == PartRole::TeethUpper || role == PartRole::Rigid; }
 
 }  // namespace
 
@@ -316,6 +315,8 @@ void HeadSetup::openFeaturePoints(const QString& path, Warnings* warnings) {
       roles[s] = PartRole::Tongue;
     else if (in(file.attached))
       roles[s] = PartRole::Attached;
+    else if (in(file.ignored))
+      roles[s] = PartRole::Ignored;
     else if (!unlisted(roles[s]))
       roles[s] = PartRole::Rigid;  // the file says it only follows the head
   }
@@ -329,6 +330,7 @@ void HeadSetup::openFeaturePoints(const QString& path, Warnings* warnings) {
   file.jaw.clear();
   file.tongue.clear();
   file.attached.clear();
+  file.ignored.clear();
   file.eyeLeft.submeshes.clear();
   file.eyeRight.submeshes.clear();
   kept_ = std::move(file);

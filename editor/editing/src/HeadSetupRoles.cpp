@@ -81,9 +81,11 @@ std::optional<PartRole> partRoleFromName(std::string_view name) {
 
 PartRole guessPartRole(std::string_view submeshName, std::string_view materialName, HeadSide side) {
   const Words w(submeshName, materialName);
-  // Cards and films that sit on the skin first: "eyelash", "EyeBlend" also say "eye".
-  if (w.contains({"lash", "brow", "lacrimal", "tear", "occlusion", "blend", "caruncle"}))
-    return PartRole::Attached;
+  // Shading shells and films another renderer needed (ambient-occlusion and blend shells over
+  // the eyes, a tear film: Lacrima draws its own wet eyes and tears) are left out; cards that sit
+  // on the skin ride on it. Both first: "EyeBlend", "eyelash" also say "eye".
+  if (w.contains({"lacrimal", "tear", "occlusion", "blend"})) return PartRole::Ignored;
+  if (w.contains({"lash", "brow", "caruncle"})) return PartRole::Attached;
   HeadSide named = w.side();
   if (named == HeadSide::Unknown) named = side;
   if (isCornea(w)) return named == HeadSide::Right ? PartRole::CorneaRight : PartRole::CorneaLeft;

@@ -25,6 +25,7 @@ std::unique_ptr<HeadRig> rigNamedHead(HeadMesh head, const rigging::FeaturePoint
   rigging::FeaturePointFile points = rigging::validateFeaturePoints(
       fdp, rig->head, &warnings, rigging::FeaturePointSet::Complete, meshName);
   rig->frame = rigging::bringToFaceFrame(rig->head, points, &warnings);
+  rigging::dropIgnoredParts(rig->head, points);
   rig->rig = rigging::buildRig(rig->head, points, options);
   for (const Diagnostic& d : warnings) rig->warnings.push_back(d.toString());
   for (const std::string& w : rig->rig.warnings) rig->warnings.push_back(fdp.path + ": " + w);

@@ -18,7 +18,9 @@
 //       "eye_right": ["eye_r", "cornea_r"],  optional: FAPs 24/26 (28, 30)
 //       "jaw": ["teeth_lower"],           optional: follow jaw point 2.1 rigidly (weight 1)
 //       "tongue": ["tongue"],             optional: follow 2.1 rigidly; 6.x get own weights
-//       "attached": ["eyelashes"]         optional: ride on the skin point closest to each vertex
+//       "attached": ["eyelashes"],        optional: ride on the skin point closest to each vertex
+//       "ignored": ["eye_occlusion"]      optional: not drawn, rigged or touched by tears (shading
+//                                         shells and films another renderer needed)
 //     },                                  other sub-meshes only follow the head rotation
 //     "defaults": { "geodesics": "dijkstra" },   optional: "dijkstra" or "heat"
 //     "points": {                         by FDP id "group.index"
@@ -128,7 +130,7 @@ struct FeaturePointFile {
   std::string text;  // as read, so that validateFeaturePoints can name lines and columns
   int version = kFeaturePointFileVersion;
   std::string meshNote;
-  std::vector<std::string> skin, jaw, tongue, attached;
+  std::vector<std::string> skin, jaw, tongue, attached, ignored;
   EyeSpec eyeLeft, eyeRight;
   GeodesicMethod geodesics = GeodesicMethod::Dijkstra;
   std::map<std::string, FeaturePointSpec, FdpIdLess> points;
@@ -175,6 +177,10 @@ std::string featurePointFileJson(const FeaturePointFile& file);
 // Global vertex indices a point is bound to: one vertex, or the triangle's three corners.
 // Precondition: the point was validated against `mesh`.
 std::vector<int> surfaceVertices(const SurfacePoint& point, const HeadMesh& mesh);
+// Takes the sub-meshes the file calls "ignored" out of the picture: their triangles are
+// dropped (their vertices stay, so every index keeps its meaning), so nothing draws, picks,
+// rigs or collides with them. Precondition: the file was validated against `mesh`.
+void dropIgnoredParts(HeadMesh& mesh, const FeaturePointFile& file);
 // Its position on the neutral mesh.
 Eigen::Vector3d surfacePosition(const SurfacePoint& point, const HeadMesh& mesh);
 
