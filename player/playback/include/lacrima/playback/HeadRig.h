@@ -34,7 +34,9 @@ struct HeadRig {
 // naming what is missing when the head has not been fetched (packaging/fetch-default-head.sh).
 std::unique_ptr<HeadRig> loadDefaultHeadRig();
 // Any mesh assimp reads, with its feature-point file (lacrima-fdp v1). Throws FileError.
-std::unique_ptr<HeadRig> loadHeadRig(const std::string& meshPath, const std::string& fdpPath);
+// `options.progress` reports the whole load: reading the mesh, the feature points, the rig.
+std::unique_ptr<HeadRig> loadHeadRig(const std::string& meshPath, const std::string& fdpPath,
+                                     const rigging::RigOptions& options = {});
 // A head already in memory with its feature points (the editor's Head workspace rigs what the
 // user placed without writing files): validates `fdp` against `head` (messages name fdp.path;
 // points whose stored position moved are re-snapped with a warning), brings head and points
