@@ -2,6 +2,7 @@
 // re-snap points when the mesh's vertex order changed, and to refuse a file placed on another
 // mesh. The synthetic sheet makes every case small and exact; the default head checks that a
 // re-snapped file rigs like the original.
+#include "../support/FileErrors.h"
 #include "TestHeadFiles.h"
 
 #include <lacrima/common/AtomicSave.h>
@@ -29,6 +30,8 @@
 
 using namespace lacrima;
 using namespace lacrima::rigtest;
+
+using lacrima::testsupport::fileErrorOf;
 
 namespace {
 
@@ -110,16 +113,6 @@ rigging::FeaturePointFile sheetFile() {
   f.points["9.15"].at = trianglePoint("lid", 3, {0.6, 0.1, 0.3});
   f.tearLeft = vertexPoint("skin", 100);
   return f;
-}
-
-template <class F>
-std::string fileErrorOf(F&& f) {
-  try {
-    f();
-  } catch (const FileError& e) {
-    return e.what();
-  }
-  return {};
 }
 
 bool contains(const std::string& text, const std::string& part) {

@@ -1,5 +1,6 @@
 // Rig assembly end to end: feature-point files, RigBuilder on the default head and the ICT head,
 // the exported files and the lacrima-rig command.
+#include "../support/FileErrors.h"
 #include "TestHeadFiles.h"
 
 #include <lacrima/common/FapTable.h>
@@ -35,23 +36,14 @@
 using namespace lacrima;
 using namespace lacrima::rigtest;
 
+using lacrima::testsupport::fileErrorOf;
+
 namespace {
 
 void writeFile(const QString& path, const QByteArray& bytes) {
   QFile f(path);
   QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
   f.write(bytes);
-}
-
-// The message of the FileError `f` throws, or "" when it throws none.
-template <class F>
-std::string fileErrorOf(F&& f) {
-  try {
-    f();
-  } catch (const FileError& e) {
-    return e.what();
-  }
-  return {};
 }
 
 const VertexPose& poseOf(const rigging::BuiltRig& rig, int fap) {
