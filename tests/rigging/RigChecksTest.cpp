@@ -1,6 +1,7 @@
 // Rig checks (RigChecks.h): the default head passes with no Error, and each check fires, with
 // its figures, on a deliberately broken feature-point file; lacrima-rig --check prints them and
 // exits 1 on an Error.
+#include "DefaultRigFixture.h"
 #include "TestHeadFiles.h"
 
 #include <lacrima/common/AtomicSave.h>
@@ -51,11 +52,6 @@ QString listed(const std::vector<RigCheck>& checks) {
 
 }  // namespace
 
-#define REQUIRE_DEFAULT_HEAD()                                                                \
-  do {                                                                                        \
-    if (!head_) QSKIP("default head not in the cache (run packaging/fetch-default-head.sh)"); \
-  } while (false)
-
 class RigChecksTest : public QObject {
   Q_OBJECT
 
@@ -100,7 +96,7 @@ class RigChecksTest : public QObject {
   }
 
   void defaultHeadHasNoError() {
-    REQUIRE_DEFAULT_HEAD();
+    REQUIRE_DEFAULT_RIG(head_);
     QVERIFY2(!anyError(checks_), qPrintable(listed(checks_)));
     // Its pair of outer eye corners is symmetric, which the broken file below relies on.
     for (const RigCheck& c : ofKind(checks_, "asymmetry")) QVERIFY(!concerns(c, "3.7"));
@@ -108,7 +104,7 @@ class RigChecksTest : public QObject {
 
   // 3.7 (outer corner of the left eye) moved up by 0.2 ES0: mirrored, it misses 3.12.
   void movedEyeCornerIsAsymmetric() {
-    REQUIRE_DEFAULT_HEAD();
+    REQUIRE_DEFAULT_RIG(head_);
     rigging::FeaturePointFile fdp = *fdp_;
     const Eigen::Vector3d from = rig_->featurePoints.at("3.7");
     const double es0 = rig_->fapu.es0;
@@ -135,7 +131,7 @@ class RigChecksTest : public QObject {
   // 2.3 (inner lower lip) put on the left eyeball. (2.2 cannot be: it defines MNS0, the nose
   // base 9.15 down to 2.2, and buildRig refuses a negative MNS0 before any check runs.)
   void lowerLipOnAnEyeIsOnTheWrongPart() {
-    REQUIRE_DEFAULT_HEAD();
+    REQUIRE_DEFAULT_RIG(head_);
     rigging::FeaturePointFile fdp = *fdp_;
     fdp.points["2.3"].at = {"eye_l", 0, -1, Eigen::Vector3d::Zero(), std::nullopt};
     const auto checks = checksOf(fdp);
@@ -155,7 +151,7 @@ class RigChecksTest : public QObject {
 
   // Teeth points: 9.9 (lower teeth) on the jaw's teeth is right, 9.10 (upper teeth) there is not.
   void teethPointsBelongOnTheirTeeth() {
-    REQUIRE_DEFAULT_HEAD();
+    REQUIRE_DEFAULT_RIG(head_);
     std::string jaw;
     for (const auto& [name, role] : rig_->roles)
       if (role == "jaw") jaw = name;
@@ -173,7 +169,7 @@ class RigChecksTest : public QObject {
 
   // 2.3 bound to 2.2's vertex: the lips share it and cannot part.
   void lipsSharingAVertexAreJoined() {
-    REQUIRE_DEFAULT_HEAD();
+    REQUIRE_DEFAULT_RIG(head_);
     rigging::FeaturePointFile fdp = *fdp_;
     fdp.points["2.3"].at = fdp.points["2.2"].at;
     const auto joined = ofKind(checksOf(fdp), "lips-joined");
@@ -188,7 +184,7 @@ class RigChecksTest : public QObject {
   // The chin 2.1 with a huge radius (50 ES0): its weight is ~1 on both lips, so the jaw drags the
   // upper lip along.
   void upperLipFollowingTheJawIsJoined() {
-    REQUIRE_DEFAULT_HEAD();
+    REQUIRE_DEFAULT_RIG(head_);
     rigging::FeaturePointFile fdp = *fdp_;
     fdp.points["2.1"].radius = 50.0 * rig_->fapu.es0;
     const auto joined = ofKind(checksOf(fdp), "lips-joined");
@@ -203,7 +199,7 @@ class RigChecksTest : public QObject {
   // FAPU: ES0 and each other X0 near zero (the rig's own, as closed eyes would give IRISD0 ~ 0;
   // computeFapu refuses exact zeros, so the files cannot get there).
   void nearZeroFapuIsAnError() {
-    REQUIRE_DEFAULT_HEAD();
+    REQUIRE_DEFAULT_RIG(head_);
     rigging::BuiltRig rig = *rig_;
     rig.fapu.irisd0 = 0.01 * rig.fapu.es0;
     auto zero = ofKind(rigging::checkRig(*head_, *fdp_, rig), "zero-fapu");
@@ -219,7 +215,7 @@ class RigChecksTest : public QObject {
 
   // 8.1 (outer upper lip, FAP 51) on a sub-mesh with no deforming role: its pose is empty.
   void pointOnARigidPartMovesNothing() {
-    REQUIRE_DEFAULT_HEAD();
+    REQUIRE_DEFAULT_RIG(head_);
     std::string rigid;
     for (const auto& [name, role] : rig_->roles)
       if (role == "rigid") rigid = name;
@@ -238,7 +234,7 @@ class RigChecksTest : public QObject {
   // file of movedEyeCornerIsAsymmetric, its mesh and rig turned to Z-up and scaled by 100
   // (as a mm head would be), gives the same asymmetry, part and FAPU checks.
   void checksIgnoreTheFrame() {
-    REQUIRE_DEFAULT_HEAD();
+    REQUIRE_DEFAULT_RIG(head_);
     rigging::FeaturePointFile fdp = *fdp_;
     const Eigen::Vector3d from = rig_->featurePoints.at("3.7");
     const int v = nearestSkinVertex(from + Eigen::Vector3d(0, 0.2 * rig_->fapu.es0, 0),
@@ -271,7 +267,7 @@ class RigChecksTest : public QObject {
 
   // lacrima-rig --check: one line per check, exit 0 without Error, 1 with one.
   void commandLineCheck() {
-    REQUIRE_DEFAULT_HEAD();
+    REQUIRE_DEFAULT_RIG(head_);
     QProcess good;
     good.start(kRigTool, {"--default", "--check"});
     QVERIFY(good.waitForFinished(120000));
