@@ -23,7 +23,7 @@ constexpr double kMaxBakedFrames = 16777216.0;
 struct Knot {
   double time;
   double value;
-  Interpolation mode;  // of the segment that starts here
+  KeyShape shape;  // shape.interpolation: of the segment that starts here
 };
 
 void requireValidFps(double fps, const char* caller) {
@@ -97,6 +97,66 @@ double hermite(const Knot& a, const Knot& b, double ma, double mb, double t) {
   return std::clamp(a.value + rise + bend, std::min(a.value, b.value), std::max(a.value, b.value));
 }
 
+// The Bézier segment from a to b, with handles ha (a's out) and hb (b's in), at time t:
+//   P(u) = (1-u)^3 P0 + 3u(1-u)^2 P1 + 3u^2(1-u) P2 + u^3 P3,  u in [0, 1],
+//   P0 = (ta, va), P1 = P0 + ha, P2 = P3 + hb, P3 = (tb, vb).
+// A curve of time must give one value per time, so x(u) must not turn back. Each handle's time
+// is first clamped into the segment, then, if the two together reach past it, both are scaled
+// down about their keys (keeping their directions) until they just meet: then
+// x1 - x0, x2 - x1, x3 - x2 >= 0 and x'(u), a Bernstein combination of them, is >= 0.
+// u for t is found by bisection safeguarding Newton steps; 60 halvings reach the double's
+// resolution for any segment, Newton usually ends it in a handful.
+double bezier(const Knot& a, const Knot& b, Handle ha, Handle hb, double t) {
+  const double h = b.time - a.time;
+  const auto clampTime = [h](Handle handle, double lo, double hi) {
+    const double dt = std::clamp(handle.dt, lo, hi);
+    // Scaling the value with the time keeps the handle's slope when it is shortened.
+    const double scale = handle.dt != 0.0 ? dt / handle.dt : 0.0;
+    return Handle{dt, handle.dv * scale};
+  };
+  ha = clampTime(ha, 0.0, h);
+  hb = clampTime(hb, -h, 0.0);
+  const double reach = ha.dt - hb.dt;
+  if (reach > h) {
+    const double scale = h / reach;
+    ha = {ha.dt * scale, ha.dv * scale};
+    hb = {hb.dt * scale, hb.dv * scale};
+  }
+  const double x0 = a.time, x1 = a.time + ha.dt, x2 = b.time + hb.dt, x3 = b.time;
+  const double y0 = a.value, y1 = a.value + ha.dv, y2 = b.value + hb.dv, y3 = b.value;
+  const auto cubic = [](double p0, double p1, double p2, double p3, double u) {
+    const double r = 1.0 - u;
+    return r * r * r * p0 + 3.0 * u * r * r * p1 + 3.0 * u * u * r * p2 + u * u * u * p3;
+  };
+  const auto slope = [](double p0, double p1, double p2, double p3, double u) {
+    const double r = 1.0 - u;
+    return 3.0 * (r * r * (p1 - p0) + 2.0 * u * r * (p2 - p1) + u * u * (p3 - p2));
+  };
+  double lo = 0.0, hi = 1.0, u = (t - a.time) / h;
+  for (int step = 0; step < 60; ++step) {
+    const double error = cubic(x0, x1, x2, x3, u) - t;
+    if (std::abs(error) <= 1e-12 * std::max(1.0, std::abs(t))) break;
+    (error > 0.0 ? hi : lo) = u;
+    const double dx = slope(x0, x1, x2, x3, u);
+    const double newton = dx > 0.0 ? u - error / dx : -1.0;
+    u = (newton > lo && newton < hi) ? newton : 0.5 * (lo + hi);
+  }
+  return cubic(y0, y1, y2, y3, u);
+}
+
+// A Bézier key's handle on the side of a segment of duration h: its own, or, for auto handles,
+// a third of the segment along the Smooth curve's slope, which makes the Bézier segment that
+// very Hermite cubic (x(u) is then linear in u).
+Handle outHandle(const Knot& knot, double slope, double h) {
+  if (knot.shape.handles != HandleType::Auto) return knot.shape.out;
+  return {h / 3.0, slope * h / 3.0};
+}
+
+Handle inHandle(const Knot& knot, double slope, double h) {
+  if (knot.shape.handles != HandleType::Auto) return knot.shape.in;
+  return {-h / 3.0, -slope * h / 3.0};
+}
+
 // Value of a channel's curve at t, where `reached` knots lie at or before t.
 double curveValue(int fap, std::span<const Knot> knots, std::size_t reached, double t) {
   if (reached == 0) return knots.front().value;
@@ -105,10 +165,20 @@ double curveValue(int fap, std::span<const Knot> knots, std::size_t reached, dou
   // not viseme 5, so a code holds until the next key.
   if (reached == knots.size() || isHighLevelFap(fap)) return a.value;
   const Knot& b = knots[reached];
-  if (a.mode == Interpolation::Linear) {
-    return a.value + (t - a.time) / (b.time - a.time) * (b.value - a.value);
+  switch (a.shape.interpolation) {
+    case Interpolation::Constant:
+      return a.value;
+    case Interpolation::Linear:
+      return a.value + (t - a.time) / (b.time - a.time) * (b.value - a.value);
+    case Interpolation::Smooth:
+      return hermite(a, b, slopeAt(knots, reached - 1), slopeAt(knots, reached), t);
+    case Interpolation::Bezier: {
+      const double h = b.time - a.time;
+      return bezier(a, b, outHandle(a, slopeAt(knots, reached - 1), h),
+                    inHandle(b, slopeAt(knots, reached), h), t);
+    }
   }
-  return hermite(a, b, slopeAt(knots, reached - 1), slopeAt(knots, reached), t);
+  return a.value;
 }
 
 float channelValue(int fap, double value) {
@@ -123,7 +193,7 @@ ChannelMask unionOfChannels(const std::vector<Keyframe>& keys) {
 }
 
 Knot knotOf(const Keyframe& key, int index) {
-  return {key.time, key.values[index], key.interpolation};
+  return {key.time, key.values[index], key.shape(fapNumber(index))};
 }
 
 // The scalar dialect's convention: the code is select1, shown at full weight.
@@ -154,12 +224,43 @@ ChannelMask nonZeroChannels(const FapAnimation& animation) {
 }  // namespace
 
 std::string_view toString(Interpolation mode) {
-  return mode == Interpolation::Smooth ? "smooth" : "linear";
+  switch (mode) {
+    case Interpolation::Linear:
+      return "linear";
+    case Interpolation::Smooth:
+      return "smooth";
+    case Interpolation::Constant:
+      return "constant";
+    case Interpolation::Bezier:
+      return "bezier";
+  }
+  return "linear";
 }
 
 std::optional<Interpolation> interpolationFromString(std::string_view text) {
-  if (text == "linear") return Interpolation::Linear;
-  if (text == "smooth") return Interpolation::Smooth;
+  for (Interpolation mode : {Interpolation::Linear, Interpolation::Smooth, Interpolation::Constant,
+                             Interpolation::Bezier}) {
+    if (text == toString(mode)) return mode;
+  }
+  return std::nullopt;
+}
+
+std::string_view toString(HandleType type) {
+  switch (type) {
+    case HandleType::Auto:
+      return "auto";
+    case HandleType::Aligned:
+      return "aligned";
+    case HandleType::Free:
+      return "free";
+  }
+  return "auto";
+}
+
+std::optional<HandleType> handleTypeFromString(std::string_view text) {
+  for (HandleType type : {HandleType::Auto, HandleType::Aligned, HandleType::Free}) {
+    if (text == toString(type)) return type;
+  }
   return std::nullopt;
 }
 
@@ -173,6 +274,56 @@ void Keyframe::clear(int fap) {
   if (!isValidFap(fap)) throw std::out_of_range("no channel " + std::to_string(fap));
   channels.reset(channelIndex(fap));
   values[channelIndex(fap)] = 0.0f;
+  std::erase_if(ownShapes_, [&](const auto& own) { return own.first == channelIndex(fap); });
+}
+
+bool Keyframe::hasOwnShape(int fap) const {
+  return std::any_of(ownShapes_.begin(), ownShapes_.end(),
+                     [&](const auto& own) { return own.first == channelIndex(fap); });
+}
+
+KeyShape Keyframe::shape(int fap) const {
+  const int index = channelIndex(fap);
+  const auto at = std::lower_bound(ownShapes_.begin(), ownShapes_.end(), index,
+                                   [](const auto& own, int i) { return own.first < i; });
+  if (at != ownShapes_.end() && at->first == index) return at->second;
+  return KeyShape{interpolation, HandleType::Auto, {}, {}};
+}
+
+void Keyframe::setShape(int fap, KeyShape shape) {
+  if (!isValidFap(fap)) throw std::out_of_range("no channel " + std::to_string(fap));
+  if (shape.handles == HandleType::Auto) shape.in = shape.out = Handle{};
+  const int index = channelIndex(fap);
+  const auto at = std::lower_bound(ownShapes_.begin(), ownShapes_.end(), index,
+                                   [](const auto& own, int i) { return own.first < i; });
+  const bool stored = at != ownShapes_.end() && at->first == index;
+  const bool isDefault = shape == KeyShape{interpolation, HandleType::Auto, {}, {}};
+  if (isDefault) {
+    if (stored) ownShapes_.erase(at);
+  } else if (stored) {
+    at->second = shape;
+  } else {
+    ownShapes_.insert(at, {index, shape});
+  }
+}
+
+void Keyframe::setInterpolationOfAll(Interpolation mode) {
+  const auto shapes = ownShapes_;
+  interpolation = mode;
+  ownShapes_.clear();
+  for (auto [index, shape] : shapes) {
+    shape.interpolation = mode;
+    setShape(fapNumber(index), shape);
+  }
+}
+
+void Keyframe::takeChannel(const Keyframe& other, int fap) {
+  if (!other.has(fap)) {
+    clear(fap);
+    return;
+  }
+  set(fap, other.value(fap));
+  setShape(fap, other.shape(fap));
 }
 
 bool Keyframe::operator==(const Keyframe& other) const {
@@ -180,7 +331,10 @@ bool Keyframe::operator==(const Keyframe& other) const {
     return false;
   }
   for (int i = 0; i < kChannelCount; ++i) {
-    if (channels.test(i) && values[i] != other.values[i]) return false;
+    if (!channels.test(i)) continue;
+    if (values[i] != other.values[i] || shape(fapNumber(i)) != other.shape(fapNumber(i))) {
+      return false;
+    }
   }
   return true;
 }
@@ -222,8 +376,14 @@ int KeyframeSequence::insert(const Keyframe& key) {
   if (at != keys_.end() && std::abs(at->time - key.time) < kSameTime) {
     // Merge channels only: the existing key keeps its time and its segment's mode, so
     // keying one more channel never reshapes the curves of the others.
+    // A channel with a shape of its own brings it; the others take the existing key's default.
     for (int i = 0; i < kChannelCount; ++i) {
-      if (key.channels.test(i)) at->set(fapNumber(i), key.values[i]);
+      if (!key.channels.test(i)) continue;
+      const int fap = fapNumber(i);
+      at->set(fap, key.values[i]);
+      at->setShape(fap, key.hasOwnShape(fap)
+                            ? key.shape(fap)
+                            : KeyShape{at->interpolation, HandleType::Auto, {}, {}});
     }
     return index;
   }

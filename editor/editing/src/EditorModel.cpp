@@ -25,13 +25,19 @@ std::vector<double> timesOf(const std::vector<Keyframe>& keys) {
   return out;
 }
 
-// `onto` with the channels of `from` written over it; the mode and time are `from`'s.
+// `onto` with the channels of `from` written over it; the default mode and time are `from`'s,
+// and every channel keeps the shape it had in the key it comes from.
 Keyframe mergedOnto(const Keyframe& onto, const Keyframe& from) {
-  Keyframe out = onto;
+  Keyframe out;
   out.time = from.time;
   out.interpolation = from.interpolation;
-  for (int fap = 1; fap <= kChannelCount; ++fap)
-    if (from.has(fap)) out.set(fap, from.value(fap));
+  for (int fap = 1; fap <= kChannelCount; ++fap) {
+    if (from.has(fap)) {
+      out.takeChannel(from, fap);
+    } else if (onto.has(fap)) {
+      out.takeChannel(onto, fap);
+    }
+  }
   return out;
 }
 

@@ -4,39 +4,93 @@
 //
 // Per channel, only the keys that set it count. Before its first key a channel holds that
 // key's value, after its last key the last value; a channel no key sets stays 0 (neutral).
-// Between keys k and k+1 the mode of key k applies:
-//   Linear: v = v_k + s (v_{k+1} - v_k),  s = (t - t_k) / (t_{k+1} - t_k)   (the 2009 editor)
-//   Smooth: cubic Hermite with Steffen (1990) slopes
-//             m_k = (sign d_{k-1} + sign d_k) min(|d_{k-1}|, |d_k|, |p_k| / 2),
-//             d = secant slopes, p_k = (d_{k-1} h_k + d_k h_{k-1}) / (h_{k-1} + h_k),
-//           one-sided at the ends; monotone on every interval, so it never overshoots the
-//           values of the two keys around it.
+// Each channel has its own shape at each of its keys (KeyShape; by default the key's
+// `interpolation` with auto handles). Between keys k and k+1 of a channel, the interpolation
+// of the channel's shape at key k applies:
+//   Constant: v = v_k (a hold)
+//   Linear:   v = v_k + s (v_{k+1} - v_k),  s = (t - t_k) / (t_{k+1} - t_k)   (the 2009 editor)
+//   Smooth:   cubic Hermite with Steffen (1990) slopes
+//               m_k = (sign d_{k-1} + sign d_k) min(|d_{k-1}|, |d_k|, |p_k| / 2),
+//               d = secant slopes, p_k = (d_{k-1} h_k + d_k h_{k-1}) / (h_{k-1} + h_k),
+//             one-sided at the ends; monotone on every interval, so it never overshoots the
+//             values of the two keys around it.
+//   Bezier:   the cubic Bézier from (t_k, v_k) through key k's out handle and key k+1's in
+//             handle to (t_{k+1}, v_{k+1}), as a function of time (handles are limited to
+//             the segment so that it is one). Auto handles lie a third of the segment
+//             along the Smooth slope m_k, which gives exactly the Smooth curve.
 // Tear channels (69, 70) are interpolated, then rounded to whole particle counts (>= 0).
 // High-level channels (1, 2) hold each key's code until the next key (codes do not blend).
 #include <lacrima/common/FapAnimation.h>
 
 #include <optional>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace lacrima::inline common {
 
-enum class Interpolation { Linear, Smooth };
+// How a channel's curve runs from one of its keys to the next.
+enum class Interpolation { Linear, Smooth, Constant, Bezier };
 
-std::string_view toString(Interpolation mode);  // "linear" / "smooth"
+std::string_view toString(Interpolation mode);  // "linear" / "smooth" / "constant" / "bezier"
 std::optional<Interpolation> interpolationFromString(std::string_view text);
+
+// The handles of a Bézier key. Auto handles are computed from the neighbouring keys (they make
+// the Bézier curve equal to the Smooth one); dragging one makes it Aligned, as in Blender.
+// Aligned handles stay on one line through the key; Free ones move independently.
+enum class HandleType { Auto, Aligned, Free };
+
+std::string_view toString(HandleType type);  // "auto" / "aligned" / "free"
+std::optional<HandleType> handleTypeFromString(std::string_view text);
+
+// A handle as an offset from its key: seconds along time, channel units along value.
+struct Handle {
+  double dt = 0.0;
+  double dv = 0.0;
+  bool operator==(const Handle&) const = default;
+};
+
+// How one channel's curve passes through one key: the interpolation of the channel's segment
+// that starts at the key, and the key's handles (used by Bézier segments on either side).
+// `in` points back in time (dt <= 0), `out` forward (dt >= 0). Auto handles store zeros.
+struct KeyShape {
+  Interpolation interpolation = Interpolation::Linear;
+  HandleType handles = HandleType::Auto;
+  Handle in, out;
+  bool operator==(const KeyShape&) const = default;
+};
 
 struct Keyframe {
   double time = 0.0;                                    // seconds
-  Interpolation interpolation = Interpolation::Linear;  // of the segment that starts here
+  Interpolation interpolation = Interpolation::Linear;  // default of the channels' segments
   ChannelMask channels;                                 // channels this key sets
   FapValues values{};  // indexed by channelIndex(fap); meaningful where `channels` is set
 
   bool has(int fap) const { return channels.test(channelIndex(fap)); }
   float value(int fap) const { return values[channelIndex(fap)]; }
   void set(int fap, float v);
-  void clear(int fap);
-  bool operator==(const Keyframe& other) const;  // compares only the channels set
+  void clear(int fap);  // also forgets the channel's shape
+
+  // The channel's shape here: its own when it has one, else `interpolation` with auto handles.
+  KeyShape shape(int fap) const;
+  bool hasOwnShape(int fap) const;
+  // Stores the channel's own shape; one equal to the key's default is not stored, so a key
+  // written by an older Lacrima stays exactly what it was.
+  void setShape(int fap, KeyShape shape);
+  // Channels whose shape differs from the key's default (ascending channel index).
+  const std::vector<std::pair<int, KeyShape>>& ownShapes() const { return ownShapes_; }
+  // Sets the key's default and drops every channel's own interpolation (handles are kept).
+  void setInterpolationOfAll(Interpolation mode);
+
+  // Channel `fap` of `other` (value and shape) written here; removed here when `other` does
+  // not set it. Moving or copying one channel's key between times goes through this.
+  void takeChannel(const Keyframe& other, int fap);
+
+  // Compares time, the channels set, their values and their effective shapes.
+  bool operator==(const Keyframe& other) const;
+
+ private:
+  std::vector<std::pair<int, KeyShape>> ownShapes_;  // (channel index, shape), sorted
 };
 
 // Keys sorted by time, at most one key per time.
