@@ -34,6 +34,7 @@
 #include <QStackedWidget>
 #include <QStatusBar>
 #include <QTabBar>
+#include <QTabWidget>
 #include <QTimer>
 #include <QToolBar>
 #include <QUndoView>
@@ -215,9 +216,15 @@ void MainWindow::createDocks() {
   timelineLayout->setContentsMargins(0, 0, 0, 0);
   timelineLayout->setSpacing(0);
   transport_ = new TransportBar(*model_, *clock_, timelineBox);
-  timeline_ = new TimelineWidget(*model_, timelineBox);
+  // The animation views share the space under the transport: the key rows (the timeline), and
+  // per-channel views beside it.
+  animationViews_ = new QTabWidget(timelineBox);
+  animationViews_->setDocumentMode(true);
+  animationViews_->setTabPosition(QTabWidget::West);
+  timeline_ = new TimelineWidget(*model_, animationViews_);
+  animationViews_->addTab(timeline_, tr("Keys"));
   timelineLayout->addWidget(transport_);
-  timelineLayout->addWidget(timeline_, 1);
+  timelineLayout->addWidget(animationViews_, 1);
   QDockWidget* timelineDock =
       dock(tr("Timeline"), QStringLiteral("dock.timeline"), timelineBox, Qt::BottomDockWidgetArea);
   // The timeline spans the whole width, under the channel list too.

@@ -23,6 +23,7 @@ class QLabel;
 class QMenu;
 class QStackedWidget;
 class QTabBar;
+class QTabWidget;
 class QTimer;
 class QUndoView;
 
@@ -65,6 +66,8 @@ class MainWindow : public QMainWindow {
   editing::FrameStepClock& clock() { return *clock_; }
   SliderPanel* sliders() const { return sliders_; }
   TimelineWidget* timeline() const { return timeline_; }
+  // The tabs under the transport: Keys (the timeline) and the per-channel views.
+  QTabWidget* animationViews() const { return animationViews_; }
   TransportBar* transport() const { return transport_; }
   PresetPanel* presets() const { return presets_; }
   PreviewPanel* preview() const { return preview_; }
@@ -137,6 +140,7 @@ class MainWindow : public QMainWindow {
   std::unique_ptr<editing::FrameStepClock> clock_;
   std::unique_ptr<editing::RecoveryStore> recovery_;
   SliderPanel* sliders_ = nullptr;
+  QTabWidget* animationViews_ = nullptr;
   TimelineWidget* timeline_ = nullptr;
   TransportBar* transport_ = nullptr;
   PresetPanel* presets_ = nullptr;

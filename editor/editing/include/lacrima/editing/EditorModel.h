@@ -20,6 +20,7 @@
 #include <QString>
 #include <QUndoStack>
 
+#include <compare>
 #include <optional>
 #include <span>
 #include <utility>
@@ -31,6 +32,14 @@ struct Preset;
 
 // A channel and the value to write.
 using ChannelValue = std::pair<int, float>;
+
+// One channel's key: the key at `time` as far as channel `fap` is concerned. The dope sheet
+// and the graph editor select these; the key rows (selectedTimes) select whole keys.
+struct ChannelKey {
+  int fap = 0;
+  double time = 0.0;
+  auto operator<=>(const ChannelKey&) const = default;
+};
 
 class EditorModel : public QObject {
   Q_OBJECT
@@ -70,6 +79,15 @@ class EditorModel : public QObject {
   void selectAll();
   void clearSelection() { setSelectedTimes({}); }
 
+  // Channel keys selected in the dope sheet or the graph editor: sorted, unique, each naming a
+  // key that sets its channel (others are dropped, also when an edit removes them).
+  const std::vector<ChannelKey>& selectedChannelKeys() const { return channelKeySelection_; }
+  void setSelectedChannelKeys(std::vector<ChannelKey> keys);
+  bool isSelected(const ChannelKey& key) const;
+  // The channels the graph editor draws (chosen in the dope sheet or the channel list).
+  const ChannelMask& selectedChannels() const { return selectedChannels_; }
+  void setSelectedChannels(ChannelMask channels);
+
   // --- options ------------------------------------------------------------------------
   bool symmetricEdit() const { return symmetric_; }
   void setSymmetricEdit(bool on);
@@ -104,6 +122,13 @@ class EditorModel : public QObject {
   // ignored).
   void setSettings(const ProjectDocument& settings, const QString& text);
 
+  // Any key edit planned elsewhere (dope sheet, graph editor): one undo step named `text`. With
+  // `selectionAfter`, the key-row selection becomes it and undo restores the one before.
+  void editKeys(const KeyChange& change, const QString& text,
+                std::optional<std::vector<double>> selectionAfter = std::nullopt) {
+    pushKeyEdit(change, text, std::move(selectionAfter));
+  }
+
   // --- for the commands only ----------------------------------------------------------
   void applyKeyChange(const KeyChange& change, bool redo);
   void applySettings(const ProjectDocument& settings);
@@ -115,6 +140,8 @@ class EditorModel : public QObject {
   void timeChanged(double seconds);
   void valuesChanged();  // currentValues() changed (time or keys)
   void selectionChanged();
+  void channelKeySelectionChanged();
+  void selectedChannelsChanged();
   void symmetricEditChanged(bool on);
   void focusChannelChanged(int fap);
   // A user-visible note about an edit that could not be done ("nothing to mirror").
@@ -122,6 +149,7 @@ class EditorModel : public QObject {
 
  private:
   void refreshValues();
+  std::vector<ChannelKey> existingChannelKeys(std::vector<ChannelKey> keys) const;
   void pushKeyEdit(const KeyChange& change, const QString& text,
                    std::optional<std::vector<double>> selectionAfter);
   Keyframe keyOrNewAt(double seconds) const;
@@ -134,6 +162,8 @@ class EditorModel : public QObject {
   FapValues values_{};
   ChannelMask animated_;
   std::vector<double> selection_;
+  std::vector<ChannelKey> channelKeySelection_;
+  ChannelMask selectedChannels_;
   bool symmetric_ = false;
   int focus_ = 3;
   int dragSessions_ = 0;
