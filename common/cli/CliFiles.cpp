@@ -27,10 +27,7 @@ ProjectDocument loadProject(const std::string& path) { return ProjectDocument::l
 
 FapAnimation loadAnimation(const std::string& path) {
   if (!isProjectPath(path)) return readFap(path).animation;
-  const ProjectDocument project = loadProject(path);
-  FapAnimation animation = project.bake();
-  animation.name = project.name;
-  return animation;
+  return loadProject(path).bake();
 }
 
 void saveAnimation(const FapAnimation& animation, const std::string& path, bool strict) {

@@ -4,6 +4,8 @@
 #include <lacrima/common/JsonWriter.h>
 #include <lacrima/common/ProjectDocument.h>
 
+#include "ProjectKeysJson.h"
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -17,40 +19,7 @@ namespace {
 
 constexpr std::string_view kFormat = "lacrima-project";
 constexpr double kMaxFps = 1000.0;
-constexpr double kMaxChannelMagnitude = 1e7;  // far beyond any face; catches unit mix-ups
 constexpr qint64 kMaxFileBytes = qint64{64} << 20;
-// A key a frame of an hour at 240 fps; a 64 MiB file could spell out a few million empty ones.
-constexpr std::size_t kMaxKeys = 1'000'000;
-constexpr double kSameKeyTime = 1e-9;  // as KeyframeSequence: closer keys would merge
-
-// The double to write for a float value: the shortest decimal that reads back as the float
-// ("0.1", not "0.10000000149011612"), provided text -> double -> float returns exactly the
-// float; otherwise (a double rounding near a tie) the float's exact double value.
-double doubleForFloat(float value) {
-  std::array<char, 32> buffer{};
-  const auto written = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  double shortest = 0.0;
-  const auto read = std::from_chars(buffer.data(), written.ptr, shortest);
-  if (read.ec == std::errc{} && static_cast<float>(shortest) == value) return shortest;
-  return static_cast<double>(value);
-}
-
-void writeKey(JsonWriter& out, const Keyframe& key) {
-  out.beginObject();
-  out.key("time");
-  out.number(key.time);
-  out.key("interpolation");
-  out.string(toString(key.interpolation));
-  out.key("values");
-  out.beginObject();
-  for (int fap = 1; fap <= kChannelCount; ++fap) {
-    if (!key.has(fap)) continue;
-    out.key(fapInfo(fap).name);
-    out.number(doubleForFloat(key.value(fap)));
-  }
-  out.endObject();
-  out.endObject();
-}
 
 void writeSource(JsonWriter& out, std::string_view side,
                  const std::optional<Eigen::Vector3d>& source) {
@@ -149,38 +118,9 @@ std::string relativeTo(const std::string& path, const std::string& folder) {
 // Reading. Every problem names its JSON path ("keys[2].values.open_jaw") so that a user
 // editing the file by hand can find it.
 
-// Edit distance, to suggest the FAP name a typo was probably meant to be.
-std::size_t editDistance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  std::iota(row.begin(), row.end(), std::size_t{0});
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t substitute = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
-      diagonal = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitute});
-    }
-  }
-  return row[b.size()];
-}
-
-std::string fapNameHint(std::string_view name) {
-  std::string_view best;
-  std::size_t bestDistance = 3;  // suggest only near misses
-  for (const FapInfo& info : fapTable()) {
-    const std::size_t distance = editDistance(name, info.name);
-    if (distance < bestDistance) {
-      bestDistance = distance;
-      best = info.name;
-    }
-  }
-  return best.empty() ? std::string() : "; did you mean " + std::string(best) + "?";
-}
-
 // Checked before anything else: another program's JSON or a newer schema should be reported
-// as such, not as a list of fields this build happens not to know.
-void checkFormatAndVersion(const JsonValue& root) {
+// as such, not as a list of fields this build happens not to know. Returns the version.
+int checkFormatAndVersion(const JsonValue& root) {
   const JsonValue format = root["format"];
   if (format.missing()) format.fail("missing; this is not a Lacrima project");
   if (!format.isString() || format.string() != kFormat) {
@@ -196,6 +136,7 @@ void checkFormatAndVersion(const JsonValue& root) {
     version.fail("written by a newer Lacrima (schema " + formatJsonNumber(number) +
                  "); this build reads up to " + std::to_string(ProjectDocument::kSchemaVersion));
   }
+  return static_cast<int>(number);
 }
 
 double readFps(const JsonValue& value) {
@@ -204,68 +145,6 @@ double readFps(const JsonValue& value) {
     value.fail("expected a number in (0, " + formatJsonNumber(kMaxFps) + "], got " +
                value.describe());
   return fps;
-}
-
-Interpolation readInterpolation(const JsonValue& value) {
-  return value.oneOf({"linear", "smooth"}) == 0 ? Interpolation::Linear : Interpolation::Smooth;
-}
-
-float readChannelValue(int fap, const JsonValue& value) {
-  const double v = value.isNumber() ? value.number() : std::nan("");
-  if (isTearChannel(fap)) {
-    if (!(v >= 0.0 && v <= kMaxTearParticles && v == std::floor(v))) {
-      value.fail("expected a whole number of particles in [0, " +
-                 std::to_string(kMaxTearParticles) + "], got " + value.describe());
-    }
-  } else if (!(std::abs(v) <= kMaxChannelMagnitude)) {
-    value.fail("expected a number in [-1e7, 1e7], got " + value.describe());
-  }
-  return static_cast<float>(v);
-}
-
-Keyframe readKey(const JsonValue& value, Interpolation defaultMode) {
-  value.rejectUnknownMembers({"time", "interpolation", "values"});
-  Keyframe key;
-  const JsonValue time = value["time"];
-  if (time.missing()) time.fail("missing");
-  key.time = time.number();
-  if (key.time < 0.0) time.fail("expected a time >= 0 s, got " + formatJsonNumber(key.time));
-  key.interpolation =
-      value.has("interpolation") ? readInterpolation(value["interpolation"]) : defaultMode;
-  const JsonValue values = value["values"];
-  if (values.missing()) values.fail("missing");
-  for (const JsonValue& channel : values.members()) {
-    const std::string name = channel.name();
-    const std::optional<int> fap = fapByName(name);
-    if (!fap) channel.fail("unknown FAP name" + fapNameHint(name));
-    key.set(*fap, readChannelValue(*fap, channel));
-  }
-  return key;
-}
-
-void rejectDuplicateTimes(const std::vector<Keyframe>& keys, const std::vector<JsonValue>& values) {
-  std::vector<std::size_t> order(keys.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return keys[a].time < keys[b].time; });
-  for (std::size_t i = 1; i < order.size(); ++i) {
-    const std::size_t first = std::min(order[i - 1], order[i]);
-    const std::size_t second = std::max(order[i - 1], order[i]);
-    if (keys[second].time - keys[first].time < kSameKeyTime &&
-        keys[first].time - keys[second].time < kSameKeyTime) {
-      values[second]["time"].fail(formatJsonNumber(keys[second].time) + " repeats the time of " +
-                                  values[first].path().toString());
-    }
-  }
-}
-
-KeyframeSequence readKeys(const JsonValue& value, Interpolation defaultMode) {
-  const std::vector<JsonValue> list = value.array(kMaxKeys);
-  std::vector<Keyframe> result;
-  result.reserve(list.size());
-  for (const JsonValue& entry : list) result.push_back(readKey(entry, defaultMode));
-  rejectDuplicateTimes(result, list);
-  return KeyframeSequence(std::move(result));
 }
 
 std::optional<Eigen::Vector3d> readSource(const JsonValue& value) {
@@ -331,6 +210,12 @@ bool ProjectDocument::operator==(const ProjectDocument& other) const {
          tearSources == other.tearSources && scene == other.scene && head == other.head;
 }
 
+FapAnimation ProjectDocument::bake(double rate) const {
+  FapAnimation animation = keys.bake(rate);
+  animation.name = name;
+  return animation;
+}
+
 std::string ProjectDocument::toJson() const {
   JsonWriter out;
   out.beginObject();
@@ -345,9 +230,7 @@ std::string ProjectDocument::toJson() const {
   out.key("interpolation");
   out.string(toString(defaultInterpolation));
   out.key("keys");
-  out.beginArray();
-  for (const Keyframe& key : keys.keys()) writeKey(out, key);
-  out.endArray();
+  projectjson::writeKeys(out, keys);
   out.key("tearSources");
   out.beginObject();
   writeSource(out, "left", tearSources.left);
@@ -364,17 +247,17 @@ std::string ProjectDocument::toJson() const {
 }
 
 ProjectDocument ProjectDocument::read(const JsonValue& root) {
-  checkFormatAndVersion(root);
+  const int version = checkFormatAndVersion(root);
   root.rejectUnknownMembers({"format", "version", "name", "fps", "interpolation", "keys",
                              "tearSources", "scene", "head"});
   ProjectDocument document;
   if (root.has("name")) document.name = root["name"].string();
   if (root.has("fps")) document.fps = readFps(root["fps"]);
   if (root.has("interpolation"))
-    document.defaultInterpolation = readInterpolation(root["interpolation"]);
+    document.defaultInterpolation = projectjson::readInterpolation(root["interpolation"], version);
   const JsonValue keys = root["keys"];
   if (keys.missing()) keys.fail("missing; every project lists its keys");
-  document.keys = readKeys(keys, document.defaultInterpolation);
+  document.keys = projectjson::readKeys(keys, document.defaultInterpolation, version);
   if (root.has("tearSources")) document.tearSources = readTearSources(root["tearSources"]);
   if (root.has("scene")) document.scene = readScene(root["scene"]);
   if (root.has("head")) document.head = readHead(root["head"]);

@@ -32,12 +32,14 @@ KeyframeSequence randomKeys(std::mt19937& random) {
   std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
   std::uniform_int_distribution<int> exponent(-3, 7);
   std::uniform_int_distribution<int> tears(0, kMaxTearParticles);
+  std::uniform_int_distribution<int> mode(0, 3);     // the four interpolations
+  std::uniform_int_distribution<int> handles(0, 2);  // the three handle types
   KeyframeSequence keys;
   const int count = keyCount(random);
   for (int k = 0; k < count; ++k) {
     Keyframe key;
     key.time = time(random);
-    key.interpolation = coin(random) ? Interpolation::Smooth : Interpolation::Linear;
+    key.interpolation = static_cast<Interpolation>(mode(random));
     for (int fap = 1; fap <= kChannelCount; ++fap) {
       if (!sparse(random)) continue;
       const float value =
@@ -45,6 +47,16 @@ KeyframeSequence randomKeys(std::mt19937& random) {
               ? static_cast<float>(tears(random))
               : static_cast<float>(mantissa(random) * std::pow(10.0, exponent(random)));
       key.set(fap, value);
+      if (sparse(random)) {
+        // A shape of the channel's own, with handles of any size the file allows.
+        const auto handle = [&](double direction) {
+          return Handle{direction * std::abs(mantissa(random)) * std::pow(10.0, exponent(random)),
+                        mantissa(random) * std::pow(10.0, exponent(random))};
+        };
+        key.setShape(
+            fap, KeyShape{static_cast<Interpolation>(mode(random)),
+                          static_cast<HandleType>(handles(random)), handle(-1e-4), handle(1e-4)});
+      }
     }
     keys.insert(key);
   }
@@ -72,7 +84,9 @@ ProjectDocument randomDocument(unsigned seed) {
   ProjectDocument document;
   document.name = names[seed % std::size(names)];
   document.fps = coin(random) ? 22.0 : fps(random);
-  document.defaultInterpolation = coin(random) ? Interpolation::Smooth : Interpolation::Linear;
+  document.defaultInterpolation =
+      std::array{Interpolation::Linear, Interpolation::Smooth, Interpolation::Constant,
+                 Interpolation::Bezier}[random() % 4];
   document.keys = randomKeys(random);
   if (coin(random)) {
     document.tearSources.left =
@@ -119,6 +133,12 @@ std::string withValues(const std::string& values) {
   return R"({"format": "lacrima-project", "version": 1,
             "keys": [{"time": 0, "values": )" +
          values + "}]}";
+}
+
+// A one-line document of schema `version` whose only key is `key`.
+std::string withKey(int version, const std::string& key) {
+  return R"({"format": "lacrima-project", "version": )" + std::to_string(version) +
+         R"(, "keys": [)" + key + "]}";
 }
 
 FileError parseError(const std::string& json) {
@@ -189,7 +209,7 @@ class ProjectDocumentTest : public QObject {
     const QString json = QString::fromStdString(document.toJson());
 
     for (const char* field : {"\"format\": \"lacrima-project\"",
-                              "\"version\": 1",
+                              "\"version\": 2",
                               "\"name\": \"sad crying\"",
                               "\"fps\": 22",
                               "\"interpolation\": \"linear\"",
@@ -272,9 +292,9 @@ class ProjectDocumentTest : public QObject {
                                   << "doc.json:1:2"
                                   << "format: expected \"lacrima-project\", got the string";
     QTest::newRow("newer version")
-        << R"({"format": "lacrima-project", "version": 2, "keys": [], "newField": 1})"
+        << R"({"format": "lacrima-project", "version": 3, "keys": [], "newField": 1})"
         << "doc.json:1:31"
-        << "version: written by a newer Lacrima (schema 2); this build reads up to 1";
+        << "version: written by a newer Lacrima (schema 3); this build reads up to 2";
     QTest::newRow("fractional version")
         << R"({"format": "lacrima-project", "version": 1.5, "keys": []})"
         << "doc.json:1:31"
@@ -307,6 +327,36 @@ class ProjectDocumentTest : public QObject {
     QTest::newRow("fps as text") << QString::fromStdString(withTopLevel(R"("fps": "22")"))
                                  << "doc.json:1:57"
                                  << "fps: expected a number in (0, 1000]";
+    QTest::newRow("bezier in a version 1 file")
+        << QString::fromStdString(
+               withKey(1, R"({"time": 0, "interpolation": "bezier", "values": {"open_jaw": 1}})"))
+        << "doc.json:1:66"
+        << "keys[0].interpolation: expected \"linear\" or \"smooth\"";
+    QTest::newRow("shapes in a version 1 file")
+        << QString::fromStdString(
+               withKey(1, R"({"time": 0, "values": {"open_jaw": 1}, "shapes": {"open_jaw": {}}})"))
+        << "doc.json:1:93"
+        << "keys[0].shapes: unknown field; expected one of time, interpolation, values";
+    QTest::newRow("shape of a channel the key does not set")
+        << QString::fromStdString(withKey(
+               2, R"({"time": 0, "values": {"open_jaw": 1}, "shapes": {"raise_b_midlip": {}}})"))
+        << "doc.json:1:104"
+        << "keys[0].shapes.raise_b_midlip: a shape for a channel the key's \"values\" do not set";
+    QTest::newRow("in handle pointing forward")
+        << QString::fromStdString(withKey(2, R"({"time": 0, "values": {"open_jaw": 1}, "shapes":
+               {"open_jaw": {"handles": "free", "in": [0.5, 1], "out": [0.5, 1]}}})"))
+        << "doc.json:2:49"
+        << "keys[0].shapes.open_jaw.in: expected a handle pointing back in time";
+    QTest::newRow("handle too long")
+        << QString::fromStdString(withKey(2, R"({"time": 0, "values": {"open_jaw": 1}, "shapes":
+               {"open_jaw": {"handles": "aligned", "in": [-1, 1], "out": [1e9, 1]}}})"))
+        << "doc.json:2:67"
+        << "keys[0].shapes.open_jaw.out: expected a handle pointing forward in time: [0..86400 s";
+    QTest::newRow("unknown handle type")
+        << QString::fromStdString(withKey(2, R"({"time": 0, "values": {"open_jaw": 1}, "shapes":
+               {"open_jaw": {"handles": "broken"}}})"))
+        << "doc.json:2:30"
+        << "keys[0].shapes.open_jaw.handles: expected \"auto\", \"aligned\" or \"free\"";
     QTest::newRow("bad default interpolation")
         << QString::fromStdString(withTopLevel(R"("interpolation": "cubic")")) << "doc.json:1:57"
         << "interpolation: expected \"linear\" or \"smooth\"";

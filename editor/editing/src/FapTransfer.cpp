@@ -49,8 +49,7 @@ FapExportResult exportFap(const ProjectDocument& document, const std::string& pa
   if (document.keys.empty())
     throw FileError({path, 0, 0},
                     "nothing to export: the project has no keys yet (press K to add one)");
-  FapAnimation animation = document.keys.bake(options.fps);
-  animation.name = document.name;
+  FapAnimation animation = document.bake(options.fps);
   FapExportResult result;
   result.frames = animation.frameCount();
   result.wroteTears = !options.strict && animation.hasTears();

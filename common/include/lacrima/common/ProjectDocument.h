@@ -2,10 +2,13 @@
 // A Lacrima project: the editor's document, saved as versioned JSON.
 //
 // {
-//   "format": "lacrima-project", "version": 1,
+//   "format": "lacrima-project", "version": 2,
 //   "name": "sad crying", "fps": 22, "interpolation": "linear",
 //   "keys": [ { "time": 0.5, "interpolation": "smooth",
-//               "values": { "open_jaw": 120, "tears_l_eye": 12 } } ],
+//               "values": { "open_jaw": 120, "tears_l_eye": 12 },
+//               "shapes": { "open_jaw": { "interpolation": "bezier", "handles": "free",
+//                                         "in": [-0.2, 0], "out": [0.1, 35] } } } ],
+//                                  (version 2; only channels whose shape is not the key's own)
 //   "tearSources": { "left": [x, y, z], "right": null },          (head frame; null = rig default)
 //   "scene": { "particles": false, "surface": true, "trails": true, "textureBlending": true,
 //              "redness": "animation" | "tears", "blush": false,
@@ -16,8 +19,9 @@
 // Head paths in the file are relative to the project file's folder (absolute ones are read as
 // they are). load() makes them absolute, so the document names the same files wherever it is
 // saved next; save() writes them relative to the new file's folder again (see HeadFiles).
-// Unknown or invalid fields are errors naming the JSON path and, for syntax errors, the
-// line and column. A document written and read back compares equal.
+// Version 1 files (no shapes; linear and smooth only) read as they always did, and bake to the
+// same frames. Unknown or invalid fields are errors naming the JSON path and, for syntax errors,
+// the line and column. A document written and read back compares equal.
 #include <lacrima/common/Diagnostics.h>
 #include <lacrima/common/JsonValue.h>
 #include <lacrima/common/Keyframes.h>
@@ -61,7 +65,7 @@ struct HeadFiles {
 };
 
 struct ProjectDocument {
-  static constexpr int kSchemaVersion = 1;
+  static constexpr int kSchemaVersion = 2;
 
   std::string name = "untitled";
   double fps = 22.0;
@@ -96,7 +100,9 @@ struct ProjectDocument {
   // project in the message.
   std::optional<Diagnostic> missingHeadFile(const std::string& projectPath) const;
 
-  FapAnimation bake() const { return keys.bake(fps); }
+  // The animation the project plays and exports, at its own rate or at `rate`, named after it.
+  FapAnimation bake() const { return bake(fps); }
+  FapAnimation bake(double rate) const;
   static ProjectDocument fromAnimation(const FapAnimation& animation);  // a key per frame
 };
 

@@ -1,0 +1,37 @@
+#pragma once
+// The keys of a project file, read and written. Private to lacrima_common: ProjectDocument
+// reads the rest of the file and hands the "keys" array here.
+//
+// A key:
+//   { "time": 0.5, "interpolation": "smooth", "values": { "open_jaw": 120 },
+//     "shapes": { "open_jaw": { "interpolation": "bezier", "handles": "aligned",
+//                               "in": [-0.1, 40], "out": [0.2, -80] } } }      (version 2)
+// "shapes" lists only channels whose shape is not the key's default (KeyShape), so a file
+// of version 1 and the same keys written again differ only in the version number. Version 1
+// files know only the linear and smooth interpolations.
+#include <lacrima/common/JsonValue.h>
+#include <lacrima/common/JsonWriter.h>
+#include <lacrima/common/Keyframes.h>
+
+#include <string>
+#include <string_view>
+
+namespace lacrima::inline common::projectjson {
+
+// The shortest decimal that reads back as `value` (see the definition).
+double doubleForFloat(float value);
+
+// "; did you mean open_jaw?" for a near miss of a FAP name, else "".
+std::string fapNameHint(std::string_view name);
+
+// A channel's value: tear channels whole particles in [0, kMaxTearParticles], others within
+// +-1e7 (far beyond any face; catches unit mix-ups).
+float readChannelValue(int fap, const JsonValue& value);
+
+// The interpolations a file of schema `version` may name.
+Interpolation readInterpolation(const JsonValue& value, int version);
+
+void writeKeys(JsonWriter& out, const KeyframeSequence& keys);
+KeyframeSequence readKeys(const JsonValue& value, Interpolation defaultMode, int version);
+
+}  // namespace lacrima::inline common::projectjson
