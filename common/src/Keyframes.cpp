@@ -443,13 +443,24 @@ FapValues KeyframeSequence::evaluate(double seconds) const {
 }
 
 FapAnimation KeyframeSequence::bake(double fps) const {
+  if (keys_.empty()) {
+    requireValidFps(fps, "bake");
+    FapAnimation animation;
+    animation.fps = fps;
+    return animation;
+  }
+  return bake(fps, startTime(), endTime());
+}
+
+FapAnimation KeyframeSequence::bake(double fps, double start, double end) const {
   requireValidFps(fps, "bake");
+  requireFiniteTime(start);
+  requireFiniteTime(end);
   FapAnimation animation;
   animation.fps = fps;
-  if (keys_.empty()) return animation;
+  if (end < start) return animation;
 
-  const double start = startTime();
-  const double frames = std::floor((endTime() - start) * fps + 1e-6) + 1.0;
+  const double frames = std::floor((end - start) * fps + 1e-6) + 1.0;
   if (frames > kMaxBakedFrames) {
     throw std::length_error("bake: " + std::to_string(static_cast<long long>(frames)) +
                             " frames exceed the limit of " +

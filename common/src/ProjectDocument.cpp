@@ -11,6 +11,7 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <numeric>
 #include <system_error>
 
@@ -207,11 +208,33 @@ HeadFiles readHead(const JsonValue& value) {
 bool ProjectDocument::operator==(const ProjectDocument& other) const {
   return name == other.name && fps == other.fps &&
          defaultInterpolation == other.defaultInterpolation && keys.keys() == other.keys.keys() &&
-         tearSources == other.tearSources && scene == other.scene && head == other.head;
+         layers == other.layers && tearSources == other.tearSources && scene == other.scene &&
+         head == other.head;
 }
 
 FapAnimation ProjectDocument::bake(double rate) const {
-  FapAnimation animation = keys.bake(rate);
+  const auto active = [](const PoseLayer& layer) { return !layer.muted && layer.hasIntensity(); };
+  if (std::none_of(layers.begin(), layers.end(), active)) {
+    FapAnimation animation = keys.bake(rate);
+    animation.name = name;
+    return animation;
+  }
+  // The range covers every key and every layer's intensity keys.
+  double start = keys.empty() ? std::numeric_limits<double>::infinity() : keys.startTime();
+  double end = keys.empty() ? -std::numeric_limits<double>::infinity() : keys.endTime();
+  for (const PoseLayer& layer : layers) {
+    if (!active(layer)) continue;
+    start = std::min(start, layer.startTime());
+    end = std::max(end, layer.endTime());
+  }
+  FapAnimation animation = keys.bake(rate, start, end);
+  for (const PoseLayer& layer : layers) {
+    if (active(layer)) animation.animated |= layer.channels();
+  }
+  for (std::size_t f = 0; f < animation.frames.size(); ++f) {
+    const double t = start + static_cast<double>(f) / rate;
+    animation.frames[f] = mixLayers(animation.frames[f], layers, t);
+  }
   animation.name = name;
   return animation;
 }
@@ -242,6 +265,10 @@ std::string ProjectDocument::toJson() const {
     out.key("head");
     writeHead(out, *head);
   }
+  if (!layers.empty()) {
+    out.key("layers");
+    projectjson::writeLayers(out, layers);
+  }
   out.endObject();
   return std::move(out).finish();
 }
@@ -249,7 +276,7 @@ std::string ProjectDocument::toJson() const {
 ProjectDocument ProjectDocument::read(const JsonValue& root) {
   const int version = checkFormatAndVersion(root);
   root.rejectUnknownMembers({"format", "version", "name", "fps", "interpolation", "keys",
-                             "tearSources", "scene", "head"});
+                             "tearSources", "scene", "head", "layers"});
   ProjectDocument document;
   if (root.has("name")) document.name = root["name"].string();
   if (root.has("fps")) document.fps = readFps(root["fps"]);
@@ -261,6 +288,10 @@ ProjectDocument ProjectDocument::read(const JsonValue& root) {
   if (root.has("tearSources")) document.tearSources = readTearSources(root["tearSources"]);
   if (root.has("scene")) document.scene = readScene(root["scene"]);
   if (root.has("head")) document.head = readHead(root["head"]);
+  if (root.has("layers")) {
+    if (version < 2) root["layers"].fail("layers need a project of version 2 or later");
+    document.layers = projectjson::readLayers(root["layers"], version);
+  }
   return document;
 }
 

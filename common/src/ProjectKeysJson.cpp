@@ -230,4 +230,89 @@ void writeKeys(JsonWriter& out, const KeyframeSequence& keys) {
   out.endArray();
 }
 
+namespace {
+
+// Far more than anyone layers; bounds what a file can make us allocate.
+constexpr std::size_t kMaxLayers = 1000;
+constexpr std::size_t kMaxIntensityKeys = 100'000;
+// An intensity scales a pose; beyond +-100 times a pose no face survives.
+constexpr double kMaxIntensity = 100.0;
+
+void writeLayer(JsonWriter& out, const PoseLayer& layer) {
+  out.beginObject();
+  out.key("name");
+  out.string(layer.name);
+  out.key("muted");
+  out.boolean(layer.muted);
+  out.key("pose");
+  out.beginObject();
+  for (int fap = 1; fap <= kChannelCount; ++fap) {
+    if (!layer.channels().test(channelIndex(fap))) continue;
+    out.key(fapInfo(fap).name);
+    out.number(doubleForFloat(layer.poseValue(fap)));
+  }
+  out.endObject();
+  out.key("intensity");
+  out.beginArray();
+  for (const IntensityKey& key : layer.intensityKeys()) {
+    out.beginObject();
+    out.key("time");
+    out.number(key.time);
+    out.key("value");
+    out.number(key.value);
+    out.key("interpolation");
+    out.string(toString(key.interpolation));
+    out.endObject();
+  }
+  out.endArray();
+  out.endObject();
+}
+
+IntensityKey readIntensityKey(const JsonValue& value, int version) {
+  value.rejectUnknownMembers({"time", "value", "interpolation"});
+  IntensityKey key;
+  const JsonValue time = value.required("time");
+  key.time = time.number();
+  if (key.time < 0.0) time.fail("expected a time >= 0 s, got " + formatJsonNumber(key.time));
+  key.value = value.required("value").number(-kMaxIntensity, kMaxIntensity);
+  if (value.has("interpolation")) {
+    key.interpolation = readInterpolation(value["interpolation"], version);
+  }
+  return key;
+}
+
+PoseLayer readLayer(const JsonValue& value, int version) {
+  value.rejectUnknownMembers({"name", "muted", "pose", "intensity"});
+  PoseLayer layer;
+  if (value.has("name")) layer.name = value["name"].string();
+  if (value.has("muted")) layer.muted = value["muted"].boolean();
+  for (const JsonValue& channel : value.required("pose").members()) {
+    const std::string name = channel.name();
+    const std::optional<int> fap = fapByName(name);
+    if (!fap) channel.fail("unknown FAP name" + fapNameHint(name));
+    if (isHighLevelFap(*fap)) channel.fail("viseme and expression codes cannot be layered");
+    layer.setPoseValue(*fap, readChannelValue(*fap, channel));
+  }
+  std::vector<IntensityKey> keys;
+  const std::vector<JsonValue> list = value.required("intensity").array(kMaxIntensityKeys);
+  for (const JsonValue& entry : list) keys.push_back(readIntensityKey(entry, version));
+  layer.setIntensityKeys(std::move(keys));
+  return layer;
+}
+
+}  // namespace
+
+void writeLayers(JsonWriter& out, const std::vector<PoseLayer>& layers) {
+  out.beginArray();
+  for (const PoseLayer& layer : layers) writeLayer(out, layer);
+  out.endArray();
+}
+
+std::vector<PoseLayer> readLayers(const JsonValue& value, int version) {
+  std::vector<PoseLayer> layers;
+  for (const JsonValue& entry : value.array(kMaxLayers))
+    layers.push_back(readLayer(entry, version));
+  return layers;
+}
+
 }  // namespace lacrima::inline common::projectjson

@@ -1,6 +1,6 @@
 #pragma once
-// The keys of a project file, read and written. Private to lacrima_common: ProjectDocument
-// reads the rest of the file and hands the "keys" array here.
+// The keys and layers of a project file, read and written. Private to lacrima_common:
+// ProjectDocument reads the rest of the file and hands the "keys" array here.
 //
 // A key:
 //   { "time": 0.5, "interpolation": "smooth", "values": { "open_jaw": 120 },
@@ -12,9 +12,11 @@
 #include <lacrima/common/JsonValue.h>
 #include <lacrima/common/JsonWriter.h>
 #include <lacrima/common/Keyframes.h>
+#include <lacrima/common/PoseLayer.h>
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace lacrima::inline common::projectjson {
 
@@ -33,5 +35,10 @@ Interpolation readInterpolation(const JsonValue& value, int version);
 
 void writeKeys(JsonWriter& out, const KeyframeSequence& keys);
 KeyframeSequence readKeys(const JsonValue& value, Interpolation defaultMode, int version);
+
+// Layers (PoseLayer.h): [{ "name", "muted", "pose": {channel: value}, "intensity":
+// [{ "time", "value", "interpolation" }] }]. A pose may not hold FAP 1 or 2.
+void writeLayers(JsonWriter& out, const std::vector<PoseLayer>& layers);
+std::vector<PoseLayer> readLayers(const JsonValue& value, int version);
 
 }  // namespace lacrima::inline common::projectjson

@@ -6,6 +6,7 @@
 #include <lacrima/editing/KeyClipboard.h>
 #include <lacrima/editing/RecoveryStore.h>
 #include <lacrima/editor/KeyListPanel.h>
+#include <lacrima/editor/LayerPanel.h>
 #include <lacrima/editor/PresetPanel.h>
 #include <lacrima/editor/PreviewPanel.h>
 #include <lacrima/editor/RecoveryBanner.h>
@@ -200,12 +201,16 @@ void MainWindow::createDocks() {
   keyList_ = new KeyListPanel(*model_, this);
   QDockWidget* keysDock =
       dock(tr("Keys"), QStringLiteral("dock.keys"), keyList_, Qt::RightDockWidgetArea);
+  layers_ = new LayerPanel(*model_, this);
+  QDockWidget* layersDock =
+      dock(tr("Layers"), QStringLiteral("dock.layers"), layers_, Qt::RightDockWidgetArea);
   history_ = new QUndoView(model_->undoStack(), this);
   history_->setEmptyLabel(tr("<opened>"));
   QDockWidget* historyDock =
       dock(tr("History"), QStringLiteral("dock.history"), history_, Qt::RightDockWidgetArea);
   // Presets above, the key table and the history tabbed below them.
   splitDockWidget(presetDock, keysDock, Qt::Vertical);
+  tabifyDockWidget(keysDock, layersDock);
   tabifyDockWidget(keysDock, historyDock);
   keysDock->raise();
   resizeDocks({presetDock, keysDock}, {470, 200}, Qt::Vertical);

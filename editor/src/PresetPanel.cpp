@@ -58,6 +58,12 @@ PresetPanel::PresetPanel(editing::EditorModel& model, editing::PresetLibrary lib
       tr("Channels the preset does not set go back to 0 at this time; off: the preset is added on "
          "top"));
   layout->addWidget(replace_);
+  asLayer_ = new QCheckBox(tr("As a layer"), this);
+  asLayer_->setObjectName(QStringLiteral("presetAsLayer"));
+  asLayer_->setToolTip(
+      tr("Add the pose as a layer with its own intensity over time, mixed on top of the keys "
+         "(see the Layers panel); off: write it into the keys"));
+  layout->addWidget(asLayer_);
 
   auto* buttons = new QHBoxLayout;
   apply_ = new QPushButton(tr("Apply at playhead"), this);
@@ -80,6 +86,10 @@ PresetPanel::PresetPanel(editing::EditorModel& model, editing::PresetLibrary lib
   connect(list_, &QTreeWidget::itemDoubleClicked, this, [this] { apply(selectedId()); });
   connect(apply_, &QPushButton::clicked, this, [this] { apply(selectedId()); });
   connect(mirror, &QPushButton::clicked, &model_, &editing::EditorModel::mirror);
+  connect(asLayer_, &QCheckBox::toggled, this, [this](bool layered) {
+    replace_->setEnabled(!layered);  // a layer adds; it never replaces the keys' pose
+    apply_->setText(layered ? tr("Add layer at playhead") : tr("Apply at playhead"));
+  });
   connect(load, &QToolButton::clicked, this, &PresetPanel::loadRequested);
   rebuild();
 }
@@ -92,11 +102,17 @@ void PresetPanel::setLibrary(editing::PresetLibrary library, const QString& sour
 
 double PresetPanel::intensity() const { return intensity_->value() / 100.0; }
 bool PresetPanel::replacesPose() const { return replace_->isChecked(); }
+bool PresetPanel::asLayer() const { return asLayer_->isChecked(); }
+void PresetPanel::setAsLayer(bool layered) { asLayer_->setChecked(layered); }
 
 bool PresetPanel::apply(const QString& id) {
   const editing::Preset* preset = library_.find(id.toStdString());
   if (!preset) return false;
-  model_.applyPreset(*preset, intensity(), replacesPose());
+  if (asLayer()) {
+    model_.applyPresetAsLayer(*preset, intensity());
+  } else {
+    model_.applyPreset(*preset, intensity(), replacesPose());
+  }
   return true;
 }
 

@@ -44,6 +44,13 @@ bool SetChannelsCommand::mergeWith(const QUndoCommand* other) {
   return true;
 }
 
+LayersCommand::LayersCommand(EditorModel& model, std::vector<PoseLayer> before,
+                             std::vector<PoseLayer> after, const QString& text)
+    : QUndoCommand(text), model_(model), before_(std::move(before)), after_(std::move(after)) {}
+
+void LayersCommand::redo() { model_.applyLayers(after_); }
+void LayersCommand::undo() { model_.applyLayers(before_); }
+
 SettingsCommand::SettingsCommand(EditorModel& model, ProjectDocument before, ProjectDocument after,
                                  const QString& text)
     : QUndoCommand(text), model_(model), before_(std::move(before)), after_(std::move(after)) {

@@ -67,6 +67,7 @@ void EditorModel::resetDocument(ProjectDocument document, bool clean) {
     undo_.resetClean();
   }
   emit documentReset();
+  emit layersChanged();
   emit keysChanged();
   emit settingsChanged();
   emit selectionChanged();
@@ -112,7 +113,10 @@ void EditorModel::setCurrentTimeExact(double seconds) {
   emit valuesChanged();
 }
 
-void EditorModel::refreshValues() { values_ = document_.keys.evaluate(time_); }
+void EditorModel::refreshValues() {
+  keyedValues_ = document_.keys.evaluate(time_);
+  values_ = mixLayers(keyedValues_, document_.layers, time_);
+}
 
 int EditorModel::currentKeyIndex() const { return findKey(document_.keys, time_); }
 
@@ -240,8 +244,10 @@ void EditorModel::setChannels(std::vector<ChannelValue> values, const QString& t
   ChannelMask channels;
   for (const auto& [fap, value] : values) {
     if (!isValidFap(fap)) continue;
-    key.set(fap, sanitised(fap, value));
-    channels.set(channelIndex(fap));
+    // Layers add onto the keys: key what makes the mix the value asked for.
+    const int i = channelIndex(fap);
+    key.set(fap, sanitised(fap, value - (values_[i] - keyedValues_[i])));
+    channels.set(i);
   }
   if (channels.none()) return;
   const KeyChange change = planReplace(document_.keys, {}, std::span<const Keyframe>(&key, 1));
@@ -279,7 +285,7 @@ void EditorModel::addKey() {
   }
   Keyframe key = keyOrNewAt(time_);
   for (int fap = 1; fap <= kChannelCount; ++fap)
-    if (animated_.test(channelIndex(fap))) key.set(fap, values_[channelIndex(fap)]);
+    if (animated_.test(channelIndex(fap))) key.set(fap, keyedValues_[channelIndex(fap)]);
   const std::vector<double> selection{time_};
   pushKeyEdit(planReplace(document_.keys, {}, std::span<const Keyframe>(&key, 1)), tr("Add key"),
               selection);
@@ -381,7 +387,7 @@ void EditorModel::applyPreset(const Preset& preset, double intensity, bool repla
     if (!written.empty() && std::abs(written.back().time - key.time) < kSameKeyTime) continue;
     if (k == 0 && replacePose) {
       for (int fap = 1; fap <= kChannelCount; ++fap)
-        if (!source.has(fap) && values_[channelIndex(fap)] != 0.0f) key.set(fap, 0.0f);
+        if (!source.has(fap) && keyedValues_[channelIndex(fap)] != 0.0f) key.set(fap, 0.0f);
     }
     for (int fap = 1; fap <= kChannelCount; ++fap)
       if (source.has(fap)) key.set(fap, scaled(fap, source.value(fap)));
@@ -389,8 +395,32 @@ void EditorModel::applyPreset(const Preset& preset, double intensity, bool repla
     if (preset.isSequence()) key.interpolation = source.interpolation;
     written.push_back(key);
   }
+  const std::vector<double> selection = timesOf(written);
+  if (std::optional<Keyframe> hold = holdBefore(written.front())) written.push_back(*hold);
   pushKeyEdit(planReplace(document_.keys, {}, written),
-              tr("Apply %1").arg(QString::fromStdString(preset.name)), timesOf(written));
+              tr("Apply %1").arg(QString::fromStdString(preset.name)), selection);
+}
+
+// A channel holds its first key's value before that key, so a pose keyed at t on channels with
+// no key before t would also show before t, back to frame 0. Where an earlier key exists, those
+// channels are keyed there too, at the value they had: the animation up to that key stays
+// exactly what it was, and the new pose rises from it.
+std::optional<Keyframe> EditorModel::holdBefore(const Keyframe& pose) const {
+  const auto& keys = document_.keys.keys();
+  const auto firstAtPose = std::partition_point(keys.begin(), keys.end(), [&](const Keyframe& k) {
+    return k.time < pose.time - kSameKeyTime;
+  });
+  if (firstAtPose == keys.begin()) return std::nullopt;
+  ChannelMask keyedBefore;
+  for (auto it = keys.begin(); it != firstAtPose; ++it) keyedBefore |= it->channels;
+  const ChannelMask unheld = pose.channels & ~keyedBefore;
+  if (unheld.none()) return std::nullopt;
+  Keyframe hold = *std::prev(firstAtPose);
+  const FapValues before = document_.keys.evaluate(hold.time);
+  for (int i = 0; i < kChannelCount; ++i) {
+    if (unheld.test(i)) hold.set(fapNumber(i), before[i]);
+  }
+  return hold;
 }
 
 void EditorModel::mirror() {
@@ -407,7 +437,7 @@ void EditorModel::mirror() {
     } else {
       Keyframe pose = keyOrNewAt(time_);
       for (int fap = 1; fap <= kChannelCount; ++fap)
-        if (animated_.test(channelIndex(fap))) pose.set(fap, values_[channelIndex(fap)]);
+        if (animated_.test(channelIndex(fap))) pose.set(fap, keyedValues_[channelIndex(fap)]);
       if (pose.channels.none()) {
         emit message(tr("Nothing to mirror: the face is neutral."));
         return;

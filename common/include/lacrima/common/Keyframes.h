@@ -116,6 +116,9 @@ class KeyframeSequence {
   // floor((end - start) * fps + 1e-6) + 1 frames; keys at 0 s and 1 s give 23 at 22 fps.
   // `animated` is the union of the keys' channels.
   FapAnimation bake(double fps) const;
+  // The same over [start, end] (frames at start + i / fps), holding before and after the keys;
+  // without keys, neutral frames.
+  FapAnimation bake(double fps, double start, double end) const;
 
   // Every frame of `animation` becomes a key at frame / fps holding its animated channels.
   static KeyframeSequence fromAnimation(const FapAnimation& animation,

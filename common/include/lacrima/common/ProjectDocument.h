@@ -13,8 +13,12 @@
 //   "scene": { "particles": false, "surface": true, "trails": true, "textureBlending": true,
 //              "redness": "animation" | "tears", "blush": false,
 //              "simulation": { "adhesion": 20, ... } },          (overrides of TearParameters)
-//   "head": { "mesh": "heads/ict.obj", "fdp": "heads/ict.fdp.json" }  (optional; absent = the
+//   "head": { "mesh": "heads/ict.obj", "fdp": "heads/ict.fdp.json" }, (optional; absent = the
 //                                                                     default head)
+//   "layers": [ { "name": "sob", "muted": false, "pose": { "open_jaw": 80, ... },
+//                 "intensity": [ { "time": 3.5, "value": 0 },
+//                                { "time": 4, "value": 1, "interpolation": "smooth" } ] } ]
+//                                                      (version 2; optional; see PoseLayer.h)
 // }
 // Head paths in the file are relative to the project file's folder (absolute ones are read as
 // they are). load() makes them absolute, so the document names the same files wherever it is
@@ -25,12 +29,14 @@
 #include <lacrima/common/Diagnostics.h>
 #include <lacrima/common/JsonValue.h>
 #include <lacrima/common/Keyframes.h>
+#include <lacrima/common/PoseLayer.h>
 #include <lacrima/common/TearParameters.h>
 
 #include <Eigen/Core>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace lacrima::inline common {
 
@@ -71,6 +77,7 @@ struct ProjectDocument {
   double fps = 22.0;
   Interpolation defaultInterpolation = Interpolation::Linear;  // for new keys
   KeyframeSequence keys;
+  std::vector<PoseLayer> layers;  // mixed onto the keys in this order (PoseLayer.h)
   TearSources tearSources;
   SceneSettings scene;
   std::optional<HeadFiles> head;  // nullopt: the default head
@@ -100,9 +107,14 @@ struct ProjectDocument {
   // project in the message.
   std::optional<Diagnostic> missingHeadFile(const std::string& projectPath) const;
 
-  // The animation the project plays and exports, at its own rate or at `rate`, named after it.
+  // The animation the project plays and exports, at its own rate or at `rate`, named after it:
+  // the keys with the layers mixed on, from the earliest to the latest key of either.
   FapAnimation bake() const { return bake(fps); }
   FapAnimation bake(double rate) const;
+  // Every channel at `seconds`: the keys with the layers mixed on.
+  FapValues evaluate(double seconds) const {
+    return mixLayers(keys.evaluate(seconds), layers, seconds);
+  }
   static ProjectDocument fromAnimation(const FapAnimation& animation);  // a key per frame
 };
 

@@ -39,6 +39,7 @@ namespace head {
 class HeadWorkspace;
 }
 class KeyListPanel;
+class LayerPanel;
 class PresetPanel;
 class PreviewPanel;
 class RecoveryBanner;
@@ -66,6 +67,7 @@ class MainWindow : public QMainWindow {
   editing::FrameStepClock& clock() { return *clock_; }
   SliderPanel* sliders() const { return sliders_; }
   TimelineWidget* timeline() const { return timeline_; }
+  LayerPanel* layers() const { return layers_; }
   // The tabs under the transport: Keys (the timeline) and the per-channel views.
   QTabWidget* animationViews() const { return animationViews_; }
   TransportBar* transport() const { return transport_; }
@@ -141,6 +143,7 @@ class MainWindow : public QMainWindow {
   std::unique_ptr<editing::RecoveryStore> recovery_;
   SliderPanel* sliders_ = nullptr;
   QTabWidget* animationViews_ = nullptr;
+  LayerPanel* layers_ = nullptr;
   TimelineWidget* timeline_ = nullptr;
   TransportBar* transport_ = nullptr;
   PresetPanel* presets_ = nullptr;

@@ -29,7 +29,10 @@ class PresetPanel : public QWidget {
 
   double intensity() const;
   bool replacesPose() const;
-  // Applies the preset with this id using the panel's intensity and replace setting.
+  // Whether presets become layers (EditorModel::applyPresetAsLayer) rather than keys.
+  bool asLayer() const;
+  void setAsLayer(bool layered);
+  // Applies the preset with this id using the panel's intensity, replace and layer settings.
   bool apply(const QString& id);
   QTreeWidget* list() const { return list_; }
 
@@ -49,6 +52,7 @@ class PresetPanel : public QWidget {
   QSlider* intensity_;
   QLabel* intensityLabel_;
   QCheckBox* replace_;
+  QCheckBox* asLayer_;
   QPushButton* apply_;
 };
 

@@ -49,6 +49,20 @@ class SetChannelsCommand : public KeyEditCommand {
   int session_;
 };
 
+// Layer edits (add, remove, mute, intensity keys) store the whole list before and after: a
+// project has a handful of layers, each a pose and a few intensity keys.
+class LayersCommand : public QUndoCommand {
+ public:
+  LayersCommand(EditorModel& model, std::vector<PoseLayer> before, std::vector<PoseLayer> after,
+                const QString& text);
+  void redo() override;
+  void undo() override;
+
+ private:
+  EditorModel& model_;
+  std::vector<PoseLayer> before_, after_;
+};
+
 class SettingsCommand : public QUndoCommand {
  public:
   SettingsCommand(EditorModel& model, ProjectDocument before, ProjectDocument after,

@@ -66,7 +66,11 @@ class EditorModel : public QObject {
   double endTime() const { return document_.keys.endTime(); }
 
   // --- values at the current time -----------------------------------------------------
+  // What the face shows: the keys with the layers mixed on (sliders show these; a slider edit
+  // keys the value that makes the mix what the user set).
   const FapValues& currentValues() const { return values_; }
+  // The keys' own values, without the layers.
+  const FapValues& keyedValues() const { return keyedValues_; }
   float currentValue(int fap) const { return values_[channelIndex(fap)]; }
   int currentKeyIndex() const;             // key at the current time, or -1
   ChannelMask keyedAtCurrentTime() const;  // channels of that key
@@ -114,7 +118,18 @@ class EditorModel : public QObject {
   // Applies a pose at the current time (a sequence from the current time on). `intensity`
   // scales the values (FAP 1/2 codes are not scaled). `replacePose`: channels the preset does
   // not set but that are non-zero now are keyed to 0, so the pose is the preset's alone.
+  // Channels first keyed by it are also keyed at the previous key, at the value they had, so
+  // the animation before that key does not change (a first key holds back to frame 0).
   void applyPreset(const Preset& preset, double intensity, bool replacePose);
+  // A pose preset as a layer (PoseLayer.h) instead of keys: its pose at intensity 1, with
+  // intensity keys rising from 0 half a second before the current time to `intensity` at it
+  // (one key when there is no room before). Sequences cannot be layers (message).
+  void applyPresetAsLayer(const Preset& preset, double intensity);
+  void setLayerMuted(int index, bool muted);
+  void removeLayer(int index);
+  // Keys layer `index`'s intensity at the current time (replacing a key there); unkey removes it.
+  void keyLayerIntensity(int index, double value);
+  void unkeyLayerIntensity(int index);
   // Mirrors left <-> right: the selected keys, else the key at the current time, else the
   // current pose as a new key.
   void mirror();
@@ -132,11 +147,13 @@ class EditorModel : public QObject {
   // --- for the commands only ----------------------------------------------------------
   void applyKeyChange(const KeyChange& change, bool redo);
   void applySettings(const ProjectDocument& settings);
+  void applyLayers(const std::vector<PoseLayer>& layers);
 
  signals:
   void documentReset();
   void keysChanged();
   void settingsChanged();
+  void layersChanged();
   void timeChanged(double seconds);
   void valuesChanged();  // currentValues() changed (time or keys)
   void selectionChanged();
@@ -153,13 +170,16 @@ class EditorModel : public QObject {
   void pushKeyEdit(const KeyChange& change, const QString& text,
                    std::optional<std::vector<double>> selectionAfter);
   Keyframe keyOrNewAt(double seconds) const;
+  std::optional<Keyframe> holdBefore(const Keyframe& pose) const;
   double shiftedTime(double seconds, int frames) const;
   float sanitised(int fap, double value) const;
+  void pushLayers(std::vector<PoseLayer> after, const QString& text);
 
   ProjectDocument document_;
   QUndoStack undo_;
   double time_ = 0.0;
   FapValues values_{};
+  FapValues keyedValues_{};
   ChannelMask animated_;
   std::vector<double> selection_;
   std::vector<ChannelKey> channelKeySelection_;

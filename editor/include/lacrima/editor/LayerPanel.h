@@ -1,0 +1,45 @@
+#pragma once
+// The Layers panel: the presets added as layers (PoseLayer.h), each with its intensity at the
+// playhead, a mute box and the number of intensity keys. Under the list, the selected layer's
+// intensity can be keyed at the playhead (Enter in the field or "Key"), a key there removed,
+// and the layer deleted. Every change goes through EditorModel and is one undo step.
+#include <QWidget>
+
+class QLabel;
+class QLineEdit;
+class QPushButton;
+class QTreeWidget;
+
+namespace lacrima::editing {
+class EditorModel;
+}  // namespace lacrima::editing
+
+namespace lacrima::editor {
+
+class LayerPanel : public QWidget {
+  Q_OBJECT
+ public:
+  explicit LayerPanel(editing::EditorModel& model, QWidget* parent = nullptr);
+
+  QTreeWidget* list() const { return list_; }
+  int selectedLayer() const;  // -1 when none
+  // Keys the selected layer's intensity at the playhead from the field's text; false (with the
+  // reason shown under the field) when the text is not a number in -100..100.
+  bool keyTypedIntensity();
+
+ private:
+  void rebuild();
+  void refreshValues();
+  void updateButtons();
+
+  editing::EditorModel& model_;
+  QTreeWidget* list_;
+  QLineEdit* intensity_;
+  QLabel* problem_;
+  QPushButton* key_;
+  QPushButton* unkey_;
+  QPushButton* remove_;
+  bool rebuilding_ = false;
+};
+
+}  // namespace lacrima::editor
