@@ -44,10 +44,10 @@ QString tooltipFor(const FapInfo& info) {
               .arg(limits.min)
               .arg(limits.max);
   text += QStringLiteral("<br><i>") +
-          QCoreApplication::translate(
-              "ChannelRow",
-              "Drag the slider: the whole range in 600 px; Shift: 10x finer, Ctrl: 5x coarser. "
-              "Double-click resets.") +
+          QCoreApplication::translate("ChannelRow",
+                                      "Drag the handle: %1 px cross the slider's range; Shift: "
+                                      "10x finer, Ctrl: 5x coarser. Double-click resets.")
+              .arg(ZeroSlider::kPixelsPerRange) +
           QStringLiteral("</i>");
   return text;
 }

@@ -554,11 +554,14 @@ void MainWindow::showShortcuts() {
                 .arg(a->shortcut().toString(QKeySequence::NativeText).toHtmlEscaped(),
                      text.toHtmlEscaped());
   }
-  const QString extra =
-      tr("<p>Timeline: click a key to select it and jump to it, drag to move (whole frames), "
-         "drag on empty space to select, double-click to add a key, right-click for interpolation, "
-         "wheel to zoom, Shift+wheel or middle-drag to pan.<br>Sliders: Shift-drag for fine steps, "
-         "double-click resets, the diamond keys or unkeys the channel.</p>");
+  const QString extra = tr(
+      "<p>Timeline: click a key to select it and jump to it, drag to move (whole frames), "
+      "drag on empty space to select, double-click to add a key, right-click for interpolation, "
+      "wheel to zoom, Shift+wheel or middle-drag to pan.<br>Sliders: a drag crosses the range in "
+      "600 px, Shift-drag 10x finer, Ctrl-drag 5x coarser; double-click resets, the diamond "
+      "keys or unkeys the channel.<br>Number fields: Enter takes the typed number or refuses "
+      "it (red, with the range in the status bar), Esc puts the value back, Up/Down step; "
+      "Space plays unless you are typing in one.</p>");
   if (!options_.interactive) return;
   QMessageBox box(this);
   box.setWindowTitle(tr("Keyboard shortcuts"));

@@ -96,6 +96,7 @@ bool NumberField::commit() {
 
 void NumberField::revert() {
   typing_ = false;
+  refusal_.clear();
   showRefused(false);
   refreshText();
 }
