@@ -4,6 +4,7 @@
 #include <lacrima/editing/FrameStepClock.h>
 #include <lacrima/editor/EditorTheme.h>
 #include <lacrima/editor/NumberField.h>
+#include <lacrima/editor/TimeField.h>
 #include <lacrima/editor/ToggleLook.h>
 
 #include <QHBoxLayout>
@@ -146,17 +147,7 @@ TransportBar::TransportBar(editing::EditorModel& model, editing::FrameStepClock&
   showCheckedState(unit_);
   timeField_ = new NumberField(this);
   timeField_->setObjectName(QStringLiteral("time"));
-  timeField_->setRange({0.0, editing::kMaxEditTime, false, {}});
-  timeField_->setSubject(tr("the time"),
-                         tr("0 … %1 s, or whole frames such as 55f").arg(editing::kMaxEditTime));
-  timeField_->setReader([this](const QString& text) {
-    const editing::TimeParse time = editing::parseTime(text, model_.document().fps, timeUnit());
-    return editing::NumberParse{time.seconds, time.reason};
-  });
-  timeField_->setWriter([this](double seconds) {
-    if (timeUnit() == editing::TimeUnit::Frames) return tr("%1 f").arg(model_.frameAt(seconds));
-    return tr("%1 s").arg(editing::formatNumber(seconds, 3));
-  });
+  setUpTimeField(*timeField_, model_, [this] { return timeUnit(); });
   timeField_->setButtonSymbols(QAbstractSpinBox::NoButtons);
   timeField_->setMinimumWidth(84);
   timeField_->setToolTip(

@@ -5,6 +5,8 @@
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editing/FrameStepClock.h>
 #include <lacrima/editor/ChannelRow.h>
+#include <lacrima/editor/KeyListPanel.h>
+#include <lacrima/editor/KeyTableModel.h>
 #include <lacrima/editor/MainWindow.h>
 #include <lacrima/editor/NumberField.h>
 #include <lacrima/editor/PresetPanel.h>
@@ -16,6 +18,7 @@
 #include <QLineEdit>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTableView>
 #include <QTemporaryDir>
 #include <QToolButton>
 #include <QtTest>
@@ -231,6 +234,33 @@ class EditorInputsTest : public QObject {
       QTest::keyClick(time, Qt::Key_Escape);
     }
     QCOMPARE(model().undoStack()->count(), 0);  // moving the playhead edits nothing
+  }
+
+  // The Keys table's time cells are time fields too: typed as in the transport, refused alike.
+  void keyTimesAreTypedLikeTheTimeField() {
+    model().setCurrentTime(1.0);
+    typeInto(field(kOpenJaw), QStringLiteral("10"));
+    const int steps = model().undoStack()->count();
+    QTableView* table = window().keyList()->view();
+    const QModelIndex cell = table->model()->index(0, KeyTableModel::TimeColumn);
+    const auto editTo = [&](const QString& text) {
+      table->setCurrentIndex(cell);
+      table->edit(cell);
+      auto* editor = table->findChild<NumberField*>();
+      QVERIFY(editor);
+      QCOMPARE(shownText(editor), QStringLiteral("1 s"));
+      typeInto(editor, text);
+      QCoreApplication::processEvents();  // the view commits and closes the editor queued
+    };
+    editTo(QStringLiteral("-1"));
+    QCOMPARE(model().document().keys.keys().front().time, 1.0);
+    QCOMPARE(model().undoStack()->count(), steps);
+    QVERIFY(window().statusBar()->currentMessage().startsWith(
+        QStringLiteral("-1 refused: before 0 s")));
+    QTRY_VERIFY(!table->findChild<NumberField*>());
+    editTo(QStringLiteral("55f"));
+    QCOMPARE(model().document().keys.keys().front().time, 2.5);
+    QCOMPARE(model().undoStack()->count(), steps + 1);
   }
 
   void ctrlGFocusesTheTimeField() {
