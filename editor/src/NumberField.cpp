@@ -31,8 +31,7 @@ NumberField::NumberField(QWidget* parent) : QAbstractSpinBox(parent) {
 
 void NumberField::setRange(const editing::NumberRange& range) {
   range_ = range;
-  lineEdit()->setPlaceholderText(describeRange(range_));
-  if (subject_.isEmpty()) setSubject({});
+  lineEdit()->setPlaceholderText(rangeText());
   setValue(std::clamp(value_, range_.min, range_.max));
 }
 
@@ -43,8 +42,12 @@ void NumberField::setDecimals(int decimals) {
 
 void NumberField::setSubject(const QString& subject, const QString& rangeText) {
   subject_ = subject;
-  rangeText_ = rangeText.isEmpty() ? describeRange(range_) : rangeText;
-  lineEdit()->setPlaceholderText(rangeText_);
+  rangeText_ = rangeText;
+  lineEdit()->setPlaceholderText(this->rangeText());
+}
+
+QString NumberField::rangeText() const {
+  return rangeText_.isEmpty() ? describeRange(range_) : rangeText_;
 }
 
 void NumberField::setReader(Reader reader) { reader_ = std::move(reader); }
@@ -104,8 +107,8 @@ void NumberField::revert() {
 void NumberField::refuse(const QString& typed, const QString& reason) {
   const QString shown = typed.isEmpty() ? tr("(empty)") : typed;
   refusal_ = subject_.isEmpty()
-                 ? tr("%1 refused: %2; the field takes %3").arg(shown, reason, rangeText_)
-                 : tr("%1 refused: %2 — %3 is %4").arg(shown, reason, subject_, rangeText_);
+                 ? tr("%1 refused: %2; the field takes %3").arg(shown, reason, rangeText())
+                 : tr("%1 refused: %2 — %3 is %4").arg(shown, reason, subject_, rangeText());
   showRefused(true);
   // Where the user looks: the window's status bar, or the field itself in a dialog.
   if (auto* main = qobject_cast<QMainWindow*>(window()))
@@ -116,14 +119,14 @@ void NumberField::refuse(const QString& typed, const QString& reason) {
 }
 
 void NumberField::showRefused(bool on) {
+  if (on && !refusedLook_) baseTip_ = toolTip();
+  if (on)  // also when refused again: the tooltip gives the latest reason
+    setToolTip(baseTip_.isEmpty()
+                   ? refusal_
+                   : refusal_.toHtmlEscaped() + QStringLiteral("<br><br>") + baseTip_);
   if (on == refusedLook_) return;
   refusedLook_ = on;
-  if (on) {
-    baseTip_ = toolTip();
-    setToolTip(baseTip_.isEmpty() ? refusal_ : refusal_ + QStringLiteral("<br><br>") + baseTip_);
-  } else {
-    setToolTip(baseTip_);
-  }
+  if (!on) setToolTip(baseTip_);
   QPalette p = lineEdit()->palette();
   p.setColor(QPalette::Text, on ? kRefusedRed : palette().color(QPalette::Text));
   lineEdit()->setPalette(p);

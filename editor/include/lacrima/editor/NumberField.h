@@ -84,12 +84,13 @@ class NumberField : public QAbstractSpinBox {
   void showRefused(bool on);
   void take(double value);
   QString text(double value) const;
+  QString rangeText() const;  // the given one, else describeRange(range_)
 
   editing::NumberRange range_;
   double step_ = 1;
   int decimals_ = 2;
   double value_ = 0;
-  QString subject_, rangeText_, refusal_, baseTip_;
+  QString subject_, rangeText_, refusal_, baseTip_;  // rangeText_: empty = describeRange
   Reader reader_;
   Writer writer_;
   bool typing_ = false;
