@@ -4,6 +4,7 @@
 #include <lacrima/editing/ChannelLimits.h>
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editor/EditorTheme.h>
+#include <lacrima/editor/NumberField.h>
 #include <lacrima/editor/ZeroSlider.h>
 
 #include <QCoreApplication>
@@ -11,7 +12,6 @@
 #include <QLabel>
 #include <QMouseEvent>
 #include <QPainter>
-#include <QSpinBox>
 #include <QToolButton>
 
 #include <cmath>
@@ -44,10 +44,23 @@ QString tooltipFor(const FapInfo& info) {
               .arg(limits.min)
               .arg(limits.max);
   text += QStringLiteral("<br><i>") +
-          QCoreApplication::translate(
-              "ChannelRow", "Double-click the slider to reset; Shift-drag for fine steps.") +
+          QCoreApplication::translate("ChannelRow",
+                                      "Drag the handle: %1 px cross the slider's range; Shift: "
+                                      "10x finer, Ctrl: 5x coarser. Double-click resets.")
+              .arg(ZeroSlider::kPixelsPerRange) +
           QStringLiteral("</i>");
   return text;
+}
+
+// What a channel's field takes, in words: "0 … 100000 whole particles", "-18600 … 18600 AU".
+QString rangeText(const FapInfo& info, const editing::ChannelLimits& limits) {
+  const QString span = QStringLiteral("%1 … %2").arg(limits.min).arg(limits.max);
+  if (isTearChannel(info.number))
+    return QCoreApplication::translate("ChannelRow", "%1 whole particles").arg(span);
+  if (isHighLevelFap(info.number))
+    return QCoreApplication::translate("ChannelRow", "%1 (codes)").arg(span);
+  return QCoreApplication::translate("ChannelRow", "%1 %2, whole numbers")
+      .arg(span, fromView(toString(info.unit)));
 }
 
 }  // namespace
@@ -93,15 +106,15 @@ ChannelRow::ChannelRow(editing::EditorModel& model, int fap, QWidget* parent)
   slider_ = new ZeroSlider(info.sliderMin, info.sliderMax, info.quantizerStep,
                            theme::groupColour(info.group), this);
 
-  spin_ = new QSpinBox(this);
-  spin_->setRange(limits.min, limits.max);
-  spin_->setButtonSymbols(QAbstractSpinBox::NoButtons);
-  spin_->setKeyboardTracking(false);  // one edit per Enter, not one per typed digit
-  spin_->setAlignment(Qt::AlignRight);
-  spin_->setFixedWidth(58);
-  spin_->setFocusPolicy(Qt::StrongFocus);
-  spin_->installEventFilter(WheelGuard::instance());
-  spin_->setSingleStep(info.quantizerStep);
+  field_ = new NumberField(this);
+  field_->setObjectName(QStringLiteral("value"));
+  field_->setRange({double(limits.min), double(limits.max), true, {}});
+  field_->setSubject(fromView(info.name), rangeText(info, limits));
+  field_->setButtonSymbols(QAbstractSpinBox::NoButtons);
+  field_->setFixedWidth(58);
+  field_->setFocusPolicy(Qt::StrongFocus);
+  field_->installEventFilter(WheelGuard::instance());
+  field_->setSingleStep(info.quantizerStep);
 
   reset_ = new QToolButton(this);
   reset_->setText(QStringLiteral("↺"));
@@ -114,14 +127,14 @@ ChannelRow::ChannelRow(editing::EditorModel& model, int fap, QWidget* parent)
   layout->addWidget(number_);
   layout->addWidget(name_);
   layout->addWidget(slider_, 1);
-  layout->addWidget(spin_);
+  layout->addWidget(field_);
   layout->addWidget(reset_);
 
   const QString tip = tooltipFor(info);
   name_->setToolTip(tip);
   number_->setToolTip(tip);
   slider_->setToolTip(tip);
-  spin_->setToolTip(tip);
+  field_->setToolTip(tip);
 
   connect(slider_, &ZeroSlider::dragStarted, this, [this] {
     session_ = model_.beginDragSession();
@@ -133,9 +146,9 @@ ChannelRow::ChannelRow(editing::EditorModel& model, int fap, QWidget* parent)
     const int one[] = {fap_};
     model_.resetChannels(one, tr("Reset %1").arg(name_->text()));
   });
-  connect(spin_, &QSpinBox::valueChanged, this, [this](int v) {
+  connect(field_, &NumberField::valueEntered, this, [this](double v) {
     model_.setFocusChannel(fap_);
-    edit(v);
+    edit(static_cast<int>(std::lround(v)));
   });
   connect(reset_, &QToolButton::clicked, this, [this] {
     const int one[] = {fap_};
@@ -162,11 +175,10 @@ void ChannelRow::show(float value, KeyToggle::State state) {
   const int v = static_cast<int>(std::lround(value));
   key_->setState(state);
   slider_->setEmphasis(state == KeyToggle::State::Keyed);
-  if (v == shownValue_ && spin_->value() == v && slider_->value() == v) return;
+  if (v == shownValue_ && field_->value() == v && slider_->value() == v) return;
   shownValue_ = v;
   slider_->setValue(v);
-  const QSignalBlocker block(spin_);
-  spin_->setValue(v);
+  field_->setValue(v);
 }
 
 void ChannelRow::setHighlighted(bool on) {

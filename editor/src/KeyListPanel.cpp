@@ -2,6 +2,7 @@
 
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editor/KeyTableModel.h>
+#include <lacrima/editor/TimeField.h>
 
 #include <QComboBox>
 #include <QHeaderView>
@@ -46,6 +47,8 @@ KeyListPanel::KeyListPanel(editing::EditorModel& model, QWidget* parent)
   view_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
   view_->setItemDelegateForColumn(KeyTableModel::InterpolationColumn,
                                   new InterpolationDelegate(view_));
+  // Times are typed as in the transport's time field ("2.5", "55f"), refused when out of range.
+  view_->setItemDelegateForColumn(KeyTableModel::TimeColumn, new TimeFieldDelegate(model_, view_));
   view_->verticalHeader()->hide();
   view_->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
   view_->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);

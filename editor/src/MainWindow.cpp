@@ -7,6 +7,7 @@
 #include <lacrima/editing/RecoveryStore.h>
 #include <lacrima/editor/KeyListPanel.h>
 #include <lacrima/editor/LayerPanel.h>
+#include <lacrima/editor/NumberField.h>
 #include <lacrima/editor/PresetPanel.h>
 #include <lacrima/editor/PreviewPanel.h>
 #include <lacrima/editor/RecoveryBanner.h>
@@ -23,7 +24,6 @@
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QDockWidget>
-#include <QDoubleSpinBox>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QLabel>
@@ -390,6 +390,10 @@ void MainWindow::createMenus() {
                     QKeySequence(Qt::Key_Right)),
           &QAction::triggered, this,
           [this] { model_->setCurrentTime(model_->currentTime() + model_->frameDuration()); });
+  // Blender's and Maya's "go to frame": type a time or frame into the transport's time field.
+  connect(addAction(play, QStringLiteral("play.goToTime"), tr("&Go to time…"),
+                    QKeySequence(QStringLiteral("Ctrl+G"))),
+          &QAction::triggered, transport_, &TransportBar::editTime);
 
   viewMenu_ = menuBar()->addMenu(tr("&View"));
   QAction* tears = addAction(viewMenu_, QStringLiteral("view.tearPreview"), tr("&Tear preview"),
@@ -513,10 +517,12 @@ void MainWindow::settingsDialog() {
   dialog.setWindowTitle(tr("Project settings"));
   auto* form = new QFormLayout(&dialog);
   auto* name = new QLineEdit(QString::fromStdString(doc.name), &dialog);
-  auto* fps = new QDoubleSpinBox(&dialog);
-  fps->setRange(1, 240);
-  fps->setDecimals(2);
+  auto* fps = new NumberField(&dialog);
+  fps->setRange({1, 240, false, tr("fps")});
+  fps->setSubject(tr("the frame rate"));
+  fps->setDecimals(3);
   fps->setValue(doc.fps);
+  fps->setKeepsRefusedText(true);
   auto* mode = new QComboBox(&dialog);
   mode->addItems({tr("linear"), tr("smooth")});
   mode->setCurrentIndex(doc.defaultInterpolation == Interpolation::Smooth ? 1 : 0);
@@ -528,7 +534,9 @@ void MainWindow::settingsDialog() {
   form->addRow(tr("Effects"), effects);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
   form->addRow(buttons);
-  connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+  connect(buttons, &QDialogButtonBox::accepted, &dialog, [&dialog, fps] {
+    if (commitFields({fps})) dialog.accept();
+  });
   connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
   if (dialog.exec() != QDialog::Accepted) return;
   ProjectDocument settings = doc;
@@ -551,11 +559,14 @@ void MainWindow::showShortcuts() {
                 .arg(a->shortcut().toString(QKeySequence::NativeText).toHtmlEscaped(),
                      text.toHtmlEscaped());
   }
-  const QString extra =
-      tr("<p>Timeline: click a key to select it and jump to it, drag to move (whole frames), "
-         "drag on empty space to select, double-click to add a key, right-click for interpolation, "
-         "wheel to zoom, Shift+wheel or middle-drag to pan.<br>Sliders: Shift-drag for fine steps, "
-         "double-click resets, the diamond keys or unkeys the channel.</p>");
+  const QString extra = tr(
+      "<p>Timeline: click a key to select it and jump to it, drag to move (whole frames), "
+      "drag on empty space to select, double-click to add a key, right-click for interpolation, "
+      "wheel to zoom, Shift+wheel or middle-drag to pan.<br>Sliders: a drag crosses the range in "
+      "600 px, Shift-drag 10x finer, Ctrl-drag 5x coarser; double-click resets, the diamond "
+      "keys or unkeys the channel.<br>Number fields: Enter takes the typed number or refuses "
+      "it (red, with the range in the status bar), Esc puts the value back, Up/Down step; "
+      "Space plays unless you are typing in one.</p>");
   if (!options_.interactive) return;
   QMessageBox box(this);
   box.setWindowTitle(tr("Keyboard shortcuts"));

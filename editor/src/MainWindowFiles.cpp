@@ -1,5 +1,6 @@
 // MainWindow: files, recent files, autosave and recovery, closing.
 #include <lacrima/editor/MainWindow.h>
+#include <lacrima/editor/NumberField.h>
 
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editing/FrameStepClock.h>
@@ -12,7 +13,6 @@
 #include <QComboBox>
 #include <QDialog>
 #include <QDialogButtonBox>
-#include <QDoubleSpinBox>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
@@ -25,6 +25,9 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QTimer>
+
+#include <algorithm>
+#include <cmath>
 
 namespace lacrima::editor {
 namespace {
@@ -231,11 +234,13 @@ void MainWindow::importDialog() {
   reduce->setToolTip(
       tr("Drop every frame that linear interpolation between the kept keys reproduces within the "
          "tolerance, on every channel"));
-  auto* tolerance = new QDoubleSpinBox(&dialog);
-  tolerance->setRange(0, 1000);
-  tolerance->setDecimals(2);
-  tolerance->setValue(settings.value(kToleranceKey, 1.0).toDouble());
-  tolerance->setSuffix(tr(" units"));
+  auto* tolerance = new NumberField(&dialog);
+  tolerance->setRange({0, 1000, false, tr("units")});
+  tolerance->setSubject(tr("the tolerance"));
+  tolerance->setDecimals(3);
+  tolerance->setSingleStep(0.5);
+  tolerance->setValue(std::clamp(settings.value(kToleranceKey, 1.0).toDouble(), 0.0, 1000.0));
+  tolerance->setKeepsRefusedText(true);
   tolerance->setToolTip(
       tr("Largest difference allowed on any channel, in its own units (FAPU steps, AU, particles). "
          "1 follows the motion of integer files; 0 keeps every frame that is not on a straight "
@@ -246,7 +251,9 @@ void MainWindow::importDialog() {
   form->addRow(buttons);
   connect(reduce, &QCheckBox::toggled, tolerance, &QWidget::setEnabled);
   tolerance->setEnabled(reduce->isChecked());
-  connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+  connect(buttons, &QDialogButtonBox::accepted, &dialog, [&dialog, tolerance] {
+    if (commitFields({tolerance})) dialog.accept();
+  });
   connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
   if (dialog.exec() != QDialog::Accepted) return;
   settings.setValue(kReduceKey, reduce->isChecked());
@@ -259,11 +266,11 @@ void MainWindow::exportDialog() {
   QDialog dialog(this);
   dialog.setWindowTitle(tr("Export FAP"));
   auto* form = new QFormLayout(&dialog);
-  auto* fps = new QDoubleSpinBox(&dialog);
-  fps->setRange(1, 240);
-  fps->setDecimals(0);
-  fps->setValue(model_->document().fps);
-  fps->setSuffix(tr(" fps"));
+  auto* fps = new NumberField(&dialog);
+  fps->setRange({1, 240, true, tr("fps")});
+  fps->setSubject(tr("the frame rate"));
+  fps->setValue(std::clamp(std::round(model_->document().fps), 1.0, 240.0));
+  fps->setKeepsRefusedText(true);
   auto* profile = new QComboBox(&dialog);
   profile->addItem(tr("Extended: 68 FAPs + tear channels 69-70 (Lacrima player)"));
   profile->addItem(tr("Strict: the 68 standard FAPs (other players)"));
@@ -274,7 +281,9 @@ void MainWindow::exportDialog() {
       &dialog));
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
   form->addRow(buttons);
-  connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+  connect(buttons, &QDialogButtonBox::accepted, &dialog, [&dialog, fps] {
+    if (commitFields({fps})) dialog.accept();
+  });
   connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
   if (dialog.exec() != QDialog::Accepted) return;
   QString suggestion =

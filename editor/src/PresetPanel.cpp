@@ -3,6 +3,7 @@
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editor/EditorTheme.h>
+#include <lacrima/editor/NumberField.h>
 
 #include <QCheckBox>
 #include <QHBoxLayout>
@@ -46,10 +47,16 @@ PresetPanel::PresetPanel(editing::EditorModel& model, editing::PresetLibrary lib
   intensity_->setRange(0, 150);
   intensity_->setValue(100);
   intensity_->setToolTip(tr("Scales the preset's values (tear counts too)"));
-  intensityLabel_ = new QLabel(QStringLiteral("100 %"), this);
-  intensityLabel_->setMinimumWidth(40);
+  intensityField_ = new NumberField(this);
+  intensityField_->setObjectName(QStringLiteral("intensity"));
+  intensityField_->setRange({0, 150, true, QStringLiteral("%")});
+  intensityField_->setSubject(tr("the intensity"));
+  intensityField_->setValue(100);
+  intensityField_->setSingleStep(5);
+  intensityField_->setMinimumWidth(64);
+  intensityField_->setToolTip(intensity_->toolTip());
   strength->addWidget(intensity_, 1);
-  strength->addWidget(intensityLabel_);
+  strength->addWidget(intensityField_);
   layout->addLayout(strength);
 
   replace_ = new QCheckBox(tr("Replace the current pose"), this);
@@ -80,8 +87,10 @@ PresetPanel::PresetPanel(editing::EditorModel& model, editing::PresetLibrary lib
   buttons->addWidget(load);
   layout->addLayout(buttons);
 
-  connect(intensity_, &QSlider::valueChanged, this,
-          [this](int v) { intensityLabel_->setText(QStringLiteral("%1 %").arg(v)); });
+  // The slider and the field show one value; either sets it.
+  connect(intensity_, &QSlider::valueChanged, intensityField_, &NumberField::setValue);
+  connect(intensityField_, &NumberField::valueEntered, intensity_,
+          [this](double v) { intensity_->setValue(static_cast<int>(v)); });
   connect(list_, &QTreeWidget::currentItemChanged, this, &PresetPanel::showDetails);
   connect(list_, &QTreeWidget::itemDoubleClicked, this, [this] { apply(selectedId()); });
   connect(apply_, &QPushButton::clicked, this, [this] { apply(selectedId()); });

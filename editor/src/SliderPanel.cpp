@@ -6,6 +6,7 @@
 #include <lacrima/editing/HighLevelCodes.h>
 #include <lacrima/editor/ChannelRow.h>
 #include <lacrima/editor/EditorTheme.h>
+#include <lacrima/editor/ToggleLook.h>
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -171,6 +172,7 @@ SliderPanel::SliderPanel(editing::EditorModel& model, QWidget* parent)
   symmetric_ = new QToolButton(this);
   symmetric_->setText(tr("Symmetric"));
   symmetric_->setCheckable(true);
+  showCheckedState(symmetric_);
   symmetric_->setToolTip(
       tr("Symmetric editing: moving a left or right channel moves its mirror channel too"));
   top->addWidget(filter_, 1);

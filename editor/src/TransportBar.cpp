@@ -3,6 +3,9 @@
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editing/FrameStepClock.h>
 #include <lacrima/editor/EditorTheme.h>
+#include <lacrima/editor/NumberField.h>
+#include <lacrima/editor/TimeField.h>
+#include <lacrima/editor/ToggleLook.h>
 
 #include <QHBoxLayout>
 #include <QIcon>
@@ -10,7 +13,6 @@
 #include <QPainter>
 #include <QPainterPath>
 #include <QPixmap>
-#include <QSpinBox>
 #include <QToolButton>
 
 #include <algorithm>
@@ -129,22 +131,46 @@ TransportBar::TransportBar(editing::EditorModel& model, editing::FrameStepClock&
   play_->setObjectName(QStringLiteral("play"));
   QToolButton* next = button(Glyph::NextKey, tr("Next key (.)"));
   QToolButton* end = button(Glyph::End, tr("Last key (End)"));
-  QToolButton* loop = button(Glyph::Loop, tr("Loop playback"));
-  loop->setCheckable(true);
-  loop->setChecked(clock_.loops());
+  loop_ = button(Glyph::Loop, tr("Loop playback"));
+  loop_->setObjectName(QStringLiteral("loop"));
+  loop_->setCheckable(true);
+  loop_->setChecked(clock_.loops());
+  showCheckedState(loop_);
+
+  // The unit button first: the field's writer reads it.
+  unit_ = new QToolButton(this);
+  unit_->setObjectName(QStringLiteral("timeUnit"));
+  unit_->setText(tr("f"));
+  unit_->setCheckable(true);
+  unit_->setToolTip(tr("Show the time in frames (on) or seconds (off)"));
+  unit_->setFocusPolicy(Qt::NoFocus);
+  showCheckedState(unit_);
+  timeField_ = new NumberField(this);
+  timeField_->setObjectName(QStringLiteral("time"));
+  setUpTimeField(*timeField_, model_, [this] { return timeUnit(); });
+  timeField_->setButtonSymbols(QAbstractSpinBox::NoButtons);
+  timeField_->setMinimumWidth(84);
+  timeField_->setToolTip(
+      tr("The playhead. Type a time and press Enter: 2.5 or 2.5s (seconds), 55f (frames); "
+         "Up/Down step a frame (Ctrl+G)"));
 
   time_ = new QLabel(this);
-  time_->setMinimumWidth(190);
+  time_->setMinimumWidth(150);
   time_->setTextFormat(Qt::RichText);
   layout->addSpacing(8);
+  layout->addWidget(timeField_);
+  layout->addWidget(unit_);
+  layout->addSpacing(4);
   layout->addWidget(time_);
   layout->addStretch(1);
 
   auto* rateLabel = new QLabel(tr("Playback"), this);
-  rate_ = new QSpinBox(this);
-  rate_->setRange(1, 120);
+  rate_ = new NumberField(this);
+  rate_->setObjectName(QStringLiteral("rate"));
+  rate_->setRange({1, 120, true, tr("fps")});
+  rate_->setSubject(tr("the playback rate"));
   rate_->setValue(static_cast<int>(clock_.rate()));
-  rate_->setSuffix(tr(" fps"));
+  rate_->setMinimumWidth(76);
   rate_->setToolTip(tr("Playback rate of the preview (the export rate is the project's fps)"));
   layout->addWidget(rateLabel);
   layout->addWidget(rate_);
@@ -157,8 +183,13 @@ TransportBar::TransportBar(editing::EditorModel& model, editing::FrameStepClock&
   connect(next, &QToolButton::clicked, this,
           [this] { model_.setCurrentTime(nextKeyTime(model_)); });
   connect(play_, &QToolButton::clicked, &clock_, &editing::FrameStepClock::toggle);
-  connect(loop, &QToolButton::toggled, &clock_, &editing::FrameStepClock::setLoop);
-  connect(rate_, &QSpinBox::valueChanged, &clock_, [this](int v) { clock_.setRate(v); });
+  connect(loop_, &QToolButton::toggled, &clock_, &editing::FrameStepClock::setLoop);
+  connect(rate_, &NumberField::valueEntered, &clock_, [this](double v) { clock_.setRate(v); });
+  connect(timeField_, &NumberField::valueEntered, this, [this](double seconds) {
+    model_.setCurrentTime(seconds);
+    refreshTime();  // shows the snapped time, also when snapping lands where it was
+  });
+  connect(unit_, &QToolButton::toggled, this, &TransportBar::refreshTime);
   connect(&clock_, &editing::FrameStepClock::playingChanged, this, [this, ink](bool playing) {
     play_->setIcon(icon(playing ? Glyph::Pause : Glyph::Play, ink));
   });
@@ -166,6 +197,15 @@ TransportBar::TransportBar(editing::EditorModel& model, editing::FrameStepClock&
   connect(&model_, &editing::EditorModel::keysChanged, this, &TransportBar::refreshTime);
   connect(&model_, &editing::EditorModel::settingsChanged, this, &TransportBar::refreshTime);
   refreshTime();
+}
+
+editing::TimeUnit TransportBar::timeUnit() const {
+  return unit_->isChecked() ? editing::TimeUnit::Frames : editing::TimeUnit::Seconds;
+}
+
+void TransportBar::editTime() {
+  timeField_->setFocus(Qt::ShortcutFocusReason);
+  timeField_->selectAll();
 }
 
 void TransportBar::refreshTime() {
@@ -176,11 +216,15 @@ void TransportBar::refreshTime() {
   const QString key =
       onKey ? QStringLiteral(" <span style='color:%1'>◆</span>").arg(theme::keyAccent().name())
             : QString();
-  time_->setText(tr("<b>%1 s</b> &nbsp; frame %2 / %3%4")
-                     .arg(QString::number(t, 'f', 3))
-                     .arg(frame)
-                     .arg(frames)
-                     .arg(key));
+  // The field shows one unit; the label gives the other and the length.
+  const QString other = timeUnit() == editing::TimeUnit::Frames
+                            ? tr("%1 s of %2 s")
+                                  .arg(QString::number(t, 'f', 3))
+                                  .arg(QString::number(model_.endTime(), 'f', 3))
+                            : tr("frame %1 / %2").arg(frame).arg(frames);
+  time_->setText(other + key);
+  timeField_->setSingleStep(1.0 / model_.document().fps);
+  timeField_->setValue(t);
 }
 
 }  // namespace lacrima::editor

@@ -13,6 +13,13 @@ namespace lacrima::editor {
 namespace {
 constexpr double kMargin = 6.0;        // px left and right of the track, room for the handle
 constexpr double kZeroMagnet = 0.015;  // fraction of the range that sticks to 0
+constexpr double kHandleGrab = 6.0;    // px either side of the handle that grab it in place
+
+double gainFor(Qt::KeyboardModifiers modifiers) {
+  if (modifiers & Qt::ShiftModifier) return ZeroSlider::kFineGain;
+  if (modifiers & Qt::ControlModifier) return ZeroSlider::kCoarseGain;
+  return 1.0;
+}
 }  // namespace
 
 ZeroSlider::ZeroSlider(int minimum, int maximum, int step, QColor colour, QWidget* parent)
@@ -48,8 +55,14 @@ double ZeroSlider::xOf(double value) const {
 int ZeroSlider::valueAt(double x) const {
   const double span = std::max(1.0, width() - 2 * kMargin);
   const double v = min_ + (x - kMargin) / span * (max_ - min_);
-  int rounded = static_cast<int>(std::lround(std::clamp(v, double(min_), double(max_))));
-  if (std::abs(rounded) <= kZeroMagnet * (max_ - min_) && min_ <= 0 && max_ >= 0) rounded = 0;
+  return magnetised(v, 1.0);
+}
+
+int ZeroSlider::magnetised(double value, double gain) const {
+  int rounded = static_cast<int>(std::lround(std::clamp(value, double(min_), double(max_))));
+  const bool fine = gain < 1.0;
+  if (!fine && std::abs(rounded) <= kZeroMagnet * (max_ - min_) && min_ <= 0 && max_ >= 0)
+    rounded = 0;
   return rounded;
 }
 
@@ -108,25 +121,36 @@ void ZeroSlider::paintEvent(QPaintEvent*) {
 void ZeroSlider::mousePressEvent(QMouseEvent* event) {
   if (event->button() != Qt::LeftButton) return QWidget::mousePressEvent(event);
   dragging_ = true;
-  grabX_ = event->position().x();
-  grabValue_ = value_;
+  const double x = event->position().x();
   emit dragStarted();
-  if (!(event->modifiers() & Qt::ShiftModifier)) edit(valueAt(grabX_));
-  grabValue_ = value_;
+  gain_ = gainFor(event->modifiers());
+  // A click on the track sets the value there; a press on the handle (or any fine press) only
+  // grabs it, so a drag starts from the value as it is.
+  const bool onHandle = std::abs(x - xOf(value_)) <= kHandleGrab;
+  if (!onHandle && gain_ >= 1.0) edit(valueAt(x));
+  grabX_ = x;
+  grabValue_ = dragValue_ = value_;
   update();
 }
 
 void ZeroSlider::mouseMoveEvent(QMouseEvent* event) {
   if (!dragging_) return;
   const double x = event->position().x();
-  if (event->modifiers() & Qt::ShiftModifier) {
-    const double perPixel = double(max_ - min_) / std::max(1.0, width() - 2 * kMargin);
-    edit(grabValue_ + static_cast<int>(std::lround((x - grabX_) * perPixel / 10.0)));
-  } else {
-    edit(valueAt(x));
+  const double gain = gainFor(event->modifiers());
+  if (gain != gain_) {  // Shift or Ctrl pressed or released mid-drag: go on from here
+    gain_ = gain;
     grabX_ = x;
-    grabValue_ = value_;
+    grabValue_ = dragValue_;
   }
+  const double perPixel = double(max_ - min_) / kPixelsPerRange * gain_;
+  dragValue_ = grabValue_ + (x - grabX_) * perPixel;
+  // Past an end the value waits there, and turning back moves it at once.
+  if (dragValue_ < min_ || dragValue_ > max_) {
+    dragValue_ = std::clamp(dragValue_, double(min_), double(max_));
+    grabX_ = x;
+    grabValue_ = dragValue_;
+  }
+  edit(magnetised(dragValue_, gain_));
 }
 
 void ZeroSlider::mouseReleaseEvent(QMouseEvent* event) {

@@ -9,6 +9,7 @@
 #include <lacrima/editor/ChannelRow.h>
 #include <lacrima/editor/KeyListPanel.h>
 #include <lacrima/editor/MainWindow.h>
+#include <lacrima/editor/NumberField.h>
 #include <lacrima/editor/PresetPanel.h>
 #include <lacrima/editor/RecoveryBanner.h>
 #include <lacrima/editor/SliderPanel.h>
@@ -22,7 +23,6 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
-#include <QSpinBox>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QToolButton>
@@ -44,13 +44,14 @@ EditorOptions testOptions(const QString& recoveryDir) {
   return options;
 }
 
-// Drags a slider from its zero mark to `fraction` of its width (0 = left end, 1 = right end).
+// Drags a slider at 0 by `fraction` of its range: presses on its zero mark (the handle) and
+// moves fraction x ZeroSlider::kPixelsPerRange pixels to the right.
 void dragSlider(ZeroSlider* slider, double fraction) {
   const int y = slider->height() / 2;
   const int zero =
       static_cast<int>(6 + (0.0 - slider->minimum()) / (slider->maximum() - slider->minimum()) *
                                (slider->width() - 12));
-  const int target = static_cast<int>(6 + fraction * (slider->width() - 12));
+  const int target = zero + static_cast<int>(fraction * ZeroSlider::kPixelsPerRange);
   QTest::mousePress(slider, Qt::LeftButton, {}, QPoint(zero, y));
   for (int step = 1; step <= 8; ++step) {
     QMouseEvent move(QEvent::MouseMove, QPointF(zero + (target - zero) * step / 8.0, y),
@@ -61,7 +62,7 @@ void dragSlider(ZeroSlider* slider, double fraction) {
   QTest::mouseRelease(slider, Qt::LeftButton, {}, QPoint(target, y));
 }
 
-void setSpin(QSpinBox* spin, int value) {
+void setSpin(NumberField* spin, int value) {
   spin->setFocus();
   spin->selectAll();
   QTest::keyClicks(spin, QString::number(value));
@@ -132,12 +133,12 @@ class EditorWindowTest : public QObject {
     QCOMPARE(key.time, 0.0);
     QVERIFY(key.has(3));
     QVERIFY(std::abs(key.value(3) - 540.0f) <= 12.0f);
-    QCOMPARE(row->spinBox()->value(), static_cast<int>(key.value(3)));
+    QCOMPARE(row->valueField()->value(), static_cast<double>(key.value(3)));
     QCOMPARE(model().undoStack()->count(), 1);  // the whole drag is one step
     QVERIFY(window().isWindowModified());
     QVERIFY(window().windowTitle().contains(QStringLiteral("[*]")));
     // The spin box edits the same key.
-    setSpin(row->spinBox(), 123);
+    setSpin(row->valueField(), 123);
     QCOMPARE(model().document().keys.keys().front().value(3), 123.0f);
     QCOMPARE(row->slider()->value(), 123);
   }
@@ -145,14 +146,14 @@ class EditorWindowTest : public QObject {
   void keysAtZeroAndOneSecondExport23FramesAtTwentyTwoFps() {
     ChannelRow* jaw = window().sliders()->row(3);
     ChannelRow* tears = window().sliders()->row(69);
-    setSpin(jaw->spinBox(), 220);
-    setSpin(jaw->spinBox(), 0);                             // keyed at 0 s with 0
+    setSpin(jaw->valueField(), 220);
+    setSpin(jaw->valueField(), 0);                          // keyed at 0 s with 0
     QTest::mouseClick(tears->keyToggle(), Qt::LeftButton);  // keys tears_l_eye = 0 at 0 s
     QVERIFY(model().keyedAtCurrentTime().test(channelIndex(69)));
     QTest::keyClick(window().timeline(), Qt::Key_Right);  // next frame...
     model().setCurrentTime(1.0);                          // ...and to 1 s
-    setSpin(jaw->spinBox(), 440);
-    setSpin(tears->spinBox(), 44);
+    setSpin(jaw->valueField(), 440);
+    setSpin(tears->valueField(), 44);
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("jaw.fap"));
     QVERIFY2(window().exportFap(path, editing::FapExportOptions{}),
@@ -200,10 +201,10 @@ class EditorWindowTest : public QObject {
   }
 
   void mirrorActionMapsStretchLeftToRight() {
-    setSpin(window().sliders()->row(6)->spinBox(), 150);
+    setSpin(window().sliders()->row(6)->valueField(), 150);
     window().action(QStringLiteral("edit.mirror"))->trigger();
-    QCOMPARE(window().sliders()->row(7)->spinBox()->value(), 150);
-    QCOMPARE(window().sliders()->row(6)->spinBox()->value(), 0);
+    QCOMPARE(window().sliders()->row(7)->valueField()->value(), 150.0);
+    QCOMPARE(window().sliders()->row(6)->valueField()->value(), 0.0);
     QVERIFY(!model().document().keys.keys().front().has(6));
   }
 
@@ -211,9 +212,9 @@ class EditorWindowTest : public QObject {
     window().action(QStringLiteral("edit.symmetric"))->trigger();
     QVERIFY(model().symmetricEdit());
     dragSlider(window().sliders()->row(19)->slider(), 0.75);  // close_t_l_eyelid
-    QCOMPARE(window().sliders()->row(20)->spinBox()->value(),
-             window().sliders()->row(19)->spinBox()->value());
-    QVERIFY(window().sliders()->row(19)->spinBox()->value() > 400);
+    QCOMPARE(window().sliders()->row(20)->valueField()->value(),
+             window().sliders()->row(19)->valueField()->value());
+    QVERIFY(window().sliders()->row(19)->valueField()->value() > 400);
     QCOMPARE(model().undoStack()->count(), 1);
   }
 
@@ -242,7 +243,7 @@ class EditorWindowTest : public QObject {
   }
 
   void resetsPerSliderAndPerGroup() {
-    for (int fap : {31, 32, 33}) setSpin(window().sliders()->row(fap)->spinBox(), 200);
+    for (int fap : {31, 32, 33}) setSpin(window().sliders()->row(fap)->valueField(), 200);
     QTest::mouseClick(window().sliders()->row(31)->resetButton(), Qt::LeftButton);
     QCOMPARE(model().currentValue(31), 0.0f);
     QCOMPARE(model().currentValue(32), 200.0f);
@@ -269,9 +270,9 @@ class EditorWindowTest : public QObject {
   void timelineAddsMovesCopiesPastesAndDeletesKeys() {
     TimelineWidget* timeline = window().timeline();
     timeline->setView(-0.1, 200.0);  // 200 px per second
-    setSpin(window().sliders()->row(3)->spinBox(), 300);
+    setSpin(window().sliders()->row(3)->valueField(), 300);
     model().setCurrentTime(1.0);
-    setSpin(window().sliders()->row(3)->spinBox(), 600);
+    setSpin(window().sliders()->row(3)->valueField(), 600);
     QTest::keyClick(&window(), Qt::Key_Home);
     QCOMPARE(model().currentTime(), 0.0);
     // K adds a whole-pose key at the playhead.
@@ -314,13 +315,13 @@ class EditorWindowTest : public QObject {
     QVERIFY(presets->apply(QStringLiteral("surprise")));
     QCOMPARE(model().currentTime(), 1.0);
     QCOMPARE(model().currentValue(3), 450.0f);
-    QCOMPARE(window().sliders()->row(3)->spinBox()->value(), 450);
+    QCOMPARE(window().sliders()->row(3)->valueField()->value(), 450.0);
     QVERIFY(!presets->apply(QStringLiteral("no-such-preset")));
   }
 
   void savingClearsTheMarkAndRemembersTheFile() {
     QTemporaryDir dir;
-    setSpin(window().sliders()->row(3)->spinBox(), 100);
+    setSpin(window().sliders()->row(3)->valueField(), 100);
     QVERIFY(window().isWindowModified());
     const QString path = dir.filePath(QStringLiteral("take.json"));
     QVERIFY(window().saveTo(path));
@@ -438,9 +439,9 @@ class EditorWindowTest : public QObject {
   }
 
   void spaceTogglesPlayback() {
-    setSpin(window().sliders()->row(3)->spinBox(), 10);
+    setSpin(window().sliders()->row(3)->valueField(), 10);
     model().setCurrentTime(1.0);
-    setSpin(window().sliders()->row(3)->spinBox(), 220);
+    setSpin(window().sliders()->row(3)->valueField(), 220);
     model().setCurrentTime(0.0);
     QTest::keyClick(&window(), Qt::Key_Space);
     QVERIFY(window().clock().isPlaying());

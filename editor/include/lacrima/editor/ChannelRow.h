@@ -1,14 +1,14 @@
 #pragma once
-// One channel in the slider list: key toggle, FAP number, name, slider, spin box, reset.
+// One channel in the slider list: key toggle, FAP number, name, slider, value field, reset.
 // The tooltip carries the channel's description, unit, direction and range. The row edits
 // through the model (a slider drag is one undo step) and is refreshed by the slider panel,
-// which computes the key states for all rows at once.
+// which computes the key states for all rows at once. The value field takes whole numbers in the
+// channel's edit limits (ChannelLimits.h) exactly as typed, or refuses them (NumberField.h).
 #include <lacrima/editor/KeyToggle.h>
 
 #include <QWidget>
 
 class QLabel;
-class QSpinBox;
 class QToolButton;
 
 namespace lacrima::editing {
@@ -17,6 +17,7 @@ class EditorModel;
 
 namespace lacrima::editor {
 
+class NumberField;
 class ZeroSlider;
 
 class ChannelRow : public QWidget {
@@ -30,7 +31,7 @@ class ChannelRow : public QWidget {
   void setHighlighted(bool on);
 
   ZeroSlider* slider() const { return slider_; }
-  QSpinBox* spinBox() const { return spin_; }
+  NumberField* valueField() const { return field_; }
   QToolButton* resetButton() const { return reset_; }
   KeyToggle* keyToggle() const { return key_; }
 
@@ -47,7 +48,7 @@ class ChannelRow : public QWidget {
   QLabel* number_;
   QLabel* name_;
   ZeroSlider* slider_;
-  QSpinBox* spin_;
+  NumberField* field_;
   QToolButton* reset_;
   int session_ = 0;
   int shownValue_ = 0;

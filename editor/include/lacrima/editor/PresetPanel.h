@@ -1,7 +1,8 @@
 #pragma once
 // The presets: expressions and crying presets from the presets file, applied at the current
-// time with an intensity (0-150 %) and, by default, replacing the current pose. Mirror flips
-// the selected keys (or the current pose) left <-> right.
+// time with an intensity (0-150 %: a slider and a field that takes whole percents exactly as
+// typed) and, by default, replacing the current pose. Mirror flips the selected keys (or the
+// current pose) left <-> right.
 #include <lacrima/editing/PresetLibrary.h>
 
 #include <QWidget>
@@ -17,6 +18,8 @@ class EditorModel;
 }  // namespace lacrima::editing
 
 namespace lacrima::editor {
+
+class NumberField;
 
 class PresetPanel : public QWidget {
   Q_OBJECT
@@ -35,6 +38,7 @@ class PresetPanel : public QWidget {
   // Applies the preset with this id using the panel's intensity, replace and layer settings.
   bool apply(const QString& id);
   QTreeWidget* list() const { return list_; }
+  NumberField* intensityField() const { return intensityField_; }
 
  signals:
   void loadRequested();
@@ -50,7 +54,7 @@ class PresetPanel : public QWidget {
   QTreeWidget* list_;
   QLabel* details_;
   QSlider* intensity_;
-  QLabel* intensityLabel_;
+  NumberField* intensityField_;
   QCheckBox* replace_;
   QCheckBox* asLayer_;
   QPushButton* apply_;

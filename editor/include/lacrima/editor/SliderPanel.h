@@ -40,6 +40,7 @@ class SliderPanel : public QWidget {
   QComboBox* visemePicker() const { return viseme_; }
   QComboBox* expressionPicker() const { return expression_; }
   QToolButton* groupResetButton(int group) const;
+  QToolButton* symmetricButton() const { return symmetric_; }
 
   // Re-reads every value from the model (also done on every model change).
   void refresh();

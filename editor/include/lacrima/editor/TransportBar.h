@@ -1,11 +1,17 @@
 #pragma once
 // Playback controls above the timeline: jump to start / previous key / play-pause / next key /
-// end, the current time and frame, the playback rate (22 fps by default, as exported) and loop.
+// end, loop, the time field, the playback rate (22 fps by default, as exported).
+//
+// The time field shows the playhead in seconds ("2.5 s") or frames ("55 f"; the s/f button
+// switches) and takes a typed time: "2.5", "2.5s", "55f" (a bare number is in the unit shown).
+// Enter jumps there, snapped to the frame grid as EditorModel::setCurrentTime snaps; a time it
+// cannot take (negative, past an hour, "2.5f") is refused visibly, and the playhead stays.
+// Up/Down step one frame. Ctrl+G (the window's "Go to time") focuses it.
+#include <lacrima/editing/NumberInput.h>
+
 #include <QWidget>
 
-class QDoubleSpinBox;
 class QLabel;
-class QSpinBox;
 class QToolButton;
 
 namespace lacrima::editing {
@@ -15,6 +21,8 @@ class FrameStepClock;
 
 namespace lacrima::editor {
 
+class NumberField;
+
 class TransportBar : public QWidget {
   Q_OBJECT
  public:
@@ -22,7 +30,13 @@ class TransportBar : public QWidget {
                QWidget* parent = nullptr);
 
   QToolButton* playButton() const { return play_; }
-  QSpinBox* rateBox() const { return rate_; }
+  QToolButton* loopButton() const { return loop_; }
+  NumberField* rateBox() const { return rate_; }
+  NumberField* timeField() const { return timeField_; }
+  QToolButton* timeUnitButton() const { return unit_; }  // checked: frames
+  editing::TimeUnit timeUnit() const;
+  // Focuses the time field with its text selected, ready to type over (Ctrl+G).
+  void editTime();
 
   // Painted transport icons (no icon theme is needed).
   enum class Glyph { Start, PreviousKey, Play, Pause, NextKey, End, Loop, Key };
@@ -34,8 +48,11 @@ class TransportBar : public QWidget {
   editing::EditorModel& model_;
   editing::FrameStepClock& clock_;
   QToolButton* play_;
+  QToolButton* loop_;
+  NumberField* timeField_;
+  QToolButton* unit_;
   QLabel* time_;
-  QSpinBox* rate_;
+  NumberField* rate_;
 };
 
 // Key navigation shared by the transport and the main window's shortcuts.

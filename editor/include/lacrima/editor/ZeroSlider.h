@@ -4,8 +4,15 @@
 // value read at a glance. Values beyond the range (from files or the spin box) pin the handle
 // to the end and show an arrow there.
 //
-// Mouse: press jumps to the pointer and drags; Shift drags ten times finer; the value sticks
-// to 0 within 1.5 % of the range so returning to neutral is easy; double-click resets to 0.
+// Mouse: a press on the track away from the handle jumps there; a drag then moves the value
+// relative to the pointer at a rate set by the channel's range, not by the slider's width:
+//
+//   dvalue = dx * (max - min) / kPixelsPerRange * gain,   gain = 1, Shift 1/10, Ctrl 5
+//
+// so 600 px cross the whole range at any width (a 60-px drag moves a tenth of it: 372 of
+// raise_b_midlip's 3,720, not 1,410 as when the value followed a 158-px-wide track). Changing
+// the modifier mid-drag re-anchors there, so the value never jumps. Unless fine, the value
+// sticks to 0 within 1.5 % of the range so returning to neutral is easy; double-click resets.
 // Keys (when focused): arrows step by the channel's quantiser step, Page Up/Down by a tenth of
 // the range. The wheel only acts on a focused slider, so scrolling the list never edits.
 // Painting is one rounded track and one handle: 70 of these update in well under a millisecond.
@@ -17,6 +24,10 @@ namespace lacrima::editor {
 class ZeroSlider : public QWidget {
   Q_OBJECT
  public:
+  static constexpr double kPixelsPerRange = 600.0;  // drag distance across the whole range
+  static constexpr double kFineGain = 0.1;          // Shift
+  static constexpr double kCoarseGain = 5.0;        // Ctrl
+
   ZeroSlider(int minimum, int maximum, int step, QColor colour, QWidget* parent = nullptr);
 
   int value() const { return value_; }
@@ -49,6 +60,7 @@ class ZeroSlider : public QWidget {
  private:
   double xOf(double value) const;
   int valueAt(double x) const;
+  int magnetised(double value, double gain) const;
   void edit(int value);
 
   int min_, max_, step_;
@@ -56,8 +68,11 @@ class ZeroSlider : public QWidget {
   QColor colour_;
   bool emphasis_ = false;
   bool dragging_ = false;
-  double grabX_ = 0;  // fine drags move relative to where they started
-  int grabValue_ = 0;
+  // A drag moves relative to its anchor: the pointer's x and the (unrounded) value there.
+  double grabX_ = 0;
+  double grabValue_ = 0;
+  double dragValue_ = 0;
+  double gain_ = 1;
 };
 
 }  // namespace lacrima::editor
