@@ -38,6 +38,7 @@ namespace lacrima::editor {
 namespace head {
 class HeadWorkspace;
 }
+class DopeSheet;
 class KeyListPanel;
 class PresetPanel;
 class PreviewPanel;
@@ -68,6 +69,7 @@ class MainWindow : public QMainWindow {
   TimelineWidget* timeline() const { return timeline_; }
   // The tabs under the transport: Keys (the timeline) and the per-channel views.
   QTabWidget* animationViews() const { return animationViews_; }
+  DopeSheet* dopeSheet() const { return dopeSheet_; }  // the Dope sheet tab
   TransportBar* transport() const { return transport_; }
   PresetPanel* presets() const { return presets_; }
   PreviewPanel* preview() const { return preview_; }
@@ -142,6 +144,7 @@ class MainWindow : public QMainWindow {
   SliderPanel* sliders_ = nullptr;
   QTabWidget* animationViews_ = nullptr;
   TimelineWidget* timeline_ = nullptr;
+  DopeSheet* dopeSheet_ = nullptr;
   TransportBar* transport_ = nullptr;
   PresetPanel* presets_ = nullptr;
   PreviewPanel* preview_ = nullptr;
