@@ -38,8 +38,10 @@ DopeSheetView::DopeSheetView(editing::EditorModel& model, QWidget* parent)
   scroll_->setSingleStep(static_cast<int>(kRowHeight));
   connect(scroll_, &QScrollBar::valueChanged, this, qOverload<>(&QWidget::update));
   connect(&model_, &editing::EditorModel::keysChanged, this, &DopeSheetView::rebuildRows);
-  connect(&model_, &editing::EditorModel::channelKeySelectionChanged, this,
-          qOverload<>(&QWidget::update));
+  connect(&model_, &editing::EditorModel::channelKeySelectionChanged, this, [this] {
+    selectedByTimeValid_ = false;
+    update();
+  });
   connect(&model_, &editing::EditorModel::selectedChannelsChanged, this,
           qOverload<>(&QWidget::update));
   connect(&model_, &editing::EditorModel::settingsChanged, this, qOverload<>(&QWidget::update));
@@ -54,6 +56,7 @@ DopeSheetView::DopeSheetView(editing::EditorModel& model, QWidget* parent)
 // --- rows ---------------------------------------------------------------------------------
 
 void DopeSheetView::rebuildRows() {
+  selectedByTimeValid_ = false;
   rows_ = buildDopeSheetRows(model_.document().keys, options_);
   updateScrollRange();
   update();
@@ -202,19 +205,30 @@ std::vector<ChannelKey> DopeSheetView::markKeys(int row, int key) const {
                        model_.document().keys.keys()[static_cast<std::size_t>(key)]);
 }
 
+const std::vector<std::pair<double, ChannelMask>>& DopeSheetView::selectedByTime() const {
+  if (selectedByTimeValid_) return selectedByTime_;
+  std::vector<ChannelKey> keys = model_.selectedChannelKeys();  // sorted by channel, then time
+  std::sort(keys.begin(), keys.end(),
+            [](const ChannelKey& a, const ChannelKey& b) { return a.time < b.time; });
+  selectedByTime_.clear();
+  for (const ChannelKey& k : keys) {
+    // Times in the selection are exact key times (the model keeps them so).
+    if (selectedByTime_.empty() || selectedByTime_.back().first != k.time)
+      selectedByTime_.emplace_back(k.time, ChannelMask{});
+    selectedByTime_.back().second.set(static_cast<std::size_t>(channelIndex(k.fap)));
+  }
+  selectedByTimeValid_ = true;
+  return selectedByTime_;
+}
+
 bool DopeSheetView::isMarkSelected(int row, int key) const {
-  const DopeSheetRow& r = rows_[static_cast<std::size_t>(row)];
-  const Keyframe& k = model_.document().keys.keys()[static_cast<std::size_t>(key)];
-  if (r.kind == DopeSheetRow::Kind::Channel) return model_.isSelected(ChannelKey{r.fap, k.time});
-  const auto& selected = model_.selectedChannelKeys();
-  // Any of the row's channels selected at this time: the selection is sorted by channel, so
-  // look each candidate up.
-  const ChannelMask set = r.channels & k.channels;
-  for (int i = 0; i < kChannelCount; ++i)
-    if (set.test(static_cast<std::size_t>(i)) &&
-        std::binary_search(selected.begin(), selected.end(), ChannelKey{fapNumber(i), k.time}))
-      return true;
-  return false;
+  const auto& selected = selectedByTime();
+  if (selected.empty()) return false;
+  const double t = model_.document().keys.keys()[static_cast<std::size_t>(key)].time;
+  const auto it = std::lower_bound(selected.begin(), selected.end(), t,
+                                   [](const auto& entry, double v) { return entry.first < v; });
+  return it != selected.end() && it->first == t &&
+         (it->second & rows_[static_cast<std::size_t>(row)].channels).any();
 }
 
 void DopeSheetView::selectRow(int row, bool additive) {

@@ -117,6 +117,8 @@ void DopeSheetView::paintRow(QPainter& p, int row) {
   for (auto it = first; it != r.keys.end(); ++it) {
     const Keyframe& key = keys[static_cast<std::size_t>(*it)];
     if (key.time > t1 && ghost <= 0.0) break;
+    // Not dragging, a pixel column already holding a selected mark needs no lookup.
+    if (ghost == 0.0 && static_cast<int>(xOfTime(key.time)) == lastPixel && lastSelected) continue;
     const bool selected = isMarkSelected(row, *it);
     const double x = xOfTime(selected ? key.time + ghost : key.time);
     const int pixel = static_cast<int>(x);

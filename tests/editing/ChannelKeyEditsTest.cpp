@@ -190,6 +190,24 @@ class ChannelKeyEditsTest : public QObject {
     QVERIFY(pasteChannelKeys(keys, clip, std::nan(""), kFps).change.times.empty());
   }
 
+  void plansAreWhatPlanReplaceGives() {
+    // The edits build their KeyChange directly (for speed); it must be the one planReplace
+    // gives for the same times and keys, so undo and redo behave as for every other edit.
+    const KeyframeSequence keys = sample();
+    const std::vector<ChannelKey> all{{3, 0.0}, {3, 1.0}, {4, 1.0}, {69, 1.0}, {3, 2.0}};
+    const std::vector<ChannelKey> some{{3, 1.0}, {69, 1.0}};
+    const ChannelKeyClip clip = copyChannelKeys(keys, some);
+    for (const KeyChange& change :
+         {moveChannelKeys(keys, all, 7, kFps).change, moveChannelKeys(keys, some, -22, kFps).change,
+          deleteChannelKeys(keys, some).change, pasteChannelKeys(keys, clip, 1.5, kFps).change}) {
+      const KeyChange expected = planReplace(keys, change.times, change.after);
+      QCOMPARE(change.times, expected.times);
+      QVERIFY(change.before == expected.before);
+      QVERIFY(change.after == expected.after);
+      QVERIFY(!change.isNoOp());
+    }
+  }
+
   void tearCountsStayWhole() {
     // The surprise: a tear count keyed 60 at 2 s reads 60 from 0 s. Moving it by a
     // channel key keeps it whole, and the hold before it moves with it.

@@ -8,6 +8,7 @@
 #include <lacrima/editor/DopeSheetView.h>
 #include <lacrima/editor/EditorTheme.h>
 #include <lacrima/editor/MainWindow.h>
+#include <lacrima/editor/TimeAxis.h>
 
 #include <QLineEdit>
 #include <QTabWidget>
@@ -15,6 +16,8 @@
 #include <QToolButton>
 #include <QtTest>
 
+#include <cmath>
+#include <limits>
 #include <memory>
 
 using namespace lacrima;
@@ -268,6 +271,28 @@ class DopeSheetTest : public QObject {
     const QPoint noHold = pt(mark(3, 0.3));          // 100 -> 300: no hold
     const QPoint above = pt(mark(3, 0.3) + QPointF(0, -7));
     QCOMPARE(image.pixelColor(noHold), image.pixelColor(above));
+  }
+
+  void timeAxisStaysFiniteAndInRange() {
+    TimeAxis axis;
+    axis.set(std::nan(""), std::numeric_limits<double>::infinity());
+    QVERIFY(std::isfinite(axis.start()) && std::isfinite(axis.scale()));
+    axis.set(-100.0, 1e9);
+    QCOMPARE(axis.scale(), TimeAxis::kMaxScale);
+    QCOMPARE(axis.start(), -40.0 / TimeAxis::kMaxScale);  // at most 40 px before 0 s
+    axis.set(5.0, 0.0);
+    QCOMPARE(axis.scale(), TimeAxis::kMinScale);
+    axis.fit(10.0, 1040.0);  // 10 s across 1000 px, 20 px margin
+    QCOMPARE(axis.scale(), 100.0);
+    QCOMPARE(axis.xOf(0.0), 20.0);
+    QCOMPARE(axis.timeAt(axis.xOf(3.25)), 3.25);
+    QVERIFY(!axis.follow(5.0, 1040.0));
+    QVERIFY(axis.follow(30.0, 1040.0));  // off the right edge: a tenth of the way in
+    QVERIFY(std::abs(axis.xOf(30.0) - 104.0) < 1e-9);
+    axis.wheel(QPoint(0, 120), false, 300.0);  // one notch in about x = 300
+    QVERIFY(std::abs(axis.scale() - 115.0) < 1e-9);
+    axis.wheel(QPoint(0, 120), true, 300.0);  // Shift: 60 px later
+    QVERIFY(std::abs(axis.scale() - 115.0) < 1e-9);
   }
 
   void theWindowHasTheTabAndItsKeysActOnChannelKeys() {

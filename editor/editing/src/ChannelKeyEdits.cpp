@@ -33,11 +33,19 @@ class TouchedKeys {
     return touched_.emplace(key.time, std::move(key)).first->second;
   }
 
+  // What planReplace(keys, {}, touched keys) gives, built directly: the touched times are
+  // already sorted and unique, so this is O(k log n) where planReplace looks up each time among
+  // the written keys (quadratic for a selection of every key in a long imported file).
   KeyChange plan() const {
-    std::vector<Keyframe> written;
-    written.reserve(touched_.size());
-    for (const auto& [time, key] : touched_) written.push_back(key);
-    return planReplace(keys_, {}, written);
+    KeyChange change;
+    change.times.reserve(touched_.size());
+    for (const auto& [time, key] : touched_) {
+      change.times.push_back(key.time);
+      const int index = findKey(keys_, key.time);
+      if (index >= 0) change.before.push_back(keys_.keys()[static_cast<std::size_t>(index)]);
+      if (key.channels.any()) change.after.push_back(key);
+    }
+    return change;
   }
 
  private:
@@ -63,6 +71,30 @@ std::vector<ChannelKey> existing(const KeyframeSequence& keys,
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
+}
+
+// Channel keys gathered per key: one lookup per key instead of one per channel.
+struct TimeChannels {
+  double time;
+  ChannelMask channels;
+};
+
+std::vector<TimeChannels> byTime(std::vector<ChannelKey> keys) {
+  std::sort(keys.begin(), keys.end(),
+            [](const ChannelKey& a, const ChannelKey& b) { return a.time < b.time; });
+  std::vector<TimeChannels> out;
+  for (const ChannelKey& k : keys) {
+    // existing() gave every channel key its key's exact time.
+    if (out.empty() || out.back().time != k.time) out.push_back({k.time, {}});
+    out.back().channels.set(static_cast<std::size_t>(channelIndex(k.fap)));
+  }
+  return out;
+}
+
+template <typename Visit>
+void forEachChannel(const ChannelMask& channels, Visit visit) {
+  for (int i = 0; i < kChannelCount; ++i)
+    if (channels.test(static_cast<std::size_t>(i))) visit(fapNumber(i));
 }
 
 void sortUnique(std::vector<ChannelKey>& keys) {
@@ -106,25 +138,28 @@ std::size_t ChannelKeyClip::channelKeyCount() const {
 
 ChannelKeyEdit moveChannelKeys(const KeyframeSequence& keys, std::span<const ChannelKey> selection,
                                int frames, double fps) {
-  const std::vector<ChannelKey> moving = existing(keys, selection);
+  const std::vector<TimeChannels> moving = byTime(existing(keys, selection));
   if (moving.empty() || frames == 0 || !(fps > 0.0)) return {};
   // Never before 0 s: the block stops at the start.
-  double earliest = moving.front().time;
-  for (const ChannelKey& k : moving) earliest = std::min(earliest, k.time);
-  frames = std::max(frames, -static_cast<int>(std::floor(earliest * fps + 1e-6)));
+  frames = std::max(frames, -static_cast<int>(std::floor(moving.front().time * fps + 1e-6)));
   if (frames == 0) return {};
 
   // Take every moving channel out first, then write them at their new times: channel keys
   // that trade places, or move onto a time another moving one leaves, come out right.
   TouchedKeys touched(keys);
-  for (const ChannelKey& k : moving) touched.at(k.time, Interpolation::Linear).clear(k.fap);
+  for (const TimeChannels& at : moving) {
+    Keyframe& key = touched.at(at.time, Interpolation::Linear);
+    forEachChannel(at.channels, [&](int fap) { key.clear(fap); });
+  }
   ChannelKeyEdit edit;
-  for (const ChannelKey& k : moving) {
-    const Keyframe& source = *keyAt(keys, k.time);
-    const double to = std::max(0.0, shiftedTime(k.time, frames, fps));
+  for (const TimeChannels& at : moving) {
+    const Keyframe& source = *keyAt(keys, at.time);
+    const double to = std::max(0.0, shiftedTime(at.time, frames, fps));
     Keyframe& target = touched.at(to, source.interpolation);
-    target.takeChannel(source, k.fap);
-    edit.selection.push_back({k.fap, target.time});
+    forEachChannel(at.channels, [&](int fap) {
+      target.takeChannel(source, fap);
+      edit.selection.push_back({fap, target.time});
+    });
   }
   sortUnique(edit.selection);
   edit.change = touched.plan();
@@ -134,29 +169,27 @@ ChannelKeyEdit moveChannelKeys(const KeyframeSequence& keys, std::span<const Cha
 ChannelKeyEdit deleteChannelKeys(const KeyframeSequence& keys,
                                  std::span<const ChannelKey> selection) {
   TouchedKeys touched(keys);
-  for (const ChannelKey& k : existing(keys, selection))
-    touched.at(k.time, Interpolation::Linear).clear(k.fap);
+  for (const TimeChannels& at : byTime(existing(keys, selection))) {
+    Keyframe& key = touched.at(at.time, Interpolation::Linear);
+    forEachChannel(at.channels, [&](int fap) { key.clear(fap); });
+  }
   return {touched.plan(), {}};
 }
 
 ChannelKeyClip copyChannelKeys(const KeyframeSequence& keys,
                                std::span<const ChannelKey> selection) {
-  const std::vector<ChannelKey> copied = existing(keys, selection);
+  const std::vector<TimeChannels> copied = byTime(existing(keys, selection));
   ChannelKeyClip clip;
   if (copied.empty()) return clip;
-  double first = copied.front().time;
-  for (const ChannelKey& k : copied) first = std::min(first, k.time);
-  std::map<double, Keyframe, TimeLess> byTime;
-  for (const ChannelKey& k : copied) {
-    const Keyframe& source = *keyAt(keys, k.time);
-    auto [slot, added] = byTime.try_emplace(k.time);
-    if (added) {
-      slot->second.time = k.time - first;
-      slot->second.interpolation = source.interpolation;
-    }
-    slot->second.takeChannel(source, k.fap);
+  const double first = copied.front().time;
+  for (const TimeChannels& at : copied) {
+    const Keyframe& source = *keyAt(keys, at.time);
+    Keyframe key;
+    key.time = at.time - first;
+    key.interpolation = source.interpolation;
+    forEachChannel(at.channels, [&](int fap) { key.takeChannel(source, fap); });
+    clip.keys.push_back(std::move(key));
   }
-  for (auto& [time, key] : byTime) clip.keys.push_back(std::move(key));
   return clip;
 }
 

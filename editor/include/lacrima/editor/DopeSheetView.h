@@ -25,6 +25,7 @@
 
 #include <QWidget>
 
+#include <utility>
 #include <vector>
 
 class QPainter;
@@ -105,6 +106,7 @@ class DopeSheetView : public QWidget {
   int markAt(int row, double x) const;
   std::vector<editing::ChannelKey> markKeys(int row, int key) const;
   bool isMarkSelected(int row, int key) const;
+  const std::vector<std::pair<double, ChannelMask>>& selectedByTime() const;
   void selectRow(int row, bool additive);
   std::vector<editing::ChannelKey> keysInBand(const QRectF& band) const;
   int dragFrames(double x) const;
@@ -132,6 +134,10 @@ class DopeSheetView : public QWidget {
   std::vector<editing::ChannelKey> bandBase_;  // the selection a Ctrl/Shift band adds to
   std::vector<editing::ChannelKey> narrowTo_;  // a click without a drag selects only these
   bool fitPending_ = true;
+  // The channel-key selection as (time, channels) sorted by time, so that whether a group or
+  // summary mark is selected is one lookup; rebuilt on the first paint after a change.
+  mutable std::vector<std::pair<double, ChannelMask>> selectedByTime_;
+  mutable bool selectedByTimeValid_ = false;
 };
 
 }  // namespace lacrima::editor
