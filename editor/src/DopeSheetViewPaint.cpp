@@ -106,17 +106,23 @@ void DopeSheetView::paintRow(QPainter& p, int row) {
   if (r.kind == DopeSheetRow::Kind::Channel) paintHolds(p, r, cy);
 
   const auto& keys = model_.document().keys.keys();
-  const double t0 = timeAtX(kNamesWidth - 2 * kMarkRadius);
-  const double t1 = timeAtX(kNamesWidth + keysWidth() + 2 * kMarkRadius);
-  const auto first = std::lower_bound(r.keys.begin(), r.keys.end(), t0, [&](int k, double v) {
-    return keys[static_cast<std::size_t>(k)].time < v;
-  });
+  const auto timeOf = [&](int k) { return keys[static_cast<std::size_t>(k)].time; };
+  // While dragging, selected marks are drawn `ghost` seconds away: look that much further.
   const double ghost = drag_ == Drag::Move ? ghostFrames_ * model_.frameDuration() : 0.0;
+  const double t0 = timeAtX(kNamesWidth - 2 * kMarkRadius) - std::max(0.0, ghost);
+  const double t1 = timeAtX(kNamesWidth + keysWidth() + 2 * kMarkRadius) - std::min(0.0, ghost);
+  const auto first = std::lower_bound(r.keys.begin(), r.keys.end(), t0,
+                                      [&](int k, double v) { return timeOf(k) < v; });
+  const auto last =
+      std::upper_bound(first, r.keys.end(), t1, [&](double v, int k) { return v < timeOf(k); });
+  // Marks closer than a few pixels (a long imported file in view) are drawn as ticks, one per
+  // pixel column, as the timeline does: shapes there would only overlap.
+  const bool dense = (last - first) * 4 > keysWidth();
+  if (dense) p.setRenderHint(QPainter::Antialiasing, false);
   int lastPixel = std::numeric_limits<int>::min();
   bool lastSelected = false;
-  for (auto it = first; it != r.keys.end(); ++it) {
+  for (auto it = first; it != last; ++it) {
     const Keyframe& key = keys[static_cast<std::size_t>(*it)];
-    if (key.time > t1 && ghost <= 0.0) break;
     // Not dragging, a pixel column already holding a selected mark needs no lookup.
     if (ghost == 0.0 && static_cast<int>(xOfTime(key.time)) == lastPixel && lastSelected) continue;
     const bool selected = isMarkSelected(row, *it);
@@ -126,6 +132,11 @@ void DopeSheetView::paintRow(QPainter& p, int row) {
     if (pixel == lastPixel && (selected == lastSelected || !selected)) continue;
     lastPixel = pixel;
     lastSelected = selected;
+    if (dense) {
+      p.setPen(selected ? theme::keyAccent() : theme::keyIdle());
+      p.drawLine(QPointF(pixel + 0.5, cy - kMarkRadius), QPointF(pixel + 0.5, cy + kMarkRadius));
+      continue;
+    }
     if (selected && ghost != 0.0) {
       // Where it was, faintly, while dragging.
       p.setPen(Qt::NoPen);
@@ -134,6 +145,7 @@ void DopeSheetView::paintRow(QPainter& p, int row) {
     }
     paintMark(p, QPointF(x, cy), r, key, selected);
   }
+  p.setRenderHint(QPainter::Antialiasing, true);
 }
 
 void DopeSheetView::paintHolds(QPainter& p, const DopeSheetRow& row, double cy) {
@@ -157,13 +169,25 @@ void DopeSheetView::paintHolds(QPainter& p, const DopeSheetRow& row, double cy) 
                        [&](int k, double v) { return keys[static_cast<std::size_t>(k)].time < v; });
   std::size_t i = static_cast<std::size_t>(
       std::max<std::ptrdiff_t>(0, std::distance(row.keys.begin(), firstInView) - 1));
+  // Consecutive holds are one bar (a long stretch at 0 in an imported file is one rectangle,
+  // not one per frame).
+  const QColor solid = withAlpha(colour, 0.55);
+  double runStart = 0.0;
+  bool inRun = false;
   for (; i + 1 < row.keys.size() && at(i).time <= t1; ++i) {
     const Keyframe& a = at(i);
     const Keyframe& b = at(i + 1);
     const bool holds = a.value(fap) == b.value(fap) ||
                        a.shape(fap).interpolation == Interpolation::Constant || isHighLevelFap(fap);
-    if (holds) bar(xOfTime(a.time), xOfTime(b.time), withAlpha(colour, 0.55));
+    if (holds && !inRun) {
+      runStart = a.time;
+      inRun = true;
+    } else if (!holds && inRun) {
+      bar(xOfTime(runStart), xOfTime(a.time), solid);
+      inRun = false;
+    }
   }
+  if (inRun) bar(xOfTime(runStart), xOfTime(at(i).time), solid);
 
   // Before the first key and after the last the channel holds that key's value: faintly, with
   // the value, so nobody is surprised by a value at 0 s that was keyed later.
