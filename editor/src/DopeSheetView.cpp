@@ -37,7 +37,14 @@ DopeSheetView::DopeSheetView(editing::EditorModel& model, QWidget* parent)
   options_.shown.set();
   scroll_->setSingleStep(static_cast<int>(kRowHeight));
   connect(scroll_, &QScrollBar::valueChanged, this, qOverload<>(&QWidget::update));
-  connect(&model_, &editing::EditorModel::keysChanged, this, &DopeSheetView::rebuildRows);
+  // Hidden (another tab in front), the rows wait for the sheet to be shown: a slider drag on
+  // a long animation does not pay for rows nobody sees.
+  connect(&model_, &editing::EditorModel::keysChanged, this, [this] {
+    if (isVisible())
+      rebuildRows();
+    else
+      rowsValid_ = false;
+  });
   connect(&model_, &editing::EditorModel::channelKeySelectionChanged, this, [this] {
     selectedByTimeValid_ = false;
     update();
@@ -46,6 +53,7 @@ DopeSheetView::DopeSheetView(editing::EditorModel& model, QWidget* parent)
           qOverload<>(&QWidget::update));
   connect(&model_, &editing::EditorModel::settingsChanged, this, qOverload<>(&QWidget::update));
   connect(&model_, &editing::EditorModel::timeChanged, this, [this] {
+    if (!isVisible()) return;
     axis_.follow(model_.currentTime(), keysWidth());
     update();
   });
@@ -58,8 +66,14 @@ DopeSheetView::DopeSheetView(editing::EditorModel& model, QWidget* parent)
 void DopeSheetView::rebuildRows() {
   selectedByTimeValid_ = false;
   rows_ = buildDopeSheetRows(model_.document().keys, options_);
+  rowsValid_ = true;
   updateScrollRange();
   update();
+}
+
+const std::vector<DopeSheetRow>& DopeSheetView::rows() {
+  if (!rowsValid_) rebuildRows();
+  return rows_;
 }
 
 void DopeSheetView::setFilterText(const QString& text) {
@@ -82,14 +96,16 @@ bool DopeSheetView::isGroupFolded(FapGroup group) const {
   return options_.folded.test(static_cast<std::size_t>(group));
 }
 
-int DopeSheetView::channelRow(int fap) const {
+int DopeSheetView::channelRow(int fap) {
+  rows();
   for (std::size_t i = 0; i < rows_.size(); ++i)
     if (rows_[i].kind == DopeSheetRow::Kind::Channel && rows_[i].fap == fap)
       return static_cast<int>(i);
   return -1;
 }
 
-int DopeSheetView::groupRow(FapGroup group) const {
+int DopeSheetView::groupRow(FapGroup group) {
+  rows();
   for (std::size_t i = 0; i < rows_.size(); ++i)
     if (rows_[i].kind == DopeSheetRow::Kind::Group && rows_[i].group == group)
       return static_cast<int>(i);
@@ -118,6 +134,7 @@ void DopeSheetView::resizeEvent(QResizeEvent*) {
 }
 
 void DopeSheetView::showEvent(QShowEvent*) {
+  if (!rowsValid_) rebuildRows();
   if (fitPending_) fitAll();
 }
 
@@ -266,7 +283,7 @@ std::vector<ChannelKey> DopeSheetView::keysInBand(const QRectF& band) const {
 }
 
 void DopeSheetView::selectAll() {
-  if (!rows_.empty()) selectRow(0, false);
+  if (!rows().empty()) selectRow(0, false);
 }
 
 void DopeSheetView::clearSelection() { model_.setSelectedChannelKeys({}); }

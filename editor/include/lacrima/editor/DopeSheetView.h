@@ -49,9 +49,9 @@ class DopeSheetView : public QWidget {
   bool onlyAnimated() const { return options_.onlyAnimated; }
   void setGroupFolded(FapGroup group, bool folded);
   bool isGroupFolded(FapGroup group) const;
-  const std::vector<DopeSheetRow>& rows() const { return rows_; }
-  int channelRow(int fap) const;       // -1 when not shown
-  int groupRow(FapGroup group) const;  // -1 when not shown
+  const std::vector<DopeSheetRow>& rows();  // rebuilt first if keys changed while hidden
+  int channelRow(int fap);                  // -1 when not shown
+  int groupRow(FapGroup group);             // -1 when not shown
 
   // --- view ---------------------------------------------------------------------------------
   const TimeAxis& axis() const { return axis_; }
@@ -122,6 +122,7 @@ class DopeSheetView : public QWidget {
   editing::EditorModel& model_;
   DopeSheetRowOptions options_;
   std::vector<DopeSheetRow> rows_;
+  bool rowsValid_ = false;
   TimeAxis axis_;
   QScrollBar* scroll_;
   editing::ChannelKeyClip clip_;
