@@ -199,7 +199,7 @@ void DopeSheetView::paintHolds(QPainter& p, const DopeSheetRow& row, double cy) 
   const double firstX = xOfTime(first.time);
   const double lastX = xOfTime(last.time);
   QFont small = font();
-  small.setPointSizeF(small.pointSizeF() * 0.85);
+  if (small.pointSizeF() > 0) small.setPointSizeF(small.pointSizeF() * 0.85);
   p.setFont(small);
   p.setPen(withAlpha(colour, 0.6));
   if (firstX > start) {
