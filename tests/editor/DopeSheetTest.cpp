@@ -203,6 +203,29 @@ class DopeSheetTest : public QObject {
     QCOMPARE(keyAtTime(model(), 1.0)->value(69), 60.0f);
   }
 
+  void draggingAGroupOrSummaryMarkMovesAllItsChannels() {
+    const double perFrame = view()->axis().scale() / kFps;
+    // The jaw group's mark at 1 s, two frames later: open_jaw and lower_t_midlip go, the tear
+    // count stays.
+    const int jaw = view()->groupRow(FapGroup::JawChinInnerLips);
+    const QPointF from = view()->markPosition(jaw, 1.0);
+    drag(view(), from, from + QPointF(2 * perFrame, 0));
+    const double moved = 1.0 + 2.0 / kFps;
+    QCOMPARE(keyAtTime(model(), 1.0)->channels.count(), std::size_t(1));
+    QVERIFY(keyAtTime(model(), 1.0)->has(69));
+    QVERIFY(keyAtTime(model(), moved)->has(3) && keyAtTime(model(), moved)->has(4));
+    QCOMPARE(model().selectedChannelKeys(), (std::vector<ChannelKey>{{3, moved}, {4, moved}}));
+
+    // The summary's mark at 2 s dragged a second to the left, onto 1 s: open_jaw's 0 there
+    // joins the tear count's key.
+    QTest::mouseClick(view(), Qt::LeftButton, {}, pt(view()->markPosition(0, 2.0)));
+    drag(view(), view()->markPosition(0, 2.0), view()->markPosition(0, 1.0));
+    QVERIFY(!keyAtTime(model(), 2.0));
+    QCOMPARE(keyAtTime(model(), 1.0)->value(3), 0.0f);
+    QCOMPARE(keyAtTime(model(), 1.0)->value(69), 60.0f);
+    QCOMPARE(model().undoStack()->count(), 2);
+  }
+
   void keysSelectCopyPasteDuplicateAndDelete() {
     view()->setFocus();
     QTest::keyClick(view(), Qt::Key_A);
