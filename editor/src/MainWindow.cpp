@@ -5,6 +5,7 @@
 #include <lacrima/editing/FrameStepClock.h>
 #include <lacrima/editing/KeyClipboard.h>
 #include <lacrima/editing/RecoveryStore.h>
+#include <lacrima/editor/DopeSheet.h>
 #include <lacrima/editor/KeyListPanel.h>
 #include <lacrima/editor/LayerPanel.h>
 #include <lacrima/editor/NumberField.h>
@@ -228,6 +229,8 @@ void MainWindow::createDocks() {
   animationViews_->setTabPosition(QTabWidget::West);
   timeline_ = new TimelineWidget(*model_, animationViews_);
   animationViews_->addTab(timeline_, tr("Keys"));
+  dopeSheet_ = new DopeSheet(*model_, animationViews_);
+  animationViews_->addTab(dopeSheet_, tr("Dope sheet"));
   timelineLayout->addWidget(transport_);
   timelineLayout->addWidget(animationViews_, 1);
   QDockWidget* timelineDock =

@@ -8,7 +8,6 @@
 #include <QMenu>
 #include <QMouseEvent>
 #include <QPainter>
-#include <QPainterPath>
 #include <QWheelEvent>
 
 #include <algorithm>
@@ -21,21 +20,10 @@ namespace {
 constexpr double kRulerHeight = 22.0;
 constexpr double kLaneHeight = 30.0;
 constexpr double kKeyRadius = 5.5;
-constexpr double kMinScale = 0.5;     // px per second: 30 minutes across 900 px
-constexpr double kMaxScale = 4000.0;  // a frame at 22 fps is 180 px
 constexpr double kCurveSampleRate = 60.0;
 constexpr std::size_t kMaxCurveSamples = 60000;
 
 double laneCentre() { return kRulerHeight + kLaneHeight / 2.0; }
-
-QString timeLabel(double seconds, double step) {
-  if (seconds >= 60.0 && step >= 1.0) {
-    const int s = static_cast<int>(std::lround(seconds));
-    return QStringLiteral("%1:%2").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'));
-  }
-  const int decimals = step >= 1.0 ? 0 : step >= 0.1 ? 1 : 2;
-  return QString::number(seconds, 'f', decimals) + QStringLiteral("s");
-}
 
 }  // namespace
 
@@ -66,8 +54,7 @@ TimelineWidget::TimelineWidget(editing::EditorModel& model, QWidget* parent)
 }
 
 void TimelineWidget::setView(double startSeconds, double pixelsPerSecond) {
-  scale_ = std::clamp(pixelsPerSecond, kMinScale, kMaxScale);
-  start_ = std::max(-40.0 / scale_, startSeconds);
+  axis_.set(startSeconds, pixelsPerSecond);
   update();
 }
 
@@ -77,13 +64,9 @@ void TimelineWidget::fitAll() {
     return;
   }
   fitPending_ = false;
-  const double end = std::max(model_.endTime(), 2.0);
-  const double usable = std::max(100.0, width() - 40.0);
-  setView(-20.0 / (usable / end), usable / end);
+  axis_.fit(model_.endTime(), width());
+  update();
 }
-
-double TimelineWidget::xOfTime(double seconds) const { return (seconds - start_) * scale_; }
-double TimelineWidget::timeAtX(double x) const { return start_ + x / scale_; }
 
 QPointF TimelineWidget::keyPosition(int index) const {
   const auto& keys = model_.document().keys.keys();
@@ -95,7 +78,7 @@ int TimelineWidget::keyAt(QPointF position) const {
   if (position.y() < kRulerHeight || position.y() > kRulerHeight + kLaneHeight + 6) return -1;
   const auto& keys = model_.document().keys.keys();
   const double t = timeAtX(position.x());
-  const double reach = (kKeyRadius + 2) / scale_;
+  const double reach = (kKeyRadius + 2) / axis_.scale();
   const auto it = std::lower_bound(keys.begin(), keys.end(), t - reach,
                                    [](const auto& k, double v) { return k.time < v; });
   int best = -1;
@@ -113,8 +96,7 @@ int TimelineWidget::keyAt(QPointF position) const {
 double TimelineWidget::frameStepSeconds() const { return model_.frameDuration(); }
 
 void TimelineWidget::followPlayhead() {
-  const double x = xOfTime(model_.currentTime());
-  if (x < 0 || x > width() - 10) setView(model_.currentTime() - 0.1 * width() / scale_, scale_);
+  if (axis_.follow(model_.currentTime(), width())) update();
 }
 
 void TimelineWidget::resizeEvent(QResizeEvent*) {
@@ -181,7 +163,8 @@ void TimelineWidget::paintEvent(QPaintEvent*) {
     p.fillRect(QRectF(x0, kRulerHeight, std::max(1.0, x1 - x0), height() - kRulerHeight),
                pal.color(QPalette::AlternateBase).lighter(118));
   }
-  paintRuler(p);
+  paintTimeRuler(p, axis_, QRectF(0, 0, width(), kRulerHeight), height(), frameStepSeconds(), pal,
+                 font());
   const QRectF curveArea(0, kRulerHeight + kLaneHeight + 4, width(),
                          height() - kRulerHeight - kLaneHeight - 8);
   paintCurves(p, curveArea);
@@ -192,18 +175,8 @@ void TimelineWidget::paintEvent(QPaintEvent*) {
              QPointF(width(), kRulerHeight + kLaneHeight + 0.5));
   paintKeys(p);
 
-  // Playhead.
-  const double px = std::round(xOfTime(model_.currentTime())) + 0.5;
-  p.setPen(QPen(theme::playhead(), 1.5));
-  p.drawLine(QPointF(px, 0), QPointF(px, height()));
-  const QString frameText = QString::number(model_.frameAt(model_.currentTime()));
-  const QFontMetrics fm(font());
-  const double w = fm.horizontalAdvance(frameText) + 10;
-  QPainterPath tag;
-  tag.addRoundedRect(QRectF(px - w / 2, 2, w, kRulerHeight - 5), 3, 3);
-  p.fillPath(tag, theme::playhead());
-  p.setPen(Qt::white);
-  p.drawText(QRectF(px - w / 2, 2, w, kRulerHeight - 5), Qt::AlignCenter, frameText);
+  paintPlayhead(p, axis_, model_.currentTime(), model_.frameAt(model_.currentTime()), 0,
+                kRulerHeight, height(), font());
 
   if (drag_ == Drag::Band) {
     QColor c = pal.color(QPalette::Highlight);
@@ -211,48 +184,6 @@ void TimelineWidget::paintEvent(QPaintEvent*) {
     p.fillRect(band_, c);
     p.setPen(QPen(pal.color(QPalette::Highlight), 1));
     p.drawRect(band_);
-  }
-}
-
-void TimelineWidget::paintRuler(QPainter& p) {
-  const QPalette& pal = palette();
-  p.fillRect(QRectF(0, 0, width(), kRulerHeight), pal.color(QPalette::Window).darker(108));
-  // Label spacing: the smallest "nice" step that leaves >= 70 px between labels.
-  static constexpr double kSteps[] = {0.05, 0.1, 0.25, 0.5, 1, 2, 5, 10, 15, 30, 60, 120, 300, 600};
-  double step = kSteps[std::size(kSteps) - 1];
-  for (double s : kSteps) {
-    if (s * scale_ >= 70.0) {
-      step = s;
-      break;
-    }
-  }
-  const double t0 = std::max(0.0, std::floor(timeAtX(0) / step) * step);
-  const double t1 = timeAtX(width());
-  QColor grid = pal.color(QPalette::Mid);
-  grid.setAlphaF(0.6);
-  // Frame ticks when frames are far enough apart to see.
-  const double frame = frameStepSeconds();
-  if (frame * scale_ >= 6.0) {
-    p.setPen(QPen(pal.color(QPalette::WindowText).darker(220), 1));
-    const long long first = static_cast<long long>(std::max(0.0, std::floor(timeAtX(0) / frame)));
-    for (long long f = first;; ++f) {
-      const double x = xOfTime(f * frame);
-      if (x > width()) break;
-      p.drawLine(QPointF(x, kRulerHeight - 4), QPointF(x, kRulerHeight));
-    }
-  }
-  p.setFont(font());
-  for (double t = t0; t <= t1 + step; t += step) {
-    const double x = std::round(xOfTime(t)) + 0.5;
-    p.setPen(QPen(grid, 1));
-    p.drawLine(QPointF(x, kRulerHeight), QPointF(x, height()));
-    p.setPen(QPen(pal.color(QPalette::WindowText).darker(130), 1));
-    p.drawLine(QPointF(x, kRulerHeight - 8), QPointF(x, kRulerHeight));
-    p.drawText(QRectF(x + 3, 0, 80, kRulerHeight - 6), Qt::AlignLeft | Qt::AlignVCenter,
-               timeLabel(t, step));
-    // Half steps, unlabelled.
-    const double hx = std::round(xOfTime(t + step / 2)) + 0.5;
-    p.drawLine(QPointF(hx, kRulerHeight - 5), QPointF(hx, kRulerHeight));
   }
 }
 
@@ -282,7 +213,7 @@ void TimelineWidget::paintCurves(QPainter& p, const QRectF& area) {
         return static_cast<float>(curve.samples[i] +
                                   (f - i) * (curve.samples[j] - curve.samples[i]));
       };
-      if (curve.rate / scale_ >= 1.0) {
+      if (curve.rate / axis_.scale() >= 1.0) {
         const double x0 = xOfTime(from);
         const double x1 = xOfTime(to);
         line.reserve(static_cast<qsizetype>(x1 - x0) + 4);
@@ -458,7 +389,7 @@ void TimelineWidget::paintKeys(QPainter& p) {
 // --- mouse --------------------------------------------------------------------------------
 
 int TimelineWidget::dragFrames(double x) const {
-  const double perFrame = frameStepSeconds() * scale_;
+  const double perFrame = frameStepSeconds() * axis_.scale();
   return static_cast<int>(std::lround((x - pressPos_.x()) / perFrame));
 }
 
@@ -466,7 +397,7 @@ void TimelineWidget::mousePressEvent(QMouseEvent* event) {
   pressPos_ = event->position();
   if (event->button() == Qt::MiddleButton) {
     drag_ = Drag::Pan;
-    panStart_ = start_;
+    panStart_ = axis_.start();
     return;
   }
   if (event->button() != Qt::LeftButton) return;
@@ -508,7 +439,7 @@ void TimelineWidget::mouseMoveEvent(QMouseEvent* event) {
       model_.setCurrentTime(timeAtX(pos.x()));
       break;
     case Drag::Pan:
-      setView(panStart_ - (pos.x() - pressPos_.x()) / scale_, scale_);
+      setView(panStart_ - (pos.x() - pressPos_.x()) / axis_.scale(), axis_.scale());
       break;
     case Drag::PendingKey:
       if (moved) drag_ = Drag::MoveKeys;
@@ -577,18 +508,8 @@ void TimelineWidget::mouseDoubleClickEvent(QMouseEvent* event) {
 }
 
 void TimelineWidget::wheelEvent(QWheelEvent* event) {
-  const QPoint delta = event->angleDelta();
-  const bool pan =
-      (event->modifiers() & Qt::ShiftModifier) || std::abs(delta.x()) > std::abs(delta.y());
-  if (pan) {
-    const int d = delta.x() != 0 ? delta.x() : delta.y();
-    setView(start_ - d / 120.0 * 60.0 / scale_, scale_);
-  } else {
-    const double anchor = timeAtX(event->position().x());
-    const double factor = std::pow(1.15, delta.y() / 120.0);
-    const double scale = std::clamp(scale_ * factor, kMinScale, kMaxScale);
-    setView(anchor - event->position().x() / scale, scale);
-  }
+  axis_.wheel(event->angleDelta(), event->modifiers() & Qt::ShiftModifier, event->position().x());
+  update();
   event->accept();
 }
 

@@ -14,6 +14,7 @@
 #include <lacrima/common/JsonWriter.h>
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editing/FapTransfer.h>
+#include <lacrima/editor/DopeSheetView.h>
 #include <lacrima/editor/MainWindow.h>
 #include <lacrima/editor/PreviewPanel.h>
 #include <lacrima/editor/SliderPanel.h>
@@ -168,6 +169,31 @@ int runEditor(int argc, char** argv) {
     timeline.repaint();
   });
 
+  // The dope sheet of the same animation: 68 channel rows (as many as fit are drawn), whole
+  // and zoomed in; selecting every channel key (179,520) and moving them all by a frame, as
+  // one undo step (plan, apply and repaint), then undoing it.
+  editor::DopeSheetView dopeSheet(longModel);
+  dopeSheet.resize(1400, 400);
+  dopeSheet.show();
+  app.processEvents();
+  dopeSheet.fitAll();
+  const Timing dopePaintAll = timeRuns(30, [&] { dopeSheet.repaint(); });
+  dopeSheet.setView(30.0, 200.0);
+  const Timing dopePaintZoomed = timeRuns(30, [&] { dopeSheet.repaint(); });
+  dopeSheet.fitAll();
+  const Timing dopeSelectAll = timeRuns(5, [&] {
+    dopeSheet.clearSelection();
+    dopeSheet.selectAll();
+  });
+  const int dopeChannelKeys = static_cast<int>(longModel.selectedChannelKeys().size());
+  const Timing dopeMoveAll = timeRuns(3, [&] {
+    const editing::ChannelKeyEdit edit = editing::moveChannelKeys(
+        longModel.document().keys, longModel.selectedChannelKeys(), 1, longModel.document().fps);
+    longModel.editKeys(edit.change, QStringLiteral("bench move"));
+    dopeSheet.repaint();
+    longModel.undoStack()->undo();
+  });
+
   // The live preview with 500 tear particles, in a full editor window.
   editorOptions.preview = true;
   bool previewRan = false;
@@ -287,6 +313,11 @@ int runEditor(int argc, char** argv) {
     writeTiming(json, "timeline_paint_zoomed_ms", paintZoomed);
     writeTiming(json, "timeline_scrub_ms", scrub);
     json.field("timeline_keys", static_cast<int>(longModel.document().keys.keys().size()));
+    writeTiming(json, "dope_sheet_paint_all_ms", dopePaintAll);
+    writeTiming(json, "dope_sheet_paint_zoomed_ms", dopePaintZoomed);
+    writeTiming(json, "dope_sheet_select_all_ms", dopeSelectAll);
+    writeTiming(json, "dope_sheet_move_all_ms", dopeMoveAll);
+    json.field("dope_sheet_channel_keys", dopeChannelKeys);
     json.key("preview");
     json.beginObject();
     json.field("ran", previewRan);
@@ -325,6 +356,10 @@ int runEditor(int argc, char** argv) {
               static_cast<int>(longModel.document().keys.keys().size()), paintAll.medianMs);
   std::printf("  timeline paint, zoomed in        %8.2f ms\n", paintZoomed.medianMs);
   std::printf("  timeline scrub step + paint      %8.2f ms\n", scrub.medianMs);
+  std::printf("  dope sheet paint, all            %8.2f ms\n", dopePaintAll.medianMs);
+  std::printf("  dope sheet paint, zoomed in      %8.2f ms\n", dopePaintZoomed.medianMs);
+  std::printf("  dope sheet select all (%d)   %8.2f ms\n", dopeChannelKeys, dopeSelectAll.medianMs);
+  std::printf("  dope sheet move all + undo       %8.2f ms\n", dopeMoveAll.medianMs);
   if (previewRan) {
     std::printf("preview, face + %d tear particles, %d frames, viewport %dx%d\n", particles,
                 options.frames, viewportWidth, viewportHeight);

@@ -38,6 +38,7 @@ namespace lacrima::editor {
 namespace head {
 class HeadWorkspace;
 }
+class DopeSheet;
 class KeyListPanel;
 class LayerPanel;
 class PresetPanel;
@@ -70,6 +71,7 @@ class MainWindow : public QMainWindow {
   LayerPanel* layers() const { return layers_; }
   // The tabs under the transport: Keys (the timeline) and the per-channel views.
   QTabWidget* animationViews() const { return animationViews_; }
+  DopeSheet* dopeSheet() const { return dopeSheet_; }  // the Dope sheet tab
   TransportBar* transport() const { return transport_; }
   PresetPanel* presets() const { return presets_; }
   PreviewPanel* preview() const { return preview_; }
@@ -145,6 +147,7 @@ class MainWindow : public QMainWindow {
   QTabWidget* animationViews_ = nullptr;
   LayerPanel* layers_ = nullptr;
   TimelineWidget* timeline_ = nullptr;
+  DopeSheet* dopeSheet_ = nullptr;
   TransportBar* transport_ = nullptr;
   PresetPanel* presets_ = nullptr;
   PreviewPanel* preview_ = nullptr;

@@ -13,6 +13,7 @@
 // same pixel are drawn once, and the curves are baked once per edit (a single-channel bake at
 // >= 60 samples per second) and reused for every repaint while scrubbing or playing.
 #include <lacrima/common/FapChannels.h>
+#include <lacrima/editor/TimeAxis.h>
 
 #include <QWidget>
 
@@ -31,13 +32,13 @@ class TimelineWidget : public QWidget {
  public:
   explicit TimelineWidget(editing::EditorModel& model, QWidget* parent = nullptr);
 
-  double viewStart() const { return start_; }
-  double pixelsPerSecond() const { return scale_; }
+  double viewStart() const { return axis_.start(); }
+  double pixelsPerSecond() const { return axis_.scale(); }
   void setView(double startSeconds, double pixelsPerSecond);
   void fitAll();
 
-  double xOfTime(double seconds) const;
-  double timeAtX(double x) const;
+  double xOfTime(double seconds) const { return axis_.xOf(seconds); }
+  double timeAtX(double x) const { return axis_.timeAt(x); }
   // Centre of key `index`'s mark (tests drive the mouse with it).
   QPointF keyPosition(int index) const;
   int keyAt(QPointF position) const;  // -1 when no key is there
@@ -73,14 +74,12 @@ class TimelineWidget : public QWidget {
   void ensureCurves();
   Curve bakeChannel(int fap) const;
   int dragFrames(double x) const;
-  void paintRuler(QPainter& p);
   void paintCurves(QPainter& p, const QRectF& area);
   void paintKeys(QPainter& p);
   double frameStepSeconds() const;
 
   editing::EditorModel& model_;
-  double start_ = -0.25;  // seconds at x = 0
-  double scale_ = 120.0;  // pixels per second
+  TimeAxis axis_;
   Drag drag_ = Drag::None;
   QPointF pressPos_;
   double panStart_ = 0;
