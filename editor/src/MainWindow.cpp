@@ -5,6 +5,7 @@
 #include <lacrima/editing/FrameStepClock.h>
 #include <lacrima/editing/KeyClipboard.h>
 #include <lacrima/editing/RecoveryStore.h>
+#include <lacrima/editor/GraphEditor.h>
 #include <lacrima/editor/KeyListPanel.h>
 #include <lacrima/editor/PresetPanel.h>
 #include <lacrima/editor/PreviewPanel.h>
@@ -223,6 +224,8 @@ void MainWindow::createDocks() {
   animationViews_->setTabPosition(QTabWidget::West);
   timeline_ = new TimelineWidget(*model_, animationViews_);
   animationViews_->addTab(timeline_, tr("Keys"));
+  graphEditor_ = new GraphEditor(*model_, animationViews_);
+  animationViews_->addTab(graphEditor_, tr("Graph"));
   timelineLayout->addWidget(transport_);
   timelineLayout->addWidget(animationViews_, 1);
   QDockWidget* timelineDock =

@@ -44,6 +44,7 @@ class PreviewPanel;
 class RecoveryBanner;
 class SliderPanel;
 class TimelineWidget;
+class GraphEditor;
 class TransportBar;
 
 struct EditorOptions {
@@ -66,6 +67,7 @@ class MainWindow : public QMainWindow {
   editing::FrameStepClock& clock() { return *clock_; }
   SliderPanel* sliders() const { return sliders_; }
   TimelineWidget* timeline() const { return timeline_; }
+  GraphEditor* graphEditor() const { return graphEditor_; }
   // The tabs under the transport: Keys (the timeline) and the per-channel views.
   QTabWidget* animationViews() const { return animationViews_; }
   TransportBar* transport() const { return transport_; }
@@ -142,6 +144,7 @@ class MainWindow : public QMainWindow {
   SliderPanel* sliders_ = nullptr;
   QTabWidget* animationViews_ = nullptr;
   TimelineWidget* timeline_ = nullptr;
+  GraphEditor* graphEditor_ = nullptr;
   TransportBar* transport_ = nullptr;
   PresetPanel* presets_ = nullptr;
   PreviewPanel* preview_ = nullptr;
