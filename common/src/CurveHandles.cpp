@@ -2,7 +2,9 @@
 
 #include "CurveSlopes.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -68,6 +70,32 @@ EffectiveHandles effectiveHandles(const KeyframeSequence& keys, int fap, int key
   handles.in = inHandle(knot, slope, handles.hasIn ? hIn : hOut);
   handles.out = outHandle(knot, slope, handles.hasOut ? hOut : hIn);
   return handles;
+}
+
+BezierTimeSolve solveBezierTime(const std::array<double, 4>& x, double t,
+                                BezierSolverSettings settings) {
+  const auto [x0, x1, x2, x3] = x;
+  const auto cubic = [](double p0, double p1, double p2, double p3, double u) {
+    const double r = 1.0 - u;
+    return r * r * r * p0 + 3.0 * u * r * r * p1 + 3.0 * u * u * r * p2 + u * u * u * p3;
+  };
+  // x'(u) = 3 [(1-u)^2 (x1-x0) + 2u(1-u) (x2-x1) + u^2 (x3-x2)]
+  const auto slope = [](double p0, double p1, double p2, double p3, double u) {
+    const double r = 1.0 - u;
+    return 3.0 * (r * r * (p1 - p0) + 2.0 * u * r * (p2 - p1) + u * u * (p3 - p2));
+  };
+  BezierTimeSolve solve;
+  double lo = 0.0, hi = 1.0;
+  solve.u = (t - x0) / (x3 - x0);
+  for (; solve.steps < settings.maxSteps; ++solve.steps) {
+    const double error = cubic(x0, x1, x2, x3, solve.u) - t;
+    if (std::abs(error) <= settings.tolerance * std::max(1.0, std::abs(t))) break;
+    (error > 0.0 ? hi : lo) = solve.u;
+    const double dx = slope(x0, x1, x2, x3, solve.u);
+    const double newton = dx > 0.0 ? solve.u - error / dx : -1.0;
+    solve.u = (newton > lo && newton < hi) ? newton : 0.5 * (lo + hi);
+  }
+  return solve;
 }
 
 }  // namespace lacrima::inline common

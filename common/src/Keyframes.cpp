@@ -2,6 +2,8 @@
 
 #include "CurveSlopes.h"
 
+#include <lacrima/common/CurveHandles.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -58,8 +60,7 @@ double hermite(const Knot& a, const Knot& b, double ma, double mb, double t) {
 // is first clamped into the segment, then, if the two together reach past it, both are scaled
 // down about their keys (keeping their directions) until they just meet: then
 // x1 - x0, x2 - x1, x3 - x2 >= 0 and x'(u), a Bernstein combination of them, is >= 0.
-// u for t is found by bisection safeguarding Newton steps; 60 halvings reach the double's
-// resolution for any segment, Newton usually ends it in a handful.
+// u for t is found by solveBezierTime (CurveHandles.h): bisection safeguarding Newton steps.
 double bezier(const Knot& a, const Knot& b, Handle ha, Handle hb, double t) {
   const double h = b.time - a.time;
   const auto clampTime = [h](Handle handle, double lo, double hi) {
@@ -82,19 +83,7 @@ double bezier(const Knot& a, const Knot& b, Handle ha, Handle hb, double t) {
     const double r = 1.0 - u;
     return r * r * r * p0 + 3.0 * u * r * r * p1 + 3.0 * u * u * r * p2 + u * u * u * p3;
   };
-  const auto slope = [](double p0, double p1, double p2, double p3, double u) {
-    const double r = 1.0 - u;
-    return 3.0 * (r * r * (p1 - p0) + 2.0 * u * r * (p2 - p1) + u * u * (p3 - p2));
-  };
-  double lo = 0.0, hi = 1.0, u = (t - a.time) / h;
-  for (int step = 0; step < 60; ++step) {
-    const double error = cubic(x0, x1, x2, x3, u) - t;
-    if (std::abs(error) <= 1e-12 * std::max(1.0, std::abs(t))) break;
-    (error > 0.0 ? hi : lo) = u;
-    const double dx = slope(x0, x1, x2, x3, u);
-    const double newton = dx > 0.0 ? u - error / dx : -1.0;
-    u = (newton > lo && newton < hi) ? newton : 0.5 * (lo + hi);
-  }
+  const double u = solveBezierTime({x0, x1, x2, x3}, t).u;
   return cubic(y0, y1, y2, y3, u);
 }
 

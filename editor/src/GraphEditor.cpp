@@ -165,16 +165,25 @@ const GraphCurve* GraphEditor::curveOf(int fap) const {
 
 void GraphEditor::setPreview(const editing::KeyChange& change, ChannelMask channels) {
   if (!preview_) preview_ = model_.document().keys;
+  // A plan that creates or removes keys shifts the key indices every curve holds.
+  const auto addsOrRemovesKeys = [](const editing::KeyChange& c) {
+    return c.before.size() != c.after.size() ||
+           !std::equal(
+               c.before.begin(), c.before.end(), c.after.begin(),
+               [](const Keyframe& a, const Keyframe& b) { return sameTime(a.time, b.time); });
+  };
+  bool reindex = addsOrRemovesKeys(change);
   // Back to the document at the previous plan's times, then the new plan: O(keys touched).
   if (previewChange_) {
+    reindex = reindex || addsOrRemovesKeys(*previewChange_);
     editing::applyKeys(*preview_, previewChange_->times, previewChange_->before);
     for (const Keyframe& key : previewChange_->before) channels |= key.channels;
     for (const Keyframe& key : previewChange_->after) channels |= key.channels;
   }
   editing::applyKeys(*preview_, change.times, change.after);
   previewChange_ = change;
-  // Key indices shift when keys appear or go: redraw everything then, else the touched channels.
-  if (preview_->keys().size() != model_.document().keys.keys().size()) {
+  if (reindex) {
+    // Every curve again, keeping the ranges the drag started with (see ensureCurves).
     const std::vector<GraphCurve> old = curves_;
     invalidateAllCurves();
     ensureCurves();
@@ -397,8 +406,13 @@ GraphEditor::Hit GraphEditor::hitAt(QPointF position) const {
       const std::size_t position = static_cast<std::size_t>(k - curve->keys.begin());
       consider(keyPosition(curve->fap, *k), HitKind::Key, curve->fap, *k);
       if (!showsHandles(*curve, position)) continue;
-      consider(handlePosition(curve->fap, *k, HandleSide::In), HitKind::InHandle, curve->fap, *k);
-      consider(handlePosition(curve->fap, *k, HandleSide::Out), HitKind::OutHandle, curve->fap, *k);
+      // Only the handles drawn: an end key has none on its open side.
+      const EffectiveHandles handles = effectiveHandles(shownKeys(), curve->fap, *k);
+      if (handles.hasIn)
+        consider(handlePosition(curve->fap, *k, HandleSide::In), HitKind::InHandle, curve->fap, *k);
+      if (handles.hasOut)
+        consider(handlePosition(curve->fap, *k, HandleSide::Out), HitKind::OutHandle, curve->fap,
+                 *k);
     }
   }
   return best;
@@ -702,6 +716,11 @@ void GraphEditor::contextMenuEvent(QContextMenuEvent* event) {
           &GraphEditor::frameAll);
   connect(menu.addAction(tr("Frame &selected (F)")), &QAction::triggered, this,
           &GraphEditor::frameSelected);
+  // Until channels are chosen elsewhere (dope sheet, channel list), these pick them here.
+  connect(menu.addAction(tr("Show all &animated channels")), &QAction::triggered, this,
+          [this] { model_.setSelectedChannels(model_.animatedChannels()); });
+  connect(menu.addAction(tr("Show the &last touched channel only")), &QAction::triggered, this,
+          [this] { model_.setSelectedChannels({}); });
   QAction* normalize = menu.addAction(tr("&Normalize"));
   normalize->setCheckable(true);
   normalize->setChecked(normalized_);

@@ -223,7 +223,7 @@ void GraphEditor::paintKeys(QPainter& p, const GraphCurve& curve, const QColor& 
       }
     }
     p.setPen(QPen(palette().color(QPalette::Base), 1.0));
-    p.setBrush(selected ? theme::keyAccent() : QColor(Qt::white));
+    p.setBrush(selected ? theme::keyAccent() : palette().color(QPalette::Text));
     const double r = kKeyRadius;
     const QPointF diamond[4] = {
         {at.x(), at.y() - r}, {at.x() + r, at.y()}, {at.x(), at.y() + r}, {at.x() - r, at.y()}};

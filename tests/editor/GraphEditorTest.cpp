@@ -217,6 +217,32 @@ class GraphEditorTest : public QObject {
     QCOMPARE(model_->document().keys.keys()[1].value(kJaw), 300.0f);
   }
 
+  // A key dragged past a key of another channel: during the drag the key list changes (one
+  // key goes, one appears), and the other curve's keys and handles must still be drawn from
+  // the right keys.
+  void draggingAKeyPastAnotherChannelsKey() {
+    open(documentWith({key(0.0, Interpolation::Bezier, {{kJaw, 0.0f}, {kLip, 0.0f}}),
+                       key(0.4, Interpolation::Bezier, {{kJaw, 100.0f}}),
+                       key(0.5, Interpolation::Bezier, {{kLip, 20.0f}}),
+                       key(1.0, Interpolation::Bezier, {{kJaw, 0.0f}, {kLip, 10.0f}})}),
+         channels({kJaw, kLip}));
+    const QPointF from = editor_->keyPosition(kJaw, 1);
+    const QPointF to(editor_->xOfTime(0.6), from.toPoint().y());  // the pressed pixel row
+    QTest::mousePress(editor_.get(), Qt::LeftButton, {}, from.toPoint());
+    QMouseEvent move(QEvent::MouseMove, to, editor_->mapToGlobal(to), Qt::NoButton, Qt::LeftButton,
+                     Qt::NoModifier);
+    QCoreApplication::sendEvent(editor_.get(), &move);
+    editor_->grab();  // paints the preview: the lip key at 0.5 is now key 1
+    const QPointF lip = editor_->keyPosition(kLip, 1);
+    QCOMPARE(lip.x(), editor_->xOfTime(0.5));
+    QCOMPARE(lip.y(), editor_->yOfValue(kLip, 20.0));
+    QTest::mouseRelease(editor_.get(), Qt::LeftButton, {}, to.toPoint());
+    const KeyframeSequence& keys = model_->document().keys;
+    QCOMPARE(editing::findKey(keys, 0.4), -1);
+    QCOMPARE(keys.keys()[2].time, 0.6);
+    QCOMPARE(keys.keys()[2].value(kJaw), 100.0f);
+  }
+
   void boxSelectsTheKeysInside() {
     open(documentWith({key(0.0, Interpolation::Linear, {{kJaw, 0.0f}, {kLip, 0.0f}}),
                        key(0.5, Interpolation::Linear, {{kJaw, 100.0f}, {kLip, 20.0f}}),
