@@ -3,6 +3,7 @@
 #include <lacrima/editor/GraphEditor.h>
 
 #include "GraphEditorCurves.h"
+#include "GraphEditorLayout.h"
 
 #include <lacrima/common/CurveHandles.h>
 #include <lacrima/common/FapTable.h>
@@ -16,12 +17,10 @@
 #include <cmath>
 
 namespace lacrima::editor {
-namespace {
 
-constexpr double kRulerHeight = 22.0;
-constexpr double kAxisWidth = 56.0;
-constexpr double kKeyRadius = 4.5;
-constexpr double kHandleRadius = 3.0;
+using namespace graph_layout;
+
+namespace {
 
 // A colour per channel, the same in every session: hues spread by the golden ratio.
 QColor channelColour(int fap) {
@@ -36,8 +35,12 @@ double niceStep(double minimum) {
   return 10.0 * power;
 }
 
+// As many decimals as the step needs (0.25 s steps label 0.25, 0.50, 0.75).
 QString timeLabel(double seconds, double step) {
-  const int decimals = step >= 1.0 ? 0 : step >= 0.1 ? 1 : 2;
+  int decimals = 0;
+  while (decimals < 3 && std::abs(step * std::pow(10.0, decimals) -
+                                  std::round(step * std::pow(10.0, decimals))) > 1e-9)
+    ++decimals;
   return QString::number(seconds, 'f', decimals) + QStringLiteral("s");
 }
 
