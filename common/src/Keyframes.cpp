@@ -1,5 +1,9 @@
 #include <lacrima/common/Keyframes.h>
 
+#include "CurveSlopes.h"
+
+#include <lacrima/common/CurveHandles.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -11,6 +15,8 @@
 namespace lacrima::inline common {
 namespace {
 
+using namespace curve_detail;
+
 // Keys closer than this are the same key: far below a frame at any sane rate, far above
 // the rounding error of times computed as frame / fps.
 constexpr double kSameTime = 1e-9;
@@ -18,13 +24,6 @@ constexpr double kSameTime = 1e-9;
 // A bake allocates frames * 280 bytes up front; 2^24 frames (4.7 GB, 8.8 days at 22 fps)
 // is beyond any real use, and refusing it beats being killed by the out-of-memory handler.
 constexpr double kMaxBakedFrames = 16777216.0;
-
-// One point of one channel's curve: a key that sets the channel.
-struct Knot {
-  double time;
-  double value;
-  KeyShape shape;  // shape.interpolation: of the segment that starts here
-};
 
 void requireValidFps(double fps, const char* caller) {
   if (!std::isfinite(fps) || fps <= 0.0) {
@@ -38,49 +37,6 @@ void requireFiniteTime(double seconds) {
   if (!std::isfinite(seconds)) {
     throw std::invalid_argument("keyframe time must be finite, got " + std::to_string(seconds));
   }
-}
-
-int sign(double x) { return (x > 0.0) - (x < 0.0); }
-
-double secant(const Knot& a, const Knot& b) { return (b.value - a.value) / (b.time - a.time); }
-
-// Steffen's slope at an interior knot. With same-signed secants it equals
-// min(2|d0|, 2|d1|, |p|) in their direction; at a local extremum (signs differ or one is 0)
-// it is 0.
-double interiorSlope(const Knot& previous, const Knot& knot, const Knot& next) {
-  const double h0 = knot.time - previous.time;
-  const double h1 = next.time - knot.time;
-  const double d0 = secant(previous, knot);
-  const double d1 = secant(knot, next);
-  const double p = (d0 * h1 + d1 * h0) / (h0 + h1);
-  return (sign(d0) + sign(d1)) * std::min({std::abs(d0), std::abs(d1), std::abs(p) / 2.0});
-}
-
-// Steffen's one-sided slope at an end knot: the slope of the parabola through the end and
-// its two neighbours, set to 0 if it opposes the adjacent secant and capped at twice it.
-// With only two knots the curve is the straight line between them.
-double endSlope(const Knot& end, const Knot& near, const Knot* far) {
-  const double d1 = secant(end, near);
-  if (!far) return d1;
-  const double h1 = std::abs(near.time - end.time);
-  const double h2 = std::abs(far->time - near.time);
-  const double d2 = secant(near, *far);
-  const double p = d1 * (1.0 + h1 / (h1 + h2)) - d2 * h1 / (h1 + h2);
-  if (p * d1 <= 0.0) return 0.0;
-  if (std::abs(p) > 2.0 * std::abs(d1)) return 2.0 * d1;
-  return p;
-}
-
-// Slope at knots[i], looking at most one knot to either side (two at the ends), so a
-// window of the knots around a segment gives the same slopes as the whole curve.
-double slopeAt(std::span<const Knot> knots, std::size_t i) {
-  const std::size_t n = knots.size();
-  if (n < 2) return 0.0;
-  const Knot* thirdFromStart = n > 2 ? &knots[2] : nullptr;
-  const Knot* thirdFromEnd = n > 2 ? &knots[n - 3] : nullptr;
-  if (i == 0) return endSlope(knots[0], knots[1], thirdFromStart);
-  if (i == n - 1) return endSlope(knots[n - 1], knots[n - 2], thirdFromEnd);
-  return interiorSlope(knots[i - 1], knots[i], knots[i + 1]);
 }
 
 // Cubic Hermite between a and b. Why it cannot overshoot: with d the secant and
@@ -104,8 +60,7 @@ double hermite(const Knot& a, const Knot& b, double ma, double mb, double t) {
 // is first clamped into the segment, then, if the two together reach past it, both are scaled
 // down about their keys (keeping their directions) until they just meet: then
 // x1 - x0, x2 - x1, x3 - x2 >= 0 and x'(u), a Bernstein combination of them, is >= 0.
-// u for t is found by bisection safeguarding Newton steps; 60 halvings reach the double's
-// resolution for any segment, Newton usually ends it in a handful.
+// u for t is found by solveBezierTime (CurveHandles.h): bisection safeguarding Newton steps.
 double bezier(const Knot& a, const Knot& b, Handle ha, Handle hb, double t) {
   const double h = b.time - a.time;
   const auto clampTime = [h](Handle handle, double lo, double hi) {
@@ -128,33 +83,8 @@ double bezier(const Knot& a, const Knot& b, Handle ha, Handle hb, double t) {
     const double r = 1.0 - u;
     return r * r * r * p0 + 3.0 * u * r * r * p1 + 3.0 * u * u * r * p2 + u * u * u * p3;
   };
-  const auto slope = [](double p0, double p1, double p2, double p3, double u) {
-    const double r = 1.0 - u;
-    return 3.0 * (r * r * (p1 - p0) + 2.0 * u * r * (p2 - p1) + u * u * (p3 - p2));
-  };
-  double lo = 0.0, hi = 1.0, u = (t - a.time) / h;
-  for (int step = 0; step < 60; ++step) {
-    const double error = cubic(x0, x1, x2, x3, u) - t;
-    if (std::abs(error) <= 1e-12 * std::max(1.0, std::abs(t))) break;
-    (error > 0.0 ? hi : lo) = u;
-    const double dx = slope(x0, x1, x2, x3, u);
-    const double newton = dx > 0.0 ? u - error / dx : -1.0;
-    u = (newton > lo && newton < hi) ? newton : 0.5 * (lo + hi);
-  }
+  const double u = solveBezierTime({x0, x1, x2, x3}, t).u;
   return cubic(y0, y1, y2, y3, u);
-}
-
-// A Bézier key's handle on the side of a segment of duration h: its own, or, for auto handles,
-// a third of the segment along the Smooth curve's slope, which makes the Bézier segment that
-// very Hermite cubic (x(u) is then linear in u).
-Handle outHandle(const Knot& knot, double slope, double h) {
-  if (knot.shape.handles != HandleType::Auto) return knot.shape.out;
-  return {h / 3.0, slope * h / 3.0};
-}
-
-Handle inHandle(const Knot& knot, double slope, double h) {
-  if (knot.shape.handles != HandleType::Auto) return knot.shape.in;
-  return {-h / 3.0, -slope * h / 3.0};
 }
 
 // Value of a channel's curve at t, where `reached` knots lie at or before t.
@@ -190,10 +120,6 @@ ChannelMask unionOfChannels(const std::vector<Keyframe>& keys) {
   ChannelMask mask;
   for (const Keyframe& key : keys) mask |= key.channels;
   return mask;
-}
-
-Knot knotOf(const Keyframe& key, int index) {
-  return {key.time, key.values[index], key.shape(fapNumber(index))};
 }
 
 // The scalar dialect's convention: the code is select1, shown at full weight.

@@ -6,6 +6,7 @@
 #include <lacrima/editing/KeyClipboard.h>
 #include <lacrima/editing/RecoveryStore.h>
 #include <lacrima/editor/DopeSheet.h>
+#include <lacrima/editor/GraphEditor.h>
 #include <lacrima/editor/KeyListPanel.h>
 #include <lacrima/editor/LayerPanel.h>
 #include <lacrima/editor/NumberField.h>
@@ -231,6 +232,8 @@ void MainWindow::createDocks() {
   animationViews_->addTab(timeline_, tr("Keys"));
   dopeSheet_ = new DopeSheet(*model_, animationViews_);
   animationViews_->addTab(dopeSheet_, tr("Dope sheet"));
+  graphEditor_ = new GraphEditor(*model_, animationViews_);
+  animationViews_->addTab(graphEditor_, tr("Graph"));
   timelineLayout->addWidget(transport_);
   timelineLayout->addWidget(animationViews_, 1);
   QDockWidget* timelineDock =

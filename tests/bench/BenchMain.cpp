@@ -15,6 +15,7 @@ int runPlayer(int argc, char** argv);
 int runHead(int argc, char** argv);
 int runProposal(int argc, char** argv);
 int runPick(int argc, char** argv);
+int runBezier(int argc, char** argv);
 }  // namespace lacrima::bench
 
 namespace {
@@ -53,6 +54,9 @@ const Subcommand kSubcommands[] = {
      lacrima::bench::runProposal},
     {"pick", "picking a head under the mouse (Head workspace): hierarchy build, refit, one ray",
      lacrima::bench::runPick},
+    {"bezier",
+     "graph editor curves: error of the Bézier u-for-t solve beside ns per solve, per tolerance",
+     lacrima::bench::runBezier},
 };
 
 void printUsage(FILE* out) {

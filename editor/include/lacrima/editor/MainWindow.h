@@ -46,6 +46,7 @@ class PreviewPanel;
 class RecoveryBanner;
 class SliderPanel;
 class TimelineWidget;
+class GraphEditor;
 class TransportBar;
 
 struct EditorOptions {
@@ -69,6 +70,7 @@ class MainWindow : public QMainWindow {
   SliderPanel* sliders() const { return sliders_; }
   TimelineWidget* timeline() const { return timeline_; }
   LayerPanel* layers() const { return layers_; }
+  GraphEditor* graphEditor() const { return graphEditor_; }
   // The tabs under the transport: Keys (the timeline) and the per-channel views.
   QTabWidget* animationViews() const { return animationViews_; }
   DopeSheet* dopeSheet() const { return dopeSheet_; }  // the Dope sheet tab
@@ -148,6 +150,7 @@ class MainWindow : public QMainWindow {
   LayerPanel* layers_ = nullptr;
   TimelineWidget* timeline_ = nullptr;
   DopeSheet* dopeSheet_ = nullptr;
+  GraphEditor* graphEditor_ = nullptr;
   TransportBar* transport_ = nullptr;
   PresetPanel* presets_ = nullptr;
   PreviewPanel* preview_ = nullptr;
