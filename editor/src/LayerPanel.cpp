@@ -2,11 +2,11 @@
 
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editing/KeyChange.h>
+#include <lacrima/editor/NumberField.h>
 
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QLineEdit>
 #include <QPushButton>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -37,21 +37,18 @@ LayerPanel::LayerPanel(editing::EditorModel& model, QWidget* parent)
 
   auto* row = new QHBoxLayout;
   row->addWidget(new QLabel(tr("Intensity at playhead"), this));
-  intensity_ = new QLineEdit(this);
+  intensity_ = new NumberField(this);
   intensity_->setObjectName(QStringLiteral("layerIntensity"));
-  intensity_->setPlaceholderText(QStringLiteral("-100 … 100"));
-  intensity_->setToolTip(tr("1 is the preset's pose, 0 nothing, 0.5 half of it (-100..100)"));
+  intensity_->setRange({-kMaxIntensity, kMaxIntensity, false, {}});
+  intensity_->setDecimals(3);
+  intensity_->setSingleStep(0.1);
+  intensity_->setSubject(tr("a layer's intensity (1 = the preset's pose, 0 = nothing)"));
   row->addWidget(intensity_, 1);
   key_ = new QPushButton(tr("Key"), this);
   unkey_ = new QPushButton(tr("Remove key"), this);
   row->addWidget(key_);
   row->addWidget(unkey_);
   layout->addLayout(row);
-  problem_ = new QLabel(this);
-  problem_->setObjectName(QStringLiteral("layerIntensityProblem"));
-  problem_->setStyleSheet(QStringLiteral("color: #d9534f"));
-  problem_->hide();
-  layout->addWidget(problem_);
   remove_ = new QPushButton(tr("Delete layer"), this);
   layout->addWidget(remove_);
 
@@ -63,7 +60,9 @@ LayerPanel::LayerPanel(editing::EditorModel& model, QWidget* parent)
     if (rebuilding_ || column != kName) return;
     model_.setLayerMuted(list_->indexOfTopLevelItem(item), item->checkState(kName) != Qt::Checked);
   });
-  connect(intensity_, &QLineEdit::returnPressed, this, &LayerPanel::keyTypedIntensity);
+  // Enter, a step or "Key" keys the value; a refused text changes nothing (the field says why).
+  connect(intensity_, &NumberField::valueEntered, this,
+          [this](double value) { model_.keyLayerIntensity(selectedLayer(), value); });
   connect(key_, &QPushButton::clicked, this, &LayerPanel::keyTypedIntensity);
   connect(unkey_, &QPushButton::clicked, this,
           [this] { model_.unkeyLayerIntensity(selectedLayer()); });
@@ -78,17 +77,8 @@ int LayerPanel::selectedLayer() const {
 
 bool LayerPanel::keyTypedIntensity() {
   const int layer = selectedLayer();
-  if (layer < 0) return false;
-  bool ok = false;
-  const QString text = intensity_->text().trimmed();
-  const double value = text.toDouble(&ok);
-  if (!ok || !std::isfinite(value) || std::abs(value) > kMaxIntensity) {
-    problem_->setText(tr("\"%1\" refused: an intensity is a number from -100 to 100").arg(text));
-    problem_->show();
-    return false;
-  }
-  problem_->hide();
-  model_.keyLayerIntensity(layer, value);
+  if (layer < 0 || !intensity_->commit()) return false;
+  model_.keyLayerIntensity(layer, intensity_->value());
   return true;
 }
 
@@ -118,10 +108,7 @@ void LayerPanel::refreshValues() {
         kIntensity, QString::number(layers[static_cast<std::size_t>(i)].intensityAt(now), 'g', 3));
   }
   const int layer = selectedLayer();
-  if (layer >= 0 && !intensity_->hasFocus()) {
-    intensity_->setText(
-        QString::number(layers[static_cast<std::size_t>(layer)].intensityAt(now), 'g', 4));
-  }
+  if (layer >= 0) intensity_->setValue(layers[static_cast<std::size_t>(layer)].intensityAt(now));
   updateButtons();
 }
 

@@ -119,7 +119,7 @@ TimelineWidget::Curve TimelineWidget::bakeChannel(int fap) const {
     Keyframe only;
     only.time = key.time;
     only.interpolation = key.interpolation;
-    only.set(fap, key.value(fap));
+    only.takeChannel(key, fap);  // with the channel's own shape (Bézier handles, holds)
     knots.push_back(only);
   }
   if (knots.empty()) return curve;

@@ -1,12 +1,11 @@
 #pragma once
 // The Layers panel: the presets added as layers (PoseLayer.h), each with its intensity at the
 // playhead, a mute box and the number of intensity keys. Under the list, the selected layer's
-// intensity can be keyed at the playhead (Enter in the field or "Key"), a key there removed,
+// intensity can be keyed at the playhead (Enter or a step in the field, or "Key"; the field is
+// a NumberField: a refused text changes nothing and says why), a key there removed,
 // and the layer deleted. Every change goes through EditorModel and is one undo step.
 #include <QWidget>
 
-class QLabel;
-class QLineEdit;
 class QPushButton;
 class QTreeWidget;
 
@@ -16,6 +15,8 @@ class EditorModel;
 
 namespace lacrima::editor {
 
+class NumberField;
+
 class LayerPanel : public QWidget {
   Q_OBJECT
  public:
@@ -23,8 +24,8 @@ class LayerPanel : public QWidget {
 
   QTreeWidget* list() const { return list_; }
   int selectedLayer() const;  // -1 when none
-  // Keys the selected layer's intensity at the playhead from the field's text; false (with the
-  // reason shown under the field) when the text is not a number in -100..100.
+  // Keys the selected layer's intensity at the playhead from the field's text; false when the
+  // text is refused (the field shows why: not a number in -100..100).
   bool keyTypedIntensity();
 
  private:
@@ -34,8 +35,7 @@ class LayerPanel : public QWidget {
 
   editing::EditorModel& model_;
   QTreeWidget* list_;
-  QLineEdit* intensity_;
-  QLabel* problem_;
+  NumberField* intensity_;
   QPushButton* key_;
   QPushButton* unkey_;
   QPushButton* remove_;
