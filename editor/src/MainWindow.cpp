@@ -227,7 +227,6 @@ void MainWindow::createDocks() {
   // per-channel views beside it.
   animationViews_ = new QTabWidget(timelineBox);
   animationViews_->setDocumentMode(true);
-  animationViews_->setTabPosition(QTabWidget::West);
   timeline_ = new TimelineWidget(*model_, animationViews_);
   animationViews_->addTab(timeline_, tr("Keys"));
   dopeSheet_ = new DopeSheet(*model_, animationViews_);
@@ -241,7 +240,7 @@ void MainWindow::createDocks() {
   // The timeline spans the whole width, under the channel list too.
   setCorner(Qt::BottomLeftCorner, Qt::BottomDockWidgetArea);
   setCorner(Qt::BottomRightCorner, Qt::BottomDockWidgetArea);
-  resizeDocks({timelineDock}, {250}, Qt::Vertical);
+  resizeDocks({timelineDock}, {300}, Qt::Vertical);  // room for the dope sheet and graph
   resizeDocks({channels, presetDock}, {470, 330}, Qt::Horizontal);
 
   connect(timeline_, &TimelineWidget::copyRequested, this, &MainWindow::copyKeys);
