@@ -1,0 +1,244 @@
+// lacrima-bench preview: does the editor's live preview keep the window responsive with many
+// tear particles? The editor window runs as an animator uses it: paused, tear preview on, the
+// tear channels set to ask for N particles. A 5 ms timer on the UI thread records the largest
+// gap between its ticks (the longest event-loop stall) while the preview runs for a few
+// seconds; the tear simulation's own step time is printed beside it, since that is what a
+// preview on the UI thread would stall for. Then the tear channels go back to 0 and the time
+// until the panel shows no particles is measured (it should be at once, not after the running
+// step). Target: longest stall <= 50 ms.
+#include "BenchCommandLine.h"
+
+#include <lacrima/common/FapTable.h>
+#include <lacrima/common/JsonWriter.h>
+#include <lacrima/editing/EditorModel.h>
+#include <lacrima/editor/MainWindow.h>
+#include <lacrima/editor/PreviewPanel.h>
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTimer>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace lacrima::bench {
+
+namespace {
+
+constexpr double kStallTargetMs = 50;
+constexpr int kTickMs = 5;
+
+struct Options {
+  std::vector<int> particles;  // empty: 10,000 and 100,000
+  double seconds = 4;
+  int width = 1440, height = 900;
+  bool json = false;
+};
+
+std::optional<int> parseOptions(int argc, char** argv, Options& options) {
+  BenchCommandLine line(
+      "preview",
+      "The longest event-loop stall of the editor's live preview while it simulates N tear\n"
+      "particles (paused, tear preview on), beside the simulation's step time; then how long\n"
+      "the preview takes to show no particles once the tear channels go back to 0.\n"
+      "Needs an X display and the default head:\n"
+      "  xvfb-run -a -s \"-screen 0 1280x1024x24\" lacrima-bench preview");
+  line.option("particles", "N",
+              "Particles asked for by the tear channels (repeatable; default 10000 and 100000).",
+              [&](const QString& value) -> std::string {
+                bool ok = false;
+                const int n = value.toInt(&ok);
+                if (!ok || n < 2 || n > 199998)
+                  return "expected a whole number of particles from 2 to 199998";
+                options.particles.push_back(n);
+                return {};
+              });
+  line.number("seconds", "S", "How long the preview runs per count (default 4).", 0.2, 600,
+              options.seconds);
+  line.imageSize("size", "Editor window size (default 1440x900).", options.width, options.height);
+  line.flag("json", "One JSON object instead of the table.", options.json);
+  const std::optional<int> status = line.parse(argc, argv);
+  if (options.particles.empty()) options.particles = {10000, 100000};
+  return status;
+}
+
+struct Run {
+  int requested = 0;
+  bool ran = false;
+  std::string note;
+  double stallMs = 0;            // largest gap between ticks of the 5 ms timer
+  double tickMedianMs = 0;       // the typical gap (5 ms when nothing stalls)
+  double stepMs = 0;             // the preview's last simulation step
+  double firstParticlesMs = -1;  // from setting the channels until particles show
+  int particles = 0;             // shown at the end of the run
+  double clearMs = -1;           // tear channels to 0 -> no particles shown (-1: not within 2 s)
+  double closeMs = 0;            // destroying the window (the preview stops its work)
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+Run runOne(QApplication& app, const editor::EditorOptions& editorOptions, const Options& options,
+           int requested) {
+  Run run;
+  run.requested = requested;
+  QElapsedTimer closing;
+  {
+    editor::MainWindow window(editorOptions);
+    window.resize(options.width, options.height);
+    window.show();
+    editor::PreviewPanel& preview = *window.preview();
+    if (!preview.loadHead() || !preview.viewportWidget()) {
+      run.note = "no preview: " + preview.statusText().toStdString();
+      window.model().markSaved();
+      return run;
+    }
+    QElapsedTimer settle;
+    settle.start();
+    while (settle.elapsed() < 300) app.processEvents(QEventLoop::AllEvents, 20);
+
+    editing::EditorModel& model = window.model();
+    std::vector<double> gaps;
+    QElapsedTimer sinceTick, wall;
+    QTimer tick;
+    tick.setTimerType(Qt::PreciseTimer);
+    tick.setInterval(kTickMs);
+    QObject::connect(&tick, &QTimer::timeout, [&] {
+      gaps.push_back(sinceTick.nsecsElapsed() / 1e6);
+      sinceTick.restart();
+      if (run.firstParticlesMs < 0 && preview.particleCount() > 0)
+        run.firstParticlesMs = wall.nsecsElapsed() / 1e6;
+    });
+    preview.setTearPreview(true);
+    wall.start();
+    sinceTick.start();
+    tick.start();
+    model.setChannels({{kTearLeftFap, static_cast<float>(requested / 2)},
+                       {kTearRightFap, static_cast<float>(requested - requested / 2)}},
+                      QStringLiteral("bench tears"));
+    while (wall.nsecsElapsed() / 1e6 < options.seconds * 1000)
+      app.processEvents(QEventLoop::WaitForMoreEvents, kTickMs);
+    run.particles = preview.particleCount();
+    run.stepMs = preview.lastProduceMilliseconds();
+
+    // Tears off: the panel should show none at once.
+    QElapsedTimer clearing;
+    clearing.start();
+    model.setChannels({{kTearLeftFap, 0.0f}, {kTearRightFap, 0.0f}}, QStringLiteral("dry"));
+    while (clearing.elapsed() < 2000) {
+      if (preview.particleCount() == 0) {
+        run.clearMs = clearing.nsecsElapsed() / 1e6;
+        break;
+      }
+      app.processEvents(QEventLoop::WaitForMoreEvents, kTickMs);
+    }
+    tick.stop();
+    if (!gaps.empty()) {
+      run.stallMs = *std::max_element(gaps.begin(), gaps.end());
+      run.tickMedianMs = median(gaps);
+    }
+    run.ran = true;
+    model.markSaved();
+    closing.start();
+  }
+  run.closeMs = closing.nsecsElapsed() / 1e6;
+  return run;
+}
+
+}  // namespace
+
+int runPreview(int argc, char** argv) {
+  Options options;
+  if (const std::optional<int> status = parseOptions(argc, argv, options)) return *status;
+
+  const bool display = std::getenv("DISPLAY") && *std::getenv("DISPLAY");
+  if (!display && !std::getenv("QT_QPA_PLATFORM")) setenv("QT_QPA_PLATFORM", "offscreen", 1);
+  int qtArgc = 1;
+  char name[] = "lacrima-bench";
+  char* qtArgv[] = {name, nullptr};
+  QApplication app(qtArgc, qtArgv);
+  QStandardPaths::setTestModeEnabled(true);  // keep the user's settings out of it
+  QTemporaryDir recovery;
+
+  editor::EditorOptions editorOptions;
+  editorOptions.interactive = false;
+  editorOptions.offerRecovery = false;
+  editorOptions.recoveryDirectory = recovery.path();
+  editorOptions.preview = true;
+
+  std::vector<Run> runs;
+  for (int requested : options.particles) {
+    if (!display) {
+      Run skipped;
+      skipped.requested = requested;
+      skipped.note = "no X display: the viewport needs one (run under xvfb-run)";
+      runs.push_back(skipped);
+      continue;
+    }
+    runs.push_back(runOne(app, editorOptions, options, requested));
+  }
+  bool pass = true;
+  for (const Run& r : runs) pass = pass && r.ran && r.stallMs <= kStallTargetMs;
+
+  if (options.json) {
+    JsonWriter json(JsonWriter::Layout::Compact);
+    json.beginObject();
+    json.field("benchmark", "preview");
+    json.field("seconds", options.seconds);
+    json.field("tick_ms", kTickMs);
+    json.field("target_stall_ms_at_most", kStallTargetMs);
+    json.key("runs");
+    json.beginArray();
+    for (const Run& r : runs) {
+      json.beginObject();
+      json.field("requested_particles", r.requested);
+      json.field("ran", r.ran);
+      if (!r.ran) json.field("note", r.note);
+      json.field("longest_stall_ms", r.stallMs);
+      json.field("tick_median_ms", r.tickMedianMs);
+      json.field("step_ms", r.stepMs);
+      json.field("first_particles_ms", r.firstParticlesMs);
+      json.field("particles_shown", r.particles);
+      json.field("clear_ms", r.clearMs);
+      json.field("close_ms", r.closeMs);
+      json.field("pass", r.ran && r.stallMs <= kStallTargetMs);
+      json.endObject();
+    }
+    json.endArray();
+    json.field("pass", pass);
+    json.endObject();
+    std::fputs(std::move(json).finish().c_str(), stdout);
+    return 0;
+  }
+
+  std::printf("editor preview, paused with tear preview on, %.1f s per count, %d ms timer\n",
+              options.seconds, kTickMs);
+  std::printf("  %9s  %11s  %9s  %11s  %10s  %9s  %10s  %9s\n", "requested", "stall (max)",
+              "tick med", "sim step", "first tear", "shown", "tears->0", "close");
+  for (const Run& r : runs) {
+    if (!r.ran) {
+      std::printf("  %9d  skipped (%s)\n", r.requested, r.note.c_str());
+      continue;
+    }
+    char clear[32];
+    if (r.clearMs >= 0)
+      std::snprintf(clear, sizeof clear, "%.1f ms", r.clearMs);
+    else
+      std::snprintf(clear, sizeof clear, "> 2 s");
+    std::printf("  %9d  %8.1f ms  %6.1f ms  %8.1f ms  %7.0f ms  %9d  %10s  %6.0f ms  %s\n",
+                r.requested, r.stallMs, r.tickMedianMs, r.stepMs, r.firstParticlesMs, r.particles,
+                clear, r.closeMs, r.stallMs <= kStallTargetMs ? "PASS" : "MISS");
+  }
+  std::printf("  target: longest stall <= %g ms: %s\n", kStallTargetMs, pass ? "PASS" : "MISS");
+  return 0;
+}
+
+}  // namespace lacrima::bench
