@@ -148,6 +148,11 @@ void PreviewWorker::stop() {
   idle_.notify_all();
 }
 
+bool PreviewWorker::stopped() const {
+  const std::lock_guard lock(mutex_);
+  return exited_;
+}
+
 PreviewWorkerCounters PreviewWorker::counters() const {
   const std::lock_guard lock(mutex_);
   return counters_;
@@ -210,6 +215,10 @@ void PreviewWorker::run() {
       running_ = false;
     }
     idle_.notify_all();
+  }
+  {
+    const std::lock_guard lock(mutex_);
+    exited_ = true;
   }
   idle_.notify_all();
 }

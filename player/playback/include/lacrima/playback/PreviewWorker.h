@@ -111,6 +111,8 @@ class PreviewWorker {
   // Lets the running step finish and starts nothing more; returns at once. frameReady is not
   // called for that step.
   void stop();
+  // The thread has left its loop after stop(): destroying the worker now does not wait.
+  bool stopped() const;
   PreviewWorkerCounters counters() const;
 
  private:
@@ -132,7 +134,7 @@ class PreviewWorker {
   TearSources sources_;
   // Bumped by every clear: a step that started in an older epoch is discarded when it ends.
   long long epoch_ = 0;
-  bool running_ = false, stopping_ = false;
+  bool running_ = false, stopping_ = false, exited_ = false;
   std::shared_ptr<const PreviewFrame> current_;
   PreviewWorkerCounters counters_;
   std::function<void()> frameReady_, beforeStep_;
