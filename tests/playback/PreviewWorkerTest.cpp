@@ -232,6 +232,23 @@ class PreviewWorkerTest : public QObject {
     }  // the destructor waits here for the held step
     releaser.join();
     QCOMPARE(ready.load(), 0);
+    // stop() (a head change retires the worker): the held step ends, nothing else runs, the
+    // thread ends by itself and the destructor then has nothing to wait for.
+    {
+      StepGate held;
+      PreviewWorker worker(rig_, {}, {});
+      worker.setBeforeStep(held.hook());
+      worker.setFrameReady([&] { ++ready; });
+      worker.request(requestAt(0, 20));
+      QVERIFY(held.waitEntered(1));
+      worker.request(requestAt(1, 20));
+      worker.stop();
+      QVERIFY(!worker.stopped());  // still in the held step
+      held.releaseAll();
+      QTRY_VERIFY(worker.stopped());
+      QCOMPARE(worker.counters().steps, 1LL);
+    }
+    QCOMPARE(ready.load(), 0);
     // And with a real step in flight, no hook: destruction right after the request.
     for (int i = 0; i < 3; ++i) {
       PreviewWorker worker(rig_, {}, {});

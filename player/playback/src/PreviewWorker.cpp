@@ -5,9 +5,17 @@
 #include <stdexcept>
 #include <utility>
 
+#if defined(__linux__)
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
 namespace lacrima::playback {
 
 namespace {
+
+constexpr int kWorkerNice = 5;  // ~1/3 of the UI thread's share of a busy core
 
 // Copies out of the producer what the frame shows, so the producer may step again.
 std::shared_ptr<PreviewFrame> snapshot(const FrameView& view, int particleCount,
@@ -159,6 +167,13 @@ PreviewWorkerCounters PreviewWorker::counters() const {
 }
 
 void PreviewWorker::run() {
+#if defined(__linux__)
+  // A little below the thread that owns the window (Linux schedules threads as tasks, each
+  // with its own nice value): when the cores are busy, the UI thread and the GL driver's
+  // threads (llvmpipe renders on the CPU) come first and the tears wait. Best effort: a refusal
+  // changes nothing but that.
+  setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), kWorkerNice);
+#endif
   for (;;) {
     // Take everything waiting in one go, under the lock; work outside it.
     std::optional<PreviewRequest> request;
