@@ -2,6 +2,7 @@
 // the sliders, with tears simulated while paused (tear preview) and while playing. Runs under
 // xvfb-run (OGRE needs X); skips when the default head is not fetched.
 #include "../support/ChangedPixels.h"
+#include "IctProject.h"
 
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/EditorModel.h>
@@ -114,6 +115,41 @@ class EditorPreviewTest : public QObject {
     preview.waitForTears();  // the running step's result is thrown away
     QCOMPARE(preview.particleCount(), 0);
     QCOMPARE(changedFraction(dry, preview.grabFrame()), 0.0);
+    window.model().markSaved();
+  }
+
+  // Another head while a tear step runs: the old head's worker is retired mid-step (the step
+  // ends on its own thread), the new head previews at once, starts dry and weeps; closing the
+  // window with a step in flight is clean.
+  void headChangeWhileSteppingIsClean() {
+    if (!rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
+    if (!rigtest::ictHeadAvailable()) QSKIP("../shared (the ICT-FaceKit head) is absent");
+    QTemporaryDir folder;
+    const QString project = rigtest::writeIctProject(folder.path(), "[]");
+    QVERIFY(!project.isEmpty());
+    MainWindow window(options());
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    PreviewPanel& preview = *window.preview();
+    QVERIFY(preview.loadHead());
+    const int defaultVertices = preview.headVertexCount();
+    preview.setTearPreview(false);
+    window.model().setChannels({{kTearLeftFap, 1000}, {kTearRightFap, 1000}},
+                               QStringLiteral("tears"));
+    preview.step(window.model().frameDuration());  // 2,000 particles: seconds on the worker
+    window.model().markSaved();
+    QVERIFY2(window.openFile(project), qPrintable(window.lastError()));
+    QCOMPARE(preview.particleCount(), 0);  // the new document has no tears
+    QVERIFY2(preview.loadHead(), qPrintable(preview.messageText()));
+    QVERIFY(preview.headVertexCount() != defaultVertices);
+    QCOMPARE(preview.particleCount(), 0);
+    window.model().setChannels({{kTearLeftFap, 20}, {kTearRightFap, 20}}, QStringLiteral("tears"));
+    preview.step(window.model().frameDuration());
+    preview.waitForTears();
+    QCOMPARE(preview.particleCount(), 40);
+    window.model().setChannels({{kTearLeftFap, 1000}, {kTearRightFap, 1000}},
+                               QStringLiteral("more"));
+    preview.step(window.model().frameDuration());  // still running when the window goes
     window.model().markSaved();
   }
 
