@@ -297,14 +297,15 @@ bool FaceViewport::syncWindowSize() {
              h = static_cast<unsigned>(std::lround(height() * ratio));
   if (w == 0 || h == 0) return false;
   if (!s.window) return true;
-  if (s.window->getWidth() != w || s.window->getHeight() != h) s.window->resize(w, h);
+  if (s.window->getWidth() == w && s.window->getHeight() == h) return true;
+  s.window->resize(w, h);
   s.scene->setAspect(double(w) / double(h));
   return true;
 }
 
 bool FaceViewport::renderNow(bool swap) {
   State& s = *state_;
-  if (!syncWindowSize() || !ensureWindow() || !syncWindowSize()) return false;
+  if (!ensureWindow() || !syncWindowSize()) return false;
   const auto start = SteadyClock::now();
   s.window->update(swap);
   s.lastMilliseconds = millisecondsSince(start);
