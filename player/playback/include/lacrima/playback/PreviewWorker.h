@@ -109,7 +109,7 @@ class PreviewWorker {
   // Blocks until nothing is waiting or running (tests, benchmarks, batch screenshots).
   void waitIdle() const;
   // Lets the running step finish and starts nothing more; returns at once. frameReady is not
-  // called for that step.
+  // called for a step ending after this (a call already under way may still finish).
   void stop();
   // The thread has left its loop after stop(): destroying the worker now does not wait.
   bool stopped() const;
