@@ -9,6 +9,7 @@
 
 #include <lacrima/playback/FrameProducer.h>
 #include <lacrima/playback/HeadRig.h>
+#include <lacrima/playback/PreviewWorker.h>
 #include <lacrima/viewport/FaceViewport.h>
 
 #include <QElapsedTimer>
@@ -24,12 +25,22 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <vector>
 
 namespace lacrima::editor {
 
 struct PreviewPanel::State {
   std::shared_ptr<playback::HeadRig> rig;  // the head shown (kept while a failure is shown)
+  // The face, posed on this thread at once (pose() only: it never simulates).
   std::unique_ptr<playback::FrameProducer> producer;
+  // The tears, on their own thread. Workers of a former head finish their last step in
+  // `retiring` (they share that head's rig) and are let go once their threads have ended.
+  std::unique_ptr<playback::PreviewWorker> worker;
+  std::vector<std::unique_ptr<playback::PreviewWorker>> retiring;
+  // What the viewport shows: the face's revision and the tear frame drawn over it.
+  long long faceRevision = -1;
+  std::shared_ptr<const playback::PreviewFrame> tears;
+  long long revision = 0;
   viewport::FaceViewport* viewport = nullptr;
   RigJob job;
   bool following = false;  // followDocumentHead() was called: rig the document's head
@@ -93,14 +104,25 @@ PreviewPanel::PreviewPanel(editing::EditorModel& model, editing::FrameStepClock&
   message_->setMinimumSize(320, 240);
   layout->addWidget(message_, 1);
 
+  tearToggle_->setObjectName(QStringLiteral("tearPreviewToggle"));
+  // Fusion draws a checked tool button barely darker on this dark palette: fill it with the
+  // tear colour so "on" reads at a glance.
+  const QColor tear = theme::tearBlue();
+  tearToggle_->setStyleSheet(
+      QStringLiteral("QToolButton { padding: 2px 8px; border: 1px solid #50545b; border-radius: "
+                     "3px; background: #36393e; }"
+                     "QToolButton:hover { border-color: %1; }"
+                     "QToolButton:checked { background: %2; border-color: %1; color: #ffffff; }")
+          .arg(tear.name(), tear.darker(170).name()));
+
   idle_ = new QTimer(this);
   connect(idle_, &QTimer::timeout, this, [this] { step(model_.frameDuration()); });
   connect(tearToggle_, &QToolButton::toggled, this, &PreviewPanel::setTearPreview);
   connect(resetTears, &QToolButton::clicked, this, [this] {
-    if (state_->producer) {
-      state_->producer->reset();
-      pose();
-    }
+    if (!state_->worker) return;
+    state_->worker->clearTears();
+    draw();
+    if (figuresShown_) showFigures();
   });
   connect(&model_, &editing::EditorModel::valuesChanged, this, &PreviewPanel::onValuesChanged);
   connect(&clock_, &editing::FrameStepClock::ticked, this, &PreviewPanel::step);
@@ -108,6 +130,7 @@ PreviewPanel::PreviewPanel(editing::EditorModel& model, editing::FrameStepClock&
   connect(&model_, &editing::EditorModel::documentReset, this, [this] {
     syncHead(true);  // a project naming another head, or the same one whose file is back
     if (state_->producer) state_->producer->reset();
+    if (state_->worker) state_->worker->clearTears();
     onValuesChanged();
   });
   connect(&state_->job, &RigJob::progress, this, [this](double fraction, const QString& stage) {
@@ -124,11 +147,18 @@ PreviewPanel::PreviewPanel(editing::EditorModel& model, editing::FrameStepClock&
     if (!state_->producer) return;
     if (!(state_->producer->scene() == model_.document().scene))
       state_->producer->setScene(model_.document().scene);
-    state_->producer->setTearSources(model_.document().tearSources);
+    state_->worker->setScene(model_.document().scene);
+    state_->worker->setTearSources(model_.document().tearSources);
+    draw();
   });
 }
 
-PreviewPanel::~PreviewPanel() = default;
+PreviewPanel::~PreviewPanel() {
+  // Workers first, while the panel is whole: each waits for its running step, and their
+  // frame-ready callbacks (which post to this panel) are over once they are gone.
+  state_->worker.reset();
+  state_->retiring.clear();
+}
 
 bool PreviewPanel::hasHead() const { return state_->producer != nullptr; }
 
@@ -210,6 +240,7 @@ void PreviewPanel::installRig(std::shared_ptr<playback::HeadRig> rig) {
   // The producer and the viewport refer to the old rig's head: replace them first, then let
   // the old rig go (at the end of this function).
   std::shared_ptr<playback::HeadRig> old = std::move(state_->rig);
+  retireWorker();
   state_->producer.reset();
   state_->rig = std::move(rig);
   if (!state_->viewport) {
@@ -229,7 +260,14 @@ void PreviewPanel::installRig(std::shared_ptr<playback::HeadRig> rig) {
   }
   state_->producer =
       std::make_unique<playback::FrameProducer>(*state_->rig, model_.document().scene);
-  state_->producer->setTearSources(model_.document().tearSources);
+  state_->worker = std::make_unique<playback::PreviewWorker>(state_->rig, model_.document().scene,
+                                                             model_.document().tearSources);
+  // On the worker thread: only post. A post to a panel being destroyed is dropped with it,
+  // and the destructor ends the workers before that anyway.
+  state_->worker->setFrameReady([this] {
+    QMetaObject::invokeMethod(this, &PreviewPanel::onTearsReady, Qt::QueuedConnection);
+  });
+  figuresShown_ = false;
   QString text = tr("%1 ready in %2 ms · %3 vertices")
                      .arg(headName(*state_->target))
                      .arg(state_->rigTimer.elapsed())
@@ -248,6 +286,7 @@ void PreviewPanel::installRig(std::shared_ptr<playback::HeadRig> rig) {
 
 void PreviewPanel::showRigFailure(const QString& error) {
   state_->failed = true;
+  retireWorker();
   state_->producer.reset();  // keeps the rig: the hidden viewport still points at its head
   idle_->stop();
   status_->setToolTip({});
@@ -275,7 +314,27 @@ void PreviewPanel::setTearPreview(bool on) {
 }
 
 int PreviewPanel::particleCount() const {
-  return state_->producer ? state_->producer->particleCount() : 0;
+  if (!state_->worker) return 0;
+  const auto frame = state_->worker->currentFrame();
+  return frame ? frame->particleCount : 0;
+}
+
+double PreviewPanel::lastProduceMilliseconds() const {
+  const auto frame = state_->worker ? state_->worker->currentFrame() : nullptr;
+  return frame ? frame->times.total() : 0.0;
+}
+
+// A former head's worker: it may be in a step of seconds; let it end on its own thread.
+void PreviewPanel::retireWorker() {
+  auto& retiring = state_->retiring;
+  retiring.erase(
+      std::remove_if(retiring.begin(), retiring.end(), [](const auto& w) { return w->stopped(); }),
+      retiring.end());
+  if (!state_->worker) return;
+  state_->worker->stop();
+  retiring.push_back(std::move(state_->worker));
+  state_->tears.reset();
+  state_->faceRevision = -1;
 }
 
 QWidget* PreviewPanel::viewportWidget() const {
@@ -287,28 +346,66 @@ QImage PreviewPanel::grabFrame() {
   return {};
 }
 
+namespace {
+
+double progressAt(const editing::EditorModel& model) {
+  const double duration = model.endTime();
+  return duration > 0 ? std::clamp(model.currentTime() / duration, 0.0, 1.0) : 0.0;
+}
+
+}  // namespace
+
+// The face posed now with the worker's newest tears over it; the viewport draws it when the
+// revision moved (a new face or another tear frame).
+void PreviewPanel::draw() {
+  State& s = *state_;
+  if (!s.producer) return;
+  const playback::FrameView& face = s.producer->view();
+  auto tears = s.worker ? s.worker->currentFrame() : nullptr;
+  if (face.revision == s.faceRevision && tears == s.tears) return;
+  s.faceRevision = face.revision;
+  s.tears = std::move(tears);
+  playback::FrameView view = s.tears ? s.tears->over(face) : face;
+  view.revision = ++s.revision;
+  s.viewport->showFrame(view);
+}
+
 void PreviewPanel::pose() {
   if (!state_->producer) return;
-  QElapsedTimer timer;
-  timer.start();
-  const auto& view = state_->producer->pose(model_.currentValues());
-  lastProduceMs_ = timer.nsecsElapsed() / 1e6;
-  state_->viewport->showFrame(view);
+  const FapValues& values = model_.currentValues();
+  state_->producer->pose(values, progressAt(model_));
+  // Tears only while a channel asks for them: set to 0, they go now, not after a step.
+  if (!playback::tearsCommanded(*state_->rig, values)) state_->worker->clearTears();
+  draw();
+  if (figuresShown_) showFigures();
 }
 
 void PreviewPanel::step(double dt) {
   if (!state_->producer) return;
-  const double duration = model_.endTime();
-  const double progress =
-      duration > 0 ? std::clamp(model_.currentTime() / duration, 0.0, 1.0) : 0.0;
-  QElapsedTimer timer;
-  timer.start();
-  const auto& view = state_->producer->produce(model_.currentValues(), dt, progress);
-  lastProduceMs_ = timer.nsecsElapsed() / 1e6;
-  state_->viewport->showFrame(view);
-  QString text = tr("%1 particles · %2 ms")
-                     .arg(state_->producer->particleCount())
-                     .arg(lastProduceMs_, 0, 'f', 1);
+  const double progress = progressAt(model_);
+  const FapValues& values = model_.currentValues();
+  state_->producer->pose(values, progress);
+  state_->worker->request({values, dt, progress});
+  draw();
+  if (figuresShown_ || particleCount() > 0) showFigures();
+}
+
+void PreviewPanel::waitForTears() {
+  if (!state_->worker) return;
+  state_->worker->waitIdle();
+  onTearsReady();
+}
+
+void PreviewPanel::onTearsReady() {
+  if (!state_->worker) return;
+  draw();
+  showFigures();
+}
+
+void PreviewPanel::showFigures() {
+  figuresShown_ = true;
+  QString text = tr("%1 particles").arg(particleCount());
+  if (particleCount() > 0) text += tr(" · step %1 ms").arg(lastProduceMilliseconds(), 0, 'f', 1);
   // The rig's warnings stay in view (listed in the tooltip) once the figures take the line.
   if (const auto count = static_cast<int>(state_->rig->warnings.size()); count > 0)
     text += tr(" · %n rig warning(s)", nullptr, count);
@@ -317,8 +414,8 @@ void PreviewPanel::step(double dt) {
 
 void PreviewPanel::onValuesChanged() {
   updateIdleTimer();
-  // While playing, the clock's tick advances the tears; here only a paused face is re-posed.
-  if (!clock_.isPlaying() && !idle_->isActive()) pose();
+  // The face follows at once, playing or not; the tears follow on the next request.
+  pose();
 }
 
 void PreviewPanel::updateIdleTimer() {

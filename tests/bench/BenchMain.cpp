@@ -16,6 +16,7 @@ int runHead(int argc, char** argv);
 int runProposal(int argc, char** argv);
 int runPick(int argc, char** argv);
 int runBezier(int argc, char** argv);
+int runPreview(int argc, char** argv);
 }  // namespace lacrima::bench
 
 namespace {
@@ -41,6 +42,10 @@ const Subcommand kSubcommands[] = {
     {"editor",
      "the editor: live preview with 500 tear particles (>= 30 fps), slider and timeline costs",
      lacrima::bench::runEditor},
+    {"preview",
+     "the editor's live preview with 10,000 and 100,000 tear particles: longest event-loop "
+     "stall (<= 50 ms) beside the simulation step",
+     lacrima::bench::runPreview},
     {"poses", "rig, bake and blend every FAP pose on synthetic and real (default, ICT) heads",
      lacrima::bench::runPoses},
     {"head", "a head file to a rigged, checked head, ms per stage (ICT <= 1 s on one core)",

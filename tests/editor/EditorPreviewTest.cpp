@@ -2,6 +2,7 @@
 // the sliders, with tears simulated while paused (tear preview) and while playing. Runs under
 // xvfb-run (OGRE needs X); skips when the default head is not fetched.
 #include "../support/ChangedPixels.h"
+#include "IctProject.h"
 
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/EditorModel.h>
@@ -10,8 +11,12 @@
 #include <lacrima/editor/PreviewPanel.h>
 #include <lacrima/rigging/DefaultHead.h>
 
+#include <QFileDialog>
 #include <QImage>
+#include <QScreen>
 #include <QTemporaryDir>
+#include <QTimer>
+#include <QToolButton>
 #include <QtTest>
 
 using namespace lacrima;
@@ -64,6 +69,7 @@ class EditorPreviewTest : public QObject {
     QTRY_VERIFY(window.preview()->particleCount() > 0);  // the idle timer simulates
     // Off: the tears stop advancing (the count stays what it was).
     window.preview()->setTearPreview(false);
+    window.preview()->waitForTears();  // a step may still be running on the worker
     const int frozen = window.preview()->particleCount();
     QTest::qWait(200);
     QCOMPARE(window.preview()->particleCount(), frozen);
@@ -76,6 +82,134 @@ class EditorPreviewTest : public QObject {
     QTRY_VERIFY(window.model().currentTime() > 0.5);
     window.clock().pause();
     QVERIFY(window.preview()->particleCount() > frozen);
+    window.model().markSaved();
+  }
+
+  // Tears set to 0 leave the view and the status line at once, not after a simulation step;
+  // and a step never runs on the UI thread: step() returns before the tears exist.
+  void tearsToZeroClearAtOnce() {
+    if (!rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
+    MainWindow window(options());
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    PreviewPanel& preview = *window.preview();
+    QVERIFY(preview.loadHead());
+    preview.setTearPreview(false);  // this test steps the tears itself
+    const QImage dry = preview.grabFrame();
+    window.model().setChannels({{kTearLeftFap, 1000}, {kTearRightFap, 1000}},
+                               QStringLiteral("tears"));
+    preview.step(window.model().frameDuration());
+    QCOMPARE(preview.particleCount(), 0);  // 2,000 particles: the step is on the worker
+    preview.waitForTears();
+    QCOMPARE(preview.particleCount(), 2000);
+    QVERIFY(preview.statusText().startsWith(QStringLiteral("2000 particles")));
+    for (int i = 0; i < 3; ++i) preview.step(window.model().frameDuration());
+    const QImage wet = preview.grabFrame();
+    QVERIFY2(changedFraction(dry, wet) > 0.001, "no tears drawn");
+
+    preview.step(window.model().frameDuration());  // a step still running when...
+    window.model().setChannels({{kTearLeftFap, 0}, {kTearRightFap, 0}}, QStringLiteral("dry"));
+    QCOMPARE(preview.particleCount(), 0);  // ...the tears go to 0: gone before it ends
+    QVERIFY(preview.statusText().startsWith(QStringLiteral("0 particles")));
+    QCOMPARE(changedFraction(dry, preview.grabFrame()), 0.0);
+    preview.waitForTears();  // the running step's result is thrown away
+    QCOMPARE(preview.particleCount(), 0);
+    QCOMPARE(changedFraction(dry, preview.grabFrame()), 0.0);
+    window.model().markSaved();
+  }
+
+  // Another head while a tear step runs: the old head's worker is retired mid-step (the step
+  // ends on its own thread), the new head previews at once, starts dry and weeps; closing the
+  // window with a step in flight is clean.
+  void headChangeWhileSteppingIsClean() {
+    if (!rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
+    if (!rigtest::ictHeadAvailable()) QSKIP("../shared (the ICT-FaceKit head) is absent");
+    QTemporaryDir folder;
+    const QString project = rigtest::writeIctProject(folder.path(), "[]");
+    QVERIFY(!project.isEmpty());
+    MainWindow window(options());
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    PreviewPanel& preview = *window.preview();
+    QVERIFY(preview.loadHead());
+    const int defaultVertices = preview.headVertexCount();
+    preview.setTearPreview(false);
+    window.model().setChannels({{kTearLeftFap, 1000}, {kTearRightFap, 1000}},
+                               QStringLiteral("tears"));
+    preview.step(window.model().frameDuration());  // 2,000 particles: seconds on the worker
+    window.model().markSaved();
+    QVERIFY2(window.openFile(project), qPrintable(window.lastError()));
+    QCOMPARE(preview.particleCount(), 0);  // the new document has no tears
+    QVERIFY2(preview.loadHead(), qPrintable(preview.messageText()));
+    QVERIFY(preview.headVertexCount() != defaultVertices);
+    QCOMPARE(preview.particleCount(), 0);
+    window.model().setChannels({{kTearLeftFap, 20}, {kTearRightFap, 20}}, QStringLiteral("tears"));
+    preview.step(window.model().frameDuration());
+    preview.waitForTears();
+    QCOMPARE(preview.particleCount(), 40);
+    window.model().setChannels({{kTearLeftFap, 1000}, {kTearRightFap, 1000}},
+                               QStringLiteral("more"));
+    preview.step(window.model().frameDuration());  // still running when the window goes
+    window.model().markSaved();
+  }
+
+  // The Tear preview button is checkable and looks it: on and off differ at a glance.
+  void tearPreviewButtonShowsItsState() {
+    if (!rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
+    MainWindow window(options());
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto* toggle = window.preview()->findChild<QToolButton*>(QStringLiteral("tearPreviewToggle"));
+    QVERIFY(toggle);
+    QVERIFY(toggle->isCheckable());
+    QVERIFY(toggle->isChecked());
+    QVERIFY(window.preview()->tearPreview());
+    const QImage on = toggle->grab().toImage();
+    toggle->click();
+    QVERIFY(!toggle->isChecked());
+    QVERIFY(!window.preview()->tearPreview());
+    const QImage off = toggle->grab().toImage();
+    QVERIFY2(changedFraction(on, off) > 0.4, "the button looks the same on and off");
+    window.preview()->setTearPreview(true);
+    QVERIFY(toggle->isChecked());
+    window.model().markSaved();
+  }
+
+  // Behind a modal file dialog the preview stays as it was: what the X server shows of the
+  // viewport where the dialog does not cover it is the picture from before the dialog.
+  void fileDialogLeavesThePreviewAsItWas() {
+    if (!rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
+    MainWindow window(options());
+    window.resize(1280, 800);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.preview()->loadHead());
+    QWidget* viewport = window.preview()->viewportWidget();
+    QVERIFY(viewport);
+    QTest::qWait(300);
+    QScreen* screen = QGuiApplication::primaryScreen();
+    const QImage before = screen->grabWindow(viewport->winId()).toImage();
+    QImage during;
+    QRect covered;
+    QTimer::singleShot(600, [&] {
+      for (QWidget* w : QApplication::topLevelWidgets()) {
+        auto* dialog = qobject_cast<QFileDialog*>(w);
+        if (!dialog || !dialog->isVisible()) continue;
+        covered = QRect(viewport->mapFromGlobal(dialog->frameGeometry().topLeft()),
+                        dialog->frameGeometry().size());
+        during = screen->grabWindow(viewport->winId()).toImage();
+        dialog->reject();
+      }
+    });
+    QFileDialog::getOpenFileName(&window, QStringLiteral("Open project"), QString(),
+                                 QStringLiteral("Projects (*.json)"), nullptr,
+                                 QFileDialog::DontUseNativeDialog);
+    QVERIFY2(!during.isNull(), "the file dialog did not open");
+    // The band above the dialog (the crown of the head sits there when framed).
+    const int band = std::min(covered.top(), before.height());
+    QVERIFY2(band >= 20, "the dialog covers the whole viewport: move it in the test");
+    const QRect strip(0, 0, before.width(), band);
+    QCOMPARE(changedFraction(before.copy(strip), during.copy(strip)), 0.0);
     window.model().markSaved();
   }
 };

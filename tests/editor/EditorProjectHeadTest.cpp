@@ -81,6 +81,7 @@ class EditorProjectHeadTest : public QObject {
     // Tears run on this head: the tear sources come from its own rig.
     window.model().setChannels({{kTearLeftFap, 60}, {kTearRightFap, 60}}, QStringLiteral("tears"));
     for (int i = 0; i < 10; ++i) window.preview()->step(window.model().frameDuration());
+    window.preview()->waitForTears();  // the tears are stepped on a worker thread
     QVERIFY(window.preview()->particleCount() > 0);
     window.model().markSaved();
   }

@@ -145,6 +145,32 @@ class FaceViewportTest : public QObject {
     QCOMPARE(viewport_->grabFrame().size(), QSize(320, 240));
   }
 
+  // Resizes reach OGRE at once, whatever happens between them (a collapsed layout gives the
+  // widget no height for a moment): a render right after a resize, with no event processed in
+  // between, is at the new size and frames the head as a viewport made at that size does. A
+  // stale size made the head fill the view (issue 14: behind a file dialog).
+  void resizesReachTheRenderAtOnce() {
+    const QSize sizes[] = {{400, 300}, {400, 0}, {300, 420}, {200, 150}, {360, 270}};
+    for (const QSize& size : sizes) {
+      viewport_->resize(size);
+      // No area is clamped by the widget's minimum size (64 x 48).
+      QCOMPARE(viewport_->grabFrame().size(), size.expandedTo(viewport_->minimumSize()));
+    }
+    settle();
+    const QImage resized = viewport_->grabFrame();
+    viewport::FaceViewport fresh;
+    fresh.resize(360, 270);
+    fresh.setHead(*head_);
+    fresh.showFrame(frame(1));
+    fresh.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&fresh));
+    settle();
+    const QImage reference = fresh.grabFrame();
+    QCOMPARE(reference.size(), resized.size());
+    QVERIFY2(differingPixels(reference, resized, 12).size() < std::size_t(360 * 270 / 100),
+             "after the resizes the head is not framed as in a viewport of that size");
+  }
+
   void sharesOgreWithAnOffscreenRenderer() {
     // The player renders batches off screen while its window shows the viewport: one OGRE, two
     // GL contexts sharing buffers and textures.

@@ -23,16 +23,15 @@ tears::TearSettings settingsFor(const SceneSettings& scene) {
   return settings;
 }
 
-// The counts FAP 69 / 70 command (TearSimulation reads them the same way: floor, at least 0).
-bool commandsTears(const FapValues& values) {
+}  // namespace
+
+bool tearsCommanded(const HeadRig& rig, const FapValues& values) {
   for (int fap : {kTearLeftFap, kTearRightFap}) {
     const float v = values[static_cast<std::size_t>(channelIndex(fap))];
-    if (std::isfinite(v) && v >= 1.0f) return true;
+    if (!rig.rig.disabled(fap) && std::isfinite(v) && v >= 1.0f) return true;
   }
   return false;
 }
-
-}  // namespace
 
 // Everything that evolves with the tears; the face is re-blended from `values`.
 class FrameProducer::Checkpoint {
@@ -228,7 +227,7 @@ const FrameView& FrameProducer::produce(const FapValues& values, double dt, doub
   FapValues weeping = values;
   for (int fap : {kTearLeftFap, kTearRightFap})
     if (s.rig.rig.disabled(fap)) weeping[static_cast<std::size_t>(channelIndex(fap))] = 0.0f;
-  const bool tearsWanted = commandsTears(weeping) || s.particles() > 0;
+  const bool tearsWanted = tearsCommanded(s.rig, values) || s.particles() > 0;
   if (tearsWanted) {
     tears::TearSimulation& simulation = s.ensureSimulation();
     const auto start = SteadyClock::now();
@@ -259,6 +258,12 @@ const FrameView& FrameProducer::pose(const FapValues& values, double progress) {
 }
 
 const FrameView& FrameProducer::view() const { return state_->view; }
+
+void FrameProducer::clearTears() {
+  State& s = *state_;
+  s.clearTears(false);
+  s.publish(true);
+}
 
 void FrameProducer::reset() {
   State& s = *state_;

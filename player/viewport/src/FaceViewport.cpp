@@ -281,9 +281,31 @@ bool FaceViewport::eventFilter(QObject* watched, QEvent* event) {
   return QWidget::eventFilter(watched, event);
 }
 
+// OGRE's idea of the window's size (its viewport, the GL viewport, the camera's aspect) made
+// equal to the widget's size in device pixels. Returns false while the widget has no area.
+//
+// Told through RenderWindow::resize, the external-window path, never windowMovedOrResized():
+// that asks the X server through OGRE's own display connection, which can answer before Qt's
+// own connection has delivered the resize (or for a moment when a layout gives the widget no
+// area). A render with a size bigger than the window draws the picture magnified, cropped to
+// its lower left: the head "blown up" to fill the view. Checking before every render also
+// covers what sends no resize event at all (a change of device pixel ratio).
+bool FaceViewport::syncWindowSize() {
+  State& s = *state_;
+  const qreal ratio = devicePixelRatioF();
+  const auto w = static_cast<unsigned>(std::lround(width() * ratio)),
+             h = static_cast<unsigned>(std::lround(height() * ratio));
+  if (w == 0 || h == 0) return false;
+  if (!s.window) return true;
+  if (s.window->getWidth() == w && s.window->getHeight() == h) return true;
+  s.window->resize(w, h);
+  s.scene->setAspect(double(w) / double(h));
+  return true;
+}
+
 bool FaceViewport::renderNow(bool swap) {
   State& s = *state_;
-  if (!ensureWindow()) return false;
+  if (!ensureWindow() || !syncWindowSize()) return false;
   const auto start = SteadyClock::now();
   s.window->update(swap);
   s.lastMilliseconds = millisecondsSince(start);
@@ -327,13 +349,8 @@ void FaceViewport::paintEvent(QPaintEvent*) {
 
 void FaceViewport::resizeEvent(QResizeEvent* event) {
   QWidget::resizeEvent(event);
-  State& s = *state_;
-  if (!s.window) return;
-  const qreal ratio = devicePixelRatioF();
-  s.window->resize(static_cast<unsigned>(std::lround(width() * ratio)),
-                   static_cast<unsigned>(std::lround(height() * ratio)));
-  s.window->windowMovedOrResized();
-  s.scene->setAspect(double(s.window->getWidth()) / double(std::max(1u, s.window->getHeight())));
+  if (!state_->window) return;
+  syncWindowSize();
   requestRender();
 }
 
@@ -417,6 +434,8 @@ bool FaceViewport::event(QEvent* event) {
     if (s.dirty && s.ogre && isVisible()) renderNow(true);
     return true;
   }
+  // Another screen may bring another device pixel ratio without a resize: the render re-sizes.
+  if (event->type() == QEvent::ScreenChangeInternal && s.ogre) requestRender();
   if (event->type() == QEvent::WinIdChange && s.ogre) {
     // Re-parented into another top-level: the X window OGRE drew into is gone.
     s.destroyWindow();

@@ -3,14 +3,22 @@
 // project's head (ProjectDocument::head, or the default head) posed by the current slider
 // values, with its tears.
 //
-// Driving the playback layer (lacrima::playback::FrameProducer on a HeadRig):
-//   paused, no tears shown      -> producer.pose(values): the face only, nothing simulated;
-//   playing                     -> producer.produce(values, dt, t / duration) once per playback
-//                                  frame (dt = 1 / playback rate);
+// Driving the playback layer, with the face on the UI thread and the tears on a worker
+// (lacrima::playback::PreviewWorker), so the window never waits for the simulation:
+//   the face                    -> posed at once on the UI thread for the current values
+//                                  (FrameProducer::pose: blending only, about a millisecond);
+//   playing                     -> one tear request per playback frame (dt = 1 / playback rate,
+//                                  progress = t / duration);
 //   paused, a tear channel > 0
-//   and "tear preview" on       -> produce() on an idle timer at the project's rate, so tears
-//                                  keep running down the face while the animator works.
-// A document change (new/open) resets the tears.
+//   and "tear preview" on       -> one tear request per frame of the project's rate on an idle
+//                                  timer, so tears keep running down the face while the
+//                                  animator works.
+// The worker drops requests rather than queueing them: while a step runs, a newer request
+// replaces the waiting one, and each finished step is drawn over the face posed now. With 100,000
+// particles the tears update every few seconds while sliders, the timeline and playback stay
+// live. Tear channels set to 0 (no tear channel above 0 at the current time), Clear tears and a
+// document change end the tears at once: the particles go from the view and the status line
+// before the step still running ends (its result is thrown away).
 //
 // The head: once followDocumentHead() has been called (the window does, after it is up), the
 // panel rigs the document's head on a worker thread (RigJob; progress in the message or the
@@ -66,13 +74,19 @@ class PreviewPanel : public QWidget {
   bool tearPreview() const { return tearPreview_; }
   void setTearPreview(bool on);
 
-  // Advances the tears by `dt` seconds with the current values and shows the frame (the
-  // playback tick and the idle tear timer call this; so does the benchmark).
+  // Poses the face for the current values now and asks the worker to advance the tears by `dt`
+  // seconds (the playback tick and the idle tear timer call this; so does the benchmark). The
+  // tears show when the worker's step ends: waitForTears() waits for it.
   void step(double dt);
   // Re-poses the face for the current values without advancing the tears.
   void pose();
+  // Blocks until the worker has answered every request, then shows its last frame (tests,
+  // benchmarks, screenshots).
+  void waitForTears();
+  // Tear particles shown (0 at once when the tears are set to 0 or cleared).
   int particleCount() const;
-  double lastProduceMilliseconds() const { return lastProduceMs_; }
+  // The last finished tear step on the worker (simulation, surface, trails, blend), ms.
+  double lastProduceMilliseconds() const;
   // The viewport widget, or nullptr when there is no head.
   QWidget* viewportWidget() const;
   // Renders now and returns the picture (screenshots); null when there is no viewport.
@@ -86,7 +100,11 @@ class PreviewPanel : public QWidget {
 
  private:
   void onValuesChanged();
+  void onTearsReady();
+  void draw();
+  void showFigures();
   void updateIdleTimer();
+  void retireWorker();
   void setStatus(const QString& text);
   void syncHead(bool retryFailed);
   void installRig(std::shared_ptr<playback::HeadRig> rig);
@@ -102,7 +120,7 @@ class PreviewPanel : public QWidget {
   QToolButton* tearToggle_;
   QTimer* idle_;
   bool tearPreview_ = true;
-  double lastProduceMs_ = 0;
+  bool figuresShown_ = false;  // the status line shows the tear figures (not the head's)
   QString statusText_;
 };
 

@@ -24,6 +24,11 @@ struct ProducerCounters {
   long long frames = 0, blends = 0, simulationSteps = 0, surfaceRuns = 0, trailRuns = 0;
 };
 
+// Whether `values` ask `rig` for tears: a tear channel (FAP 69 / 70) at 1 or more whose eye the
+// rig does not disable (a head without an eye weeps none, RigBuilder.h). TearSimulation reads
+// the counts the same way (floor, at least 0).
+bool tearsCommanded(const HeadRig& rig, const FapValues& values);
+
 class FrameProducer {
  public:
   explicit FrameProducer(const HeadRig& rig, const SceneSettings& scene = {});
@@ -49,6 +54,8 @@ class FrameProducer {
 
   // Neutral face, no tears, no trails, redness 0.
   void reset();
+  // No tears and no trails; the face and the redness stay as they are.
+  void clearTears();
 
   // Full state of the tears (simulation, trails, wetness history): restoring it and producing
   // the same inputs again gives bitwise-identical frames. A checkpoint holding tears is void

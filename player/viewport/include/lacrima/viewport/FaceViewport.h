@@ -114,6 +114,7 @@ class FaceViewport : public QWidget {
   void watchExposes();
   bool ensureScene();
   bool ensureWindow();
+  bool syncWindowSize();
   void requestRender();
   bool renderNow(bool swap);
 

@@ -1,0 +1,37 @@
+# Smoke test of `lacrima-bench preview --json` with 200 particles for half a second: the editor's
+# preview ran, showed the particles asked for in at least two tear frames, and showed none soon
+# after the tear channels went back to 0. Stall figures are printed, never asserted here.
+#   cmake -DBENCH=<path to lacrima-bench> -P PreviewBenchSmoke.cmake   (under xvfb-run)
+execute_process(COMMAND "${BENCH}" preview --particles 200 --seconds 0.5 --json
+                OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "lacrima-bench preview exited with ${status}: ${err}")
+endif()
+string(JSON ran ERROR_VARIABLE parseError GET "${out}" runs 0 ran)
+if(parseError)
+  message(FATAL_ERROR "lacrima-bench preview --json printed no JSON object: ${parseError}\n${out}")
+endif()
+if(NOT ran)
+  string(JSON note GET "${out}" runs 0 note)
+  if(note MATCHES "^no preview")
+    # No head to preview (the default head is not fetched): CTest's SKIP_REGULAR_EXPRESSION.
+    message(STATUS "lacrima-bench preview skipped: ${note}")
+    return()
+  endif()
+  message(FATAL_ERROR "the preview did not run: ${note}")
+endif()
+string(JSON shown GET "${out}" runs 0 particles_shown)
+string(JSON frames GET "${out}" runs 0 tear_frames)
+string(JSON clearMs GET "${out}" runs 0 clear_ms)
+string(JSON stall GET "${out}" runs 0 longest_stall_ms)
+if(NOT shown EQUAL 200)
+  message(FATAL_ERROR "expected 200 particles shown, got ${shown}")
+endif()
+if(frames LESS 2)
+  message(FATAL_ERROR "expected at least 2 tear frames, got ${frames}")
+endif()
+if(clearMs LESS 0)
+  message(FATAL_ERROR "the particles were still shown 2 s after the tear channels went to 0")
+endif()
+message(STATUS "lacrima-bench preview: ${shown} particles, ${frames} tear frames, "
+               "longest stall ${stall} ms, cleared in ${clearMs} ms")
