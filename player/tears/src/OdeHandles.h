@@ -5,13 +5,21 @@
 // Private to the library: ODE headers never reach users of lacrima_tears.
 #include <ode/ode.h>
 
+#include <mutex>
 #include <utility>
 
 namespace lacrima::tears {
 
+// Every ODE call holds this lock. Debian's ODE is built without thread-local storage: its
+// trimesh collision caches are process-wide, so two simulations stepping on two threads at once
+// (the editor's preview finishing one head's step on its worker while the next head's worker
+// starts) corrupted each other (ODE's "fetchMeshTriangle: index out of range" assertion). With
+// one simulation the lock is uncontended and costs nanoseconds per query; with several they
+// take turns for ODE only. Recursive, so a handle released while the lock is held is fine.
+[[nodiscard]] std::unique_lock<std::recursive_mutex> lockOde();
+
 // dInitODE2 / dCloseODE, reference counted so several simulations can coexist. Also allocates
-// ODE's per-thread collision data; ODE is used from the constructing thread only (Debian's
-// build has no thread-local storage, so trimesh queries from two threads would corrupt it).
+// ODE's collision data (process-wide in Debian's build; see lockOde).
 class OdeLibrary {
  public:
   OdeLibrary();
@@ -40,7 +48,9 @@ class OdeHandle {
   Id get() const { return id_; }
   explicit operator bool() const { return id_ != nullptr; }
   void reset() {
-    if (id_) Destroy(std::exchange(id_, nullptr));
+    if (!id_) return;
+    const auto lock = lockOde();
+    Destroy(std::exchange(id_, nullptr));
   }
 
  private:

@@ -84,6 +84,7 @@ SkinCollider::SkinCollider(const Eigen::Matrix3Xd& vertices, std::vector<Eigen::
   for (const auto& t : triangles_)
     for (int a = 0; a < 3; ++a) odeIndices_.push_back(static_cast<dTriIndex>(t[a]));
 
+  const auto ode = lockOde();
   data_ = OdeTriMeshData(dGeomTriMeshDataCreate());
   dGeomTriMeshDataBuildDouble(data_.get(), odeVertices_.data(), 3 * sizeof(double),
                               static_cast<int>(n + kEnvelopeVertices), odeIndices_.data(),
@@ -140,6 +141,7 @@ void SkinCollider::writeOdeVertices(const Eigen::Matrix3Xd& v, CollisionCounters
     for (int a = 0; a < 3; ++a)
       odeVertices_[3 * static_cast<std::size_t>(c) + static_cast<std::size_t>(a)] = v(a, c);
   // Refit only: a rebuilt (or re-preprocessed) data object would assert in ODE.
+  const auto ode = lockOde();
   dGeomTriMeshDataUpdate(data_.get());
   ++counters.trimeshUpdates;
 }
@@ -208,8 +210,11 @@ bool SkinCollider::nearest(const Eigen::Vector3d& x, double radius, SkinHit& hit
     dGeomSphereSetRadius(sphere_.get(), r);
     dGeomSetPosition(sphere_.get(), x.x(), x.y(), x.z());
     ++counters.odeQueries;
-    const int n =
-        dCollide(sphere_.get(), mesh_.get(), kMaxContacts, contacts_.data(), sizeof(dContactGeom));
+    const int n = [&] {
+      const auto ode = lockOde();
+      return dCollide(sphere_.get(), mesh_.get(), kMaxContacts, contacts_.data(),
+                      sizeof(dContactGeom));
+    }();
     for (int c = 0; c < n; ++c) {
       const dContactGeom& contact = contacts_[static_cast<std::size_t>(c)];
       if (finite(contact) && consider(x, contact.side2, radius, hit, found)) found = true;
@@ -241,7 +246,10 @@ bool SkinCollider::rayFirstHit(const Eigen::Vector3d& from, const Eigen::Vector3
   dGeomRaySetLength(ray_.get(), length);
   dGeomRaySet(ray_.get(), from.x(), from.y(), from.z(), dir.x(), dir.y(), dir.z());
   ++counters.odeQueries;
-  const int n = dCollide(ray_.get(), mesh_.get(), 1, contacts_.data(), sizeof(dContactGeom));
+  const int n = [&] {
+    const auto ode = lockOde();
+    return dCollide(ray_.get(), mesh_.get(), 1, contacts_.data(), sizeof(dContactGeom));
+  }();
   if (n < 1) return false;
   const dContactGeom& c = contacts_[0];
   const int t = c.side2;
