@@ -1,9 +1,12 @@
 #include <lacrima/editor/DopeSheetView.h>
 
+#include <lacrima/editor/ChannelKeyMenus.h>
+
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/ChannelFilter.h>
 
 #include <QContextMenuEvent>
+#include <QCursor>
 #include <QKeyEvent>
 #include <QMenu>
 #include <QMouseEvent>
@@ -292,20 +295,10 @@ void DopeSheetView::clearSelection() { model_.setSelectedChannelKeys({}); }
 
 void DopeSheetView::apply(const editing::ChannelKeyEdit& edit, const QString& text) {
   if (edit.change.isNoOp()) return;
-  model_.editKeys(edit.change, text);
-  model_.setSelectedChannelKeys(edit.selection);
+  model_.editKeys(edit.change, text, std::nullopt, edit.selection);
 }
 
-void DopeSheetView::deleteSelected() {
-  const auto& selected = model_.selectedChannelKeys();
-  if (selected.empty()) {
-    emit model_.message(tr("Select channel keys to delete (click marks in the dope sheet)"));
-    return;
-  }
-  const QString text = selected.size() == 1 ? tr("Delete channel key")
-                                            : tr("Delete %1 channel keys").arg(selected.size());
-  apply(editing::deleteChannelKeys(model_.document().keys, selected), text);
-}
+void DopeSheetView::deleteSelected() { ChannelKeyMenus::deleteSelected(model_); }
 
 void DopeSheetView::copySelected() {
   editing::ChannelKeyClip clip =
@@ -491,6 +484,8 @@ void DopeSheetView::contextMenuEvent(QContextMenuEvent* event) {
   QAction* duplicate =
       menu.addAction(tr("Duplicate to playhead"), this, &DopeSheetView::duplicateToPlayhead);
   QAction* remove = menu.addAction(tr("Delete"), this, &DopeSheetView::deleteSelected);
+  ChannelKeyMenus::fillInterpolationMenu(*menu.addMenu(tr("&Interpolation (T)")), model_);
+  ChannelKeyMenus::fillHandleTypeMenu(*menu.addMenu(tr("&Handles (V)")), model_);
   copy->setEnabled(any);
   duplicate->setEnabled(any);
   remove->setEnabled(any);
@@ -517,6 +512,8 @@ bool DopeSheetView::handlesKey(const QKeyEvent& event) const {
     case Qt::Key_X:
     case Qt::Key_Backspace:
     case Qt::Key_F:
+    case Qt::Key_T:
+    case Qt::Key_V:
       return mods == Qt::NoModifier;
     case Qt::Key_D:
       return mods == Qt::ShiftModifier;
@@ -553,6 +550,14 @@ void DopeSheetView::keyPressEvent(QKeyEvent* event) {
     duplicateToPlayhead();
   } else if (event->key() == Qt::Key_F) {
     fitAll();
+  } else if (event->key() == Qt::Key_T || event->key() == Qt::Key_V) {
+    QMenu menu(this);
+    if (event->key() == Qt::Key_T) {
+      ChannelKeyMenus::fillInterpolationMenu(menu, model_);
+    } else {
+      ChannelKeyMenus::fillHandleTypeMenu(menu, model_);
+    }
+    menu.exec(QCursor::pos());
   } else {
     deleteSelected();
   }

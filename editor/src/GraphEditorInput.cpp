@@ -2,6 +2,8 @@
 // scrub, pan), the wheel, the keys and the menus.
 #include <lacrima/editor/GraphEditor.h>
 
+#include <lacrima/editor/ChannelKeyMenus.h>
+
 #include "GraphEditorCurves.h"
 #include "GraphEditorLayout.h"
 
@@ -26,30 +28,10 @@ using namespace graph_layout;
 
 namespace {
 
-QString interpolationName(Interpolation mode) {
-  switch (mode) {
-    case Interpolation::Constant:
-      return GraphEditor::tr("Constant");
-    case Interpolation::Linear:
-      return GraphEditor::tr("Linear");
-    case Interpolation::Smooth:
-      return GraphEditor::tr("Smooth");
-    case Interpolation::Bezier:
-      return GraphEditor::tr("Bézier");
-  }
-  return {};
-}
-
-QString handleTypeName(HandleType type) {
-  switch (type) {
-    case HandleType::Auto:
-      return GraphEditor::tr("Auto");
-    case HandleType::Aligned:
-      return GraphEditor::tr("Aligned");
-    case HandleType::Free:
-      return GraphEditor::tr("Free");
-  }
-  return {};
+bool isDeleteKey(const QKeyEvent& event) {
+  const Qt::KeyboardModifiers mods = event.modifiers() & ~Qt::KeypadModifier;
+  return event.matches(QKeySequence::Delete) ||
+         (mods == Qt::NoModifier && (event.key() == Qt::Key_X || event.key() == Qt::Key_Backspace));
 }
 
 }  // namespace
@@ -285,8 +267,8 @@ void GraphEditor::finishDrag() {
   const QString text = previewText_;
   clearPreview();
   if (change && !change->isNoOp()) {
-    model_.editKeys(*change, text);
-    if (drag == Drag::MoveKeys) model_.setSelectedChannelKeys(selection);
+    model_.editKeys(*change, text, std::nullopt,
+                    drag == Drag::MoveKeys ? std::optional(selection) : std::nullopt);
   }
   update();
 }
@@ -314,16 +296,18 @@ void GraphEditor::wheelEvent(QWheelEvent* event) {
 // --- keys and menus -------------------------------------------------------------------------
 
 bool GraphEditor::event(QEvent* event) {
-  // The window binds T, F and Home to other commands; while the graph has focus, these keys
-  // are the graph's (as in Blender, where keys act on the editor under the pointer).
+  // The window binds T, F, Home and Delete to other commands; while the graph has focus, these
+  // keys are the graph's (as in Blender, where keys act on the editor under the pointer); Delete,
+  // X and Backspace delete the selected channel keys, not whole keys.
   if (event->type() == QEvent::ShortcutOverride) {
     const auto* key = static_cast<QKeyEvent*>(event);
     const Qt::KeyboardModifiers mods = key->modifiers() & ~Qt::KeypadModifier;
     const bool graphKey =
-        mods == Qt::NoModifier &&
-        (key->key() == Qt::Key_T || key->key() == Qt::Key_V || key->key() == Qt::Key_F ||
-         key->key() == Qt::Key_Home ||
-         (key->key() == Qt::Key_Period && (key->modifiers() & Qt::KeypadModifier)));
+        isDeleteKey(*key) ||
+        (mods == Qt::NoModifier &&
+         (key->key() == Qt::Key_T || key->key() == Qt::Key_V || key->key() == Qt::Key_F ||
+          key->key() == Qt::Key_Home ||
+          (key->key() == Qt::Key_Period && (key->modifiers() & Qt::KeypadModifier))));
     if (graphKey) {
       event->accept();
       return true;
@@ -333,12 +317,16 @@ bool GraphEditor::event(QEvent* event) {
 }
 
 void GraphEditor::keyPressEvent(QKeyEvent* event) {
+  if (isDeleteKey(*event)) {
+    ChannelKeyMenus::deleteSelected(model_);
+    return;
+  }
   switch (event->key()) {
     case Qt::Key_T:
-      popupMenu(&GraphEditor::fillInterpolationMenu);
+      popupMenu(&ChannelKeyMenus::fillInterpolationMenu);
       return;
     case Qt::Key_V:
-      popupMenu(&GraphEditor::fillHandleTypeMenu);
+      popupMenu(&ChannelKeyMenus::fillHandleTypeMenu);
       return;
     case Qt::Key_Home:
       frameAll();
@@ -358,47 +346,9 @@ void GraphEditor::keyPressEvent(QKeyEvent* event) {
   QWidget::keyPressEvent(event);
 }
 
-void GraphEditor::setSelectedInterpolation(Interpolation mode) {
-  const auto& selection = model_.selectedChannelKeys();
-  const editing::KeyChange change =
-      editing::setChannelKeyShapes(model_.document().keys, selection, mode);
-  if (change.isNoOp()) return;
-  model_.editKeys(change, tr("Interpolation: %1").arg(interpolationName(mode)));
-}
-
-void GraphEditor::setSelectedHandleType(HandleType type) {
-  const auto& selection = model_.selectedChannelKeys();
-  const editing::KeyChange change =
-      editing::setChannelKeyShapes(model_.document().keys, selection, type);
-  if (change.isNoOp()) return;
-  model_.editKeys(change, tr("Handles: %1").arg(handleTypeName(type)));
-}
-
-void GraphEditor::fillInterpolationMenu(QMenu& menu) {
-  const std::pair<Interpolation, QString> entries[] = {
-      {Interpolation::Constant, tr("&Constant")},
-      {Interpolation::Linear, tr("&Linear")},
-      {Interpolation::Smooth, tr("&Smooth")},
-      {Interpolation::Bezier, tr("&Bézier")},
-  };
-  for (const auto& [mode, text] : entries) {
-    connect(menu.addAction(text), &QAction::triggered, this,
-            [this, mode = mode] { setSelectedInterpolation(mode); });
-  }
-  menu.setEnabled(!model_.selectedChannelKeys().empty());
-}
-
-void GraphEditor::fillHandleTypeMenu(QMenu& menu) {
-  for (const HandleType type : {HandleType::Auto, HandleType::Aligned, HandleType::Free}) {
-    connect(menu.addAction(handleTypeName(type)), &QAction::triggered, this,
-            [this, type] { setSelectedHandleType(type); });
-  }
-  menu.setEnabled(!model_.selectedChannelKeys().empty());
-}
-
-void GraphEditor::popupMenu(void (GraphEditor::*fill)(QMenu&)) {
+void GraphEditor::popupMenu(void (*fill)(QMenu&, editing::EditorModel&)) {
   QMenu menu(this);
-  (this->*fill)(menu);
+  fill(menu, model_);
   menu.exec(QCursor::pos());
 }
 
@@ -406,8 +356,10 @@ void GraphEditor::contextMenuEvent(QContextMenuEvent* event) {
   const Hit hit = hitAt(event->pos());
   if (hit.kind != HitKind::None) selectFromHit(hit, false);
   QMenu menu(this);
-  fillInterpolationMenu(*menu.addMenu(tr("&Interpolation (T)")));
-  fillHandleTypeMenu(*menu.addMenu(tr("&Handles (V)")));
+  ChannelKeyMenus::fillInterpolationMenu(*menu.addMenu(tr("&Interpolation (T)")), model_);
+  ChannelKeyMenus::fillHandleTypeMenu(*menu.addMenu(tr("&Handles (V)")), model_);
+  connect(menu.addAction(tr("&Delete (X)")), &QAction::triggered, this,
+          [this] { ChannelKeyMenus::deleteSelected(model_); });
   menu.addSeparator();
   connect(menu.addAction(tr("Frame &all (Home)")), &QAction::triggered, this,
           &GraphEditor::frameAll);

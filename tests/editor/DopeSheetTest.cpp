@@ -7,12 +7,15 @@
 #include <lacrima/editor/DopeSheet.h>
 #include <lacrima/editor/DopeSheetView.h>
 #include <lacrima/editor/EditorTheme.h>
+#include <lacrima/editor/GraphEditor.h>
 #include <lacrima/editor/MainWindow.h>
 #include <lacrima/editor/TimeAxis.h>
 
 #include <QLineEdit>
+#include <QMenu>
 #include <QTabWidget>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QToolButton>
 #include <QtTest>
 
@@ -53,6 +56,18 @@ const Keyframe* keyAtTime(const editing::EditorModel& model, double time) {
 }
 
 QPoint pt(QPointF p) { return p.toPoint(); }
+
+// Triggers the action named `text` (accelerator marks ignored) of the next popup menu.
+void pickFromNextMenu(const QString& text) {
+  QTimer::singleShot(0, [text] {
+    auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget());
+    if (!menu) return;
+    for (QAction* action : menu->actions()) {
+      if (action->text().remove(QLatin1Char('&')) == text) action->trigger();
+    }
+    menu->close();
+  });
+}
 
 // A press, moves in steps (as a hand does) and a release.
 void drag(QWidget* widget, QPointF from, QPointF to, Qt::KeyboardModifiers mods = {}) {
@@ -195,6 +210,11 @@ class DopeSheetTest : public QObject {
     QCOMPARE(model().undoStack()->count(), 1);
     model().undoStack()->undo();
     QCOMPARE(model().document(), before);
+    // Undo and redo carry the selection with the key, as they do for whole keys.
+    QCOMPARE(model().selectedChannelKeys(), (std::vector<ChannelKey>{{3, 1.0}}));
+    model().undoStack()->redo();
+    QCOMPARE(model().selectedChannelKeys(), (std::vector<ChannelKey>{{3, moved}}));
+    model().undoStack()->undo();
 
     // Dropped on a time where its channel is keyed, it replaces that channel key.
     drag(view(), mark(3, 0.0), mark(3, 1.0));
@@ -255,6 +275,23 @@ class DopeSheetTest : public QObject {
     QTest::keyClick(view(), Qt::Key_X);
     QVERIFY(!keyAtTime(model(), 1.5));
     QCOMPARE(model().undoStack()->count(), 4);  // paste, delete, duplicate, delete
+  }
+
+  // T and V (and the context menu) shape the selected channel keys, one undo step each.
+  void tAndVShapeTheSelectedChannelKeys() {
+    QTest::mouseClick(view(), Qt::LeftButton, {}, pt(mark(3, 1.0)));
+    view()->setFocus();
+    pickFromNextMenu(QStringLiteral("Constant"));
+    QTest::keyClick(view(), Qt::Key_T);
+    QVERIFY(keyAtTime(model(), 1.0)->shape(3).interpolation == Interpolation::Constant);
+    QVERIFY(keyAtTime(model(), 1.0)->shape(4).interpolation == Interpolation::Linear);  // kept
+    pickFromNextMenu(QStringLiteral("Free"));
+    QTest::keyClick(view(), Qt::Key_V);
+    QVERIFY(keyAtTime(model(), 1.0)->shape(3).handles == HandleType::Free);
+    QCOMPARE(model().undoStack()->count(), 2);
+    model().undoStack()->undo();
+    model().undoStack()->undo();
+    QCOMPARE(model().document(), sampleDocument());
   }
 
   void rulerScrubsAndWheelZoomsAboutThePointer() {
@@ -318,7 +355,7 @@ class DopeSheetTest : public QObject {
     QVERIFY(std::abs(axis.scale() - 115.0) < 1e-9);
   }
 
-  void theWindowHasTheTabAndItsKeysActOnChannelKeys() {
+  void theWindowHasTheTabsAndTheirKeysActOnChannelKeys() {
     QTemporaryDir recovery;
     EditorOptions options;
     options.preview = false;
@@ -346,6 +383,18 @@ class DopeSheetTest : public QObject {
     QVERIFY(!keyAtTime(window.model(), 1.0)->has(4));
     QVERIFY(keyAtTime(window.model(), 1.0)->has(3));
     QVERIFY(keyAtTime(window.model(), 1.0)->has(69));
+
+    // The graph editor takes Delete the same way: the channel keys selected, not whole keys.
+    tabs->setCurrentIndex(tabs->indexOf(window.graphEditor()));
+    window.model().setSelectedChannelKeys({{3, 1.0}});
+    window.graphEditor()->setFocus();
+    QVERIFY(window.graphEditor()->hasFocus());
+    QTest::keyClick(window.graphEditor(), Qt::Key_Delete);
+    QVERIFY(!keyAtTime(window.model(), 1.0)->has(3));
+    QVERIFY(keyAtTime(window.model(), 1.0)->has(69));
+    QVERIFY(keyAtTime(window.model(), 0.0)->has(3));
+    window.model().undoStack()->undo();
+    QCOMPARE(window.model().selectedChannelKeys(), (std::vector<ChannelKey>{{3, 1.0}}));
     window.model().markSaved();
   }
 };

@@ -15,14 +15,22 @@ KeyEditCommand::KeyEditCommand(EditorModel& model, KeyChange change, const QStri
       selectionBefore_(std::move(selectionBefore)),
       selectionAfter_(std::move(selectionAfter)) {}
 
+void KeyEditCommand::setChannelKeySelections(std::vector<ChannelKey> before,
+                                             std::vector<ChannelKey> after) {
+  channelKeysBefore_ = std::move(before);
+  channelKeysAfter_ = std::move(after);
+}
+
 void KeyEditCommand::redo() {
   model_.applyKeyChange(change_, true);
   if (selectionAfter_) model_.setSelectedTimes(*selectionAfter_);
+  if (channelKeysAfter_) model_.setSelectedChannelKeys(*channelKeysAfter_);
 }
 
 void KeyEditCommand::undo() {
   model_.applyKeyChange(change_, false);
   if (selectionBefore_) model_.setSelectedTimes(*selectionBefore_);
+  if (channelKeysBefore_) model_.setSelectedChannelKeys(*channelKeysBefore_);
 }
 
 SetChannelsCommand::SetChannelsCommand(EditorModel& model, KeyChange change, const QString& text,

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace lacrima::editing {
 namespace {
@@ -220,6 +221,22 @@ void EditorModel::pushKeyEdit(const KeyChange& change, const QString& text,
   std::optional<std::vector<double>> before;
   if (selectionAfter) before = selection_;
   undo_.push(new KeyEditCommand(*this, change, text, std::move(before), std::move(selectionAfter)));
+}
+
+void EditorModel::editKeys(const KeyChange& change, const QString& text,
+                           std::optional<std::vector<double>> selectionAfter,
+                           std::optional<std::vector<ChannelKey>> channelKeysAfter) {
+  if (!channelKeysAfter) {
+    pushKeyEdit(change, text, std::move(selectionAfter));
+    return;
+  }
+  if (change.isNoOp()) return;
+  std::optional<std::vector<double>> before;
+  if (selectionAfter) before = selection_;
+  auto command = std::make_unique<KeyEditCommand>(*this, change, text, std::move(before),
+                                                  std::move(selectionAfter));
+  command->setChannelKeySelections(channelKeySelection_, std::move(*channelKeysAfter));
+  undo_.push(command.release());  // the stack owns its commands
 }
 
 void EditorModel::setChannel(int fap, double value, int dragSession) {

@@ -67,10 +67,6 @@ class GraphEditor : public QWidget {
   // Curve points drawn by the last paint (the drawing cost; tests check it is bounded).
   int lastPaintPoints() const { return lastPaintPoints_; }
 
-  // The commands of the T and V menus, on model.selectedChannelKeys().
-  void setSelectedInterpolation(Interpolation mode);
-  void setSelectedHandleType(HandleType type);
-
   QSize sizeHint() const override { return {900, 260}; }
   QSize minimumSizeHint() const override { return {240, 140}; }
 
@@ -117,9 +113,7 @@ class GraphEditor : public QWidget {
   void updateBand(QPointF position);
   void finishDrag();
   void frameRange(double t0, double t1, double v0, double v1);
-  void popupMenu(void (GraphEditor::*fill)(QMenu&));
-  void fillInterpolationMenu(QMenu& menu);
-  void fillHandleTypeMenu(QMenu& menu);
+  void popupMenu(void (*fill)(QMenu&, editing::EditorModel&));
   QRectF plotArea() const;
 
   void paintRuler(QPainter& p) const;

@@ -8,6 +8,7 @@
 // first command's "before" and the last one's "after", and drops out of the history when a
 // drag ends where it started.
 #include <lacrima/common/ProjectDocument.h>
+#include <lacrima/editing/EditorModel.h>
 #include <lacrima/editing/KeyChange.h>
 
 #include <QUndoCommand>
@@ -27,11 +28,15 @@ class KeyEditCommand : public QUndoCommand {
                  std::optional<std::vector<double>> selectionAfter);
   void redo() override;
   void undo() override;
+  // Channel keys (dope sheet, graph editor) to select after redo and before undo, like the
+  // key-row selections above.
+  void setChannelKeySelections(std::vector<ChannelKey> before, std::vector<ChannelKey> after);
 
  protected:
   EditorModel& model_;
   KeyChange change_;
   std::optional<std::vector<double>> selectionBefore_, selectionAfter_;
+  std::optional<std::vector<ChannelKey>> channelKeysBefore_, channelKeysAfter_;
 };
 
 class SetChannelsCommand : public KeyEditCommand {

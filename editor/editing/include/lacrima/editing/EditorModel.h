@@ -138,11 +138,11 @@ class EditorModel : public QObject {
   void setSettings(const ProjectDocument& settings, const QString& text);
 
   // Any key edit planned elsewhere (dope sheet, graph editor): one undo step named `text`. With
-  // `selectionAfter`, the key-row selection becomes it and undo restores the one before.
+  // `selectionAfter`, the key-row selection becomes it and undo restores the one before; with
+  // `channelKeysAfter`, the same for the channel-key selection.
   void editKeys(const KeyChange& change, const QString& text,
-                std::optional<std::vector<double>> selectionAfter = std::nullopt) {
-    pushKeyEdit(change, text, std::move(selectionAfter));
-  }
+                std::optional<std::vector<double>> selectionAfter = std::nullopt,
+                std::optional<std::vector<ChannelKey>> channelKeysAfter = std::nullopt);
 
   // --- for the commands only ----------------------------------------------------------
   void applyKeyChange(const KeyChange& change, bool redo);
