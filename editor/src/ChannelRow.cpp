@@ -1,5 +1,7 @@
 #include <lacrima/editor/ChannelRow.h>
 
+#include "ChannelText.h"
+
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/ChannelLimits.h>
 #include <lacrima/editing/EditorModel.h>
@@ -18,10 +20,6 @@
 
 namespace lacrima::editor {
 namespace {
-
-QString fromView(std::string_view text) {
-  return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
-}
 
 QString tooltipFor(const FapInfo& info) {
   const editing::ChannelLimits limits = editing::editLimits(info.number);

@@ -3,6 +3,8 @@
 // pixel column of a row are drawn once, so a long imported file costs what its view shows.
 #include <lacrima/editor/DopeSheetView.h>
 
+#include "ChannelText.h"
+
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editor/EditorTheme.h>
 
@@ -15,16 +17,6 @@
 
 namespace lacrima::editor {
 namespace {
-
-QString fromView(std::string_view text) {
-  return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
-}
-
-QString groupTitle(FapGroup group) {
-  QString title = fromView(toString(group));
-  if (!title.isEmpty()) title[0] = title[0].toUpper();
-  return title;
-}
 
 // A held value as the animator reads it: codes and particle counts whole, FAP units to 0.1.
 QString heldValueText(int fap, float value) {

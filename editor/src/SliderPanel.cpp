@@ -1,5 +1,7 @@
 #include <lacrima/editor/SliderPanel.h>
 
+#include "ChannelText.h"
+
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/ChannelFilter.h>
 #include <lacrima/editing/EditorModel.h>
@@ -23,20 +25,6 @@
 #include <cmath>
 
 namespace lacrima::editor {
-
-namespace {
-
-QString fromView(std::string_view text) {
-  return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
-}
-
-QString groupTitle(FapGroup group) {
-  QString title = fromView(toString(group));
-  if (!title.isEmpty()) title[0] = title[0].toUpper();
-  return title;
-}
-
-}  // namespace
 
 // A foldable group: a painted header (colour, title, keyed count, reset) over its rows.
 class GroupSection : public QWidget {

@@ -1,7 +1,10 @@
 // Per-channel key shapes: constant holds, Bézier segments and their handles, and how shapes
-// are stored on keys. Bézier values are checked against an evaluation written here from the
+// are stored on keys. Bézier values are checked against an independent evaluation from the
 // definition (de Casteljau's construction, u found by bisection), not against the library's
-// own solver.
+// own Newton solver (tests/support/BezierReference.h).
+#include "../support/BezierReference.h"
+#include "../support/KeyBuilders.h"
+
 #include <lacrima/common/Keyframes.h>
 
 #include <QtTest>
@@ -12,6 +15,9 @@
 #include <random>
 
 using namespace lacrima;
+using lacrima::test::bezierValueAtTime;
+using lacrima::test::keyAt;
+using lacrima::test::Point2;
 
 namespace {
 
@@ -19,39 +25,6 @@ constexpr int kOpenJaw = 3;
 constexpr int kRaiseBLip = 5;
 constexpr int kTearsLeft = 69;
 constexpr int kViseme = 1;
-
-Keyframe makeKey(double time, std::initializer_list<std::pair<int, float>> values,
-                 Interpolation mode = Interpolation::Linear) {
-  Keyframe key;
-  key.time = time;
-  key.interpolation = mode;
-  for (const auto& [fap, value] : values) key.set(fap, value);
-  return key;
-}
-
-struct Point {
-  double x, y;
-};
-
-// de Casteljau: repeated linear interpolation of the control polygon.
-Point deCasteljau(std::array<Point, 4> p, double u) {
-  for (int level = 3; level > 0; --level) {
-    for (int i = 0; i < level; ++i) {
-      p[i] = {p[i].x + u * (p[i + 1].x - p[i].x), p[i].y + u * (p[i + 1].y - p[i].y)};
-    }
-  }
-  return p[0];
-}
-
-// The value at time t of the Bézier segment with these (already valid) control points.
-double bezierAt(const std::array<Point, 4>& p, double t) {
-  double lo = 0.0, hi = 1.0;
-  for (int i = 0; i < 200; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (deCasteljau(p, mid).x < t ? lo : hi) = mid;
-  }
-  return deCasteljau(p, 0.5 * (lo + hi)).y;
-}
 
 KeyShape freeShape(Handle in, Handle out) {
   return KeyShape{Interpolation::Bezier, HandleType::Free, in, out};
@@ -76,8 +49,8 @@ class KeyShapesTest : public QObject {
   }
 
   void constantHoldsUntilTheNextKey() {
-    const KeyframeSequence keys({makeKey(1.0, {{kOpenJaw, 10.0f}}, Interpolation::Constant),
-                                 makeKey(2.0, {{kOpenJaw, 50.0f}})});
+    const KeyframeSequence keys({keyAt(1.0, {{kOpenJaw, 10.0f}}, Interpolation::Constant),
+                                 keyAt(2.0, {{kOpenJaw, 50.0f}})});
     QCOMPARE(keys.evaluate(1.0)[channelIndex(kOpenJaw)], 10.0f);
     QCOMPARE(keys.evaluate(1.999)[channelIndex(kOpenJaw)], 10.0f);
     QCOMPARE(keys.evaluate(2.0)[channelIndex(kOpenJaw)], 50.0f);
@@ -93,8 +66,8 @@ class KeyShapesTest : public QObject {
       double t = 0.0;
       for (int k = 0; k < 7; ++k) {
         const float v = value(random);
-        smooth.push_back(makeKey(t, {{kOpenJaw, v}}, Interpolation::Smooth));
-        bezier.push_back(makeKey(t, {{kOpenJaw, v}}, Interpolation::Bezier));
+        smooth.push_back(keyAt(t, {{kOpenJaw, v}}, Interpolation::Smooth));
+        bezier.push_back(keyAt(t, {{kOpenJaw, v}}, Interpolation::Bezier));
         t += gap(random);
       }
       const KeyframeSequence a(smooth), b(bezier);
@@ -108,17 +81,17 @@ class KeyShapesTest : public QObject {
   }
 
   void freeHandlesFollowTheBezierDefinition() {
-    Keyframe a = makeKey(0.5, {{kOpenJaw, 20.0f}});
+    Keyframe a = keyAt(0.5, {{kOpenJaw, 20.0f}});
     a.setShape(kOpenJaw, freeShape({-0.1, 0.0}, {0.3, 150.0}));
-    Keyframe b = makeKey(1.5, {{kOpenJaw, -40.0f}});
+    Keyframe b = keyAt(1.5, {{kOpenJaw, -40.0f}});
     b.setShape(kOpenJaw, freeShape({-0.6, 90.0}, {0.2, 0.0}));
     const KeyframeSequence keys({a, b});
-    const std::array<Point, 4> control{Point{0.5, 20.0}, Point{0.8, 170.0}, Point{0.9, 50.0},
-                                       Point{1.5, -40.0}};
+    const std::array<Point2, 4> control{Point2{0.5, 20.0}, Point2{0.8, 170.0}, Point2{0.9, 50.0},
+                                        Point2{1.5, -40.0}};
     const FapAnimation baked = keys.bake(22.0);
     for (std::size_t f = 0; f < baked.frames.size(); ++f) {
       const double t = 0.5 + static_cast<double>(f) / 22.0;
-      const double expected = bezierAt(control, t);
+      const double expected = bezierValueAtTime(control, t);
       QVERIFY2(std::abs(baked.frames[f][channelIndex(kOpenJaw)] - expected) < 1e-3,
                qPrintable(QString("frame %1: %2, expected %3")
                               .arg(f)
@@ -130,32 +103,32 @@ class KeyShapesTest : public QObject {
   // Handles longer than their segment would make the curve turn back in time; they are cut to
   // the segment (each), then scaled together until they just meet.
   void handlesPastTheSegmentKeepOneValuePerTime() {
-    Keyframe a = makeKey(0.0, {{kOpenJaw, 0.0f}});
+    Keyframe a = keyAt(0.0, {{kOpenJaw, 0.0f}});
     a.setShape(kOpenJaw, freeShape({-1.0, 0.0}, {5.0, 500.0}));  // cut to (1, 100)
-    Keyframe b = makeKey(1.0, {{kOpenJaw, 0.0f}});
+    Keyframe b = keyAt(1.0, {{kOpenJaw, 0.0f}});
     b.setShape(kOpenJaw, freeShape({-0.75, 300.0}, {0.1, 0.0}));
     const KeyframeSequence keys({a, b});
     // Cut: out (1, 100), in (-0.75, 300); together 1.75 > 1, scaled by 1/1.75.
     const double s = 1.0 / 1.75;
-    const std::array<Point, 4> control{Point{0.0, 0.0}, Point{s, 100.0 * s},
-                                       Point{1.0 - 0.75 * s, 300.0 * s}, Point{1.0, 0.0}};
+    const std::array<Point2, 4> control{Point2{0.0, 0.0}, Point2{s, 100.0 * s},
+                                        Point2{1.0 - 0.75 * s, 300.0 * s}, Point2{1.0, 0.0}};
     for (double t = 0.0; t <= 1.0; t += 1.0 / 64.0) {
       const double v = keys.evaluate(t)[channelIndex(kOpenJaw)];
       QVERIFY(std::isfinite(v));
-      QVERIFY2(std::abs(v - bezierAt(control, t)) < 1e-3, qPrintable(QString::number(t)));
+      QVERIFY2(std::abs(v - bezierValueAtTime(control, t)) < 1e-3, qPrintable(QString::number(t)));
     }
   }
 
   void degenerateSegmentsStayFinite() {
     // Zero handles (x'(0) = 0: Newton has no slope to follow), a microsecond segment, the
     // largest values and handles a file may hold.
-    Keyframe a = makeKey(0.0, {{kOpenJaw, 1e7f}, {kRaiseBLip, 0.0f}});
+    Keyframe a = keyAt(0.0, {{kOpenJaw, 1e7f}, {kRaiseBLip, 0.0f}});
     a.setShape(kOpenJaw, freeShape({}, {}));
     a.setShape(kRaiseBLip, freeShape({-86400.0, 2e7}, {86400.0, -2e7}));
-    Keyframe b = makeKey(1e-6, {{kOpenJaw, -1e7f}, {kRaiseBLip, 1e7f}});
+    Keyframe b = keyAt(1e-6, {{kOpenJaw, -1e7f}, {kRaiseBLip, 1e7f}});
     b.setShape(kOpenJaw, freeShape({}, {}));
     b.setShape(kRaiseBLip, freeShape({-86400.0, 2e7}, {86400.0, -2e7}));
-    Keyframe c = makeKey(5.0, {{kOpenJaw, 3.0f}, {kRaiseBLip, -1e7f}}, Interpolation::Bezier);
+    Keyframe c = keyAt(5.0, {{kOpenJaw, 3.0f}, {kRaiseBLip, -1e7f}}, Interpolation::Bezier);
     const KeyframeSequence keys({a, b, c});
     for (int i = 0; i <= 1000; ++i) {
       const double t = 5.0 * i / 1000.0 + (i % 3) * 1e-7;
@@ -172,18 +145,18 @@ class KeyShapesTest : public QObject {
   }
 
   void eachChannelFollowsItsOwnShape() {
-    Keyframe a = makeKey(0.0, {{kOpenJaw, 0.0f}, {kRaiseBLip, 0.0f}});
+    Keyframe a = keyAt(0.0, {{kOpenJaw, 0.0f}, {kRaiseBLip, 0.0f}});
     a.setShape(kRaiseBLip, KeyShape{Interpolation::Constant, HandleType::Auto, {}, {}});
-    const KeyframeSequence keys({a, makeKey(1.0, {{kOpenJaw, 100.0f}, {kRaiseBLip, 100.0f}})});
+    const KeyframeSequence keys({a, keyAt(1.0, {{kOpenJaw, 100.0f}, {kRaiseBLip, 100.0f}})});
     const FapValues half = keys.evaluate(0.5);
     QCOMPARE(half[channelIndex(kOpenJaw)], 50.0f);   // the key's linear default
     QCOMPARE(half[channelIndex(kRaiseBLip)], 0.0f);  // its own constant
   }
 
   void tearChannelsStayWholeAndNonNegative() {
-    Keyframe a = makeKey(0.0, {{kTearsLeft, 10.0f}});
+    Keyframe a = keyAt(0.0, {{kTearsLeft, 10.0f}});
     a.setShape(kTearsLeft, freeShape({}, {0.5, -200.0}));  // dips far below zero
-    const KeyframeSequence keys({a, makeKey(1.0, {{kTearsLeft, 30.0f}})});
+    const KeyframeSequence keys({a, keyAt(1.0, {{kTearsLeft, 30.0f}})});
     for (const FapValues& frame : keys.bake(22.0).frames) {
       const float v = frame[channelIndex(kTearsLeft)];
       QVERIFY(v >= 0.0f);
@@ -192,9 +165,9 @@ class KeyShapesTest : public QObject {
   }
 
   void visemeCodesNeverBlendWhateverTheShape() {
-    Keyframe a = makeKey(0.0, {{kViseme, 3.0f}});
+    Keyframe a = keyAt(0.0, {{kViseme, 3.0f}});
     a.setShape(kViseme, freeShape({}, {0.3, 40.0}));
-    const KeyframeSequence keys({a, makeKey(1.0, {{kViseme, 7.0f}})});
+    const KeyframeSequence keys({a, keyAt(1.0, {{kViseme, 7.0f}})});
     QCOMPARE(keys.evaluate(0.99)[channelIndex(kViseme)], 3.0f);
   }
 
@@ -206,7 +179,7 @@ class KeyShapesTest : public QObject {
     std::vector<Keyframe> list;
     double t = 0.0;
     for (int k = 0; k < 12; ++k) {
-      Keyframe key = makeKey(t, {{kOpenJaw, value(random)}, {kRaiseBLip, value(random)}});
+      Keyframe key = keyAt(t, {{kOpenJaw, value(random)}, {kRaiseBLip, value(random)}});
       for (int fap : {kOpenJaw, kRaiseBLip}) {
         key.setShape(fap, KeyShape{static_cast<Interpolation>(mode(random)),
                                    static_cast<HandleType>(type(random)),
@@ -226,7 +199,7 @@ class KeyShapesTest : public QObject {
   }
 
   void shapesEqualToTheKeysDefaultAreNotStored() {
-    Keyframe key = makeKey(0.0, {{kOpenJaw, 1.0f}}, Interpolation::Smooth);
+    Keyframe key = keyAt(0.0, {{kOpenJaw, 1.0f}}, Interpolation::Smooth);
     key.setShape(kOpenJaw, KeyShape{Interpolation::Smooth, HandleType::Auto, {}, {}});
     QVERIFY(key.ownShapes().empty());
     // Auto handles store no offsets, so they compare by type alone.
@@ -238,7 +211,7 @@ class KeyShapesTest : public QObject {
   }
 
   void changingTheKeysModeResetsEveryChannelsModeButKeepsHandles() {
-    Keyframe key = makeKey(0.0, {{kOpenJaw, 1.0f}, {kRaiseBLip, 2.0f}});
+    Keyframe key = keyAt(0.0, {{kOpenJaw, 1.0f}, {kRaiseBLip, 2.0f}});
     key.setShape(kOpenJaw, freeShape({-0.1, 1.0}, {0.1, 1.0}));
     key.setShape(kRaiseBLip, KeyShape{Interpolation::Constant, HandleType::Auto, {}, {}});
     key.setInterpolationOfAll(Interpolation::Smooth);
@@ -249,20 +222,20 @@ class KeyShapesTest : public QObject {
   }
 
   void takeChannelMovesValueAndShape() {
-    Keyframe from = makeKey(1.0, {{kOpenJaw, 42.0f}}, Interpolation::Smooth);
+    Keyframe from = keyAt(1.0, {{kOpenJaw, 42.0f}}, Interpolation::Smooth);
     from.setShape(kOpenJaw, freeShape({-0.2, 3.0}, {0.4, -1.0}));
-    Keyframe to = makeKey(2.0, {{kRaiseBLip, 5.0f}});
+    Keyframe to = keyAt(2.0, {{kRaiseBLip, 5.0f}});
     to.takeChannel(from, kOpenJaw);
     QCOMPARE(to.value(kOpenJaw), 42.0f);
     QVERIFY(to.shape(kOpenJaw) == from.shape(kOpenJaw));
     QVERIFY(to.shape(kRaiseBLip).interpolation == Interpolation::Linear);
-    to.takeChannel(makeKey(0.0, {}), kOpenJaw);  // a key without the channel removes it
+    to.takeChannel(keyAt(0.0, {}), kOpenJaw);  // a key without the channel removes it
     QVERIFY(!to.has(kOpenJaw));
     QVERIFY(to.ownShapes().empty());
   }
 
   void equalityComparesEffectiveShapes() {
-    Keyframe a = makeKey(0.0, {{kOpenJaw, 1.0f}});
+    Keyframe a = keyAt(0.0, {{kOpenJaw, 1.0f}});
     Keyframe b = a;
     b.setShape(kOpenJaw, KeyShape{Interpolation::Constant, HandleType::Auto, {}, {}});
     QVERIFY(!(a == b));
@@ -273,12 +246,12 @@ class KeyShapesTest : public QObject {
   // Keying one more channel into an existing key: a channel with its own shape brings it, one
   // without takes the existing key's default (so it cannot reshape its neighbours' curves).
   void insertingIntoAKeyKeepsItsDefault() {
-    KeyframeSequence keys({makeKey(1.0, {{kRaiseBLip, 1.0f}}, Interpolation::Smooth)});
-    keys.insert(makeKey(1.0, {{kOpenJaw, 9.0f}}, Interpolation::Linear));
+    KeyframeSequence keys({keyAt(1.0, {{kRaiseBLip, 1.0f}}, Interpolation::Smooth)});
+    keys.insert(keyAt(1.0, {{kOpenJaw, 9.0f}}, Interpolation::Linear));
     const Keyframe& merged = keys.keys().front();
     QVERIFY(merged.interpolation == Interpolation::Smooth);
     QVERIFY(merged.shape(kOpenJaw).interpolation == Interpolation::Smooth);
-    Keyframe shaped = makeKey(1.0, {{kTearsLeft, 4.0f}});
+    Keyframe shaped = keyAt(1.0, {{kTearsLeft, 4.0f}});
     shaped.setShape(kTearsLeft, KeyShape{Interpolation::Constant, HandleType::Auto, {}, {}});
     keys.insert(shaped);
     QVERIFY(keys.keys().front().shape(kTearsLeft).interpolation == Interpolation::Constant);

@@ -1,4 +1,6 @@
 // Keyframe interpolation and baking: the maths of Keyframes.h, checked by value.
+#include "../support/KeyBuilders.h"
+
 #include <lacrima/common/Keyframes.h>
 
 #include <QElapsedTimer>
@@ -10,20 +12,12 @@
 #include <stdexcept>
 
 using namespace lacrima;
+using lacrima::test::keyAt;
 
 namespace {
 
 constexpr int kOpenJaw = 3;
 constexpr int kRaiseBLip = 5;  // stands in for "some other low-level channel"
-
-Keyframe makeKey(double time, std::initializer_list<std::pair<int, float>> values,
-                 Interpolation mode = Interpolation::Linear) {
-  Keyframe key;
-  key.time = time;
-  key.interpolation = mode;
-  for (const auto& [fap, value] : values) key.set(fap, value);
-  return key;
-}
 
 // Keys on one channel at increasing random times with random values.
 std::vector<Keyframe> randomCurve(std::mt19937& random, int fap, int count, Interpolation mode) {
@@ -32,7 +26,7 @@ std::vector<Keyframe> randomCurve(std::mt19937& random, int fap, int count, Inte
   std::vector<Keyframe> keys;
   double time = gap(random);
   for (int i = 0; i < count; ++i) {
-    keys.push_back(makeKey(time, {{fap, value(random)}}, mode));
+    keys.push_back(keyAt(time, {{fap, value(random)}}, mode));
     time += gap(random);
   }
   return keys;
@@ -68,7 +62,7 @@ class KeyframesTest : public QObject {
   }
 
   void keyEqualityComparesOnlySetChannels() {
-    Keyframe a = makeKey(1.0, {{kOpenJaw, 10.0f}});
+    Keyframe a = keyAt(1.0, {{kOpenJaw, 10.0f}});
     Keyframe b = a;
     b.values[channelIndex(kRaiseBLip)] = 99.0f;  // not set, so not compared
     QVERIFY(a == b);
@@ -89,9 +83,8 @@ class KeyframesTest : public QObject {
   }
 
   void linearIsExactAtKeysAndMidpoints() {
-    const KeyframeSequence keys({makeKey(0.0, {{kOpenJaw, 0.0f}}),
-                                 makeKey(2.0, {{kOpenJaw, 100.0f}}),
-                                 makeKey(3.0, {{kOpenJaw, -50.0f}})});
+    const KeyframeSequence keys({keyAt(0.0, {{kOpenJaw, 0.0f}}), keyAt(2.0, {{kOpenJaw, 100.0f}}),
+                                 keyAt(3.0, {{kOpenJaw, -50.0f}})});
     QCOMPARE(keys.evaluate(0.0)[channelIndex(kOpenJaw)], 0.0f);
     QCOMPARE(keys.evaluate(2.0)[channelIndex(kOpenJaw)], 100.0f);
     QCOMPARE(keys.evaluate(3.0)[channelIndex(kOpenJaw)], -50.0f);
@@ -103,7 +96,7 @@ class KeyframesTest : public QObject {
   void bakeGivesFloorPlusOneFramesLinearlyInterpolated() {
     const float v0 = 12.0f;
     const float v1 = -310.0f;
-    const KeyframeSequence keys({makeKey(0.0, {{kOpenJaw, v0}}), makeKey(1.0, {{kOpenJaw, v1}})});
+    const KeyframeSequence keys({keyAt(0.0, {{kOpenJaw, v0}}), keyAt(1.0, {{kOpenJaw, v1}})});
     const FapAnimation baked = keys.bake(22.0);
     QCOMPARE(baked.frameCount(), 23);
     QCOMPARE(baked.fps, 22.0);
@@ -120,8 +113,7 @@ class KeyframesTest : public QObject {
 
   void bakeStartsAtTheFirstKey() {
     // Keys from 0.5 s to 1.5 s at 10 fps: 11 frames, frame i at 0.5 + i / 10.
-    const KeyframeSequence keys(
-        {makeKey(0.5, {{kOpenJaw, 0.0f}}), makeKey(1.5, {{kOpenJaw, 10.0f}})});
+    const KeyframeSequence keys({keyAt(0.5, {{kOpenJaw, 0.0f}}), keyAt(1.5, {{kOpenJaw, 10.0f}})});
     const FapAnimation baked = keys.bake(10.0);
     QCOMPARE(baked.frameCount(), 11);
     for (int i = 0; i < baked.frameCount(); ++i) {
@@ -131,9 +123,9 @@ class KeyframesTest : public QObject {
 
   void channelsSetOnlyBySomeKeysInterpolateAcrossOthers() {
     // open_jaw is keyed at 0 s and 2 s only; the key at 1 s sets another channel.
-    const KeyframeSequence keys({makeKey(0.0, {{kOpenJaw, 0.0f}, {kRaiseBLip, 5.0f}}),
-                                 makeKey(1.0, {{kRaiseBLip, 7.0f}}),
-                                 makeKey(2.0, {{kOpenJaw, 200.0f}})});
+    const KeyframeSequence keys({keyAt(0.0, {{kOpenJaw, 0.0f}, {kRaiseBLip, 5.0f}}),
+                                 keyAt(1.0, {{kRaiseBLip, 7.0f}}),
+                                 keyAt(2.0, {{kOpenJaw, 200.0f}})});
     QCOMPARE(keys.evaluate(1.0)[channelIndex(kOpenJaw)], 100.0f);
     QCOMPARE(keys.evaluate(1.5)[channelIndex(kOpenJaw)], 150.0f);
     QCOMPARE(keys.evaluate(0.5)[channelIndex(kRaiseBLip)], 6.0f);
@@ -146,8 +138,8 @@ class KeyframesTest : public QObject {
   }
 
   void holdsBeforeTheFirstAndAfterTheLastKey() {
-    const KeyframeSequence keys({makeKey(1.0, {{kOpenJaw, 40.0f}}, Interpolation::Smooth),
-                                 makeKey(2.0, {{kOpenJaw, 80.0f}}, Interpolation::Smooth)});
+    const KeyframeSequence keys({keyAt(1.0, {{kOpenJaw, 40.0f}}, Interpolation::Smooth),
+                                 keyAt(2.0, {{kOpenJaw, 80.0f}}, Interpolation::Smooth)});
     QCOMPARE(keys.evaluate(-100.0)[channelIndex(kOpenJaw)], 40.0f);
     QCOMPARE(keys.evaluate(0.999)[channelIndex(kOpenJaw)], 40.0f);
     QCOMPARE(keys.evaluate(2.001)[channelIndex(kOpenJaw)], 80.0f);
@@ -156,9 +148,8 @@ class KeyframesTest : public QObject {
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, keys.evaluate(NAN));
 
     // A channel keyed later than the sequence starts holds its first value until then.
-    const KeyframeSequence late({makeKey(0.0, {{kRaiseBLip, 1.0f}}),
-                                 makeKey(1.0, {{kOpenJaw, 9.0f}}),
-                                 makeKey(2.0, {{kOpenJaw, 19.0f}})});
+    const KeyframeSequence late({keyAt(0.0, {{kRaiseBLip, 1.0f}}), keyAt(1.0, {{kOpenJaw, 9.0f}}),
+                                 keyAt(2.0, {{kOpenJaw, 19.0f}})});
     const FapAnimation baked = late.bake(2.0);
     QCOMPARE(baked.frameCount(), 5);
     QCOMPARE(baked.frames[0][channelIndex(kOpenJaw)], 9.0f);
@@ -167,8 +158,7 @@ class KeyframesTest : public QObject {
   }
 
   void unsetChannelsStayZero() {
-    const KeyframeSequence keys(
-        {makeKey(0.0, {{kOpenJaw, 3.0f}}), makeKey(1.0, {{kOpenJaw, 8.0f}})});
+    const KeyframeSequence keys({keyAt(0.0, {{kOpenJaw, 3.0f}}), keyAt(1.0, {{kOpenJaw, 8.0f}})});
     const FapAnimation baked = keys.bake(22.0);
     for (const FapValues& frame : baked.frames) {
       for (int fap = 1; fap <= kChannelCount; ++fap) {
@@ -202,7 +192,7 @@ class KeyframesTest : public QObject {
       for (int i = 0; i < 10; ++i) {
         // Include flat stretches: a repeated value must stay exactly flat.
         value += (i % 4 == 2) ? 0.0f : rise(random);
-        list.push_back(makeKey(time, {{kOpenJaw, value}}, Interpolation::Smooth));
+        list.push_back(keyAt(time, {{kOpenJaw, value}}, Interpolation::Smooth));
         time += gap(random);
       }
       const FapAnimation baked = KeyframeSequence(list).bake(200.0);
@@ -270,9 +260,9 @@ class KeyframesTest : public QObject {
     // 0 s linear -> 1 s smooth -> 2 s. The first segment is a straight line; the second is
     // a Hermite cubic with slope 0 at the peak (Steffen) and, at the end, the one-sided
     // slope -20 (parabola through the three keys, within twice the secant).
-    const KeyframeSequence keys({makeKey(0.0, {{kOpenJaw, 0.0f}}, Interpolation::Linear),
-                                 makeKey(1.0, {{kOpenJaw, 10.0f}}, Interpolation::Smooth),
-                                 makeKey(2.0, {{kOpenJaw, 0.0f}}, Interpolation::Linear)});
+    const KeyframeSequence keys({keyAt(0.0, {{kOpenJaw, 0.0f}}, Interpolation::Linear),
+                                 keyAt(1.0, {{kOpenJaw, 10.0f}}, Interpolation::Smooth),
+                                 keyAt(2.0, {{kOpenJaw, 0.0f}}, Interpolation::Linear)});
     QCOMPARE(keys.evaluate(0.5)[channelIndex(kOpenJaw)], 5.0f);
     QCOMPARE(keys.evaluate(0.25)[channelIndex(kOpenJaw)], 2.5f);
     QCOMPARE(keys.evaluate(1.5)[channelIndex(kOpenJaw)], 7.5f);
@@ -287,7 +277,7 @@ class KeyframesTest : public QObject {
 
   void tearChannelsAreWholeAndNonNegative() {
     const KeyframeSequence keys(
-        {makeKey(0.0, {{kTearLeftFap, 0.0f}}), makeKey(1.0, {{kTearLeftFap, 5.0f}})});
+        {keyAt(0.0, {{kTearLeftFap, 0.0f}}), keyAt(1.0, {{kTearLeftFap, 5.0f}})});
     const FapAnimation baked = keys.bake(22.0);
     QCOMPARE(baked.frameCount(), 23);
     for (int i = 0; i < baked.frameCount(); ++i) {
@@ -304,8 +294,8 @@ class KeyframesTest : public QObject {
       std::uniform_int_distribution<int> count(0, 40);
       std::vector<Keyframe> list;
       for (int i = 0; i < 8; ++i) {
-        list.push_back(makeKey(i * 0.37, {{kTearRightFap, static_cast<float>(count(random))}},
-                               Interpolation::Smooth));
+        list.push_back(keyAt(i * 0.37, {{kTearRightFap, static_cast<float>(count(random))}},
+                             Interpolation::Smooth));
       }
       const FapAnimation smooth = KeyframeSequence(list).bake(60.0);
       for (const FapValues& frame : smooth.frames) {
@@ -317,7 +307,7 @@ class KeyframesTest : public QObject {
   }
 
   void highLevelCodesHoldAndFillHighLevelFrames() {
-    const KeyframeSequence keys({makeKey(0.0, {{1, 3.0f}}), makeKey(1.0, {{1, 7.0f}})});
+    const KeyframeSequence keys({keyAt(0.0, {{1, 3.0f}}), keyAt(1.0, {{1, 7.0f}})});
     const FapAnimation baked = keys.bake(4.0);
     QCOMPARE(baked.frameCount(), 5);
     QCOMPARE(baked.highLevel.size(), std::size_t{5});
@@ -332,11 +322,11 @@ class KeyframesTest : public QObject {
 
   void insertMergesKeysAtTheSameTime() {
     KeyframeSequence keys;
-    QCOMPARE(keys.insert(makeKey(1.0, {{kOpenJaw, 10.0f}}, Interpolation::Smooth)), 0);
-    QCOMPARE(keys.insert(makeKey(0.0, {{kOpenJaw, 0.0f}})), 0);
-    QCOMPARE(keys.insert(makeKey(2.0, {{kOpenJaw, 20.0f}})), 2);
+    QCOMPARE(keys.insert(keyAt(1.0, {{kOpenJaw, 10.0f}}, Interpolation::Smooth)), 0);
+    QCOMPARE(keys.insert(keyAt(0.0, {{kOpenJaw, 0.0f}})), 0);
+    QCOMPARE(keys.insert(keyAt(2.0, {{kOpenJaw, 20.0f}})), 2);
     // Within 1e-9 s of the key at 1 s: merged into it, keeping its time and mode.
-    QCOMPARE(keys.insert(makeKey(1.0 + 5e-10, {{kRaiseBLip, 4.0f}, {kOpenJaw, 11.0f}})), 1);
+    QCOMPARE(keys.insert(keyAt(1.0 + 5e-10, {{kRaiseBLip, 4.0f}, {kOpenJaw, 11.0f}})), 1);
     QCOMPARE(keys.keys().size(), std::size_t{3});
     const Keyframe& merged = keys.keys()[1];
     QCOMPARE(merged.time, 1.0);
@@ -345,20 +335,19 @@ class KeyframesTest : public QObject {
     QCOMPARE(merged.value(kRaiseBLip), 4.0f);
     QCOMPARE(merged.channels.count(), std::size_t{2});
     // 2e-9 s away is a different key.
-    QCOMPARE(keys.insert(makeKey(1.0 + 2e-9, {{kOpenJaw, 1.0f}})), 2);
+    QCOMPARE(keys.insert(keyAt(1.0 + 2e-9, {{kOpenJaw, 1.0f}})), 2);
     QCOMPARE(keys.keys().size(), std::size_t{4});
     QCOMPARE(keys.startTime(), 0.0);
     QCOMPARE(keys.endTime(), 2.0);
     keys.remove(0);
     QCOMPARE(keys.startTime(), 1.0);
     QVERIFY_THROWS_EXCEPTION(std::out_of_range, keys.remove(3));
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, keys.insert(makeKey(NAN, {})));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, keys.insert(keyAt(NAN, {})));
   }
 
   void constructorSortsAndTheLastDuplicateWins() {
-    const KeyframeSequence keys({makeKey(2.0, {{kOpenJaw, 2.0f}}), makeKey(0.0, {{kOpenJaw, 0.0f}}),
-                                 makeKey(2.0, {{kRaiseBLip, 9.0f}}),
-                                 makeKey(1.0, {{kOpenJaw, 1.0f}})});
+    const KeyframeSequence keys({keyAt(2.0, {{kOpenJaw, 2.0f}}), keyAt(0.0, {{kOpenJaw, 0.0f}}),
+                                 keyAt(2.0, {{kRaiseBLip, 9.0f}}), keyAt(1.0, {{kOpenJaw, 1.0f}})});
     QCOMPARE(keys.keys().size(), std::size_t{3});
     QCOMPARE(keys.keys()[0].time, 0.0);
     QCOMPARE(keys.keys()[1].time, 1.0);
@@ -409,7 +398,7 @@ class KeyframesTest : public QObject {
   }
 
   void invalidFpsThrows() {
-    const KeyframeSequence keys({makeKey(0.0, {{kOpenJaw, 1.0f}})});
+    const KeyframeSequence keys({keyAt(0.0, {{kOpenJaw, 1.0f}})});
     for (double fps : {0.0, -22.0, double(NAN), double(INFINITY)}) {
       QVERIFY_THROWS_EXCEPTION(std::invalid_argument, keys.bake(fps));
       QVERIFY_THROWS_EXCEPTION(std::invalid_argument, KeyframeSequence().bake(fps));
@@ -418,8 +407,7 @@ class KeyframesTest : public QObject {
       QVERIFY_THROWS_EXCEPTION(std::invalid_argument, KeyframeSequence::fromAnimation(animation));
     }
     // Absurd lengths are refused instead of exhausting memory.
-    const KeyframeSequence huge(
-        {makeKey(0.0, {{kOpenJaw, 1.0f}}), makeKey(1e9, {{kOpenJaw, 1.0f}})});
+    const KeyframeSequence huge({keyAt(0.0, {{kOpenJaw, 1.0f}}), keyAt(1e9, {{kOpenJaw, 1.0f}})});
     QVERIFY_THROWS_EXCEPTION(std::length_error, huge.bake(1000.0));
   }
 
@@ -428,7 +416,7 @@ class KeyframesTest : public QObject {
     QCOMPARE(empty.frameCount(), 0);
     QCOMPARE(empty.fps, 30.0);
     QVERIFY(empty.animated.none());
-    const FapAnimation single = KeyframeSequence({makeKey(4.0, {{kOpenJaw, 6.0f}})}).bake(22.0);
+    const FapAnimation single = KeyframeSequence({keyAt(4.0, {{kOpenJaw, 6.0f}})}).bake(22.0);
     QCOMPARE(single.frameCount(), 1);
     QCOMPARE(single.frames[0][channelIndex(kOpenJaw)], 6.0f);
   }
@@ -439,8 +427,8 @@ class KeyframesTest : public QObject {
     std::mt19937 random(1);
     std::uniform_real_distribution<float> value(-300.0f, 300.0f);
     for (int i = 0; i < 13200; ++i) {
-      list.push_back(makeKey(i / 22.0, {{kOpenJaw, value(random)}, {kTearLeftFap, 3.0f}},
-                             i % 2 ? Interpolation::Smooth : Interpolation::Linear));
+      list.push_back(keyAt(i / 22.0, {{kOpenJaw, value(random)}, {kTearLeftFap, 3.0f}},
+                           i % 2 ? Interpolation::Smooth : Interpolation::Linear));
       if (i % 10 == 0) list.back().set(kRaiseBLip, value(random));
     }
     const KeyframeSequence keys(std::move(list));

@@ -1,4 +1,6 @@
 // Presets applied as layers: each adds its pose times its intensity curve onto the keys.
+#include "../support/KeyBuilders.h"
+
 #include <lacrima/common/Diagnostics.h>
 #include <lacrima/common/ProjectDocument.h>
 
@@ -7,6 +9,7 @@
 #include <cmath>
 
 using namespace lacrima;
+using lacrima::test::keyAt;
 
 namespace {
 
@@ -23,13 +26,6 @@ PoseLayer rampLayer(const char* name, std::initializer_list<std::pair<int, float
   return layer;
 }
 
-Keyframe key(double time, std::initializer_list<std::pair<int, float>> values) {
-  Keyframe k;
-  k.time = time;
-  for (const auto& [fap, value] : values) k.set(fap, value);
-  return k;
-}
-
 }  // namespace
 
 class PoseLayerTest : public QObject {
@@ -37,7 +33,7 @@ class PoseLayerTest : public QObject {
 
  private slots:
   void layersAddTheirPoseTimesTheirIntensity() {
-    const KeyframeSequence keys({key(0.0, {{kOpenJaw, 10.0f}}), key(2.0, {{kOpenJaw, 30.0f}})});
+    const KeyframeSequence keys({keyAt(0.0, {{kOpenJaw, 10.0f}}), keyAt(2.0, {{kOpenJaw, 30.0f}})});
     const std::vector<PoseLayer> layers{rampLayer("a", {{kOpenJaw, 100.0f}}, 1.0, 2.0),
                                         rampLayer("b", {{kRaiseBLip, -40.0f}}, 0.0, 4.0)};
     const FapValues at = mixLayers(keys.evaluate(1.5), layers, 1.5);
@@ -79,7 +75,7 @@ class PoseLayerTest : public QObject {
     ProjectDocument document;
     document.fps = 10.0;
     document.keys =
-        KeyframeSequence({key(1.0, {{kOpenJaw, 10.0f}}), key(2.0, {{kOpenJaw, 20.0f}})});
+        KeyframeSequence({keyAt(1.0, {{kOpenJaw, 10.0f}}), keyAt(2.0, {{kOpenJaw, 20.0f}})});
     document.layers = {rampLayer("sob", {{kOpenJaw, 50.0f}, {kTearsLeft, 10.0f}}, 2.0, 3.0)};
     const FapAnimation baked = document.bake();
     QCOMPARE(baked.frameCount(), 21);  // 1 s .. 3 s at 10 fps
@@ -108,7 +104,7 @@ class PoseLayerTest : public QObject {
 
   void layersRoundTripThroughTheProjectFile() {
     ProjectDocument document;
-    document.keys = KeyframeSequence({key(0.0, {{kOpenJaw, 1.0f}})});
+    document.keys = KeyframeSequence({keyAt(0.0, {{kOpenJaw, 1.0f}})});
     PoseLayer sob = rampLayer("sob \"loud\"", {{kOpenJaw, 0.1f}, {kTearsLeft, 40.0f}}, 0.5, 1.25);
     sob.setIntensityKeys({{0.5, 0.0, Interpolation::Smooth},
                           {1.25, 0.7, Interpolation::Bezier},

@@ -1,6 +1,8 @@
 // Per-channel key edits (the dope sheet's): moving, deleting, copying and pasting one channel
 // of a key leaves the key's other channels alone, carries the channel's shape, replaces what
 // the channel had where it lands, removes keys left empty, and undoes exactly.
+#include "../support/KeyBuilders.h"
+
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/ChannelKeyEdits.h>
 #include <lacrima/editing/EditorModel.h>
@@ -10,20 +12,12 @@
 #include <cmath>
 
 using namespace lacrima;
+using lacrima::test::keyAt;
 using namespace lacrima::editing;
 
 namespace {
 
 constexpr double kFps = 22.0;
-
-Keyframe keyAt(double time, std::initializer_list<std::pair<int, float>> values,
-               Interpolation mode = Interpolation::Linear) {
-  Keyframe key;
-  key.time = time;
-  key.interpolation = mode;
-  for (const auto& [fap, value] : values) key.set(fap, value);
-  return key;
-}
 
 // A Bézier shape with free handles, unlike any default, so losing it shows.
 KeyShape freeBezier() {

@@ -2,6 +2,8 @@
 // QTest mouse and key events at the marks' positions. Rows follow the filter, the toggle and
 // folding; clicks, Ctrl-clicks, names and boxes select channel keys; drags move them by whole
 // frames as one undo step; the keys copy, paste, duplicate and delete; holds are drawn.
+#include "../support/KeyBuilders.h"
+
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editor/DopeSheet.h>
@@ -24,21 +26,13 @@
 #include <memory>
 
 using namespace lacrima;
+using lacrima::test::keyAt;
 using namespace lacrima::editor;
 using editing::ChannelKey;
 
 namespace {
 
 constexpr double kFps = 22.0;
-
-Keyframe keyAt(double time, std::initializer_list<std::pair<int, float>> values,
-               Interpolation mode = Interpolation::Linear) {
-  Keyframe key;
-  key.time = time;
-  key.interpolation = mode;
-  for (const auto& [fap, value] : values) key.set(fap, value);
-  return key;
-}
 
 // open_jaw (3) keyed at 0, 1 and 2 s; lower_t_midlip (4) and a tear count (69) at 1 s.
 ProjectDocument sampleDocument() {
