@@ -86,7 +86,7 @@ run_demo() {
 # (demo-*.png), the demo from the front and close up on the face's left cheek at three moments,
 # the sob (7.2 s), the tear peak (8.2 s) and the drying (12.5 s) (the player renders every frame
 # at 22 fps; these are frames 158, 180 and 275), and the player's and the editor's windows at
-# the sob (player-sob.png, editor.png).
+# the sob (player-sob.png, editor.png; editor-graph.png with the graph editor on open_jaw).
 render_screenshots() {
   local bin="$build/bin" demo="$root/media/demo/crying.fap" shots="$root/media/screenshots"
   if [ "$head_available" -eq 0 ]; then
@@ -108,6 +108,8 @@ render_screenshots() {
     --screenshot "$shots/player-sob.png" --at 7.2 "$demo" >/dev/null
   xvfb-run -a -s "-screen 0 1600x1000x24" "$bin/lacrima-editor" "$root/media/demo/crying.json" \
     --screenshot "$shots/editor.png" --time 7.2 --warm-up 80 >/dev/null
+  xvfb-run -a -s "-screen 0 1600x1000x24" "$bin/lacrima-editor" "$root/media/demo/crying.json" \
+    --screenshot "$shots/editor-graph.png" --time 7.2 --warm-up 80 --view graph --focus 3 >/dev/null
   echo "lacrima: rendered $(ls "$shots"/demo-*.png | wc -l) reference pictures and the two windows into $shots"
 }
 

@@ -127,8 +127,12 @@ int main(int argc, char** argv) {
   const QCommandLineOption propose(
       QStringLiteral("propose"),
       QStringLiteral("With --head: propose every feature point not placed by hand."));
+  const QCommandLineOption view(
+      QStringLiteral("view"),
+      QStringLiteral("Show this animation view under the transport: keys, dope or graph."),
+      QStringLiteral("name"), QStringLiteral("keys"));
   parser.addOptions({screenshot, size, time, filter, focus, presets, noPreview, warm, headMesh,
-                     headPoints, propose});
+                     headPoints, propose, view});
   parser.process(app);
 
   const bool batch = parser.isSet(screenshot);
@@ -160,6 +164,11 @@ int main(int argc, char** argv) {
   if (parser.isSet(time)) window.model().setCurrentTime(parser.value(time).toDouble());
   if (parser.isSet(filter)) window.sliders()->setFilterText(parser.value(filter));
   if (parser.isSet(focus)) window.model().setFocusChannel(parser.value(focus).toInt());
+  if (!window.showAnimationView(parser.value(view))) {
+    std::fprintf(stderr, "lacrima-editor: --view: expected keys, dope or graph, got %s\n",
+                 qPrintable(parser.value(view)));
+    return 2;
+  }
 
   if (!batch) {
     window.show();
@@ -191,8 +200,12 @@ int main(int argc, char** argv) {
   } else {
     window.preview()->loadHead();
   }
-  for (int i = 0; i < parser.value(warm).toInt(); ++i)
+  // The preview steps its tears on a worker; a warm-up waits for each step so the picture shows
+  // exactly that many frames of tears.
+  for (int i = 0; i < parser.value(warm).toInt(); ++i) {
     window.preview()->step(window.model().frameDuration());
+    window.preview()->waitForTears();
+  }
   settle.restart();
   while (settle.elapsed() < 300) app.processEvents(QEventLoop::AllEvents, 50);
   const QImage image = window.screenshot();

@@ -306,7 +306,8 @@ void GraphEditor::resizeEvent(QResizeEvent*) {
   normalizeButton_->adjustSize();
   normalizeButton_->move(width() - normalizeButton_->width() - 4,
                          static_cast<int>(kRulerHeight) + 2);
-  if (framePending_) frameAll();
+  // A view the user has not zoomed or panned keeps showing everything as the panel resizes.
+  if (framePending_ || !viewTouched_) frameAll();
 }
 
 void GraphEditor::showEvent(QShowEvent*) {

@@ -128,6 +128,16 @@ MainWindow::Workspace MainWindow::workspace() const {
 
 QAction* MainWindow::action(const QString& name) const { return findChild<QAction*>(name); }
 
+bool MainWindow::showAnimationView(const QString& name) {
+  QWidget* view = name == QLatin1String("keys")    ? static_cast<QWidget*>(timeline_)
+                  : name == QLatin1String("dope")  ? static_cast<QWidget*>(dopeSheet_)
+                  : name == QLatin1String("graph") ? static_cast<QWidget*>(graphEditor_)
+                                                   : nullptr;
+  if (!view) return false;
+  animationViews_->setCurrentWidget(view);
+  return true;
+}
+
 void MainWindow::createDocks() {
   editing::PresetLibrary library;
   QString presetsSource = QString::fromUtf8(editing::PresetLibrary::kBuiltInPath.data());

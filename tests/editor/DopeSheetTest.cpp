@@ -379,7 +379,9 @@ class DopeSheetTest : public QObject {
     QVERIFY(keyAtTime(window.model(), 1.0)->has(69));
 
     // The graph editor takes Delete the same way: the channel keys selected, not whole keys.
-    tabs->setCurrentIndex(tabs->indexOf(window.graphEditor()));
+    QVERIFY(!window.showAnimationView(QStringLiteral("curves")));  // --view's names only
+    QVERIFY(window.showAnimationView(QStringLiteral("graph")));
+    QCOMPARE(tabs->currentWidget(), window.graphEditor());
     window.model().setSelectedChannelKeys({{3, 1.0}});
     window.graphEditor()->setFocus();
     QVERIFY(window.graphEditor()->hasFocus());

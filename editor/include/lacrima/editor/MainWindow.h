@@ -73,6 +73,8 @@ class MainWindow : public QMainWindow {
   GraphEditor* graphEditor() const { return graphEditor_; }
   // The tabs under the transport: Keys (the timeline) and the per-channel views.
   QTabWidget* animationViews() const { return animationViews_; }
+  // Brings the view named "keys", "dope" or "graph" to the front; false for any other name.
+  bool showAnimationView(const QString& name);
   DopeSheet* dopeSheet() const { return dopeSheet_; }  // the Dope sheet tab
   TransportBar* transport() const { return transport_; }
   PresetPanel* presets() const { return presets_; }
