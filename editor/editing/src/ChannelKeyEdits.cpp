@@ -1,62 +1,12 @@
 #include <lacrima/editing/ChannelKeyEdits.h>
 
+#include "TouchedKeys.h"
+
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 namespace lacrima::editing {
 namespace {
-
-// Orders times, taking two within kSameKeyTime as the same key (as findKey does).
-struct TimeLess {
-  bool operator()(double a, double b) const { return a < b - kSameKeyTime; }
-};
-
-// The keys an edit touches, as they will be after it: copies of the document's keys at those
-// times, or new keys. Every touched key is written back (an emptied one removes its key).
-class TouchedKeys {
- public:
-  explicit TouchedKeys(const KeyframeSequence& keys) : keys_(keys) {}
-
-  // The key at `seconds`: already touched, else the document's, else a new one with `mode`.
-  Keyframe& at(double seconds, Interpolation mode) {
-    const auto found = touched_.find(seconds);
-    if (found != touched_.end()) return found->second;
-    const int index = findKey(keys_, seconds);
-    Keyframe key;
-    if (index >= 0) {
-      key = keys_.keys()[static_cast<std::size_t>(index)];
-    } else {
-      key.time = seconds;
-      key.interpolation = mode;
-    }
-    return touched_.emplace(key.time, std::move(key)).first->second;
-  }
-
-  // What planReplace(keys, {}, touched keys) gives, built directly: the touched times are
-  // already sorted and unique, so this is O(k log n) where planReplace looks up each time among
-  // the written keys (quadratic for a selection of every key in a long imported file).
-  KeyChange plan() const {
-    KeyChange change;
-    change.times.reserve(touched_.size());
-    for (const auto& [time, key] : touched_) {
-      change.times.push_back(key.time);
-      const int index = findKey(keys_, key.time);
-      if (index >= 0) change.before.push_back(keys_.keys()[static_cast<std::size_t>(index)]);
-      if (key.channels.any()) change.after.push_back(key);
-    }
-    return change;
-  }
-
- private:
-  const KeyframeSequence& keys_;
-  std::map<double, Keyframe, TimeLess> touched_;
-};
-
-const Keyframe* keyAt(const KeyframeSequence& keys, double seconds) {
-  const int index = findKey(keys, seconds);
-  return index < 0 ? nullptr : &keys.keys()[static_cast<std::size_t>(index)];
-}
 
 // The selected channel keys that exist, at their keys' exact times, sorted and unique.
 std::vector<ChannelKey> existing(const KeyframeSequence& keys,
@@ -65,7 +15,7 @@ std::vector<ChannelKey> existing(const KeyframeSequence& keys,
   out.reserve(selection.size());
   for (const ChannelKey& wanted : selection) {
     if (!isValidFap(wanted.fap)) continue;
-    const Keyframe* key = keyAt(keys, wanted.time);
+    const Keyframe* key = keyAtTime(keys, wanted.time);
     if (key && key->has(wanted.fap)) out.push_back({wanted.fap, key->time});
   }
   std::sort(out.begin(), out.end());
@@ -100,14 +50,6 @@ void forEachChannel(const ChannelMask& channels, Visit visit) {
 void sortUnique(std::vector<ChannelKey>& keys) {
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-}
-
-// `seconds` moved by whole frames: on-grid times land exactly on the grid (no drift from
-// repeated moves), off-grid times (hand-edited files) keep their offset from it.
-double shiftedTime(double seconds, int frames, double fps) {
-  const double onGrid = seconds * fps;
-  if (std::abs(onGrid - std::round(onGrid)) < 1e-6) return (std::round(onGrid) + frames) / fps;
-  return seconds + frames / fps;
 }
 
 // As EditorModel::snapTime: a key within half a frame, else the nearest frame, never < 0.
@@ -153,8 +95,8 @@ ChannelKeyEdit moveChannelKeys(const KeyframeSequence& keys, std::span<const Cha
   }
   ChannelKeyEdit edit;
   for (const TimeChannels& at : moving) {
-    const Keyframe& source = *keyAt(keys, at.time);
-    const double to = std::max(0.0, shiftedTime(at.time, frames, fps));
+    const Keyframe& source = *keyAtTime(keys, at.time);
+    const double to = std::max(0.0, shiftedByFrames(at.time, frames, fps));
     Keyframe& target = touched.at(to, source.interpolation);
     forEachChannel(at.channels, [&](int fap) {
       target.takeChannel(source, fap);
@@ -183,7 +125,7 @@ ChannelKeyClip copyChannelKeys(const KeyframeSequence& keys,
   if (copied.empty()) return clip;
   const double first = copied.front().time;
   for (const TimeChannels& at : copied) {
-    const Keyframe& source = *keyAt(keys, at.time);
+    const Keyframe& source = *keyAtTime(keys, at.time);
     Keyframe key;
     key.time = at.time - first;
     key.interpolation = source.interpolation;

@@ -1,5 +1,7 @@
 #include <lacrima/editing/CurveEdits.h>
 
+#include "TouchedKeys.h"
+
 #include <lacrima/common/CurveHandles.h>
 #include <lacrima/editing/ChannelLimits.h>
 
@@ -11,41 +13,6 @@ namespace lacrima::editing {
 namespace {
 
 constexpr double kMaxHandleSeconds = 86400.0;
-
-bool sameTime(double a, double b) { return std::abs(a - b) < kSameKeyTime; }
-
-const Keyframe* keyAt(const KeyframeSequence& keys, double time) {
-  const int index = findKey(keys, time);
-  return index >= 0 ? &keys.keys()[static_cast<std::size_t>(index)] : nullptr;
-}
-
-// Copies of the keys an edit writes, found by time; each time appears once.
-class TouchedKeys {
- public:
-  explicit TouchedKeys(const KeyframeSequence& keys) : keys_(keys) {}
-
-  // The copy at `time`: made from the document's key there, else a new key with no channels
-  // and `interpolation` as its default.
-  Keyframe& at(double time, Interpolation interpolation) {
-    for (Keyframe& key : written_)
-      if (sameTime(key.time, time)) return key;
-    if (const Keyframe* existing = keyAt(keys_, time)) {
-      written_.push_back(*existing);
-    } else {
-      Keyframe fresh;
-      fresh.time = time;
-      fresh.interpolation = interpolation;
-      written_.push_back(fresh);
-    }
-    return written_.back();
-  }
-
-  KeyChange plan() const { return planReplace(keys_, {}, written_); }
-
- private:
-  const KeyframeSequence& keys_;
-  std::vector<Keyframe> written_;
-};
 
 double length(Handle h) { return std::hypot(h.dt, h.dv); }
 
@@ -65,14 +32,6 @@ int previousChannelKey(const KeyframeSequence& keys, int fap, int index) {
   return -1;
 }
 
-// Keys on the frame grid stay exactly on it; off-grid keys keep their offset (as
-// EditorModel::moveKeys).
-double shiftedTime(double seconds, int frames, double fps) {
-  const double onGrid = seconds * fps;
-  if (std::abs(onGrid - std::round(onGrid)) < 1e-6) return (std::round(onGrid) + frames) / fps;
-  return seconds + frames / fps;
-}
-
 float sanitisedValue(int fap, double value, bool wholeValues) {
   if (!std::isfinite(value)) value = 0.0;
   if (wholeValues || isTearChannel(fap) || isHighLevelFap(fap)) value = std::round(value);
@@ -86,7 +45,7 @@ KeyChange setChannelKeyShapes(const KeyframeSequence& keys, std::span<const Chan
                               Interpolation interpolation) {
   TouchedKeys touched(keys);
   for (const ChannelKey& channelKey : selected) {
-    const Keyframe* source = keyAt(keys, channelKey.time);
+    const Keyframe* source = keyAtTime(keys, channelKey.time);
     if (!source || !source->has(channelKey.fap)) continue;
     Keyframe& key = touched.at(source->time, source->interpolation);
     KeyShape shape = key.shape(channelKey.fap);
@@ -171,11 +130,11 @@ ChannelKeyMoveResult moveChannelKeys(const KeyframeSequence& keys,
   };
   std::vector<Moving> moving;
   for (const ChannelKeyMove& move : moves) {
-    const Keyframe* source = keyAt(keys, move.key.time);
+    const Keyframe* source = keyAtTime(keys, move.key.time);
     if (!source || !source->has(move.key.fap)) continue;
     const double to = frames == 0 || !(fps > 0.0)
                           ? source->time
-                          : std::max(0.0, shiftedTime(source->time, frames, fps));
+                          : std::max(0.0, shiftedByFrames(source->time, frames, fps));
     moving.push_back(
         {move.key.fap, *source, to, sanitisedValue(move.key.fap, move.value, wholeValues)});
   }
@@ -205,7 +164,7 @@ KeyChange moveChannelKeyValue(const KeyframeSequence& keys, int fap, double time
 
 KeyChange moveChannelKeyTime(const KeyframeSequence& keys, int fap, double time, int frames,
                              double fps) {
-  const Keyframe* source = keyAt(keys, time);
+  const Keyframe* source = keyAtTime(keys, time);
   if (!source || !source->has(fap)) return {};
   const ChannelKeyMove move{{fap, time}, source->value(fap)};
   return moveChannelKeys(keys, std::span(&move, 1), frames, fps, false).change;

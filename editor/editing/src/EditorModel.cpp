@@ -1,5 +1,7 @@
 #include <lacrima/editing/EditorModel.h>
 
+#include "TouchedKeys.h"
+
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/EditCommands.h>
 #include <lacrima/editing/Mirror.h>
@@ -321,11 +323,7 @@ void EditorModel::deleteKeys(std::vector<double> times) {
 }
 
 double EditorModel::shiftedTime(double seconds, int frames) const {
-  const double fps = document_.fps;
-  const double onGrid = seconds * fps;
-  // Keys on the frame grid stay exactly on it; off-grid keys keep their offset.
-  if (std::abs(onGrid - std::round(onGrid)) < 1e-6) return (std::round(onGrid) + frames) / fps;
-  return seconds + frames / fps;
+  return shiftedByFrames(seconds, frames, document_.fps);
 }
 
 void EditorModel::moveKeys(std::vector<double> times, int frames) {
