@@ -7,6 +7,7 @@
 // its hand-made feature points (import and rig on worker threads), timed on the wall clock with
 // the longest event-loop stall (the largest gap between ticks of a 1 ms timer).
 #include "BenchCommandLine.h"
+#include "BenchEditorApp.h"
 #include "BenchSupport.h"
 #include "RealHeads.h"
 
@@ -22,11 +23,8 @@
 #include <lacrima/editor/head/HeadWorkspace.h>
 #include <lacrima/viewport/FaceViewport.h>
 
-#include <QApplication>
 #include <QElapsedTimer>
 #include <QFileInfo>
-#include <QStandardPaths>
-#include <QTemporaryDir>
 #include <QTimer>
 #include <QWindow>
 
@@ -109,24 +107,11 @@ int runEditor(int argc, char** argv) {
   Options options;
   if (const std::optional<int> status = parseOptions(argc, argv, options)) return *status;
 
-  // No display: the widget figures still mean something on the offscreen platform.
-  const bool display = std::getenv("DISPLAY") && *std::getenv("DISPLAY");
-  if (!display && !std::getenv("QT_QPA_PLATFORM")) setenv("QT_QPA_PLATFORM", "offscreen", 1);
-  int qtArgc = 1;
-  char name[] = "lacrima-bench";
-  char* qtArgv[] = {name, nullptr};
-  QApplication app(qtArgc, qtArgv);
-  QStandardPaths::setTestModeEnabled(
-      true);  // keep the user's recent files and window state out of it
-  QTemporaryDir recovery;
-
-  editor::EditorOptions editorOptions;
-  editorOptions.interactive = false;
-  editorOptions.offerRecovery = false;
-  editorOptions.recoveryDirectory = recovery.path();
+  BenchEditorApp app;
+  const bool display = app.hasDisplay();
+  editor::EditorOptions editorOptions = app.editorOptions(false);
 
   // Building: the whole window without the head, and the 70-slider panel alone.
-  editorOptions.preview = false;
   const Timing windowBuild = timeRuns(5, [&] { editor::MainWindow window(editorOptions); });
   editing::EditorModel panelModel;
   const Timing panelBuild = timeRuns(10, [&] { editor::SliderPanel panel(panelModel); });
@@ -156,8 +141,8 @@ int runEditor(int argc, char** argv) {
   exposing.start();
   while (!(timeline.windowHandle() && timeline.windowHandle()->isExposed()) &&
          exposing.elapsed() < 2000)
-    app.processEvents(QEventLoop::AllEvents, 20);
-  app.processEvents();
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+  QCoreApplication::processEvents();
   // repaint() paints now, through the window's backing store, as a real update does.
   timeline.fitAll();
   const Timing paintAll = timeRuns(30, [&] { timeline.repaint(); });
@@ -175,7 +160,7 @@ int runEditor(int argc, char** argv) {
   editor::DopeSheetView dopeSheet(longModel);
   dopeSheet.resize(1400, 400);
   dopeSheet.show();
-  app.processEvents();
+  QCoreApplication::processEvents();
   dopeSheet.fitAll();
   const Timing dopePaintAll = timeRuns(30, [&] { dopeSheet.repaint(); });
   dopeSheet.setView(30.0, 200.0);
@@ -207,7 +192,7 @@ int runEditor(int argc, char** argv) {
     window.show();
     QElapsedTimer settle;
     settle.start();
-    while (settle.elapsed() < 200) app.processEvents(QEventLoop::AllEvents, 20);
+    while (settle.elapsed() < 200) QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
     if (!display) {
       previewNote = QStringLiteral("no X display: the viewport needs one (run under xvfb-run)");
     } else if (!window.preview()->loadHead() || !window.preview()->viewportWidget()) {
@@ -227,7 +212,7 @@ int runEditor(int argc, char** argv) {
       for (int i = 0; i < options.warmUp; ++i) {
         window.preview()->step(dt);
         window.preview()->waitForTears();
-        app.processEvents();
+        QCoreApplication::processEvents();
       }
       auto* viewport = qobject_cast<viewport::FaceViewport*>(window.preview()->viewportWidget());
       std::vector<double> frames, produce, render;
@@ -238,7 +223,7 @@ int runEditor(int argc, char** argv) {
         frame.start();
         window.preview()->step(dt);
         window.preview()->waitForTears();
-        app.processEvents();  // the viewport renders on its deferred request
+        QCoreApplication::processEvents();  // the viewport renders on its deferred request
         frames.push_back(frame.nsecsElapsed() / 1e6);
         produce.push_back(window.preview()->lastProduceMilliseconds());
         if (viewport) render.push_back(viewport->lastRenderMilliseconds());
@@ -274,7 +259,8 @@ int runEditor(int argc, char** argv) {
     editor::head::HeadWorkspace& ws = *window.headWorkspace();
     QElapsedTimer settle;
     settle.start();
-    while (settle.elapsed() < 500) app.processEvents(QEventLoop::AllEvents, 20);  // OGRE up
+    while (settle.elapsed() < 500)
+      QCoreApplication::processEvents(QEventLoop::AllEvents, 20);  // OGRE up
     bool imported = false, rigged = false, failed = false;
     QObject::connect(&ws, &editor::head::HeadWorkspace::importFinished,
                      [&](bool ok) { (ok ? imported : failed) = true; });
@@ -292,11 +278,11 @@ int runEditor(int argc, char** argv) {
     tick.start();
     ws.importHead(QString::fromStdString(ictHeadSpec().meshPath));
     while (!imported && !failed && wall.elapsed() < 60000)
-      app.processEvents(QEventLoop::WaitForMoreEvents);
+      QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
     headImportMs = wall.nsecsElapsed() / 1e6;
     if (imported && ws.openPoints(QString::fromStdString(ictHeadSpec().fdpPath))) {
       while (!rigged && !failed && wall.elapsed() < 60000)
-        app.processEvents(QEventLoop::WaitForMoreEvents);
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
     }
     tick.stop();
     headRiggedMs = wall.nsecsElapsed() / 1e6;

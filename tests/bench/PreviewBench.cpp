@@ -7,6 +7,7 @@
 // until the panel shows no particles is measured (it should be at once, not after the running
 // step). Target: longest stall <= 50 ms.
 #include "BenchCommandLine.h"
+#include "BenchEditorApp.h"
 
 #include <lacrima/common/FapTable.h>
 #include <lacrima/common/JsonWriter.h>
@@ -15,10 +16,7 @@
 #include <lacrima/editor/PreviewPanel.h>
 #include <lacrima/viewport/FaceViewport.h>
 
-#include <QApplication>
 #include <QElapsedTimer>
-#include <QStandardPaths>
-#include <QTemporaryDir>
 #include <QTimer>
 
 #include <algorithm>
@@ -95,8 +93,7 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-Run runOne(QApplication& app, const editor::EditorOptions& editorOptions, const Options& options,
-           int requested) {
+Run runOne(const editor::EditorOptions& editorOptions, const Options& options, int requested) {
   Run run;
   run.requested = requested;
   QElapsedTimer closing;
@@ -112,7 +109,7 @@ Run runOne(QApplication& app, const editor::EditorOptions& editorOptions, const 
     }
     QElapsedTimer settle;
     settle.start();
-    while (settle.elapsed() < 300) app.processEvents(QEventLoop::AllEvents, 20);
+    while (settle.elapsed() < 300) QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
 
     editing::EditorModel& model = window.model();
     if (auto* viewport = qobject_cast<viewport::FaceViewport*>(preview.viewportWidget()))
@@ -148,7 +145,7 @@ Run runOne(QApplication& app, const editor::EditorOptions& editorOptions, const 
     const auto elapsedS = [&] { return wall.nsecsElapsed() / 1e9; };
     while (elapsedS() < options.seconds ||
            (run.tearFrames < 2 && elapsedS() < std::max(options.seconds, options.maxSeconds)))
-      app.processEvents(QEventLoop::WaitForMoreEvents, kTickMs);
+      QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, kTickMs);
     run.seconds = elapsedS();
     run.particles = preview.particleCount();
 
@@ -161,7 +158,7 @@ Run runOne(QApplication& app, const editor::EditorOptions& editorOptions, const 
         run.clearMs = clearing.nsecsElapsed() / 1e6;
         break;
       }
-      app.processEvents(QEventLoop::WaitForMoreEvents, kTickMs);
+      QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, kTickMs);
     }
     tick.stop();
     if (!gaps.empty()) {
@@ -182,20 +179,9 @@ int runPreview(int argc, char** argv) {
   Options options;
   if (const std::optional<int> status = parseOptions(argc, argv, options)) return *status;
 
-  const bool display = std::getenv("DISPLAY") && *std::getenv("DISPLAY");
-  if (!display && !std::getenv("QT_QPA_PLATFORM")) setenv("QT_QPA_PLATFORM", "offscreen", 1);
-  int qtArgc = 1;
-  char name[] = "lacrima-bench";
-  char* qtArgv[] = {name, nullptr};
-  QApplication app(qtArgc, qtArgv);
-  QStandardPaths::setTestModeEnabled(true);  // keep the user's settings out of it
-  QTemporaryDir recovery;
-
-  editor::EditorOptions editorOptions;
-  editorOptions.interactive = false;
-  editorOptions.offerRecovery = false;
-  editorOptions.recoveryDirectory = recovery.path();
-  editorOptions.preview = true;
+  BenchEditorApp app;
+  const bool display = app.hasDisplay();
+  const editor::EditorOptions editorOptions = app.editorOptions(true);
 
   std::vector<Run> runs;
   for (int requested : options.particles) {
@@ -206,7 +192,7 @@ int runPreview(int argc, char** argv) {
       runs.push_back(skipped);
       continue;
     }
-    runs.push_back(runOne(app, editorOptions, options, requested));
+    runs.push_back(runOne(editorOptions, options, requested));
   }
   bool pass = true;
   for (const Run& r : runs) pass = pass && r.ran && r.stallMs <= kStallTargetMs;
