@@ -9,7 +9,10 @@
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/viewport/FaceViewport.h>
 
+#include <lacrima/playback/TearQualityOptions.h>
+
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QMessageBox>
 #include <QMimeData>
@@ -154,6 +157,21 @@ class PlayerWindowTest : public QObject {
     QCOMPARE(window_->playback().currentFrame(), 132);  // replayed back to where it was
     window_->parameters().thesisPreset()->click();
     QVERIFY(window_->playback().scene().simulation.empty());
+  }
+
+  // --quality: applied at once, kept over the files opened later, shown in the Scene panel,
+  // which can still change it.
+  void tearQualityChoice() {
+    window_->setTearQuality(TearQuality::Preview);
+    QVERIFY(window_->playback().scene().quality.level == TearQuality::Preview);
+    QCOMPARE(window_->effects().quality()->currentIndex(), static_cast<int>(TearQuality::Preview));
+    QVERIFY(window_->openFile(kDemo));
+    QVERIFY(window_->playback().scene().quality.level == TearQuality::Preview);
+    QCOMPARE(window_->effects().quality()->currentIndex(), static_cast<int>(TearQuality::Preview));
+    window_->effects().quality()->setCurrentIndex(static_cast<int>(TearQuality::Reference));
+    QVERIFY(window_->playback().scene().quality.level == TearQuality::Reference);
+    QCOMPARE(window_->playback().producer().simulationOptions().lambdaCfl,
+             playback::simulationOptions({TearQuality::Reference, {}, {}, {}}).lambdaCfl);
   }
 };
 
