@@ -21,16 +21,16 @@ using tears::SurfaceTensionModel;
 constexpr std::array<TearQualityLevel, 3> kLevels{{
     {TearQuality::Preview, 1.5, PressureMethod::Wcsph, SurfaceTensionModel::Mueller,
      NeighbourMethod::Grid, "Preview",
-     "Longer sub-steps (x1.5): about three quarters of Balanced's time; drops end 2.9 particle "
-     "radii from a fine reference instead of 1.7"},
+     "Longer sub-steps (x1.5): about two thirds of Balanced's sub-steps and time; drops end 2.9 "
+     "particle radii from a fine reference instead of 1.7"},
     {TearQuality::Balanced, 1.0, PressureMethod::Wcsph, SurfaceTensionModel::Mueller,
      NeighbourMethod::Grid, "Balanced",
      "The defaults (WCSPH, sub-step factor x1): drops end 1.7 particle radii from a fine "
      "reference"},
     {TearQuality::Reference, 0.5, PressureMethod::Wcsph, SurfaceTensionModel::Mueller,
      NeighbourMethod::Grid, "Reference",
-     "Shorter sub-steps (x0.5): about twice Balanced's sub-steps; drops end 1.0 particle radius "
-     "from a fine reference"},
+     "Shorter sub-steps (x0.5): about twice Balanced's sub-steps, 1.8 times its time; drops end "
+     "1.0 particle radius from a fine reference"},
 }};
 
 }  // namespace

@@ -62,6 +62,39 @@ EffectsPanel::EffectsPanel(QWidget* parent) : QWidget(parent) {
   redness_->setToolTip(tr("What the redness around the eyes follows"));
   redness_->setFocusPolicy(Qt::TabFocus);
 
+  buildQuality();
+
+  auto* layout = new QVBoxLayout(this);
+  for (QCheckBox* box : {particles_, surface_, trails_, textureBlending_, blush_}) {
+    layout->addWidget(box);
+    connect(box, &QCheckBox::toggled, this, &EffectsPanel::edited);
+  }
+  auto* form = new QFormLayout;
+  form->addRow(tr("Eye redness"), redness_);
+  auto* qualityRow = new QHBoxLayout;
+  qualityRow->addWidget(quality_);
+  qualityRow->addWidget(advanced_);
+  form->addRow(tr("Tear quality"), qualityRow);
+  form->addRow(tr("Cost"), cost_);
+  layout->addLayout(form);
+  layout->addWidget(advancedBox_);
+  connect(redness_, &QComboBox::currentIndexChanged, this, &EffectsPanel::edited);
+  for (QComboBox* box : {quality_, solver_, tension_, neighbours_}) {
+    connect(box, &QComboBox::currentIndexChanged, this, [this] {
+      clearCost();  // the frames measured were of the old choice
+      emit edited();
+    });
+  }
+  showCost();
+  connect(textureBlending_, &QCheckBox::toggled, this, [this](bool on) {
+    blush_->setEnabled(on);
+    redness_->setEnabled(on);
+  });
+}
+
+// The quality combo (each level's summary as its item tooltip), the cost label and the
+// Advanced section, hidden until asked for.
+void EffectsPanel::buildQuality() {
   quality_ = new QComboBox(this);
   for (TearQuality level : {TearQuality::Preview, TearQuality::Balanced, TearQuality::Reference}) {
     const playback::TearQualityLevel& info = playback::tearQualityLevel(level);
@@ -104,33 +137,6 @@ EffectsPanel::EffectsPanel(QWidget* parent) : QWidget(parent) {
   advancedForm->addRow(tr("Neighbours"), neighbours_);
   advancedBox_->setVisible(false);
   connect(advanced_, &QToolButton::toggled, advancedBox_, &QWidget::setVisible);
-
-  auto* layout = new QVBoxLayout(this);
-  for (QCheckBox* box : {particles_, surface_, trails_, textureBlending_, blush_}) {
-    layout->addWidget(box);
-    connect(box, &QCheckBox::toggled, this, &EffectsPanel::edited);
-  }
-  auto* form = new QFormLayout;
-  form->addRow(tr("Eye redness"), redness_);
-  auto* qualityRow = new QHBoxLayout;
-  qualityRow->addWidget(quality_);
-  qualityRow->addWidget(advanced_);
-  form->addRow(tr("Tear quality"), qualityRow);
-  form->addRow(tr("Cost"), cost_);
-  layout->addLayout(form);
-  layout->addWidget(advancedBox_);
-  connect(redness_, &QComboBox::currentIndexChanged, this, &EffectsPanel::edited);
-  for (QComboBox* box : {quality_, solver_, tension_, neighbours_}) {
-    connect(box, &QComboBox::currentIndexChanged, this, [this] {
-      clearCost();  // the frames measured were of the old choice
-      emit edited();
-    });
-  }
-  showCost();
-  connect(textureBlending_, &QCheckBox::toggled, this, [this](bool on) {
-    blush_->setEnabled(on);
-    redness_->setEnabled(on);
-  });
 }
 
 void EffectsPanel::display(const SceneSettings& scene) {
@@ -147,7 +153,9 @@ void EffectsPanel::display(const SceneSettings& scene) {
   redness_->setCurrentIndex(scene.redness == SceneSettings::Redness::Animation ? 0 : 1);
   blush_->setEnabled(scene.textureBlending);
   redness_->setEnabled(scene.textureBlending);
-  if (quality_->currentIndex() != static_cast<int>(scene.quality.level)) clearCost();
+  SceneSettings shown;
+  applyTo(shown);
+  if (shown.quality != scene.quality) clearCost();  // the frames measured were of another choice
   quality_->setCurrentIndex(static_cast<int>(scene.quality.level));
   showChoice(solver_, scene.quality.solver);
   showChoice(tension_, scene.quality.tension);

@@ -69,8 +69,9 @@ class FrameProducer {
 
   // Full state of the tears (simulation, trails, wetness history): restoring it and producing
   // the same inputs again gives bitwise-identical frames. A checkpoint holding tears is void
-  // once the tear parameters or sources change (restore throws std::invalid_argument); one
-  // taken before any tear stays valid. The face is re-blended from the checkpoint's values.
+  // once the tear parameters, quality or sources change (restore throws
+  // std::invalid_argument); one taken before any tear stays valid. The face is re-blended from
+  // the checkpoint's values.
   class Checkpoint;
   std::shared_ptr<const Checkpoint> checkpoint() const;
   void restore(const Checkpoint& checkpoint);

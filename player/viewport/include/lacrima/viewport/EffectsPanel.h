@@ -52,6 +52,7 @@ class EffectsPanel : public QWidget {
   void edited();
 
  private:
+  void buildQuality();
   void showCost();
 
   QCheckBox *particles_, *surface_, *trails_, *textureBlending_, *blush_;
