@@ -367,18 +367,18 @@ void PlayerWindow::tick() {
     t = reachable;
     clock_.setTime(t);
   }
+  const long long framesBefore = playback_->producer().counters().frames;
   display(playback_->seek(std::min(t, end)));
-  recordTearCost();
+  recordTearCost(framesBefore);
   if (t >= end) pause();
   updateTransport();
 }
 
-// Only frames produced while playing: a seek backwards replays from a checkpoint at full speed,
-// which says nothing about the cost of a frame. Only the last frame of a tick is measured.
-void PlayerWindow::recordTearCost() {
+// Only frames produced by a tick of playing: seeking replays from a checkpoint, which says
+// nothing about the cost of a frame as it plays. Of a tick's frames the last is measured.
+void PlayerWindow::recordTearCost(long long framesBefore) {
   const playback::FrameProducer& producer = playback_->producer();
-  if (producer.counters().frames == costedFrames_) return;
-  costedFrames_ = producer.counters().frames;
+  if (producer.counters().frames == framesBefore) return;  // the tick stayed on its frame
   const playback::ProducerTimes& t = producer.lastTimes();
   effects_->addFrameCost(t.simulation + t.surface + t.trails, t.substeps);
 }

@@ -14,6 +14,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QPushButton>
@@ -172,6 +173,15 @@ class PlayerWindowTest : public QObject {
     QVERIFY(window_->playback().scene().quality.level == TearQuality::Reference);
     QCOMPARE(window_->playback().producer().simulationOptions().lambdaCfl,
              playback::simulationOptions({TearQuality::Reference, {}, {}, {}}).lambdaCfl);
+    // Playing where the demo weeps shows the cost of the frames played beside the choice.
+    window_->seek(6.0);
+    QVERIFY(window_->playback().producer().particleCount() > 0);
+    QVERIFY(!window_->effects().cost()->text().contains("sub-steps"));  // seeking is not playing
+    window_->play();
+    QTRY_VERIFY_WITH_TIMEOUT(window_->effects().cost()->text().contains("sub-steps"), 20000);
+    window_->pause();
+    QVERIFY2(window_->effects().cost()->text().contains("ms per frame"),
+             qPrintable(window_->effects().cost()->text()));
   }
 };
 

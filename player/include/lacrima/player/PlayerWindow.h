@@ -103,7 +103,7 @@ class PlayerWindow : public QMainWindow {
   void display(const playback::FrameView& view);
   void applyScene();
   void applyTearQuality();
-  void recordTearCost();
+  void recordTearCost(long long framesBefore);
   void updateTransport();
   void updatePlayIcon();
   void countRender();
@@ -116,7 +116,6 @@ class PlayerWindow : public QMainWindow {
   std::optional<HeadFiles> head_;  // setHeadSource()
   bool headFixed_ = false;
   std::optional<TearQuality> tearQuality_;  // setTearQuality()
-  long long costedFrames_ = 0;              // producer frames already given to the cost label
   RealTimeClock clock_;
   QTimer* ticker_;
   viewport::FaceViewport* viewport_;
