@@ -71,6 +71,24 @@ void writeScene(JsonWriter& out, const SceneSettings& scene) {
   out.boolean(scene.blush);
   out.key("simulation");
   writeSimulation(out, scene.simulation);
+  // Only what differs from the defaults, so projects that never chose keep their text.
+  const TearQualitySettings& quality = scene.quality;
+  if (quality.level != TearQuality::Balanced) {
+    out.key("quality");
+    out.string(toString(quality.level));
+  }
+  if (quality.solver) {
+    out.key("solver");
+    out.string(toString(*quality.solver));
+  }
+  if (quality.tension) {
+    out.key("tension");
+    out.string(toString(*quality.tension));
+  }
+  if (quality.neighbours) {
+    out.key("neighbours");
+    out.string(toString(*quality.neighbours));
+  }
   out.endObject();
 }
 
@@ -165,9 +183,38 @@ TearSources readTearSources(const JsonValue& value) {
   return sources;
 }
 
-SceneSettings readScene(const JsonValue& value) {
-  value.rejectUnknownMembers(
-      {"particles", "surface", "trails", "textureBlending", "redness", "blush", "simulation"});
+// One of `names` (the enum's, in order), as the enum.
+template <typename Enum, std::size_t N>
+Enum readChoice(const JsonValue& value, const std::array<std::string_view, N>& names) {
+  if (value.isString())
+    for (std::size_t i = 0; i < N; ++i)
+      if (value.string() == names[i]) return static_cast<Enum>(i);
+  std::string expected;
+  for (std::size_t i = 0; i < N; ++i)
+    expected += (i == 0 ? "\"" : i + 1 == N ? " or \"" : ", \"") + std::string(names[i]) + '"';
+  value.fail("expected " + expected + ", got " + value.describe());
+}
+
+// The quality level and the advanced choices (version 2).
+TearQualitySettings readQuality(const JsonValue& scene, int version) {
+  TearQualitySettings quality;
+  for (const char* name : {"quality", "solver", "tension", "neighbours"})
+    if (scene.has(name) && version < 2)
+      scene[name].fail(std::string(name) + " needs a project of version 2 or later");
+  if (scene.has("quality"))
+    quality.level = readChoice<TearQuality>(scene["quality"], kTearQualityNames);
+  if (scene.has("solver"))
+    quality.solver = readChoice<TearSolver>(scene["solver"], kTearSolverNames);
+  if (scene.has("tension"))
+    quality.tension = readChoice<TearTension>(scene["tension"], kTearTensionNames);
+  if (scene.has("neighbours"))
+    quality.neighbours = readChoice<TearNeighbours>(scene["neighbours"], kTearNeighbourNames);
+  return quality;
+}
+
+SceneSettings readScene(const JsonValue& value, int version) {
+  value.rejectUnknownMembers({"particles", "surface", "trails", "textureBlending", "redness",
+                              "blush", "simulation", "quality", "solver", "tension", "neighbours"});
   SceneSettings scene;
   const auto flag = [&](const char* name, bool& target) {
     if (value.has(name)) target = value[name].boolean();
@@ -183,6 +230,7 @@ SceneSettings readScene(const JsonValue& value) {
                         : SceneSettings::Redness::Tears;
   }
   if (value.has("simulation")) scene.simulation = readTearParameters(value["simulation"]);
+  scene.quality = readQuality(value, version);
   return scene;
 }
 
@@ -286,7 +334,7 @@ ProjectDocument ProjectDocument::read(const JsonValue& root) {
   if (keys.missing()) keys.fail("missing; every project lists its keys");
   document.keys = projectjson::readKeys(keys, document.defaultInterpolation, version);
   if (root.has("tearSources")) document.tearSources = readTearSources(root["tearSources"]);
-  if (root.has("scene")) document.scene = readScene(root["scene"]);
+  if (root.has("scene")) document.scene = readScene(root["scene"], version);
   if (root.has("head")) document.head = readHead(root["head"]);
   if (root.has("layers")) {
     if (version < 2) root["layers"].fail("layers need a project of version 2 or later");

@@ -543,6 +543,9 @@ void MainWindow::settingsDialog() {
   mode->setCurrentIndex(doc.defaultInterpolation == Interpolation::Smooth ? 1 : 0);
   auto* effects = new viewport::EffectsPanel(&dialog);
   effects->display(doc.scene);
+  // The preview keeps running behind the dialog: its cost shows beside the quality it has now.
+  if (preview_)
+    connect(preview_, &PreviewPanel::tearsStepped, effects, &viewport::EffectsPanel::addFrameCost);
   form->addRow(tr("Name"), name);
   form->addRow(tr("Frame rate (export)"), fps);
   form->addRow(tr("New keys"), mode);

@@ -400,6 +400,12 @@ void PreviewPanel::onTearsReady() {
   if (!state_->worker) return;
   draw();
   showFigures();
+  const auto frame = state_->worker->currentFrame();
+  if (frame && frame->request != steppedRequest_ && frame->times.substeps > 0) {
+    steppedRequest_ = frame->request;
+    const playback::ProducerTimes& t = frame->times;
+    emit tearsStepped(t.simulation + t.surface + t.trails, t.substeps);
+  }
 }
 
 void PreviewPanel::showFigures() {

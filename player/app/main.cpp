@@ -8,6 +8,7 @@
 
 #include <lacrima/common/Diagnostics.h>
 #include <lacrima/common/ImageSize.h>
+#include <lacrima/common/TearQuality.h>
 #include <lacrima/playback/HeadRig.h>
 #include <lacrima/scene/CameraPreset.h>
 
@@ -84,7 +85,8 @@ std::optional<scene::CameraPreset> cameraPreset(const QCommandLineParser& parser
   return view;
 }
 
-int renderMode(const QCommandLineParser& parser, const QSize& size) {
+int renderMode(const QCommandLineParser& parser, const QSize& size,
+               std::optional<TearQuality> quality) {
   const QStringList files = parser.positionalArguments();
   if (files.size() != 1) {
     std::fprintf(stderr, "lacrima-player: --render needs exactly one FILE to render\n");
@@ -100,6 +102,7 @@ int renderMode(const QCommandLineParser& parser, const QSize& size) {
   options.size = size;
   options.view = *view;
   options.progress = showProgress;
+  options.quality = quality;
   const player::BatchRenderResult result = player::renderAnimation(*rig, options);
   std::fprintf(stderr, "lacrima-player: %d frames in %.1f s\n", result.frames, result.seconds);
   std::printf("%s/frame_0000.png ... frame_%04d.png and %s\n",
@@ -108,7 +111,8 @@ int renderMode(const QCommandLineParser& parser, const QSize& size) {
   return kExitOk;
 }
 
-int windowMode(QApplication& app, const QCommandLineParser& parser, const QSize* size) {
+int windowMode(QApplication& app, const QCommandLineParser& parser, const QSize* size,
+               std::optional<TearQuality> quality) {
   const QStringList files = parser.positionalArguments();
   if (files.size() > 1) {
     std::fprintf(stderr, "lacrima-player: give at most one FILE to open\n");
@@ -125,6 +129,7 @@ int windowMode(QApplication& app, const QCommandLineParser& parser, const QSize*
   }
   player::PlayerWindow window(loadRig(parser, head));
   window.setHeadSource(head.files, head.fixed);
+  if (quality) window.setTearQuality(*quality);
   for (const std::string& w : window.rig().warnings)
     std::fprintf(stderr, "warning: %s\n", w.c_str());
   window.resize(size ? *size : QSize(1360, 820));
@@ -229,12 +234,28 @@ int main(int argc, char** argv) {
       {"screenshot", "Grab the whole window to PNG after showing FILE at --at seconds, then exit.",
        "PNG"},
       {"at", "Time for --screenshot, in seconds (default 0).", "SECONDS", "0"},
+      {"quality",
+       "Tear quality, in place of the file's: preview (longer sub-steps, faster), balanced (the "
+       "default) or reference (shorter sub-steps, closest to a fine reference).",
+       "LEVEL"},
   });
   parser.process(app);
   if (parser.isSet("mesh") != parser.isSet("fdp")) {
     std::fprintf(stderr,
                  "lacrima-player: --mesh and --fdp go together (a head and its feature points)\n");
     return kExitUsage;
+  }
+  std::optional<TearQuality> quality;
+  if (parser.isSet("quality")) {
+    const std::string name = parser.value("quality").toStdString();
+    quality = parseTearQuality(name);
+    if (!quality) {
+      std::fprintf(stderr,
+                   "lacrima-player: --quality: expected preview, balanced or reference, not "
+                   "'%s'\n",
+                   name.c_str());
+      return kExitUsage;
+    }
   }
   QSize size(1280, 720);
   if (parser.isSet("size")) {
@@ -246,8 +267,8 @@ int main(int argc, char** argv) {
     size = parsed.size;
   }
   try {
-    if (parser.isSet("render")) return renderMode(parser, size);
-    return windowMode(app, parser, parser.isSet("size") ? &size : nullptr);
+    if (parser.isSet("render")) return renderMode(parser, size, quality);
+    return windowMode(app, parser, parser.isSet("size") ? &size : nullptr, quality);
   } catch (const std::exception& e) {
     const QString input = parser.positionalArguments().value(0);
     std::fprintf(stderr, "lacrima-player: %s\n",

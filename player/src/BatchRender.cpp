@@ -22,6 +22,11 @@ BatchRenderResult renderAnimation(const playback::HeadRig& rig, const BatchRende
   wall.start();
   playback::Playback playback(rig);
   playback.open(options.input.toStdString());
+  if (options.quality) {
+    SceneSettings scene = playback.scene();
+    scene.quality.level = *options.quality;
+    playback.setScene(scene);
+  }
   const QDir out(options.outputDir);
   if (!QDir().mkpath(options.outputDir))
     throw FileError({options.outputDir.toStdString(), 0, 0}, "cannot create the output folder");

@@ -258,6 +258,7 @@ bool PlayerWindow::openFile(const QString& path) {
       viewport_->setView(presetView(*rig_, cameraPreset_));
   }
   clock_.setTime(0);
+  applyTearQuality();
   fileParameters_ = playback_->scene().simulation;
   effects_->display(playback_->scene());
   parameters_->display(playback_->scene().simulation, fileParameters_);
@@ -366,9 +367,35 @@ void PlayerWindow::tick() {
     t = reachable;
     clock_.setTime(t);
   }
+  const long long framesBefore = playback_->producer().counters().frames;
   display(playback_->seek(std::min(t, end)));
+  recordTearCost(framesBefore);
   if (t >= end) pause();
   updateTransport();
+}
+
+// Only frames produced by a tick of playing: seeking replays from a checkpoint, which says
+// nothing about the cost of a frame as it plays. Of a tick's frames the last is measured.
+void PlayerWindow::recordTearCost(long long framesBefore) {
+  const playback::FrameProducer& producer = playback_->producer();
+  if (producer.counters().frames == framesBefore) return;  // the tick stayed on its frame
+  const playback::ProducerTimes& t = producer.lastTimes();
+  effects_->addFrameCost(t.simulation + t.surface + t.trails, t.substeps);
+}
+
+void PlayerWindow::setTearQuality(TearQuality level) {
+  tearQuality_ = level;
+  applyTearQuality();
+  effects_->display(playback_->scene());
+  display(playback_->view());
+  updateTransport();
+}
+
+void PlayerWindow::applyTearQuality() {
+  if (!tearQuality_ || playback_->scene().quality.level == *tearQuality_) return;
+  SceneSettings scene = playback_->scene();
+  scene.quality.level = *tearQuality_;
+  playback_->setScene(scene);
 }
 
 void PlayerWindow::display(const playback::FrameView& view) { viewport_->showFrame(view); }
@@ -377,7 +404,7 @@ void PlayerWindow::applyScene() {
   SceneSettings scene = playback_->scene();
   effects_->applyTo(scene);
   scene.simulation = parameters_->values();
-  const bool restart = scene.simulation != playback_->scene().simulation;
+  const bool restart = playback::restartsTears(playback_->scene(), scene);
   if (restart) QApplication::setOverrideCursor(Qt::WaitCursor);
   try {
     playback_->setScene(scene);
@@ -386,7 +413,7 @@ void PlayerWindow::applyScene() {
   }
   if (restart) {
     QApplication::restoreOverrideCursor();
-    statusBar()->showMessage(tr("Tear parameters changed: the tears restarted"), 4000);
+    statusBar()->showMessage(tr("Tear parameters or quality changed: the tears restarted"), 4000);
   }
   clock_.setTime(playback_->currentTime());
   display(playback_->view());

@@ -104,6 +104,12 @@ ProjectDocument randomDocument(unsigned seed) {
   scene.blush = coin(random);
   scene.redness = coin(random) ? SceneSettings::Redness::Tears : SceneSettings::Redness::Animation;
   scene.simulation = randomSimulation(random);
+  scene.quality.level = static_cast<TearQuality>(random() % 3);
+  if (coin(random)) scene.quality.solver = coin(random) ? TearSolver::Dfsph : TearSolver::Wcsph;
+  if (coin(random))
+    scene.quality.tension = coin(random) ? TearTension::Akinci : TearTension::Mueller;
+  if (coin(random))
+    scene.quality.neighbours = coin(random) ? TearNeighbours::Octree : TearNeighbours::Grid;
   // Absolute paths outside any temporary folder: they survive a save anywhere unchanged.
   if (coin(random)) document.head = HeadFiles{"/opt/faces/head.obj", "/opt/faces/head.fdp.json"};
   return document;
@@ -126,6 +132,11 @@ QString readFile(const QString& path) {
 std::string withTopLevel(const std::string& fields) {
   return R"({"format": "lacrima-project", "version": 1, "keys": [])" +
          (fields.empty() ? std::string() : ", " + fields) + "}";
+}
+
+// A valid version 2 document whose scene holds `fields`.
+std::string withScene2(const std::string& fields) {
+  return R"({"format": "lacrima-project", "version": 2, "keys": [], "scene": {)" + fields + "}}";
 }
 
 // A valid document whose only key holds `values`.
@@ -244,6 +255,32 @@ class ProjectDocumentTest : public QObject {
     QVERIFY(json.contains("\n      \"time\": 0.5,\n"));
     QVERIFY(json.endsWith("}\n"));
     QCOMPARE(countOccurrences(json, "\"time\""), std::size_t{2});
+  }
+
+  // The quality is written only where it differs from the defaults (Balanced, the level's own
+  // choices), so a project that never chose keeps its text; chosen, it reads back as written.
+  void qualityFields() {
+    ProjectDocument document;
+    QVERIFY(!QString::fromStdString(document.toJson()).contains("quality"));
+    document.scene.quality.level = TearQuality::Reference;
+    document.scene.quality.solver = TearSolver::Dfsph;
+    document.scene.quality.tension = TearTension::Akinci;
+    document.scene.quality.neighbours = TearNeighbours::Octree;
+    const std::string json = document.toJson();
+    for (const char* field : {"\"quality\": \"reference\"", "\"solver\": \"dfsph\"",
+                              "\"tension\": \"akinci\"", "\"neighbours\": \"octree\""})
+      QVERIFY2(QString::fromStdString(json).contains(QLatin1String(field)), field);
+    QVERIFY(ProjectDocument::fromJson(json, kDisplayName) == document);
+
+    const ProjectDocument read = ProjectDocument::fromJson(
+        withScene2(R"("quality": "preview", "neighbours": "grid")"), kDisplayName);
+    QVERIFY(read.scene.quality.level == TearQuality::Preview);
+    QVERIFY(!read.scene.quality.solver && !read.scene.quality.tension);
+    QVERIFY(read.scene.quality.neighbours == TearNeighbours::Grid);
+    // An explicit choice equal to the level's own stays explicit: it is what the user chose.
+    QVERIFY(QString::fromStdString(read.toJson()).contains("\"neighbours\": \"grid\""));
+    QVERIFY(ProjectDocument::fromJson(withTopLevel(""), kDisplayName).scene.quality ==
+            TearQualitySettings{});
   }
 
   void minimalDocumentGetsDefaults() {
@@ -390,6 +427,30 @@ class ProjectDocumentTest : public QObject {
         << QString::fromStdString(withTopLevel(R"("scene": {"simulation": {"adhesion": 20000}})"))
         << "doc.json:1:82"
         << "scene.simulation.adhesion: 20000 is outside [0, 10000]";
+    QTest::newRow("unknown quality level")
+        << QString::fromStdString(withScene2(R"("quality": "ultra")")) << "doc.json:1:67"
+        << "scene.quality: expected \"preview\", \"balanced\" or \"reference\", got \"ultra\"";
+    QTest::newRow("quality level not a string")
+        << QString::fromStdString(withScene2(R"("quality": 2)")) << "doc.json:1:67"
+        << "scene.quality: expected \"preview\", \"balanced\" or \"reference\", got 2";
+    QTest::newRow("unknown solver")
+        << QString::fromStdString(withScene2(R"("solver": "pcisph")")) << "doc.json:1:67"
+        << "scene.solver: expected \"wcsph\" or \"dfsph\", got \"pcisph\"";
+    QTest::newRow("unknown tension model")
+        << QString::fromStdString(withScene2(R"("quality": "preview", "tension": "Akinci")"))
+        << "doc.json:1:89"
+        << "scene.tension: expected \"mueller\" or \"akinci\", got \"Akinci\"";
+    QTest::newRow("unknown neighbour structure")
+        << QString::fromStdString(withScene2(R"("neighbours": "kd-tree")")) << "doc.json:1:67"
+        << "scene.neighbours: expected \"grid\" or \"octree\", got \"kd-tree\"";
+    QTest::newRow("quality in a version 1 file")
+        << QString::fromStdString(withTopLevel(R"("scene": {"quality": "reference"})"))
+        << "doc.json:1:67"
+        << "scene.quality: quality needs a project of version 2 or later";
+    QTest::newRow("solver in a version 1 file")
+        << QString::fromStdString(withTopLevel(R"("scene": {"solver": "dfsph"})"))
+        << "doc.json:1:67"
+        << "scene.solver: solver needs a project of version 2 or later";
     QTest::newRow("duplicate key time") << R"({"format": "lacrima-project", "version": 1, "keys": [
                {"time": 0.5, "values": {}}, {"time": 1, "values": {}},
                {"time": 0.5, "values": {"open_jaw": 1}}]})"

@@ -14,9 +14,11 @@
 #include <QFileDialog>
 #include <QImage>
 #include <QScreen>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTimer>
 #include <QToolButton>
+#include <QUndoStack>
 #include <QtTest>
 
 using namespace lacrima;
@@ -82,6 +84,39 @@ class EditorPreviewTest : public QObject {
     QTRY_VERIFY(window.model().currentTime() > 0.5);
     window.clock().pause();
     QVERIFY(window.preview()->particleCount() > frozen);
+    window.model().markSaved();
+  }
+
+  // The tear quality is a project setting: one undo step, and the preview's tears restart
+  // with it (the settings dialog's Scene panel shows the preview's tearsStepped() cost).
+  void qualityIsAnUndoableSetting() {
+    if (!rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
+    MainWindow window(options());
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.preview()->loadHead());
+    QSignalSpy stepped(window.preview(), &PreviewPanel::tearsStepped);
+    window.model().setChannels({{kTearLeftFap, 20}, {kTearRightFap, 20}}, QStringLiteral("tears"));
+    QTRY_VERIFY(window.preview()->particleCount() > 0);
+    QTRY_VERIFY(!stepped.isEmpty());
+    QVERIFY(stepped.last().at(1).toLongLong() > 0);  // sub-steps of a real step
+
+    const int undoSteps = window.model().undoStack()->count();
+    ProjectDocument settings = window.model().document();
+    settings.scene.quality.level = TearQuality::Reference;
+    settings.scene.quality.tension = TearTension::Akinci;
+    window.model().setSettings(settings, QStringLiteral("Project settings"));
+    QCOMPARE(window.model().undoStack()->count(), undoSteps + 1);
+    QVERIFY(window.model().document().scene.quality == settings.scene.quality);
+    window.preview()->waitForTears();
+    stepped.clear();
+    QTRY_VERIFY(!stepped.isEmpty());  // the preview goes on at the new quality
+    QVERIFY(window.preview()->particleCount() > 0);
+
+    window.model().undoStack()->undo();
+    QVERIFY(window.model().document().scene.quality == TearQualitySettings{});
+    window.model().undoStack()->redo();
+    QVERIFY(window.model().document().scene.quality == settings.scene.quality);
     window.model().markSaved();
   }
 

@@ -9,8 +9,12 @@
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/viewport/FaceViewport.h>
 
+#include <lacrima/playback/TearQualityOptions.h>
+
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QPushButton>
@@ -154,6 +158,30 @@ class PlayerWindowTest : public QObject {
     QCOMPARE(window_->playback().currentFrame(), 132);  // replayed back to where it was
     window_->parameters().thesisPreset()->click();
     QVERIFY(window_->playback().scene().simulation.empty());
+  }
+
+  // --quality: applied at once, kept over the files opened later, shown in the Scene panel,
+  // which can still change it.
+  void tearQualityChoice() {
+    window_->setTearQuality(TearQuality::Preview);
+    QVERIFY(window_->playback().scene().quality.level == TearQuality::Preview);
+    QCOMPARE(window_->effects().quality()->currentIndex(), static_cast<int>(TearQuality::Preview));
+    QVERIFY(window_->openFile(kDemo));
+    QVERIFY(window_->playback().scene().quality.level == TearQuality::Preview);
+    QCOMPARE(window_->effects().quality()->currentIndex(), static_cast<int>(TearQuality::Preview));
+    window_->effects().quality()->setCurrentIndex(static_cast<int>(TearQuality::Reference));
+    QVERIFY(window_->playback().scene().quality.level == TearQuality::Reference);
+    QCOMPARE(window_->playback().producer().simulationOptions().lambdaCfl,
+             playback::simulationOptions({TearQuality::Reference, {}, {}, {}}).lambdaCfl);
+    // Playing where the demo weeps shows the cost of the frames played beside the choice.
+    window_->seek(6.0);
+    QVERIFY(window_->playback().producer().particleCount() > 0);
+    QVERIFY(!window_->effects().cost()->text().contains("sub-steps"));  // seeking is not playing
+    window_->play();
+    QTRY_VERIFY_WITH_TIMEOUT(window_->effects().cost()->text().contains("sub-steps"), 20000);
+    window_->pause();
+    QVERIFY2(window_->effects().cost()->text().contains("ms per frame"),
+             qPrintable(window_->effects().cost()->text()));
   }
 };
 

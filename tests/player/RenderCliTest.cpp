@@ -100,6 +100,27 @@ class RenderCliTest : public QObject {
     QVERIFY(close != framed);
   }
 
+  // --quality reference: the same animation simulated with shorter sub-steps, so the tears
+  // (and only they) land elsewhere.
+  void qualityChangesTheTears() {
+    const QString out = dir_.filePath("reference");
+    const Run r = run({"--render", out, "--size", "320x240", "--quality", "reference", animation_});
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    const QImage reference(out + "/frame_0013.png");
+    const QImage balanced(dir_.filePath("render") + "/frame_0013.png");
+    QCOMPARE(reference.size(), QSize(320, 240));
+    QVERIFY(!balanced.isNull());
+    QVERIFY(reference != balanced);
+    QCOMPARE(QImage(out + "/frame_0000.png").size(), QSize(320, 240));
+  }
+
+  void unknownQualityIsAUsageError() {
+    const Run r = run({"--render", dir_.filePath("x"), "--quality", "ultra", animation_});
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains("--quality") && r.err.contains("reference") && r.err.contains("ultra"),
+             qPrintable(r.err));
+  }
+
   void unknownViewIsAUsageError() {
     const Run r = run({"--render", dir_.filePath("x"), "--view", "sideways", animation_});
     QCOMPARE(r.exitCode, 2);

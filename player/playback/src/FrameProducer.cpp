@@ -4,6 +4,7 @@
 
 #include <lacrima/common/Milliseconds.h>
 #include <lacrima/playback/FrameProducer.h>
+#include <lacrima/playback/TearQualityOptions.h>
 #include <lacrima/tears/DropCaps.h>
 #include <lacrima/tears/SurfaceMesher.h>
 #include <lacrima/tears/TearSimulation.h>
@@ -33,6 +34,10 @@ bool tearsCommanded(const HeadRig& rig, const FapValues& values) {
   return false;
 }
 
+bool restartsTears(const SceneSettings& before, const SceneSettings& after) {
+  return before.simulation != after.simulation || before.quality != after.quality;
+}
+
 // Everything that evolves with the tears; the face is re-blended from `values`.
 class FrameProducer::Checkpoint {
  public:
@@ -51,6 +56,7 @@ struct FrameProducer::State {
   SceneSettings scene;
   TearSources sources;
   tears::TearSettings settings;
+  tears::SimulationOptions options;  // of the quality chosen
   std::vector<Eigen::Vector3i> skin;
 
   // Created by the first tear and kept: checkpoints restore into the object that took them.
@@ -79,6 +85,7 @@ struct FrameProducer::State {
       : rig(r),
         scene(s),
         settings(settingsFor(s)),
+        options(playback::simulationOptions(s.quality)),
         skin(skinTriangles(r)),
         caps(skin),
         trails(skin) {
@@ -95,7 +102,8 @@ struct FrameProducer::State {
       std::vector<Eigen::Vector3i> collision = skin;
       const std::vector<Eigen::Vector3i> eyes = eyeTriangles(rig);
       collision.insert(collision.end(), eyes.begin(), eyes.end());
-      simulation = std::make_unique<tears::TearSimulation>(rig.head.positions, collision, settings);
+      simulation =
+          std::make_unique<tears::TearSimulation>(rig.head.positions, collision, settings, options);
       simulation->setSource(tears::Eye::Left, sources.left.value_or(rig.rig.tearLeft.position));
       simulation->setSource(tears::Eye::Right, sources.right.value_or(rig.rig.tearRight.position));
       pristine = simulation->checkpoint();
@@ -198,10 +206,11 @@ FrameProducer::~FrameProducer() = default;
 void FrameProducer::setScene(const SceneSettings& scene) {
   State& s = *state_;
   const tears::TearSettings settings = settingsFor(scene);  // throws before anything changes
-  const bool restart = scene.simulation != s.scene.simulation;
+  const bool restart = restartsTears(s.scene, scene);
   s.scene = scene;
   if (restart) {
     s.settings = settings;
+    s.options = playback::simulationOptions(scene.quality);
     s.clearTears(true);
   }
   if (!s.surfaceCurrent) s.meshSurface();
@@ -209,6 +218,8 @@ void FrameProducer::setScene(const SceneSettings& scene) {
 }
 
 const SceneSettings& FrameProducer::scene() const { return state_->scene; }
+
+const tears::SimulationOptions& FrameProducer::simulationOptions() const { return state_->options; }
 
 void FrameProducer::setTearSources(const TearSources& sources) {
   if (sources == state_->sources) return;
@@ -230,9 +241,11 @@ const FrameView& FrameProducer::produce(const FapValues& values, double dt, doub
   const bool tearsWanted = tearsCommanded(s.rig, values) || s.particles() > 0;
   if (tearsWanted) {
     tears::TearSimulation& simulation = s.ensureSimulation();
+    const long long substepsBefore = simulation.counters().substeps;
     const auto start = SteadyClock::now();
     simulation.step(s.positions, weeping, dt);
     s.times.simulation = millisecondsSince(start);
+    s.times.substeps = simulation.counters().substeps - substepsBefore;
     ++s.counters.simulationSteps;
     changed = true;
   }

@@ -114,7 +114,7 @@ bool Playback::hasTears() const { return state_->animation.hasTears(); }
 
 void Playback::setScene(const SceneSettings& scene) {
   State& s = *state_;
-  const bool restart = scene.simulation != s.scene.simulation;
+  const bool restart = restartsTears(s.scene, scene);
   s.producer.setScene(scene);
   s.scene = scene;
   if (restart && !s.animation.frames.empty()) {

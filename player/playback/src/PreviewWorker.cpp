@@ -106,7 +106,7 @@ void PreviewWorker::setScene(const SceneSettings& scene) {
   {
     const std::lock_guard lock(mutex_);
     if (scene == scene_) return;
-    if (scene.simulation != scene_.simulation) {
+    if (restartsTears(scene_, scene)) {
       ++epoch_;  // the producer restarts the tears
       current_.reset();
     }

@@ -12,7 +12,11 @@
 //   "tearSources": { "left": [x, y, z], "right": null },          (head frame; null = rig default)
 //   "scene": { "particles": false, "surface": true, "trails": true, "textureBlending": true,
 //              "redness": "animation" | "tears", "blush": false,
-//              "simulation": { "adhesion": 20, ... } },          (overrides of TearParameters)
+//              "simulation": { "adhesion": 20, ... },            (overrides of TearParameters)
+//              "quality": "preview" | "balanced" | "reference",     (version 2; optional, each;
+//              "solver": "wcsph" | "dfsph",                          absent = balanced and the
+//              "tension": "mueller" | "akinci",                      level's own choices;
+//              "neighbours": "grid" | "octree" },                    TearQuality.h)
 //   "head": { "mesh": "heads/ict.obj", "fdp": "heads/ict.fdp.json" }, (optional; absent = the
 //                                                                     default head)
 //   "layers": [ { "name": "sob", "muted": false, "pose": { "open_jaw": 80, ... },
@@ -31,6 +35,7 @@
 #include <lacrima/common/Keyframes.h>
 #include <lacrima/common/PoseLayer.h>
 #include <lacrima/common/TearParameters.h>
+#include <lacrima/common/TearQuality.h>
 
 #include <Eigen/Core>
 #include <optional>
@@ -57,6 +62,7 @@ struct SceneSettings {
   Redness redness = Redness::Animation;
   bool blush = false;
   TearParameterValues simulation;  // overrides; absent names use the defaults
+  TearQualitySettings quality;     // how accurately (and expensively) the tears are simulated
 
   bool operator==(const SceneSettings&) const = default;
 };

@@ -97,6 +97,9 @@ class PreviewPanel : public QWidget {
   // A head was installed (hasHead() may still be false without a display) or failed.
   void headReady();
   void headFailed(const QString& message);
+  // A tear step finished on the worker: its tear cost (simulation + surface + trails, ms) and
+  // sub-steps, once per step (the settings dialog shows them beside the quality choice).
+  void tearsStepped(double milliseconds, long long substeps);
 
  private:
   void onValuesChanged();
@@ -120,7 +123,8 @@ class PreviewPanel : public QWidget {
   QToolButton* tearToggle_;
   QTimer* idle_;
   bool tearPreview_ = true;
-  bool figuresShown_ = false;  // the status line shows the tear figures (not the head's)
+  bool figuresShown_ = false;     // the status line shows the tear figures (not the head's)
+  long long steppedRequest_ = 0;  // the worker frame tearsStepped() last reported
   QString statusText_;
 };
 

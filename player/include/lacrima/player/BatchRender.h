@@ -2,6 +2,7 @@
 // lacrima-player --render: every frame of an animation as a PNG (frame_0000.png, ...) and a
 // contact sheet of 12 evenly spaced frames (contact_sheet.png), through the same scene the
 // viewport shows (FaceRenderer), with progress on stderr. Needs an X display (xvfb-run).
+#include <lacrima/common/TearQuality.h>
 #include <lacrima/playback/HeadRig.h>
 #include <lacrima/scene/CameraPreset.h>
 
@@ -9,6 +10,7 @@
 #include <QString>
 
 #include <functional>
+#include <optional>
 
 namespace lacrima::player {
 
@@ -18,6 +20,7 @@ struct BatchRenderOptions {
   QSize size{1280, 720};
   scene::CameraPreset view = scene::CameraPreset::Framing;  // --view
   int sheetFrames = 12;
+  std::optional<TearQuality> quality;  // --quality: replaces the file's level
   // Called after each frame with (frames done, frames in all).
   std::function<void(int, int)> progress;
 };

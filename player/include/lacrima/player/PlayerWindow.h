@@ -63,6 +63,9 @@ class PlayerWindow : public QMainWindow {
   // The camera the face is shown from (--view), measured on the head shown and kept when a
   // project brings another head; Reset view (V) still goes back to the framing.
   void setCameraPreset(scene::CameraPreset preset);
+  // The tear quality (--quality): applied now and to every file opened later, in place of the
+  // file's own level (the Scene panel can still change it until the next file).
+  void setTearQuality(TearQuality level);
 
   bool playing() const { return clock_.running(); }
   double renderedFramesPerSecond() const { return fps_; }
@@ -99,6 +102,8 @@ class PlayerWindow : public QMainWindow {
   void tick();
   void display(const playback::FrameView& view);
   void applyScene();
+  void applyTearQuality();
+  void recordTearCost(long long framesBefore);
   void updateTransport();
   void updatePlayIcon();
   void countRender();
@@ -110,6 +115,7 @@ class PlayerWindow : public QMainWindow {
   std::unique_ptr<playback::Playback> playback_;
   std::optional<HeadFiles> head_;  // setHeadSource()
   bool headFixed_ = false;
+  std::optional<TearQuality> tearQuality_;  // setTearQuality()
   RealTimeClock clock_;
   QTimer* ticker_;
   viewport::FaceViewport* viewport_;

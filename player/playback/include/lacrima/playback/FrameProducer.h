@@ -8,14 +8,17 @@
 #include <lacrima/playback/FrameView.h>
 #include <lacrima/playback/HeadRig.h>
 #include <lacrima/tears/Parameters.h>
+#include <lacrima/tears/SimulationOptions.h>
 
 #include <memory>
 
 namespace lacrima::playback {
 
-// Milliseconds spent per stage in the last produce() call.
+// Milliseconds spent per stage in the last produce() call, and the simulation's sub-steps in
+// it (0 when no tears were simulated): what a quality level costs (TearQualityOptions.h).
 struct ProducerTimes {
   double blend = 0, simulation = 0, surface = 0, trails = 0;
+  long long substeps = 0;
   double total() const { return blend + simulation + surface + trails; }
 };
 
@@ -29,6 +32,10 @@ struct ProducerCounters {
 // the counts the same way (floor, at least 0).
 bool tearsCommanded(const HeadRig& rig, const FapValues& values);
 
+// Whether going from scene `before` to `after` restarts the tears: the tear parameters or the
+// quality (level or advanced choices) differ. The effect toggles never restart them.
+bool restartsTears(const SceneSettings& before, const SceneSettings& after);
+
 class FrameProducer {
  public:
   explicit FrameProducer(const HeadRig& rig, const SceneSettings& scene = {});
@@ -36,9 +43,12 @@ class FrameProducer {
   FrameProducer(const FrameProducer&) = delete;
   FrameProducer& operator=(const FrameProducer&) = delete;
 
-  // Effects and simulation overrides. Changing the simulation parameters restarts the tears.
+  // Effects, simulation overrides and quality. Changing the simulation parameters or the
+  // quality restarts the tears (restartsTears).
   void setScene(const SceneSettings& scene);
   const SceneSettings& scene() const;
+  // What the next tears are simulated with: simulationOptions(scene().quality).
+  const tears::SimulationOptions& simulationOptions() const;
   // Tear sources in the head frame; nullopt entries keep the rig's default under each eye.
   void setTearSources(const TearSources& sources);
 
@@ -59,8 +69,9 @@ class FrameProducer {
 
   // Full state of the tears (simulation, trails, wetness history): restoring it and producing
   // the same inputs again gives bitwise-identical frames. A checkpoint holding tears is void
-  // once the tear parameters or sources change (restore throws std::invalid_argument); one
-  // taken before any tear stays valid. The face is re-blended from the checkpoint's values.
+  // once the tear parameters, quality or sources change (restore throws
+  // std::invalid_argument); one taken before any tear stays valid. The face is re-blended from
+  // the checkpoint's values.
   class Checkpoint;
   std::shared_ptr<const Checkpoint> checkpoint() const;
   void restore(const Checkpoint& checkpoint);

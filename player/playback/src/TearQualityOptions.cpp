@@ -1,0 +1,68 @@
+// The quality levels (TearQualityOptions.h). Figures: lacrima-bench tears-sweep on the cheek
+// sheet, errors in particle radii against a fine reference (docs/performance.md, "Accuracy
+// against cost"; docs/decisions/0014).
+#include <lacrima/playback/TearQualityOptions.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+
+namespace lacrima::playback {
+
+namespace {
+
+using tears::NeighbourMethod;
+using tears::PressureMethod;
+using tears::SurfaceTensionModel;
+
+// Only the sub-step factor changes between levels. DFSPH is not a more accurate WCSPH (its
+// drops run 40-75 radii from the WCSPH reference, decision 0009) and the octree finds the same
+// pairs more slowly, so those stay advanced choices rather than levels.
+constexpr std::array<TearQualityLevel, 3> kLevels{{
+    {TearQuality::Preview, 1.5, PressureMethod::Wcsph, SurfaceTensionModel::Mueller,
+     NeighbourMethod::Grid, "Preview",
+     "Longer sub-steps (x1.5): about two thirds of Balanced's sub-steps and time; drops end 2.9 "
+     "particle radii from a fine reference instead of 1.7"},
+    {TearQuality::Balanced, 1.0, PressureMethod::Wcsph, SurfaceTensionModel::Mueller,
+     NeighbourMethod::Grid, "Balanced",
+     "The defaults (WCSPH, sub-step factor x1): drops end 1.7 particle radii from a fine "
+     "reference"},
+    {TearQuality::Reference, 0.5, PressureMethod::Wcsph, SurfaceTensionModel::Mueller,
+     NeighbourMethod::Grid, "Reference",
+     "Shorter sub-steps (x0.5): about twice Balanced's sub-steps, 1.8 times its time; drops end "
+     "1.0 particle radius from a fine reference"},
+}};
+
+}  // namespace
+
+const TearQualityLevel& tearQualityLevel(TearQuality level) {
+  return kLevels.at(static_cast<std::size_t>(level));
+}
+
+tears::SimulationOptions simulationOptions(const TearQualitySettings& quality) {
+  const TearQualityLevel& level = tearQualityLevel(quality.level);
+  const tears::SimulationOptions defaults;
+  tears::SimulationOptions options;
+  // The sweep's scaling (TearsSweepBench.cpp optionsFor): the CFL and acceleration bounds
+  // scale with the factor; the viscous bound only shrinks, since explicit viscosity overshoots
+  // past k dt = 1 (AdaptiveTimeStep.h).
+  options.lambdaCfl = defaults.lambdaCfl * level.substepFactor;
+  options.lambdaAcceleration = defaults.lambdaAcceleration * level.substepFactor;
+  options.lambdaViscosity =
+      std::min(defaults.lambdaViscosity, defaults.lambdaViscosity * level.substepFactor);
+  options.pressureSolver = level.solver;
+  options.surfaceTension = level.tension;
+  options.neighbours = level.neighbours;
+  if (quality.solver)
+    options.pressureSolver =
+        *quality.solver == TearSolver::Dfsph ? PressureMethod::Dfsph : PressureMethod::Wcsph;
+  if (quality.tension)
+    options.surfaceTension = *quality.tension == TearTension::Akinci ? SurfaceTensionModel::Akinci
+                                                                     : SurfaceTensionModel::Mueller;
+  if (quality.neighbours)
+    options.neighbours = *quality.neighbours == TearNeighbours::Octree ? NeighbourMethod::Octree
+                                                                       : NeighbourMethod::Grid;
+  return options;
+}
+
+}  // namespace lacrima::playback
