@@ -83,8 +83,8 @@ void TearSimulation::simulate(double frameDt) {
     start = SteadyClock::now();
     std::fill(particles_.acceleration.begin(), particles_.acceleration.end(),
               Eigen::Vector3d::Zero());
-    const double relativeSpeed =
-        in.forcePass.run(particles_, in.pairs, in.viscosity, in.tension->needsColourField());
+    const double relativeSpeed = in.forcePass.run(particles_, in.pairs, in.viscosity,
+                                                  in.tension->needsColourField(), in.parallel);
     in.tension->addAccelerations(particles_, in.pairs, in.forcePass);
     double maxAcceleration2 = 0, maxRate = 0;
     for (int i = 0; i < particles_.size(); ++i) {
