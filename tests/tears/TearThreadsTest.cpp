@@ -5,6 +5,7 @@
 // more particles than the sharing threshold and several particle chunks, so the shared loops
 // and their spill lists really run on several threads.
 #include "TearTestSupport.h"
+#include "ThreadPool.h"  // internal to lacrima_tears
 
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/tears/SurfaceMesher.h>
@@ -96,6 +97,18 @@ class TearThreadsTest : public QObject {
   Q_OBJECT
 
  private slots:
+  void poolRunsEveryChunkOnce() {
+    // Many runs back to back (workers that wake late must not take a chunk of the next run),
+    // chunk counts below, at and far above the thread count.
+    ThreadPool pool(4);
+    for (int chunks : {0, 1, 3, 4, 64, 1000}) {
+      std::vector<int> hits(static_cast<std::size_t>(chunks), 0);
+      for (int run = 0; run < 50; ++run)
+        pool.run(chunks, [&hits](int c) { ++hits[static_cast<std::size_t>(c)]; });
+      for (int c = 0; c < chunks; ++c) QCOMPARE(hits[static_cast<std::size_t>(c)], 50);
+    }
+  }
+
   void threadCountIsResolved() {
     // An explicit count wins; 0 falls back to LACRIMA_THREADS, then to the hardware.
     SheetRun three(3);

@@ -10,9 +10,11 @@ namespace lacrima::tears {
 ThreadPool::ThreadPool(int threads) : threads_(std::max(1, threads)) {}
 
 ThreadPool::~ThreadPool() {
+  // Joined here, not by the jthreads' own destructors: those would run after mutex_ and the
+  // condition variables (declared later) are gone, while a worker may still be leaving wait().
   for (auto& w : workers_) w.request_stop();
   wake_.notify_all();
-  // jthread joins on destruction.
+  for (auto& w : workers_) w.join();
 }
 
 void ThreadPool::start() {

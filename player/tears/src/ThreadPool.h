@@ -6,8 +6,8 @@
 // the calling thread, and returns when all have finished. Chunks are handed out in order under
 // the pool's mutex (a chunk is tens of microseconds of work, the lock tens of nanoseconds), so
 // which thread runs which chunk varies from run to run: a job must write only outputs that
-// belong to its chunk. The workers are started on the first run that has more
-// than one chunk, so a simulation that never has enough particles to share never starts one.
+// belong to its chunk. The workers are started on the first run that has more than one chunk,
+// so a simulation that never has enough particles to share never starts one.
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -21,7 +21,7 @@ class ThreadPool {
  public:
   // `threads` counts the calling thread: 1 runs everything on the caller, no worker ever.
   explicit ThreadPool(int threads);
-  ~ThreadPool();  // stops and joins the workers
+  ~ThreadPool();  // stops and joins the workers (a run must not be in progress)
   ThreadPool(const ThreadPool&) = delete;
   ThreadPool& operator=(const ThreadPool&) = delete;
 
