@@ -131,9 +131,27 @@ int main(int argc, char** argv) {
       QStringLiteral("view"),
       QStringLiteral("Show this animation view under the transport: keys, dope or graph."),
       QStringLiteral("name"), QStringLiteral("keys"));
+  const QCommandLineOption threads(
+      QStringLiteral("threads"),
+      QStringLiteral("Threads the preview's tear simulation shares, 1 to 256 (default: "
+                     "LACRIMA_THREADS, else all); the tears are the same for any count."),
+      QStringLiteral("N"));
   parser.addOptions({screenshot, size, time, filter, focus, presets, noPreview, warm, headMesh,
-                     headPoints, propose, view});
+                     headPoints, propose, view, threads});
   parser.process(app);
+  if (parser.isSet(threads)) {
+    // The simulation reads LACRIMA_THREADS when its own option is 0 (SimulationOptions.h), so
+    // this reaches the preview worker's simulation.
+    bool ok = false;
+    const int count = parser.value(threads).toInt(&ok);
+    if (!ok || count < 1 || count > 256) {
+      std::fprintf(stderr,
+                   "lacrima-editor: --threads expects a whole number from 1 to 256, not %s\n",
+                   qPrintable(parser.value(threads)));
+      return 2;
+    }
+    qputenv("LACRIMA_THREADS", QByteArray::number(count));
+  }
 
   const bool batch = parser.isSet(screenshot);
   theme::apply(app);  // screenshots show the editor as people see it

@@ -238,8 +238,25 @@ int main(int argc, char** argv) {
        "Tear quality, in place of the file's: preview (longer sub-steps, faster), balanced (the "
        "default) or reference (shorter sub-steps, closest to a fine reference).",
        "LEVEL"},
+      {"threads",
+       "Threads the tear simulation shares, 1 to 256 (default: LACRIMA_THREADS, else all); "
+       "the tears are the same for any count.",
+       "N"},
   });
   parser.process(app);
+  if (parser.isSet("threads")) {
+    // The simulation reads LACRIMA_THREADS when its own option is 0 (SimulationOptions.h), so
+    // this reaches every simulation the player makes.
+    bool ok = false;
+    const int threads = parser.value("threads").toInt(&ok);
+    if (!ok || threads < 1 || threads > 256) {
+      std::fprintf(stderr,
+                   "lacrima-player: --threads expects a whole number from 1 to 256, not %s\n",
+                   qPrintable(parser.value("threads")));
+      return kExitUsage;
+    }
+    qputenv("LACRIMA_THREADS", QByteArray::number(threads));
+  }
   if (parser.isSet("mesh") != parser.isSet("fdp")) {
     std::fprintf(stderr,
                  "lacrima-player: --mesh and --fdp go together (a head and its feature points)\n");

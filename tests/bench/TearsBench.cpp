@@ -41,6 +41,7 @@ struct Options {
   PressureMethod solver = SimulationOptions{}.pressureSolver;
   double maxStepMs = 0;
   double substepFactor = 1;  // scales the CFL and acceleration safety factors
+  int threads = 0;           // SimulationOptions::threads (0 = LACRIMA_THREADS or all)
   TearSettings settings;
 };
 
@@ -86,6 +87,10 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   line.number("skin", "S",
               "Verlet skin of the pair list, in kernel radii (default 0.3; 0 = no reuse).", 0, 2,
               o.skin);
+  line.wholeNumber("threads", "T",
+                   "Threads the simulation shares (default 0: LACRIMA_THREADS, else all); "
+                   "results are bit-identical for any count.",
+                   0, 256, o.threads);
   line.choice("head", "The cheek sheet (default) or the cached default head (skipped when absent).",
               {{"sheet", false}, {"default", true}}, o.head);
   line.flag("sway", "The sheet (or head) sways (rotates and translates) every frame.", o.sway);
@@ -144,6 +149,7 @@ int runTears(int argc, char** argv) {
   simOptions.maxSubstepSeconds = o.maxStepMs / 1000;
   simOptions.lambdaCfl *= o.substepFactor;
   simOptions.lambdaAcceleration *= o.substepFactor;
+  simOptions.threads = o.threads;
   TearPipeline pipeline(*scene, o.settings, simOptions);
   TearSimulation& sim = pipeline.simulation();
   const int left = (o.particles + 1) / 2, right = o.particles / 2;
@@ -216,6 +222,10 @@ int runTears(int argc, char** argv) {
     json.field("substep_factor", o.substepFactor);
     json.field("scene", o.head ? "default_head" : "cheek_sheet");
     json.field("sway", o.sway);
+    json.field("threads", sim.threads());
+    char hash[17];
+    std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(stateHash(p)));
+    json.field("state_hash", hash);
     json.field("ms_per_frame", median);
     json.field("ms_per_frame_mean", mean);
     json.field("ms_per_frame_max", sorted.back());
@@ -279,11 +289,12 @@ int runTears(int argc, char** argv) {
 
   std::printf(
       "tears on the %s: %d particles requested, %d alive, %d frames at %g fps, %s, %s neighbours, "
-      "%s tension%s\n",
+      "%s tension%s, %d thread%s\n",
       scene->name.c_str(), o.particles, p.size(), o.frames, o.fps,
       o.solver == PressureMethod::Wcsph ? "WCSPH" : "DFSPH",
       o.neighbours == NeighbourMethod::Grid ? "grid" : "octree",
-      o.tension == SurfaceTensionModel::Mueller ? "Mueller" : "Akinci", o.sway ? ", swaying" : "");
+      o.tension == SurfaceTensionModel::Mueller ? "Mueller" : "Akinci", o.sway ? ", swaying" : "",
+      sim.threads(), sim.threads() == 1 ? "" : "s");
   std::printf("  frame time     median %8.3f ms  (mean %.3f, max %.3f; simulation alone %.3f)",
               median, mean, sorted.back(), simulationMedian);
   if (target > 0) std::printf("   target <= %.3g ms  %s", target, mark(median <= target));
@@ -316,6 +327,8 @@ int runTears(int argc, char** argv) {
   std::printf(
       "  neighbour search: grid %.2f M particles/s, octree %.2f M particles/s   target >= 1  %s\n",
       gridRate, octreeRate, mark(gridRate >= 1));
+  std::printf("  state hash (positions and velocities): %016llx\n",
+              static_cast<unsigned long long>(stateHash(p)));
   std::printf("  all finite: %s   max distance from the skin centre: %.2f half skin heights\n",
               finite ? "yes" : "NO", maxDistance);
   return finite ? 0 : 1;

@@ -1,6 +1,7 @@
 # Smoke test of `lacrima-bench tears --json`: the benchmark runs, prints one JSON object, and
 # what it reports is sane (the commanded particles alive, every value finite, sub-steps taken,
-# the stray counter present). Speed is not checked here: figures are read, never asserted.
+# the stray counter present, the same state hash for 1 and 3 threads). Speed is not checked
+# here: figures are read, never asserted.
 #   cmake -DBENCH=<path to lacrima-bench> -P TearsBenchSmoke.cmake
 execute_process(COMMAND "${BENCH}" tears --particles 100 --frames 12 --json
                 OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE status)
@@ -29,3 +30,21 @@ if(NOT substeps GREATER_EQUAL 12 OR strays LESS 0)
   message(FATAL_ERROR "implausible counters: ${substeps} sub-steps, ${strays} stray sub-steps")
 endif()
 message(STATUS "lacrima-bench tears: ${alive} particles, ${substeps} sub-steps in ${frames} frames")
+
+# --threads: the JSON names the count, and the state hash is the same for 1 and 3 threads.
+foreach(threads 1 3)
+  execute_process(COMMAND "${BENCH}" tears --particles 3000 --frames 12 --threads ${threads} --json
+                  OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE status)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "lacrima-bench tears --threads ${threads} exited with ${status}: ${err}")
+  endif()
+  string(JSON reported GET "${out}" threads)
+  string(JSON hash${threads} GET "${out}" state_hash)
+  if(NOT reported EQUAL threads)
+    message(FATAL_ERROR "--threads ${threads} reported ${reported} threads")
+  endif()
+endforeach()
+if(NOT hash1 STREQUAL hash3 OR NOT hash1 MATCHES "^[0-9a-f]+$")
+  message(FATAL_ERROR "state hash differs between 1 and 3 threads: ${hash1} and ${hash3}")
+endif()
+message(STATUS "lacrima-bench tears --threads 1 and 3: state hash ${hash1}")

@@ -54,6 +54,7 @@ struct Options {
   int frames = 66;  // 3 s at 22 fps: long enough for drops to run down the sheet
   double fps = 22;
   bool head = false;  // the rigged default head instead of the cheek sheet
+  int threads = 0;    // SimulationOptions::threads of every run
   std::string csv, png;
 };
 
@@ -70,6 +71,9 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   line.choice("head",
               "The cheek sheet (default) or the cached default head with the rig's sources.",
               {{"sheet", false}, {"default", true}}, o.head);
+  line.wholeNumber("threads", "T",
+                   "Threads each run's simulation shares (default 0: LACRIMA_THREADS, else all).",
+                   0, 256, o.threads);
   line.text("csv", "FILE", "Also write the table as CSV.", o.csv);
   line.text("png", "FILE", "Also draw error against ms per frame (log axes) as a PNG.", o.png);
   return line.parse(argc, argv);
@@ -140,7 +144,9 @@ void capture(const TearSurface& surface, RunResult& out) {
 RunResult run(const TearScene& scene, const Variant& v, const Options& o,
               const std::vector<double>& extraCubes = {},
               std::vector<RunResult>* extras = nullptr) {
-  TearPipeline pipeline(scene, settingsFor(v), optionsFor(v));
+  SimulationOptions options = optionsFor(v);
+  options.threads = o.threads;
+  TearPipeline pipeline(scene, settingsFor(v), options);
   TearSimulation& sim = pipeline.simulation();
   std::vector<std::unique_ptr<SurfaceMesher>> meshers;
   for (std::size_t k = 0; k < extraCubes.size(); ++k)

@@ -61,9 +61,11 @@ void pairFactors(const float* __restrict r2s, std::size_t count, float h, float 
 // pair added to both ends. The pair geometry comes from DensitySolver's offsets and the kernel
 // factors from pairFactors, so per pair only the state of j is gathered. 3-vectors are Float4
 // lanes 0..2, so each vector update is one SSE2 operation. `Colour` removes the Müller sums
-// from the loop at compile time instead of testing a flag per pair.
+// from the loop at compile time instead of testing a flag per pair. A partner at or past `end`
+// belongs to a later chunk, which another thread may be summing: its share goes to `spill`.
 template <bool Colour, bool Pressure>
-void FluidForcePass::accumulate(const ActivePairs& pairs, int n, std::uint64_t const* ids) {
+void FluidForcePass::accumulate(const ActivePairs& pairs, std::uint32_t begin, std::uint32_t end,
+                                std::uint64_t const* ids, Spill& spill) {
   const std::uint32_t* partner = pairs.partner.data();
   const float* offset = pairs.offset.data();
   const float* r2s = pairs.r2.data();
@@ -77,8 +79,18 @@ void FluidForcePass::accumulate(const ActivePairs& pairs, int n, std::uint64_t c
   const float* lapVisc = lapVisc_.data();
   const float* gradColour = gradColour_.data();
   const float* lapColour = lapColour_.data();
+  // At most every pair of the chunk spills: sized once for that (capacity is kept), so the
+  // loop writes through plain pointers.
+  const std::size_t most = pairs.start[end] - pairs.start[begin];
+  if (spill.partner.size() < most) {
+    spill.partner.resize(most);
+    spill.share.resize(12 * most);
+  }
+  std::uint32_t* spillPartner = spill.partner.data();
+  float* spillShare = spill.share.data();
+  std::uint32_t spilled = 0;
 
-  for (int i = 0; i < n; ++i) {
+  for (std::uint32_t i = begin; i < end; ++i) {
     const auto si = static_cast<std::size_t>(i);
     const Float4 vi = load4(velocity + 4 * si);
     const Float4 own = load4(scalars + 4 * si);
@@ -89,8 +101,8 @@ void FluidForcePass::accumulate(const ActivePairs& pairs, int n, std::uint64_t c
     Float4 ai{0, 0, 0, 0}, gi{0, 0, 0, 0}, wvi{0, 0, 0, 0};
     float wi = 0, li = 0;
     // The bound is read once: the float stores below could alias it as far as GCC knows.
-    const std::uint32_t end = pairs.start[si + 1];
-    for (std::uint32_t k = pairs.start[si]; k < end; ++k) {
+    const std::uint32_t last = pairs.start[si + 1];
+    for (std::uint32_t k = pairs.start[si]; k < last; ++k) {
       const std::uint32_t j = partner[k];
       const std::size_t j4 = 4 * static_cast<std::size_t>(j);
       const Float4 d = load4(offset + 4 * static_cast<std::size_t>(k));
@@ -107,6 +119,7 @@ void FluidForcePass::accumulate(const ActivePairs& pairs, int n, std::uint64_t c
       const float lw = lapVisc[k];
       const float wj = volj * lw, wiPart = voli * lw;
       wi += wj;
+      Float4 toJ{0, 0, 0, wiPart};  // j's acceleration share, weight sum in lane 3
       if constexpr (Pressure) {
         const float shared = (pi + pj) * halfOverRhoi * invRhoj;
         Float4 f = (shared * radial[k]) * d;
@@ -118,21 +131,34 @@ void FluidForcePass::accumulate(const ActivePairs& pairs, int n, std::uint64_t c
                      a * static_cast<float>(e.z()), 0.0f};
         }
         ai -= mj * f;
-        store4(acc + j4, load4(acc + j4) + mi * f + Float4{0, 0, 0, wiPart});
-      } else {
-        acc[j4 + 3] += wiPart;
+        toJ = mi * f + toJ;
       }
       wvi += wj * vj;
       Float4 wvj = wiPart * vi;
+      Float4 gj{0, 0, 0, 0};
       if constexpr (Colour) {
         const float g = gradColour[k];
         gi += (volj * g) * d;
-        store4(gradient + j4, load4(gradient + j4) - (voli * g) * d);
+        gj = (voli * g) * d;
         const float l = lapColour[k];
         li += volj * l;
         wvj[3] = voli * l;
       }
-      store4(weighted + j4, load4(weighted + j4) + wvj);
+      if (j < end) [[likely]] {
+        if constexpr (Pressure)
+          store4(acc + j4, load4(acc + j4) + toJ);
+        else
+          acc[j4 + 3] += wiPart;
+        store4(weighted + j4, load4(weighted + j4) + wvj);
+        if constexpr (Colour) store4(gradient + j4, load4(gradient + j4) - gj);
+      } else {
+        spillPartner[spilled] = j;
+        float* share = spillShare + 12 * static_cast<std::size_t>(spilled);
+        store4(share, toJ);
+        store4(share + 4, wvj);
+        store4(share + 8, gj);
+        ++spilled;
+      }
     }
     const std::size_t i4 = 4 * si;
     ai[3] = wi;
@@ -141,10 +167,31 @@ void FluidForcePass::accumulate(const ActivePairs& pairs, int n, std::uint64_t c
     store4(weighted + i4, load4(weighted + i4) + wvi);
     if constexpr (Colour) store4(gradient + i4, load4(gradient + i4) + gi);
   }
+  spill.count = spilled;
+}
+
+// The spilled shares, chunk by chunk in order, each list in pair order: one fixed order of
+// additions per particle, whichever thread ran which chunk. Lanes that a pass without pressure
+// leaves untouched get a share of exactly 0 there (x + 0 = x).
+void FluidForcePass::addSpills(std::size_t chunks, bool colour) {
+  float* acc = acc_.data();
+  float* weighted = weighted4_.data();
+  float* gradient = gradient4_.data();
+  for (std::size_t c = 0; c < chunks; ++c) {
+    const Spill& spill = spills_[c];
+    for (std::size_t e = 0; e < spill.count; ++e) {
+      const std::size_t j4 = 4 * static_cast<std::size_t>(spill.partner[e]);
+      const float* share = &spill.share[12 * e];
+      store4(acc + j4, load4(acc + j4) + load4(share));
+      store4(weighted + j4, load4(weighted + j4) + load4(share + 4));
+      if (colour) store4(gradient + j4, load4(gradient + j4) - load4(share + 8));
+    }
+  }
 }
 
 double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs,
-                           const Viscosity_Mueller2003& viscosity, bool colour) {
+                           const Viscosity_Mueller2003& viscosity, bool colour,
+                           ParallelChunks& parallel) {
   const int n = p.size();
   const auto un = static_cast<std::size_t>(n);
   velocity_.resize(4 * un);
@@ -161,53 +208,79 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs,
   visc_ = static_cast<float>(viscosityKernel_.laplacianCoefficient());
   poly6_ = colour ? static_cast<float>(poly6Kernel_.gradientCoefficient()) : 0.0f;
   const float selfLaplacian = colour ? static_cast<float>(poly6Kernel_.laplacian(0.0)) : 0.0f;
+  parallel.setParticleCount(n);
   // No pressure anywhere (DFSPH, whose solves replace it, or a fluid nowhere compressed): the
   // pressure terms are left out of the loop rather than added as zeros.
-  bool anyPressure = false;
-  for (std::size_t i = 0; i < un; ++i) {
-    const Eigen::Vector3d& v = p.velocity[i];
-    store4(&velocity_[4 * i], Float4{static_cast<float>(v.x()), static_cast<float>(v.y()),
-                                     static_cast<float>(v.z()), 0.0f});
-    const float m = static_cast<float>(p.mass[i]), pi = static_cast<float>(p.pressure[i]);
-    const float invRho = 1.0f / static_cast<float>(p.density[i]), volume = m * invRho;
-    weighted4_[4 * i + 3] = volume * selfLaplacian;
-    store4(&scalars_[4 * i], Float4{m, pi, invRho, volume});
-    anyPressure = anyPressure || pi != 0.0f;
-  }
+  const std::size_t particleChunks = ParallelChunks::chunkCount(un, kParticleChunk);
+  anyPressureChunk_.assign(particleChunks, 0);
+  parallel.forEachChunk(un, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
+    bool any = false;
+    for (std::size_t i = begin; i < end; ++i) {
+      const Eigen::Vector3d& v = p.velocity[i];
+      store4(&velocity_[4 * i], Float4{static_cast<float>(v.x()), static_cast<float>(v.y()),
+                                       static_cast<float>(v.z()), 0.0f});
+      const float m = static_cast<float>(p.mass[i]), pi = static_cast<float>(p.pressure[i]);
+      const float invRho = 1.0f / static_cast<float>(p.density[i]), volume = m * invRho;
+      weighted4_[4 * i + 3] = volume * selfLaplacian;
+      store4(&scalars_[4 * i], Float4{m, pi, invRho, volume});
+      any = any || pi != 0.0f;
+    }
+    anyPressureChunk_[static_cast<std::size_t>(c)] = any;
+  });
+  const bool anyPressure =
+      std::find(anyPressureChunk_.begin(), anyPressureChunk_.end(), 1) != anyPressureChunk_.end();
   const std::size_t pairCount = n > 0 ? pairs.start[un] : 0;
   for (auto* v : {&approach_, &radial_, &lapVisc_, &gradColour_, &lapColour_})
     if (v->size() < pairCount) v->resize(pairs.partner.size());
-  pairFactors(pairs.r2.data(), pairCount, h_, h2_, spiky_, visc_, poly6_, radial_.data(),
-              lapVisc_.data(), gradColour_.data(), lapColour_.data());
+  parallel.forEachChunk(pairCount, kPairChunk, [&](int, std::size_t begin, std::size_t end) {
+    pairFactors(pairs.r2.data() + begin, end - begin, h_, h2_, spiky_, visc_, poly6_,
+                radial_.data() + begin, lapVisc_.data() + begin, gradColour_.data() + begin,
+                lapColour_.data() + begin);
+  });
 
-  if (colour)
-    anyPressure ? accumulate<true, true>(pairs, n, p.id.data())
-                : accumulate<true, false>(pairs, n, p.id.data());
-  else
-    anyPressure ? accumulate<false, true>(pairs, n, p.id.data())
-                : accumulate<false, false>(pairs, n, p.id.data());
-  const float closing2 = largestClosingSpeed2(approach_.data(), pairs.r2.data(), pairCount);
+  if (spills_.size() < particleChunks) spills_.resize(particleChunks);
+  parallel.forEachChunk(un, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
+    const auto b = static_cast<std::uint32_t>(begin), e = static_cast<std::uint32_t>(end);
+    Spill& spill = spills_[static_cast<std::size_t>(c)];
+    const std::uint64_t* ids = p.id.data();
+    if (colour)
+      anyPressure ? accumulate<true, true>(pairs, b, e, ids, spill)
+                  : accumulate<true, false>(pairs, b, e, ids, spill);
+    else
+      anyPressure ? accumulate<false, true>(pairs, b, e, ids, spill)
+                  : accumulate<false, false>(pairs, b, e, ids, spill);
+  });
+  addSpills(particleChunks, colour);
+  // The largest closing speed: a maximum per pair chunk, then over the chunks (a maximum is
+  // exact, so this is the serial value too).
+  closing_.assign(ParallelChunks::chunkCount(pairCount, kPairChunk), 0.0f);
+  parallel.forEachChunk(pairCount, kPairChunk, [&](int c, std::size_t begin, std::size_t end) {
+    closing_[static_cast<std::size_t>(c)] =
+        largestClosingSpeed2(approach_.data() + begin, pairs.r2.data() + begin, end - begin);
+  });
+  float closing2 = 0;
+  for (float c : closing_) closing2 = std::max(closing2, c);
 
   weightSum_.resize(un);
   weighted_.resize(un);
   gradient_.resize(colour ? un : 0);
   laplacian_.resize(colour ? un : 0);
   const double nu = viscosity.nu();
-  for (std::size_t i = 0; i < un; ++i) {
-    const float* a = &acc_[4 * i];
-    const float* w = &weighted4_[4 * i];
-    p.acceleration[i] += Eigen::Vector3d(a[0], a[1], a[2]);
-    weightSum_[i] = a[3];
-    weighted_[i] = Eigen::Vector3d(w[0], w[1], w[2]);
-    p.viscosityRate[i] = nu * weightSum_[i] * scalars_[4 * i + 2];
-  }
-  if (colour) {
-    for (std::size_t i = 0; i < un; ++i) {
-      const float* g = &gradient4_[4 * i];
-      gradient_[i] = Eigen::Vector3d(g[0], g[1], g[2]);
-      laplacian_[i] = weighted4_[4 * i + 3];
+  parallel.forEachChunk(un, kParticleChunk, [&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const float* a = &acc_[4 * i];
+      const float* w = &weighted4_[4 * i];
+      p.acceleration[i] += Eigen::Vector3d(a[0], a[1], a[2]);
+      weightSum_[i] = a[3];
+      weighted_[i] = Eigen::Vector3d(w[0], w[1], w[2]);
+      p.viscosityRate[i] = nu * weightSum_[i] * scalars_[4 * i + 2];
+      if (colour) {
+        const float* g = &gradient4_[4 * i];
+        gradient_[i] = Eigen::Vector3d(g[0], g[1], g[2]);
+        laplacian_[i] = weighted4_[4 * i + 3];
+      }
     }
-  }
+  });
   return std::sqrt(static_cast<double>(closing2));
 }
 

@@ -16,6 +16,12 @@
 // once, its contribution added to both particles (antisymmetric terms with opposite signs). The
 // iteration order is fixed (particle order, then partner order), so sums are reproducible.
 //
+// Threads (ParallelChunks.h): the particles are cut into fixed chunks of kParticleChunk. A
+// chunk sums its own particles' terms and adds the partner's share directly when the partner is
+// in the chunk too; a partner beyond the chunk gets its share through the chunk's spill list
+// (partner, share), which is added after all chunks have run, chunk by chunk in order. Every
+// particle's sums thus take the same additions in the same order for any thread count.
+//
 // Both pair passes run in single precision on copies of the particle state: 3-vectors as 4
 // floats (x, y, z, 0), so each scattered vector update is one SSE2 load, add and store, and the
 // per-particle scalars (m, p, 1 / rho, V) as 4 floats too, one load per partner (positions
@@ -25,6 +31,7 @@
 // double ParticleSet.
 #include "Kernels.h"
 #include "PairList.h"
+#include "ParallelChunks.h"
 #include "Viscosity_Mueller2003.h"
 
 #include <lacrima/tears/ParticleSet.h>
@@ -47,7 +54,7 @@ class FluidForcePass {
   // separate compress nothing.
   // Reads the velocities: call it before they change in this sub-step.
   double run(ParticleSet& particles, ActivePairs& pairs, const Viscosity_Mueller2003& viscosity,
-             bool colourField);
+             bool colourField, ParallelChunks& parallel);
   std::span<const double> weightSum() const { return weightSum_; }
   std::span<const Eigen::Vector3d> weightedVelocity() const { return weighted_; }
   // grad c_i and lap c_i of the last run with colourField (empty otherwise).
@@ -55,8 +62,18 @@ class FluidForcePass {
   std::span<const double> colourLaplacian() const { return laplacian_; }
 
  private:
+  // A chunk's shares for partners beyond it: the partner's index and its 12 floats
+  // (acceleration, weighted velocity, colour gradient; lane 3 as in acc_ and weighted4_).
+  struct Spill {
+    std::vector<std::uint32_t> partner;
+    std::vector<float> share;
+    std::size_t count = 0;  // entries in use
+  };
+  // The pair loop over the particles [begin, end).
   template <bool Colour, bool Pressure>
-  void accumulate(const ActivePairs& pairs, int n, std::uint64_t const* ids);
+  void accumulate(const ActivePairs& pairs, std::uint32_t begin, std::uint32_t end,
+                  std::uint64_t const* ids, Spill& spill);
+  void addSpills(std::size_t chunks, bool colour);
 
   SpikyKernel spikyKernel_;  // pressure
   ViscosityKernel viscosityKernel_;
@@ -72,6 +89,9 @@ class FluidForcePass {
   // Per-pair kernel factors, from r alone (one flat, vectorised loop over the pairs), and
   // (v_i - v_j).(x_i - x_j), reduced to the closing speed after the pair loop.
   std::vector<float> radial_, lapVisc_, gradColour_, lapColour_, approach_;
+  std::vector<Spill> spills_;                    // per particle chunk, capacity kept
+  std::vector<float> closing_;                   // per pair chunk: largest closing speed^2
+  std::vector<unsigned char> anyPressureChunk_;  // per particle chunk
   float h_ = 0, h2_ = 0, spiky_ = 0, atZero_ = 0, visc_ = 0, poly6_ = 0;
 };
 

@@ -101,4 +101,19 @@ void ParticleSet::clear() {
   compact(none);
 }
 
+std::uint64_t stateHash(const ParticleSet& p) {
+  std::uint64_t hash = 0xcbf29ce484222325ull;
+  const auto mix = [&hash](const void* data, std::size_t bytes) {
+    const auto* b = static_cast<const unsigned char*>(data);
+    for (std::size_t k = 0; k < bytes; ++k) hash = (hash ^ b[k]) * 0x100000001b3ull;
+  };
+  for (int i = 0; i < p.size(); ++i) {
+    const auto s = static_cast<std::size_t>(i);
+    mix(&p.id[s], sizeof p.id[s]);
+    mix(p.position[s].data(), 3 * sizeof(double));
+    mix(p.velocity[s].data(), 3 * sizeof(double));
+  }
+  return hash;
+}
+
 }  // namespace lacrima::tears

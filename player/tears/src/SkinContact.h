@@ -21,6 +21,8 @@
 // unit mass (the spare adhesion plus the pressing part of gravity and fluid forces), integrated
 // implicitly so it can stop a particle but never reverse it, for any friction and dt:
 //   v_t <- v_t / (1 + dt mu N / m)   with mu = friction / (0.3 m/s).
+#include "ParallelChunks.h"
+
 #include <lacrima/tears/ParticleSet.h>
 
 #include <span>
@@ -59,17 +61,22 @@ class SkinContactForces {
   // Adhesion acceleration magnitude for particle i (0 when not touching).
   double adhesionOf(const ParticleSet& particles, int i) const;
 
-  // v += dt (a + g) for every particle (a: the fluid forces of this sub-step).
-  void applyExternal(ParticleSet& particles, const Eigen::Vector3d& gravity, double dt) const;
+  // v += dt (a + g) for every particle (a: the fluid forces of this sub-step). Both passes
+  // are per particle, so they share `parallel`'s chunks with results independent of threads.
+  void applyExternal(ParticleSet& particles, const Eigen::Vector3d& gravity, double dt,
+                     ParallelChunks& parallel) const;
 
   // For particles touching the skin: adhesion (it needs the contact normal), then the normal
   // velocity constraint, then friction. `spare`: empty (all 1), or per particle the share of
   // its drop's holding capacity not in use (DropDetachment_Tate1864::spare()): 0 = the drop
   // let go, no adhesion; otherwise adhesion holds and that share of it loads friction.
   void constrain(ParticleSet& particles, const SkinView& skin, const Eigen::Vector3d& gravity,
-                 double dt, std::span<const double> spare = {}) const;
+                 double dt, std::span<const double> spare, ParallelChunks& parallel) const;
 
  private:
+  void constrainOne(ParticleSet& particles, const SkinView& skin, const Eigen::Vector3d& gravity,
+                    double dt, std::span<const double> spare, std::size_t s) const;
+
   double adhesion_, friction_, rho0_, m0_, radius_;
 };
 

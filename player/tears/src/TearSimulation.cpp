@@ -39,7 +39,8 @@ std::uint64_t nextInstance() {
 
 TearSimulation::Internals::Internals(const ScaledParameters& p, const TearSettings& settings,
                                      const SimulationOptions& options, const UnitScale& scale)
-    : octree(p.nodeSize),
+    : parallel(resolveThreadCount(options.threads)),
+      octree(p.nodeSize),
       density(p.h),
       viscosity(p.kinematicViscosity),
       forcePass(p.h),
@@ -51,6 +52,8 @@ TearSimulation::Internals::Internals(const ScaledParameters& p, const TearSettin
       stepper(options.lambdaCfl, options.lambdaAcceleration, options.lambdaViscosity) {
   chooseMethods(p, settings, options);
 }
+
+int TearSimulation::threads() const { return internals_->parallel.threads(); }
 
 void TearSimulation::Internals::chooseMethods(const ScaledParameters& p,
                                               const TearSettings& settings,

@@ -10,6 +10,7 @@
 #include "FluidForcePass.h"
 #include "Octree.h"
 #include "PairList.h"
+#include "ParallelChunks.h"
 #include "PressureSolver.h"
 #include "SkinCollider.h"
 #include "SkinContact.h"
@@ -33,6 +34,7 @@ struct TearSimulation::Internals {
   void chooseMethods(const ScaledParameters& parameters, const TearSettings& settings,
                      const SimulationOptions& options);
 
+  ParallelChunks parallel;                 // the sub-steps' threads (ParallelChunks.h)
   std::unique_ptr<SkinCollider> collider;  // made once the simulation box is known
   CellIndex cellIndex;                     // cell edge h (1 + skin), orders the particles
   VerletPairs candidates;

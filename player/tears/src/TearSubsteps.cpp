@@ -71,6 +71,8 @@ void TearSimulation::simulate(double frameDt) {
   CollisionCounters collision;
 
   while (remaining > 0 && !particles_.empty()) {
+    // The count is fixed for the whole sub-step (recycling re-emits in place).
+    in.parallel.setParticleCount(particles_.size());
     auto start = SteadyClock::now();
     updatePairs();
     times_.neighbours += millisecondsSince(start);
@@ -83,8 +85,8 @@ void TearSimulation::simulate(double frameDt) {
     start = SteadyClock::now();
     std::fill(particles_.acceleration.begin(), particles_.acceleration.end(),
               Eigen::Vector3d::Zero());
-    const double relativeSpeed =
-        in.forcePass.run(particles_, in.pairs, in.viscosity, in.tension->needsColourField());
+    const double relativeSpeed = in.forcePass.run(particles_, in.pairs, in.viscosity,
+                                                  in.tension->needsColourField(), in.parallel);
     in.tension->addAccelerations(particles_, in.pairs, in.forcePass);
     double maxAcceleration2 = 0, maxRate = 0;
     for (int i = 0; i < particles_.size(); ++i) {
@@ -125,13 +127,14 @@ void TearSimulation::simulate(double frameDt) {
     }
     const double dt = choice.dt;
     in.viscosity.apply(particles_, in.forcePass.weightedVelocity(), in.forcePass.weightSum(), dt);
-    in.contact.applyExternal(particles_, g, dt);
+    in.contact.applyExternal(particles_, g, dt, in.parallel);
     pressure.correctVelocities(particles_, in.pairs, dt, in.collider->view(), counters_);
     if (in.detachment.update(particles_, in.pairs, in.collider->view(), g)) {
       ++counters_.pendantSubsteps;
       counters_.releasedContacts += in.detachment.releasedCount();
     }
-    in.contact.constrain(particles_, in.collider->view(), g, dt, in.detachment.spare());
+    in.contact.constrain(particles_, in.collider->view(), g, dt, in.detachment.spare(),
+                         in.parallel);
     if (capped) {
       const double vLimit = in.stepper.lambdaCfl() * h / dt;
       for (auto& v : particles_.velocity) {

@@ -71,4 +71,9 @@ class ParticleSet {
   } scratch_;
 };
 
+// FNV-1a (64 bits) over the bits of every particle's id, position and velocity, in particle
+// order: two runs that agree bit for bit give the same hash, and one differing bit almost
+// surely changes it (lacrima-bench tears prints it to compare thread counts).
+std::uint64_t stateHash(const ParticleSet& particles);
+
 }  // namespace lacrima::tears

@@ -50,6 +50,10 @@ struct SimulationOptions {
   double massFloor = 0.2;                  // of the emitted mass
   double boxMarginMetres = 0.03;           // simulation box = skin bounds grown by this
   double wetnessReferenceParticles = 100;  // volume/count at which wetness approaches 1
+  // Threads the sub-steps share (the calling thread included): 0 = the environment variable
+  // LACRIMA_THREADS when set, else every hardware thread. Results are bit-identical whatever
+  // the count (docs/decisions/0014); below ~1,500 particles every loop stays on the caller.
+  int threads = 0;
 };
 
 }  // namespace lacrima::tears

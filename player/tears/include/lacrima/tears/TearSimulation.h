@@ -116,6 +116,8 @@ class TearSimulation {
   const ScaledParameters& parameters() const { return params_; }
   const TearSettings& settings() const { return settings_; }
   const SimulationOptions& options() const { return options_; }
+  // Threads the sub-steps share: options().threads resolved (SimulationOptions.h).
+  int threads() const;
   const UnitScale& scale() const { return scale_; }
   Eigen::Vector3d gravity() const { return {0, -params_.gravity, 0}; }
   // Particles leaving this box are recycled.

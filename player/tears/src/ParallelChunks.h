@@ -1,0 +1,59 @@
+#pragma once
+// How the tear simulation shares a loop between threads and stays bit-identical whatever the
+// thread count (docs/decisions/0005, 0015):
+//   * the work is cut into FIXED chunks (kParticleChunk particles, kPairChunk pairs) whose
+//     bounds depend on the item count only, never on the number of threads;
+//   * each chunk writes only its own outputs (the particles or pairs of its range) or a partial
+//     result of its own (partials[c]);
+//   * partial results are combined by the caller in chunk order, on one thread.
+// Any thread may run any chunk, in any order, and the floating-point operations performed are
+// the same, in the same order, for every output. With one thread, or fewer particles than
+// kParallelParticles (sharing costs a wake-up per loop, more than a small loop takes), the
+// chunks run one after the other on the calling thread and no worker is ever started.
+#include "ThreadPool.h"
+
+#include <algorithm>
+#include <cstddef>
+
+namespace lacrima::tears {
+
+inline constexpr std::size_t kParticleChunk = 1024;
+inline constexpr std::size_t kPairChunk = 4096;
+// Measured with lacrima-bench tears --threads 2 on the cheek sheet (docs/performance.md): below
+// this many particles the wake-ups cost more than the second thread saves.
+inline constexpr int kParallelParticles = 1500;
+
+class ParallelChunks {
+ public:
+  explicit ParallelChunks(int threads) : pool_(threads) {}
+
+  int threads() const { return pool_.threads(); }
+  // Shares the following loops only when the sub-step has enough particles.
+  void setParticleCount(int particles) {
+    shared_ = pool_.threads() > 1 && particles >= kParallelParticles;
+  }
+
+  static std::size_t chunkCount(std::size_t count, std::size_t chunk) {
+    return (count + chunk - 1) / chunk;
+  }
+  // Calls body(c, begin, end) for every chunk c of [0, count) cut every `chunk` items.
+  template <class Body>
+  void forEachChunk(std::size_t count, std::size_t chunk, Body&& body) {
+    const std::size_t chunks = chunkCount(count, chunk);
+    const auto one = [&](int c) {
+      const std::size_t begin = static_cast<std::size_t>(c) * chunk;
+      body(c, begin, std::min(count, begin + chunk));
+    };
+    if (!shared_ || chunks < 2) {
+      for (std::size_t c = 0; c < chunks; ++c) one(static_cast<int>(c));
+      return;
+    }
+    pool_.run(static_cast<int>(chunks), one);
+  }
+
+ private:
+  ThreadPool pool_;
+  bool shared_ = false;
+};
+
+}  // namespace lacrima::tears

@@ -1,0 +1,56 @@
+#pragma once
+// A small pool of worker threads (std::jthread) for the tear simulation's chunked loops
+// (ParallelChunks.h says how work is cut so that results do not depend on the thread count).
+//
+// run(chunks, job) calls job(c) once for every chunk c in [0, chunks), on the workers and on
+// the calling thread, and returns when all have finished. Chunks are handed out in order under
+// the pool's mutex (a chunk is tens of microseconds of work, the lock tens of nanoseconds), so
+// which thread runs which chunk varies from run to run: a job must write only outputs that
+// belong to its chunk. The workers are started on the first run that has more than one chunk,
+// so a simulation that never has enough particles to share never starts one.
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace lacrima::tears {
+
+class ThreadPool {
+ public:
+  // `threads` counts the calling thread: 1 runs everything on the caller, no worker ever.
+  explicit ThreadPool(int threads);
+  ~ThreadPool();  // stops and joins the workers (a run must not be in progress)
+  ThreadPool(const ThreadPool&) = delete;
+  ThreadPool& operator=(const ThreadPool&) = delete;
+
+  int threads() const { return threads_; }
+  // Runs job(c) for c in [0, chunks); not re-entrant (a job must not call run). Jobs must not
+  // throw (the simulation's loops do not).
+  void run(int chunks, const std::function<void(int)>& job);
+
+ private:
+  void start();
+  void work(const std::stop_token& stop);
+  void drain();  // takes chunks of the current run until none is left
+
+  int threads_;
+  std::vector<std::jthread> workers_;
+  std::mutex mutex_;
+  std::condition_variable_any wake_;  // a new run, or stop
+  std::condition_variable finished_;  // the last chunk of a run is done
+  std::uint64_t generation_ = 0;      // runs started; guarded by mutex_
+  // The current run, all guarded by mutex_.
+  const std::function<void(int)>* job_ = nullptr;
+  int chunks_ = 0;
+  int next_ = 0;  // next chunk to hand out
+  int done_ = 0;  // chunks finished
+};
+
+// The thread count a simulation uses: `requested` when positive, else LACRIMA_THREADS when it
+// holds a whole number from 1 to 256, else every hardware thread (at least 1). A malformed
+// LACRIMA_THREADS is reported once on stderr and ignored.
+int resolveThreadCount(int requested);
+
+}  // namespace lacrima::tears

@@ -1,0 +1,211 @@
+// The tear simulation gives the same bits whatever the number of threads (ParallelChunks.h,
+// docs/decisions/0015): particles, surface and trails after every frame, for 1, 2, 3 and 8
+// threads, on the cheek sheet (spawning, removal, recycling, strays, a swaying sheet, a
+// checkpoint restored mid-run) and on the default head (skipped when not fetched). Runs have
+// more particles than the sharing threshold and several particle chunks, so the shared loops
+// and their spill lists really run on several threads.
+#include "TearTestSupport.h"
+#include "ThreadPool.h"  // internal to lacrima_tears
+
+#include <lacrima/rigging/DefaultHead.h>
+#include <lacrima/tears/SurfaceMesher.h>
+
+#include <QtTest>
+
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+#include <vector>
+
+using namespace lacrima;
+using namespace lacrima::tears;
+using namespace lacrima::tears::testing;
+
+namespace {
+
+constexpr int kThreadCounts[] = {1, 2, 3, 8};
+
+// Particles plus trails (FrameState) and the surface mesh of one frame.
+struct Snapshot {
+  FrameState state;
+  Eigen::MatrixXd surface;
+};
+
+bool sameBits(const Snapshot& a, const Snapshot& b) {
+  return testing::sameBits(a.state, b.state) && testing::sameBits(a.surface, b.surface);
+}
+
+// The sheet run: short sheet (drops run off its bottom and are recycled, re-emitted in place
+// as strays), swaying, with counts that rise and then fall (spawning and removal).
+class SheetRun {
+ public:
+  explicit SheetRun(int threads) : sheet_(makeSheet()), trails_(sheet_.triangles) {
+    SimulationOptions options;
+    options.threads = threads;
+    sim_ = makeSheetSimulation(sheet_, {}, options);
+  }
+  static SyntheticSkin makeSheet() {
+    CheekSheetOptions o;
+    o.height = 1.2;
+    return makeCheekSheet(o);
+  }
+  Eigen::Matrix3Xf skinAt(int f, double amplitude) const {
+    return movedSheet(
+        sheet_, Eigen::Vector3d(amplitude * std::sin(0.3 * f), 0, 0),
+        Eigen::AngleAxisd(0.5 * amplitude * std::sin(0.2 * f), Eigen::Vector3d::UnitY()));
+  }
+  static std::pair<int, int> countsAt(int f) {
+    return f < 30 ? std::pair{1500, 1300} : std::pair{1200, 1400};
+  }
+  void step(int f) {
+    const Eigen::Matrix3Xf x = skinAt(f, 0.02);
+    const auto [left, right] = countsAt(f);
+    sim_->step(x, left, right, kFrameDt);
+    trails_.update(*sim_, x, kFrameDt);
+    mesher_.update(*sim_);
+  }
+  Snapshot snapshot() const {
+    Snapshot s{stateOf(*sim_, trails_), mesher_.surface().positions()};
+    return s;
+  }
+  TearSimulation& simulation() { return *sim_; }
+  TrailBuilder& trails() { return trails_; }
+  SurfaceMesher& mesher() { return mesher_; }
+
+ private:
+  SyntheticSkin sheet_;
+  std::unique_ptr<TearSimulation> sim_;
+  TrailBuilder trails_;
+  SurfaceMesher mesher_;
+};
+
+constexpr int kSheetFrames = 44;
+
+std::vector<Snapshot> sheetFrames(int threads) {
+  SheetRun run(threads);
+  std::vector<Snapshot> frames;
+  for (int f = 0; f < kSheetFrames; ++f) {
+    run.step(f);
+    frames.push_back(run.snapshot());
+  }
+  return frames;
+}
+
+}  // namespace
+
+class TearThreadsTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void poolRunsEveryChunkOnce() {
+    // Many runs back to back (workers that wake late must not take a chunk of the next run),
+    // chunk counts below, at and far above the thread count.
+    ThreadPool pool(4);
+    for (int chunks : {0, 1, 3, 4, 64, 1000}) {
+      std::vector<int> hits(static_cast<std::size_t>(chunks), 0);
+      for (int run = 0; run < 50; ++run)
+        pool.run(chunks, [&hits](int c) { ++hits[static_cast<std::size_t>(c)]; });
+      for (int c = 0; c < chunks; ++c) QCOMPARE(hits[static_cast<std::size_t>(c)], 50);
+    }
+  }
+
+  void threadCountIsResolved() {
+    // An explicit count wins; 0 falls back to LACRIMA_THREADS, then to the hardware.
+    SheetRun three(3);
+    QCOMPARE(three.simulation().threads(), 3);
+    qputenv("LACRIMA_THREADS", "5");
+    QCOMPARE(SheetRun(0).simulation().threads(), 5);
+    qputenv("LACRIMA_THREADS", "many");  // malformed: reported on stderr, ignored
+    QVERIFY(SheetRun(0).simulation().threads() >= 1);
+    qunsetenv("LACRIMA_THREADS");
+    QVERIFY(SheetRun(0).simulation().threads() >= 1);
+  }
+
+  void sheetIsBitIdenticalForAnyThreadCount() {
+    const std::vector<Snapshot> reference = sheetFrames(1);
+    {
+      // The run covers what the shared loops must get right: several chunks of particles,
+      // recycled drops as strays, removal.
+      SheetRun probe(1);
+      for (int f = 0; f < kSheetFrames; ++f) probe.step(f);
+      QVERIFY(probe.simulation().particles().size() > 2048);
+      QVERIFY(probe.simulation().counters().recycled > 0);
+      QVERIFY(probe.simulation().counters().straySubsteps > 0);
+      QVERIFY(probe.simulation().counters().removed > 0);
+      QVERIFY(!probe.trails().mesh().empty());
+      QVERIFY(probe.mesher().surface().positions().cols() > 0);
+    }
+    for (int threads : kThreadCounts) {
+      if (threads == 1) continue;
+      const std::vector<Snapshot> frames = sheetFrames(threads);
+      for (int f = 0; f < kSheetFrames; ++f)
+        QVERIFY2(
+            sameBits(frames[static_cast<std::size_t>(f)], reference[static_cast<std::size_t>(f)]),
+            qPrintable(QStringLiteral("%1 threads differ from 1 at frame %2").arg(threads).arg(f)));
+    }
+  }
+
+  void checkpointRestoredOnOtherThreadCountsRepeatsTheRun() {
+    // 1 thread runs through; 3 and 8 threads save mid-run, wander off with other input,
+    // restore and finish: all end on the same bits.
+    SheetRun straight(1);
+    for (int f = 0; f < kSheetFrames; ++f) straight.step(f);
+    const Snapshot expected = straight.snapshot();
+    for (int threads : {3, 8}) {
+      SheetRun run(threads);
+      const int middle = kSheetFrames / 2;
+      for (int f = 0; f < middle; ++f) run.step(f);
+      const TearCheckpoint saved = run.simulation().checkpoint();
+      const TrailBuilder savedTrails = run.trails();
+      for (int f = 0; f < 8; ++f) {
+        const Eigen::Matrix3Xf x = run.skinAt(f, 0.05);
+        run.simulation().step(x, 900 + 50 * f, 1500 - 40 * f, kFrameDt);
+        run.trails().update(run.simulation(), x, kFrameDt);
+      }
+      run.simulation().restore(saved);
+      run.trails() = savedTrails;
+      for (int f = middle; f < kSheetFrames; ++f) run.step(f);
+      QVERIFY2(sameBits(run.snapshot(), expected),
+               qPrintable(QStringLiteral("restored run on %1 threads diverged").arg(threads)));
+    }
+  }
+
+  void defaultHeadIsBitIdenticalForAnyThreadCount() {
+    if (!rigging::defaultHeadAvailable())
+      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    const HeadMesh head = rigging::loadDefaultHead();
+    const HeadSubmesh* skin = head.findSubmesh("skin");
+    QVERIFY(skin);
+    constexpr int kFrames = 22;
+    const auto runHead = [&](int threads) {
+      SimulationOptions options;
+      options.threads = threads;
+      auto sim = TearSimulation::forHead(head, {}, options);
+      TrailBuilder trails(skin->triangles);
+      SurfaceMesher mesher;
+      std::vector<Snapshot> frames;
+      for (int f = 0; f < kFrames; ++f) {
+        sim->step(head.positions, 1600, 1600, kFrameDt);
+        trails.update(*sim, head.positions, kFrameDt);
+        mesher.update(*sim);
+        frames.push_back({stateOf(*sim, trails), mesher.surface().positions()});
+      }
+      [&] { QVERIFY(sim->particles().size() > 2048); }();
+      return frames;
+    };
+    const std::vector<Snapshot> reference = runHead(1);
+    for (int threads : kThreadCounts) {
+      if (threads == 1) continue;
+      const std::vector<Snapshot> frames = runHead(threads);
+      for (int f = 0; f < kFrames; ++f)
+        QVERIFY2(
+            sameBits(frames[static_cast<std::size_t>(f)], reference[static_cast<std::size_t>(f)]),
+            qPrintable(QStringLiteral("%1 threads differ from 1 at frame %2 on the head")
+                           .arg(threads)
+                           .arg(f)));
+    }
+  }
+};
+
+QTEST_GUILESS_MAIN(TearThreadsTest)
+#include "TearThreadsTest.moc"
