@@ -41,10 +41,7 @@ class PlaybackTest : public QObject {
 
  private slots:
   void initTestCase() {
-    if (!rigging::defaultHeadAvailable())
-      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
-    rig_ = loadDefaultHeadRig();
-    QVERIFY(rig_ && rig_->blender);
+    LOAD_DEFAULT_HEAD_RIG(rig_);
     QVERIFY(dir_.isValid());
   }
 

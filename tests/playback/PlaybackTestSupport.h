@@ -3,11 +3,25 @@
 // built in memory so each test states exactly what it plays.
 #include <lacrima/common/FapAnimation.h>
 #include <lacrima/common/FapTable.h>
+#include <lacrima/playback/HeadRig.h>
+#include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/tears/ParticleSet.h>
+
+#include <QtTest>
 
 #include <cmath>
 #include <functional>
 #include <vector>
+
+// In a suite's initTestCase: rigs the default head into `rig` (a std::unique_ptr<HeadRig>),
+// or skips the suite when the head has not been fetched.
+#define LOAD_DEFAULT_HEAD_RIG(rig)                                         \
+  do {                                                                     \
+    if (!::lacrima::rigging::defaultHeadAvailable())                       \
+      QSKIP("default head not fetched (packaging/fetch-default-head.sh)"); \
+    (rig) = ::lacrima::playback::loadDefaultHeadRig();                     \
+    QVERIFY((rig) && (rig)->blender);                                      \
+  } while (false)
 
 namespace lacrima::playback::test {
 

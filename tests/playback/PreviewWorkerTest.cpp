@@ -80,12 +80,7 @@ class PreviewWorkerTest : public QObject {
   }
 
  private slots:
-  void initTestCase() {
-    if (!rigging::defaultHeadAvailable())
-      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
-    rig_ = loadDefaultHeadRig();
-    QVERIFY(rig_ && rig_->blender);
-  }
+  void initTestCase() { LOAD_DEFAULT_HEAD_RIG(rig_); }
 
   // Answering every request in turn (waiting between them) is the producer called directly:
   // particles, surface and overlays bit for bit, frame after frame.

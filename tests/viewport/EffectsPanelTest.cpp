@@ -2,6 +2,8 @@
 // (as the player and the editor wire it: edited() -> applyTo -> setScene): choosing a level or
 // an advanced option restarts the tears with the options it claims, the cost label shows the
 // mean of the frames fed to it, and display() shows a project's choice without emitting.
+#include "../playback/PlaybackTestSupport.h"
+
 #include <lacrima/playback/FrameProducer.h>
 #include <lacrima/playback/TearQualityOptions.h>
 #include <lacrima/rigging/DefaultHead.h>
@@ -47,12 +49,7 @@ class EffectsPanelTest : public QObject {
   }
 
  private slots:
-  void initTestCase() {
-    if (!rigging::defaultHeadAvailable())
-      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
-    rig_ = loadDefaultHeadRig();
-    QVERIFY(rig_ && rig_->blender);
-  }
+  void initTestCase() { LOAD_DEFAULT_HEAD_RIG(rig_); }
 
   void qualityDrivesTheProducer() {
     FrameProducer producer(*rig_);
