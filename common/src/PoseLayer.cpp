@@ -43,11 +43,6 @@ double PoseLayer::intensityAt(double seconds) const {
   return curve_.evaluate(seconds)[channelIndex(kCurveFap)];
 }
 
-double PoseLayer::offset(int index, double seconds) const {
-  if (muted || !channels_.test(index)) return 0.0;
-  return intensityAt(seconds) * pose_[index];
-}
-
 bool PoseLayer::operator==(const PoseLayer& other) const {
   if (name != other.name || muted != other.muted || channels_ != other.channels_ ||
       keys_ != other.keys_) {

@@ -44,9 +44,6 @@ class PoseLayer {
   double startTime() const { return keys_.empty() ? 0.0 : keys_.front().time; }
   double endTime() const { return keys_.empty() ? 0.0 : keys_.back().time; }
 
-  // What the layer adds to channel index i at `seconds` (before tear rounding).
-  double offset(int channelIndex, double seconds) const;
-
   bool operator==(const PoseLayer& other) const;
 
  private:
