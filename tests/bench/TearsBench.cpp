@@ -40,6 +40,7 @@ struct Options {
   SurfaceTensionModel tension = SurfaceTensionModel::Mueller;
   PressureMethod solver = SimulationOptions{}.pressureSolver;
   int pbfIterations = SimulationOptions{}.pbfIterations;
+  double pbfRelaxation = SimulationOptions{}.pbfRelaxation;
   double maxStepMs = 0;
   double substepFactor = 1;  // scales the CFL and acceleration safety factors
   int threads = 0;           // SimulationOptions::threads (0 = LACRIMA_THREADS or all)
@@ -88,6 +89,10 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
               o.solver);
   line.wholeNumber("pbf-iterations", "K", "PBF constraint iterations per sub-step (default 4).", 1,
                    100, o.pbfIterations);
+  line.number("pbf-relaxation", "E",
+              "PBF constraint force mixing epsilon in 1/h^2 (default " +
+                  QString::number(SimulationOptions{}.pbfRelaxation) + ").",
+              0, 100, o.pbfRelaxation);
   line.number("max-step", "MS", "Longest sub-step in milliseconds (default: no cap).", 0, 1000,
               o.maxStepMs);
   line.number("substep-factor", "F", "Scales the CFL and acceleration safety factors (default 1).",
@@ -155,6 +160,7 @@ int runTears(int argc, char** argv) {
   simOptions.neighbourSkin = o.skin;
   simOptions.pressureSolver = o.solver;
   simOptions.pbfIterations = o.pbfIterations;
+  simOptions.pbfRelaxation = o.pbfRelaxation;
   simOptions.maxSubstepSeconds = o.maxStepMs / 1000;
   simOptions.lambdaCfl *= o.substepFactor;
   simOptions.lambdaAcceleration *= o.substepFactor;
@@ -235,7 +241,10 @@ int runTears(int argc, char** argv) {
     json.field("neighbours", o.neighbours == NeighbourMethod::Grid ? "grid" : "octree");
     json.field("tension_model", o.tension == SurfaceTensionModel::Mueller ? "mueller" : "akinci");
     json.field("solver", pressureMethodName(o.solver));
-    if (o.solver == PressureMethod::Pbf) json.field("pbf_iterations", o.pbfIterations);
+    if (o.solver == PressureMethod::Pbf) {
+      json.field("pbf_iterations", o.pbfIterations);
+      json.field("pbf_relaxation", o.pbfRelaxation);
+    }
     json.field("max_substep_ms", o.maxStepMs);
     json.field("substep_factor", o.substepFactor);
     json.field("scene", o.head ? "default_head" : "cheek_sheet");
@@ -344,7 +353,8 @@ int runTears(int argc, char** argv) {
         c.substeps ? static_cast<double>(c.divergenceIterations) / c.substeps : 0.0,
         c.substeps ? static_cast<double>(c.densityIterations) / c.substeps : 0.0, c.solverCapped);
   if (o.solver == PressureMethod::Pbf)
-    std::printf("  PBF: %d constraint iterations per sub-step\n", o.pbfIterations);
+    std::printf("  PBF: %d constraint iterations per sub-step, epsilon %g / h^2\n", o.pbfIterations,
+                o.pbfRelaxation);
   std::printf("  neighbours within h per particle at the end: %.1f\n", neighboursPerParticle);
   std::printf("  density at the end: max %.4f, mean %.4f rho0\n", densityMax, densityMean);
   std::printf("  checkpoint %.3f ms, restore %.3f ms, %.1f kB\n", checkpointMs, restoreMs,
