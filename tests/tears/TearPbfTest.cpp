@@ -97,6 +97,24 @@ class TearPbfTest : public QObject {
     QVERIFY(c.max < w.max && c.mean < w.mean);
   }
 
+  void artificialPressurePushesClosePairsApart() {
+    // s_corr = -k h^2 (W(r) / W(0.2 h))^4 only repels: with it the drops stay finite and
+    // bounded, and less dense than without it (against compression-only constraints nothing
+    // pulls the pairs back, so it spreads them: why it is off by default).
+    const SyntheticSkin sheet = makeCheekSheet();
+    SimulationOptions o = pbfOptions();
+    o.pbfArtificialPressure = true;
+    auto with = makeSheetSimulation(sheet, {}, o);
+    runAndCheck(*with, sheet, 100, 100, 44);
+    QCOMPARE(with->counters().clamped, 0LL);
+    with = makeSheetSimulation(sheet, {}, o);
+    auto without = makeSheetSimulation(sheet, {}, pbfOptions());
+    const Compression cWith = settledCompression(*with, sheet, 150, 150, 22, 44);
+    const Compression cWithout = settledCompression(*without, sheet, 150, 150, 22, 44);
+    qInfo("rho/rho0 max: %.4f with s_corr, %.4f without", cWith.max, cWithout.max);
+    QVERIFY(cWith.max < cWithout.max);
+  }
+
   void moreIterationsLeaveLessCompression() {
     // One sweep corrects only part of the compression (Jacobi); eight leave measurably less.
     const SyntheticSkin sheet = makeCheekSheet();

@@ -9,8 +9,8 @@ namespace lacrima::tears {
 
 namespace {
 
-// The paper's artificial pressure: k = 0.1, n = 4, at dq = 0.2 h.
-constexpr float kScorrStrength = 0.1f;
+// The paper's artificial pressure: k = 0.1 (times h^2, lambda's scale), n = 4, at dq = 0.2 h.
+constexpr double kScorrStrength = 0.1;
 constexpr double kScorrDistance = 0.2;
 
 Float4 toFloat4(const Eigen::Vector3d& v) {
@@ -25,6 +25,7 @@ PressureSolver_PBF::PressureSolver_PBF(double h, const PositionBasedSettings& se
   epsilon_ = static_cast<float>(std::max(0.0, settings.relaxation) / (h * h));
   const double dq = kScorrDistance * h;
   scorrScale_ = static_cast<float>(1.0 / density_.value(dq * dq));
+  scorrStrength_ = static_cast<float>(kScorrStrength * h * h);
 }
 
 void PressureSolver_PBF::computePressures(ParticleSet& p, const ActivePairs&, double,
@@ -85,7 +86,7 @@ double PressureSolver_PBF::constraints(const ActivePairs& pairs, std::span<const
       diagonal_[j] += mi * mi * gg;
       if (scorr) {
         const float ratio = w * scorrScale_, ratio2 = ratio * ratio;
-        scorr_[k] = -kScorrStrength * ratio2 * ratio2;
+        scorr_[k] = -scorrStrength_ * ratio2 * ratio2;
       }
     }
     rho_[i] += rhoI;

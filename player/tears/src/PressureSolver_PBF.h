@@ -26,9 +26,14 @@
 // As with the other solvers only compression is corrected: at the free surface (almost every
 // particle of a tear) the density deficit is not an error, cohesion is surface tension's job.
 // The artificial pressure of the paper,
-//   s_corr,ij = -k (W_poly6(r_ij) / W_poly6(dq))^n,   k = 0.1, n = 4, dq = 0.2 h,
-// pushes close pairs apart against the tensile instability; with compression-only constraints
-// the clumping it fights is rare, so it is optional (SimulationOptions::pbfArtificialPressure).
+//   s_corr,ij = -k h^2 (W_poly6(r_ij) / W_poly6(dq))^n,   k = 0.1, n = 4, dq = 0.2 h,
+// (the paper's k = 0.1 is in its own units; lambda scales as h^2 here, since the denominator
+// sum |grad C|^2 is about 1.5 / h^2, so s_corr at dq is what lambda is for a compression of 15%)
+// pushes close pairs apart against the tensile instability. With compression-only constraints
+// the clumping it fights does not show, and nothing pulls the pairs it pushes back (the
+// constraint never acts on a stretched particle), so it spreads the drops (max rho/rho0 0.62 on
+// the sheet, test_tears_pbf): optional and off by default
+// (SimulationOptions::pbfArtificialPressure).
 //
 // Skin contacts: a touching particle's correction loses its part into the skin (along the
 // normal of the triangle it touches), as DFSPH's density solve does with its acceleration, so
@@ -105,7 +110,7 @@ class PressureSolver_PBF final : public PressureSolver {
   PositionBasedSettings settings_;
   PositionBasedStats stats_;
   PressureHistory history_;
-  float epsilon_ = 0, scorrScale_ = 0;
+  float epsilon_ = 0, scorrScale_ = 0, scorrStrength_ = 0;
   std::vector<Eigen::Vector3d> contactNormal_;
   std::vector<float> g_, scorr_;  // per pair: 4 floats g_ij; s_corr,ij
   std::vector<float> m_, rho_, lambda_, diagonal_;
