@@ -38,8 +38,8 @@ double PressureSolver_PBF::accelerationBound(double largestFluidAcceleration) co
                                            : largestFluidAcceleration;
 }
 
-double PressureSolver_PBF::constraints(const ActivePairs& pairs, std::span<const std::uint64_t> ids,
-                                       int n) {
+void PressureSolver_PBF::constraints(const ActivePairs& pairs, std::span<const std::uint64_t> ids,
+                                     int n) {
   const auto un = static_cast<std::size_t>(n);
   const float h = static_cast<float>(gradient_.radius()), h2 = h * h;
   const float wCoefficient = static_cast<float>(density_.valueCoefficient());
@@ -93,16 +93,11 @@ double PressureSolver_PBF::constraints(const ActivePairs& pairs, std::span<const
     store4(&sum_[4 * i], load4(&sum_[4 * i]) + sumI);
     diagonal_[i] += diagonalI;
   }
-  double total = 0, largest = 0;
   for (std::size_t i = 0; i < un; ++i) {
     const float c = std::max(rho_[i] - 1.0f, 0.0f);  // rho0 = 1
     const Float4 s = load4(&sum_[4 * i]);
     lambda_[i] = c > 0 ? -c / (dot3(s, s) + diagonal_[i] + epsilon_) : 0.0f;
-    total += c;
-    largest = std::max(largest, static_cast<double>(c));
   }
-  stats_.maxCompression = largest;
-  return total;
 }
 
 void PressureSolver_PBF::correct(const ActivePairs& pairs,
@@ -158,12 +153,10 @@ void PressureSolver_PBF::solve(ParticleSet& p, const ActivePairs& pairs, double 
     store4(&d_[4 * i], toFloat4(dt * p.velocity[i]));
   }
   start_ = d_;
-  double total = 0;
   for (int iteration = 0; iteration < settings_.iterations; ++iteration) {
-    total = constraints(pairs, p.id, n);
+    constraints(pairs, p.id, n);
     correct(pairs, contactNormal, n);
   }
-  stats_.meanCompression = total / n;
 
   // v_i = d_i / dt: only the correction is in float, the velocities keep double precision.
   double maxNet2 = 0;

@@ -47,8 +47,10 @@
 // Time step: no speed of sound (soundSpeed() = 0) and, as DFSPH, the acceleration bound is the
 // last sub-step's net acceleration a_i + dp_i / dt^2 (without what pushes into the skin), so
 // the step is set by relative motion and by the balance of tension and the constraint, not by
-// tension alone. The sub-step factor (lambda_c, lambda_a) may be raised further for PBF: the
-// iterations keep the density bounded however long the step (lacrima-bench tears-sweep).
+// tension alone. A larger sub-step factor (lambda_c, lambda_a) gives PBF fewer sub-steps (x3:
+// 8 a frame instead of 19 at 1,000 particles on the sheet), but then drops compress again (max
+// rho/rho0 1.75), since pairs closing in from beyond h are not constrained within the step
+// (docs/decisions/0016).
 //
 // Passes run in single precision over Float4 copies, serially in particle order: results are
 // bitwise reproducible whatever the thread count.
@@ -67,8 +69,6 @@ struct PositionBasedSettings {
 };
 
 struct PositionBasedStats {
-  // Largest relative compression max(0, rho_i - 1) left after the last sweep, and the mean.
-  double maxCompression = 0, meanCompression = 0;
   // Largest |a_i + dp_i / dt^2| of the last solve, without what pushes a touching particle into
   // the skin (the step's acceleration bound, as DFSPH's).
   double maxNetAcceleration = 0;
@@ -99,9 +99,8 @@ class PressureSolver_PBF final : public PressureSolver {
   const PositionBasedSettings& settings() const { return settings_; }
 
  private:
-  // Densities, pair gradients and lambda at the current predicted displacements; returns the
-  // summed compression (for the stats).
-  double constraints(const ActivePairs& pairs, std::span<const std::uint64_t> ids, int n);
+  // Densities, pair gradients and lambda at the current predicted displacements.
+  void constraints(const ActivePairs& pairs, std::span<const std::uint64_t> ids, int n);
   // dp from lambda (and s_corr), without its part into the skin, added to the displacements.
   void correct(const ActivePairs& pairs, std::span<const Eigen::Vector3d> contactNormal, int n);
 
