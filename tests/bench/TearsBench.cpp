@@ -39,6 +39,8 @@ struct Options {
   NeighbourMethod neighbours = NeighbourMethod::Grid;
   SurfaceTensionModel tension = SurfaceTensionModel::Mueller;
   PressureMethod solver = SimulationOptions{}.pressureSolver;
+  int pbfIterations = SimulationOptions{}.pbfIterations;
+  double pbfRelaxation = SimulationOptions{}.pbfRelaxation;
   double maxStepMs = 0;
   double substepFactor = 1;  // scales the CFL and acceleration safety factors
   int threads = 0;           // SimulationOptions::threads (0 = LACRIMA_THREADS or all)
@@ -78,8 +80,19 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   line.choice("tension", "Surface tension model (default mueller).",
               {{"mueller", SurfaceTensionModel::Mueller}, {"akinci", SurfaceTensionModel::Akinci}},
               o.tension);
-  line.choice("solver", "Pressure solver: wcsph (equation of state) or dfsph (divergence-free).",
-              {{"wcsph", PressureMethod::Wcsph}, {"dfsph", PressureMethod::Dfsph}}, o.solver);
+  line.choice("solver",
+              "Pressure solver: wcsph (equation of state), dfsph (divergence-free) or pbf "
+              "(position-based).",
+              {{"wcsph", PressureMethod::Wcsph},
+               {"dfsph", PressureMethod::Dfsph},
+               {"pbf", PressureMethod::Pbf}},
+              o.solver);
+  line.wholeNumber("pbf-iterations", "K", "PBF constraint iterations per sub-step (default 4).", 1,
+                   100, o.pbfIterations);
+  line.number("pbf-relaxation", "E",
+              "PBF constraint force mixing epsilon in 1/h^2 (default " +
+                  QString::number(SimulationOptions{}.pbfRelaxation) + ").",
+              0, 100, o.pbfRelaxation);
   line.number("max-step", "MS", "Longest sub-step in milliseconds (default: no cap).", 0, 1000,
               o.maxStepMs);
   line.number("substep-factor", "F", "Scales the CFL and acceleration safety factors (default 1).",
@@ -146,6 +159,8 @@ int runTears(int argc, char** argv) {
   simOptions.surfaceTension = o.tension;
   simOptions.neighbourSkin = o.skin;
   simOptions.pressureSolver = o.solver;
+  simOptions.pbfIterations = o.pbfIterations;
+  simOptions.pbfRelaxation = o.pbfRelaxation;
   simOptions.maxSubstepSeconds = o.maxStepMs / 1000;
   simOptions.lambdaCfl *= o.substepFactor;
   simOptions.lambdaAcceleration *= o.substepFactor;
@@ -203,6 +218,14 @@ int runTears(int argc, char** argv) {
   const double neighboursPerParticle =
       p.empty() ? 0.0 : static_cast<double>(finalList.indices.size()) / p.size();
   const double octreeRate = searchRate(octree, p.position, sim.kernelRadius());
+  // Compression at the start of the last sub-step, rho / rho0 (rho0 = 1): what the pressure
+  // solver left.
+  double densityMax = 0, densitySum = 0;
+  for (const double rho : p.density) {
+    densityMax = std::max(densityMax, rho);
+    densitySum += rho;
+  }
+  const double densityMean = p.empty() ? 0.0 : densitySum / p.size();
   const double n = o.frames;
   const TearCounters& c = sim.counters();
   const double target = o.particles <= 100 ? 1.0 : (o.particles >= 10000 ? 1000.0 / 22.0 : 0);
@@ -217,7 +240,11 @@ int runTears(int argc, char** argv) {
     json.field("fps", o.fps);
     json.field("neighbours", o.neighbours == NeighbourMethod::Grid ? "grid" : "octree");
     json.field("tension_model", o.tension == SurfaceTensionModel::Mueller ? "mueller" : "akinci");
-    json.field("solver", o.solver == PressureMethod::Wcsph ? "wcsph" : "dfsph");
+    json.field("solver", pressureMethodName(o.solver));
+    if (o.solver == PressureMethod::Pbf) {
+      json.field("pbf_iterations", o.pbfIterations);
+      json.field("pbf_relaxation", o.pbfRelaxation);
+    }
     json.field("max_substep_ms", o.maxStepMs);
     json.field("substep_factor", o.substepFactor);
     json.field("scene", o.head ? "default_head" : "cheek_sheet");
@@ -280,6 +307,8 @@ int runTears(int argc, char** argv) {
     json.field("checkpoint_bytes", static_cast<long long>(checkpointBytes));
     json.field("kernel_radius", sim.kernelRadius());
     json.field("neighbours_per_particle", neighboursPerParticle);
+    json.field("density_max", densityMax);
+    json.field("density_mean", densityMean);
     json.field("all_finite", finite);
     json.field("max_distance", maxDistance);
     json.endObject();
@@ -291,7 +320,9 @@ int runTears(int argc, char** argv) {
       "tears on the %s: %d particles requested, %d alive, %d frames at %g fps, %s, %s neighbours, "
       "%s tension%s, %d thread%s\n",
       scene->name.c_str(), o.particles, p.size(), o.frames, o.fps,
-      o.solver == PressureMethod::Wcsph ? "WCSPH" : "DFSPH",
+      o.solver == PressureMethod::Wcsph   ? "WCSPH"
+      : o.solver == PressureMethod::Dfsph ? "DFSPH"
+                                          : "PBF",
       o.neighbours == NeighbourMethod::Grid ? "grid" : "octree",
       o.tension == SurfaceTensionModel::Mueller ? "Mueller" : "Akinci", o.sway ? ", swaying" : "",
       sim.threads(), sim.threads() == 1 ? "" : "s");
@@ -321,7 +352,11 @@ int runTears(int argc, char** argv) {
         "  DFSPH: %.2f divergence and %.2f density sweeps per sub-step, %lld solves capped\n",
         c.substeps ? static_cast<double>(c.divergenceIterations) / c.substeps : 0.0,
         c.substeps ? static_cast<double>(c.densityIterations) / c.substeps : 0.0, c.solverCapped);
+  if (o.solver == PressureMethod::Pbf)
+    std::printf("  PBF: %d constraint iterations per sub-step, epsilon %g / h^2\n", o.pbfIterations,
+                o.pbfRelaxation);
   std::printf("  neighbours within h per particle at the end: %.1f\n", neighboursPerParticle);
+  std::printf("  density at the end: max %.4f, mean %.4f rho0\n", densityMax, densityMean);
   std::printf("  checkpoint %.3f ms, restore %.3f ms, %.1f kB\n", checkpointMs, restoreMs,
               checkpointBytes / 1024.0);
   std::printf(

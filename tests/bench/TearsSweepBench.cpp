@@ -17,8 +17,8 @@
 //                 relative surface area difference.
 // The cube-size series runs extra meshers on the reference simulation, so its particles are the
 // reference's and its error is the surface discretisation alone; its ms per frame is that
-// simulation + trails + its own mesher. The reference is WCSPH: DFSPH rows include the model's
-// difference (an incompressible fluid against one with a 0.2 m/s speed of sound).
+// simulation + trails + its own mesher. The reference is WCSPH: DFSPH and PBF rows include the
+// model's difference (an incompressible fluid against one with a 0.2 m/s speed of sound).
 #include "BenchCommandLine.h"
 #include "SweepPlot.h"
 #include "TearsPipeline.h"
@@ -64,7 +64,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
       "Error against a fine reference run beside ms per frame of the full tear pipeline\n"
       "(simulation + surface + trails) on the cheek sheet or the default head, sweeping the\n"
       "sub-step safety factor, the kernel size, the cube size, the neighbour structure and\n"
-      "the pressure solver (WCSPH, DFSPH).");
+      "the pressure solver (WCSPH, DFSPH, PBF).");
   line.wholeNumber("particles", "N", "Particles in all (default 200).", 1, 2 * kMaxTearParticles,
                    o.particles);
   line.wholeNumber("frames", "F", "Frames at 22 fps (default 66).", 1, 100000, o.frames);
@@ -313,6 +313,11 @@ int runTearsSweep(int argc, char** argv) {
                     NeighbourMethod::Grid,    PressureMethod::Dfsph};
     rows.push_back(compare(v, run(scene, v, o), ref, radius, cell));
   }
+  for (double s : {1.0, 2.0, 3.0}) {  // PBF at its default iterations, then fewer sub-steps
+    const Variant v{"PBF, sub-step factor", scaleLabel(s),      s, 1, 1,
+                    NeighbourMethod::Grid,  PressureMethod::Pbf};
+    rows.push_back(compare(v, run(scene, v, o), ref, radius, cell));
+  }
   for (double s : {0.5, 0.75, 1.0, 1.5}) {
     const Variant v{"kernel size", scaleLabel(s), 1, s, 1, NeighbourMethod::Grid};
     rows.push_back(compare(v, run(scene, v, o), ref, radius, cell));
@@ -350,11 +355,11 @@ int runTearsSweep(int argc, char** argv) {
     for (const Row& r : rows) {
       const Variant& v = r.variant;
       csv << (o.head ? "default_head" : "cheek_sheet") << ',' << v.series << ',' << v.label << ','
-          << (v.solver == PressureMethod::Wcsph ? "wcsph" : "dfsph") << ',' << v.lambdaScale << ','
-          << v.kernelScale << ',' << v.cubeScale << ','
-          << (v.neighbours == NeighbourMethod::Grid ? "grid" : "octree") << ',' << r.msPerFrame
-          << ',' << r.substepsPerFrame << ',' << r.particleRms << ',' << r.centroidError << ','
-          << r.surfaceError << ',' << r.areaDifference << ',' << r.matched << '\n';
+          << pressureMethodName(v.solver) << ',' << v.lambdaScale << ',' << v.kernelScale << ','
+          << v.cubeScale << ',' << (v.neighbours == NeighbourMethod::Grid ? "grid" : "octree")
+          << ',' << r.msPerFrame << ',' << r.substepsPerFrame << ',' << r.particleRms << ','
+          << r.centroidError << ',' << r.surfaceError << ',' << r.areaDifference << ',' << r.matched
+          << '\n';
     }
     if (!csv) {
       std::fprintf(stderr, "tears-sweep: cannot write %s\n", o.csv.c_str());

@@ -105,7 +105,7 @@ ProjectDocument randomDocument(unsigned seed) {
   scene.redness = coin(random) ? SceneSettings::Redness::Tears : SceneSettings::Redness::Animation;
   scene.simulation = randomSimulation(random);
   scene.quality.level = static_cast<TearQuality>(random() % 3);
-  if (coin(random)) scene.quality.solver = coin(random) ? TearSolver::Dfsph : TearSolver::Wcsph;
+  if (coin(random)) scene.quality.solver = static_cast<TearSolver>(random() % 3);
   if (coin(random))
     scene.quality.tension = coin(random) ? TearTension::Akinci : TearTension::Mueller;
   if (coin(random))
@@ -281,6 +281,14 @@ class ProjectDocumentTest : public QObject {
     QVERIFY(QString::fromStdString(read.toJson()).contains("\"neighbours\": \"grid\""));
     QVERIFY(ProjectDocument::fromJson(withTopLevel(""), kDisplayName).scene.quality ==
             TearQualitySettings{});
+
+    // Position-based fluids: written as "pbf", read back as written.
+    document.scene.quality.solver = TearSolver::Pbf;
+    const std::string pbf = document.toJson();
+    QVERIFY(QString::fromStdString(pbf).contains("\"solver\": \"pbf\""));
+    QVERIFY(ProjectDocument::fromJson(pbf, kDisplayName) == document);
+    QVERIFY(ProjectDocument::fromJson(withScene2(R"("solver": "pbf")"), kDisplayName)
+                .scene.quality.solver == TearSolver::Pbf);
   }
 
   void minimalDocumentGetsDefaults() {
@@ -435,7 +443,7 @@ class ProjectDocumentTest : public QObject {
         << "scene.quality: expected \"preview\", \"balanced\" or \"reference\", got 2";
     QTest::newRow("unknown solver")
         << QString::fromStdString(withScene2(R"("solver": "pcisph")")) << "doc.json:1:67"
-        << "scene.solver: expected \"wcsph\" or \"dfsph\", got \"pcisph\"";
+        << "scene.solver: expected \"wcsph\", \"dfsph\" or \"pbf\", got \"pcisph\"";
     QTest::newRow("unknown tension model")
         << QString::fromStdString(withScene2(R"("quality": "preview", "tension": "Akinci")"))
         << "doc.json:1:89"

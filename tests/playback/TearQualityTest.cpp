@@ -99,15 +99,23 @@ class TearQualityTest : public QObject {
     QVERIFY(o.pressureSolver == tears::PressureMethod::Wcsph);
     QVERIFY(o.surfaceTension == tears::SurfaceTensionModel::Mueller);
     QVERIFY(o.neighbours == tears::NeighbourMethod::Grid);
+    // Position-based fluids replace the level's solver only.
+    o = simulationOptions({TearQuality::Balanced, TearSolver::Pbf, {}, {}});
+    QVERIFY(o.pressureSolver == tears::PressureMethod::Pbf);
+    QCOMPARE(o.lambdaCfl, simulationOptions({}).lambdaCfl);
+    QVERIFY(o.surfaceTension == tears::SurfaceTensionModel::Mueller);
   }
 
   void producerRunsEveryLevelFinite_data() {
     QTest::addColumn<int>("level");
-    QTest::addColumn<int>("advanced");  // 0: the level's own; 1: DFSPH, Akinci and the octree
+    // 0: the level's own; 1: DFSPH, Akinci and the octree; 2: PBF
+    QTest::addColumn<int>("advanced");
     for (TearQuality level : kLevels) {
       const std::string name(toString(level));
       QTest::newRow(name.c_str()) << static_cast<int>(level) << 0;
       QTest::newRow((name + ", dfsph akinci octree").c_str()) << static_cast<int>(level) << 1;
+      if (level == TearQuality::Balanced)
+        QTest::newRow((name + ", pbf").c_str()) << static_cast<int>(level) << 2;
     }
   }
 
@@ -116,7 +124,8 @@ class TearQualityTest : public QObject {
     QFETCH(int, advanced);
     if (!loadRig()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
     TearQualitySettings quality{static_cast<TearQuality>(level), {}, {}, {}};
-    if (advanced) {
+    if (advanced == 2) quality.solver = TearSolver::Pbf;
+    if (advanced == 1) {
       quality.solver = TearSolver::Dfsph;
       quality.tension = TearTension::Akinci;
       quality.neighbours = TearNeighbours::Octree;

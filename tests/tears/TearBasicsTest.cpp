@@ -470,6 +470,8 @@ class TearBasicsTest : public QObject {
                             << static_cast<int>(PressureMethod::Wcsph);
     QTest::newRow("grid, DFSPH") << static_cast<int>(NeighbourMethod::Grid)
                                  << static_cast<int>(PressureMethod::Dfsph);
+    QTest::newRow("grid, PBF") << static_cast<int>(NeighbourMethod::Grid)
+                               << static_cast<int>(PressureMethod::Pbf);
   }
 
   void checkpointRestoreRepeatsTheFutureBitwise() {

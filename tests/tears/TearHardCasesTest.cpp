@@ -2,8 +2,8 @@
 // Every case runs a few simulated seconds on the generated cheek sheet (or, for skin facing
 // down, under a chin-sized sphere) and checks, at every frame: finite state, every particle
 // inside a box around the surface, the commanded count, and (on a still surface) kinetic
-// energy bounded by the potential energy gravity released. Each case runs with both pressure
-// solvers (WCSPH and DFSPH).
+// energy bounded by the potential energy gravity released. Each case runs with every pressure
+// solver (WCSPH, DFSPH and PBF).
 #include "TearTestSupport.h"
 
 #include <QtTest>
@@ -15,9 +15,11 @@ using namespace lacrima::tears::testing;
 
 namespace {
 
-constexpr PressureMethod kSolvers[] = {PressureMethod::Wcsph, PressureMethod::Dfsph};
+constexpr std::array kSolvers{PressureMethod::Wcsph, PressureMethod::Dfsph, PressureMethod::Pbf};
 
-const char* nameOf(PressureMethod s) { return s == PressureMethod::Wcsph ? "WCSPH" : "DFSPH"; }
+const char* nameOf(PressureMethod s) {
+  return s == PressureMethod::Wcsph ? "WCSPH" : s == PressureMethod::Dfsph ? "DFSPH" : "PBF";
+}
 
 TearSettings with(std::initializer_list<std::pair<const char*, double>> values) {
   TearSettings s;
@@ -38,7 +40,7 @@ class TearHardCasesTest : public QObject {
   // `counters`, when given: each solver's counters at the end.
   void runCaseOn(const SyntheticSkin& skin, const TearSettings& settings, int left, int right,
                  int frames, SimulationOptions options = {},
-                 std::array<TearCounters, 2>* counters = nullptr) {
+                 std::array<TearCounters, kSolvers.size()>* counters = nullptr) {
     for (PressureMethod solver : kSolvers) {
       options.pressureSolver = solver;
       auto sim = makeSheetSimulation(skin, settings, options);
@@ -111,14 +113,14 @@ class TearHardCasesTest : public QObject {
   void overhang() {
     QFETCH(QString, parameter);
     QFETCH(double, value);
-    std::array<TearCounters, 2> counters;
+    std::array<TearCounters, kSolvers.size()> counters;
     ChinSphereOptions chin;
     chin.sourceDegrees = -20;
     runCaseOn(makeChinSphere(chin), with({{parameter.toUtf8().constData(), value}}), 60, 60, 88, {},
               &counters);
     if (QTest::currentTestFailed()) return;
-    qInfo("contacts let go: %lld (WCSPH), %lld (DFSPH)", counters[0].releasedContacts,
-          counters[1].releasedContacts);
+    qInfo("contacts let go: %lld (WCSPH), %lld (DFSPH), %lld (PBF)", counters[0].releasedContacts,
+          counters[1].releasedContacts, counters[2].releasedContacts);
     // 120 particles (about 60 uL) let go at the default adhesion and below; 5 and 50 times
     // the holding tension keep them.
     const bool sticky = parameter == "adhesion" && value >= 100;

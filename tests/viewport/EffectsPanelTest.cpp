@@ -94,6 +94,14 @@ class EffectsPanelTest : public QObject {
     QCOMPARE(producer.particleCount(), 0);
     play(producer, panel, 3);
     QVERIFY(producer.particleCount() > 0);
+    QCOMPARE(panel.solver()->count(), 1 + static_cast<int>(kTearSolverNames.size()));
+    panel.solver()->setCurrentIndex(1 + static_cast<int>(TearSolver::Pbf));
+    QVERIFY(producer.scene().quality.solver == TearSolver::Pbf);
+    QVERIFY(producer.simulationOptions().pressureSolver == tears::PressureMethod::Pbf);
+    QCOMPARE(panel.solver()->currentText(), QStringLiteral("PBF"));
+    QCOMPARE(producer.particleCount(), 0);  // restarted with the new solver
+    play(producer, panel, 3);
+    QVERIFY(producer.particleCount() > 0);
     panel.solver()->setCurrentIndex(0);  // back to the level's own
     QVERIFY(!producer.scene().quality.solver);
     QVERIFY(producer.simulationOptions().pressureSolver == tears::PressureMethod::Wcsph);

@@ -54,8 +54,9 @@ tears::SimulationOptions simulationOptions(const TearQualitySettings& quality) {
   options.surfaceTension = level.tension;
   options.neighbours = level.neighbours;
   if (quality.solver)
-    options.pressureSolver =
-        *quality.solver == TearSolver::Dfsph ? PressureMethod::Dfsph : PressureMethod::Wcsph;
+    options.pressureSolver = *quality.solver == TearSolver::Dfsph ? PressureMethod::Dfsph
+                             : *quality.solver == TearSolver::Pbf ? PressureMethod::Pbf
+                                                                  : PressureMethod::Wcsph;
   if (quality.tension)
     options.surfaceTension = *quality.tension == TearTension::Akinci ? SurfaceTensionModel::Akinci
                                                                      : SurfaceTensionModel::Mueller;

@@ -1,8 +1,8 @@
 #pragma once
 // Sub-step size for one SPH step, the smallest of:
 //   CFL:           dt <= lambda_c h / (c + u_max)   u_max: largest neighbour relative speed,
-//                  c: the pressure solver's speed of sound, 0 for DFSPH (pressure waves cross a
-//                  kernel);
+//                  c: the pressure solver's speed of sound, 0 for DFSPH and PBF (no pressure
+//                  waves to cross a kernel);
 //   acceleration:  dt <= lambda_a sqrt(h / a_max)   a_max: largest fluid acceleration (pressure,
 //                  tension), so no particle is thrown across a kernel radius by a force spike;
 //   viscosity:     dt <= lambda_v / k_max           k_max: largest viscosity relaxation rate

@@ -1,5 +1,6 @@
 #include "PressureSolver.h"
 #include "PressureSolver_DFSPH.h"
+#include "PressureSolver_PBF.h"
 #include "PressureSolver_WCSPH.h"
 
 #include <algorithm>
@@ -13,6 +14,13 @@ std::unique_ptr<PressureSolver> PressureSolver::create(PressureMethod method,
   if (method == PressureMethod::Wcsph)
     return std::make_unique<PressureSolver_WCSPH>(p.stiffness, p.restDensity, p.soundSpeed,
                                                   options.clampNegativePressure);
+  if (method == PressureMethod::Pbf) {
+    PositionBasedSettings pbf;
+    pbf.iterations = std::max(1, options.pbfIterations);
+    pbf.relaxation = options.pbfRelaxation;
+    pbf.artificialPressure = options.pbfArtificialPressure;
+    return std::make_unique<PressureSolver_PBF>(p.h, pbf);
+  }
   // The pressure parameter sets how tight the solves are: ten times the default pressure, ten
   // times tighter (SimulationOptions::dfsphTolerance).
   DivergenceFreeSettings dfsph;

@@ -1,14 +1,15 @@
 #pragma once
 // Pressure: what keeps the fluid from compressing, chosen by SimulationOptions::pressureSolver
-// (PressureMethod). Two methods, each in its own class named after its method:
+// (PressureMethod). Three methods, each in its own class named after its method:
 //   PressureSolver_WCSPH.h  a stiff equation of state (weakly compressible SPH, the default);
-//   PressureSolver_DFSPH.h  divergence-free SPH, two iterative velocity solves.
+//   PressureSolver_DFSPH.h  divergence-free SPH, two iterative velocity solves;
+//   PressureSolver_PBF.h    position-based fluids, density constraints on the predicted positions.
 // A sub-step of TearSimulation calls the solver at two points:
 //   1. computePressures(), after the densities (DensitySolver.h) and before the force pass:
 //      leaves in particles.pressure what the force pass turns into the symmetric pressure force
 //      (FluidForcePass.h), and may correct the velocities (DFSPH's divergence solve);
 //   2. correctVelocities(), once the non-pressure forces are in the velocities and before the
-//      skin contact constraint (DFSPH's density solve).
+//      skin contact constraint (DFSPH's density solve, PBF's position solve).
 // Between them the sub-step's length is chosen (AdaptiveTimeStep.h) with the solver's speed of
 // sound and the acceleration it says bounds the step.
 #include "PairList.h"
@@ -26,7 +27,7 @@ namespace lacrima::tears {
 // What a pressure solver carries from one sub-step to the next (saved in checkpoints).
 struct PressureHistory {
   double lastSubstep = 0;           // DFSPH: the divergence solve's expected step (0: none yet)
-  double lastNetAcceleration = -1;  // DFSPH: of the last sub-step (-1: none yet)
+  double lastNetAcceleration = -1;  // DFSPH, PBF: of the last sub-step (-1: none yet)
 };
 
 class PressureSolver {

@@ -116,10 +116,11 @@ void EffectsPanel::buildQuality() {
   advanced_->setToolTip(tr("Choose the solver, surface tension and neighbour search yourself"));
   advanced_->setFocusPolicy(Qt::TabFocus);
   const QString level = tr("as the level");
-  solver_ = combo({level, tr("WCSPH"), tr("DFSPH")},
-                  tr("Pressure: weakly compressible SPH (2009, the levels' own) or "
+  solver_ = combo({level, tr("WCSPH"), tr("DFSPH"), tr("PBF")},
+                  tr("Pressure: weakly compressible SPH (2009, the levels' own), "
                      "divergence-free SPH (drops cling harder; about twice the cost per "
-                     "sub-step)"),
+                     "sub-step) or position-based fluids (density constraints, a fixed number "
+                     "of iterations per sub-step)"),
                   this);
   tension_ = combo({level, tr("Müller"), tr("Akinci")},
                    tr("Surface tension: the colour-field curvature of Müller et al. 2003 (the "

@@ -14,7 +14,7 @@
 //              "redness": "animation" | "tears", "blush": false,
 //              "simulation": { "adhesion": 20, ... },            (overrides of TearParameters)
 //              "quality": "preview" | "balanced" | "reference",     (version 2; optional, each;
-//              "solver": "wcsph" | "dfsph",                          absent = balanced and the
+//              "solver": "wcsph" | "dfsph" | "pbf",                  absent = balanced and the
 //              "tension": "mueller" | "akinci",                      level's own choices;
 //              "neighbours": "grid" | "octree" },                    TearQuality.h)
 //   "head": { "mesh": "heads/ict.obj", "fdp": "heads/ict.fdp.json" }, (optional; absent = the

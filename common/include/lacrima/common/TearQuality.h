@@ -14,7 +14,8 @@ namespace lacrima::inline common {
 // Balanced: the defaults every project had before the choice existed.
 // Reference: shorter sub-steps (slower, closest to a fine reference run).
 enum class TearQuality { Preview, Balanced, Reference };
-enum class TearSolver { Wcsph, Dfsph };      // weakly compressible or divergence-free SPH
+// Weakly compressible SPH, divergence-free SPH or position-based fluids.
+enum class TearSolver { Wcsph, Dfsph, Pbf };
 enum class TearTension { Mueller, Akinci };  // colour-field curvature, or cohesion + curvature
 enum class TearNeighbours { Grid, Octree };  // Verlet lists on a grid, or the 2009 octree
 
@@ -29,10 +30,10 @@ struct TearQualitySettings {
 };
 
 // The names used in project files and on the command line, in enum order:
-// "preview" "balanced" "reference"; "wcsph" "dfsph"; "mueller" "akinci"; "grid" "octree".
+// "preview" "balanced" "reference"; "wcsph" "dfsph" "pbf"; "mueller" "akinci"; "grid" "octree".
 inline constexpr std::array<std::string_view, 3> kTearQualityNames{"preview", "balanced",
                                                                    "reference"};
-inline constexpr std::array<std::string_view, 2> kTearSolverNames{"wcsph", "dfsph"};
+inline constexpr std::array<std::string_view, 3> kTearSolverNames{"wcsph", "dfsph", "pbf"};
 inline constexpr std::array<std::string_view, 2> kTearTensionNames{"mueller", "akinci"};
 inline constexpr std::array<std::string_view, 2> kTearNeighbourNames{"grid", "octree"};
 

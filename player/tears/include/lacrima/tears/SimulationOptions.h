@@ -14,8 +14,16 @@ enum class NeighbourMethod { Grid, Octree };
 // SPH, WCSPH: Müller et al. 2003's p = k (rho - rho0) in Monaghan's 1994 regime; sub-steps
 // bound by the speed of sound), or divergence-free
 // SPH (DFSPH, Bender & Koschier 2015/2017: two iterative solves per sub-step, sub-steps bound
-// by relative motion and by the net fluid acceleration of the previous sub-step).
-enum class PressureMethod { Wcsph, Dfsph };
+// by relative motion and by the net fluid acceleration of the previous sub-step), or position-based
+// fluids (PBF, Macklin & Müller 2013: a fixed number of density-constraint iterations on the
+// predicted positions, sub-steps bound as DFSPH's).
+enum class PressureMethod { Wcsph, Dfsph, Pbf };
+// "wcsph", "dfsph", "pbf": the names of the command lines and of tears-sweep's CSV.
+inline const char* pressureMethodName(PressureMethod method) {
+  return method == PressureMethod::Wcsph   ? "wcsph"
+         : method == PressureMethod::Dfsph ? "dfsph"
+                                           : "pbf";
+}
 
 // Surface tension: the colour-field curvature force of Müller et al. 2003, or the cohesion and
 // curvature forces of Akinci et al. 2013.
@@ -38,6 +46,12 @@ struct SimulationOptions {
   // [1e-4, 0.1]. The divergence solve uses the same tolerance per step.
   double dfsphTolerance = 0.01;
   int dfsphMaxIterations = 50;
+  // PBF: constraint iterations per sub-step, the constraint force mixing epsilon h^2, and the
+  // artificial pressure s_corr against the tensile instability (PressureSolver_PBF.h). The
+  // pressure parameter has no meaning for PBF: the constraint is as stiff as the iterations.
+  int pbfIterations = 4;
+  double pbfRelaxation = 1.0;
+  bool pbfArtificialPressure = false;
   // Longest sub-step allowed, seconds (0 = only the stability limits bound it). DFSPH has no
   // sound-speed limit, so this caps how far the fluid moves between collision passes.
   double maxSubstepSeconds = 0;

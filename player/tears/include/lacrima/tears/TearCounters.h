@@ -11,7 +11,8 @@ struct TearCounters {
   long long substeps = 0;
   long long clamped = 0;         // particle accelerations/velocities clamped (last resort)
   long long substepCapHits = 0;  // sub-steps that wanted to be shorter than the cap allows
-  long long divergenceIterations = 0, densityIterations = 0;  // DFSPH Jacobi sweeps
+  // DFSPH Jacobi sweeps; PBF constraint sweeps count as density sweeps
+  long long divergenceIterations = 0, densityIterations = 0;
   long long solverCapped = 0;  // DFSPH solves stopped at the iteration cap
   // Which limit set each sub-step (the adaptive time step); the rest ended the frame.
   long long cflLimited = 0, accelerationLimited = 0, viscosityLimited = 0;
