@@ -45,6 +45,7 @@ SlideRun runSlide(const SlideSetup& setup) {
   options.pressureSolver = setup.solver;
   options.threads = setup.threads;
   options.headHeight = kHeadHeight;
+  if (!setup.trailLoss) options.trailDecayMetres = 1e12;  // e-folds after 10^12 m: none
   options.lambdaCfl = defaults.lambdaCfl * setup.lambdaScale;
   options.lambdaAcceleration = defaults.lambdaAcceleration * setup.lambdaScale;
   options.lambdaViscosity = std::min(defaults.lambdaViscosity,
@@ -92,6 +93,9 @@ SlideRun runSlide(const SlideSetup& setup) {
   r.msPerFrame = ms / total;
   r.substepsPerFrame = double(sim.counters().substeps) / total;
   r.alive = sim.particles().size();
+  double mass = 0;
+  for (double m : sim.particles().mass) mass += m;
+  r.massLeft = mass / (setup.particles * sim.parameters().particleMass);
   r.recycled = sim.counters().recycled;
   r.onPlate =
       r.alive == setup.particles && r.recycled == 0 && std::isfinite(end) && frontEnd < edge;

@@ -19,6 +19,10 @@ struct SlideSetup {
   tears::PressureMethod solver = tears::PressureMethod::Wcsph;
   double lambdaScale = 1;  // the sub-step safety factors, scaled as tears-sweep scales them
   int threads = 0;
+  // The model leaves water in a drop's trail (SimulationOptions::trailDecayMetres), and a lighter
+  // drop clings harder and slows, so it never slides steadily; the law is for a drop of fixed
+  // volume, so by default the loss is off.
+  bool trailLoss = false;
 };
 
 struct SlideRun {
@@ -26,6 +30,7 @@ struct SlideRun {
   // first and second halves (equal when the slide is steady).
   double speed = 0, earlySpeed = 0, lateSpeed = 0;
   double frontSpeed = 0;  // the lowest particle's, m/s: differs when the drop leaves a trail
+  double massLeft = 1;    // the drop's mass at the end over its mass at emission
   double msPerFrame = 0;  // simulation alone, mean
   double substepsPerFrame = 0;
   int alive = 0;           // particles at the end

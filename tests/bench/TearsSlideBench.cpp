@@ -17,6 +17,7 @@
 
 #include <lacrima/common/JsonWriter.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -38,6 +39,7 @@ struct Options {
   int settleFrames = 22, measureFrames = 44;
   int threads = 0;
   bool json = false;
+  bool trailLoss = false;
   std::string png;
 };
 
@@ -61,6 +63,10 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   line.wholeNumber("measure", "F", "Frames measured (default 44: 2 s).", 2, 10000, o.measureFrames);
   line.wholeNumber("threads", "T", "Threads each simulation shares (default 0: all).", 0, 256,
                    o.threads);
+  line.flag("trail-loss",
+            "Keep the model's trail mass loss (the drop drains and slows; default: a drop of "
+            "fixed volume).",
+            o.trailLoss);
   line.flag("json", "One JSON object instead of the table.", o.json);
   line.text("png", "FILE", "Also draw speed against sin(angle) with the fitted lines as a PNG.",
             o.png);
@@ -103,6 +109,9 @@ struct Setting {
   std::vector<SlideRun> runs;  // one per angle
   LineFit fit;
   double msPerFrame = 0;  // mean over the angles
+  // The largest |second-half speed - first-half speed| / speed of the fitted runs: 0 when every
+  // slide is steady over the measuring window.
+  double unsteadiness = 0;
   std::string name() const {
     return std::string(solver->name) + " sub-step x" + QString::number(lambdaScale).toStdString();
   }
@@ -118,6 +127,8 @@ void fit(Setting& s, const Options& o) {
     if (s.runs[i].onPlate && s.runs[i].finite && s.runs[i].speed > 0) {
       x.push_back(sinDegrees(o.angles[i]));
       y.push_back(s.runs[i].speed);
+      const SlideRun& r = s.runs[i];
+      s.unsteadiness = std::max(s.unsteadiness, std::abs(r.lateSpeed - r.earlySpeed) / r.speed);
     }
   }
   s.fit = fitLine(x, y);
@@ -129,29 +140,31 @@ void printTable(const std::vector<Setting>& settings, const SlidePhysics& phys, 
       "sigma), g %.2f m/s^2: Bo = %.3g\n",
       o.particles, phys.volume * 1e9, phys.density, phys.viscosity, phys.tension, phys.gravity,
       phys.bondNumber());
-  std::printf("  %-22s %6s %10s %10s %10s %10s %10s %10s %9s %6s\n", "setting", "angle", "U mm/s",
-              "1st half", "2nd half", "front", "Ca", "Bo sin a", "drag est", "ms/fr");
+  std::printf("  %-22s %6s %10s %10s %10s %10s %10s %10s %9s %6s %6s\n", "setting", "angle",
+              "U mm/s", "1st half", "2nd half", "front", "Ca", "Bo sin a", "drag est", "mass",
+              "ms/fr");
   for (const Setting& s : settings) {
     for (std::size_t i = 0; i < s.runs.size(); ++i) {
       const SlideRun& r = s.runs[i];
-      std::printf("  %-22s %6.1f %10.3f %10.3f %10.3f %10.3f %10.3g %10.3g %9.3f %6.2f%s\n",
+      std::printf("  %-22s %6.1f %10.3f %10.3f %10.3f %10.3f %10.3g %10.3g %9.3f %5.0f%% %6.2f%s\n",
                   s.name().c_str(), o.angles[i], 1e3 * r.speed, 1e3 * r.earlySpeed,
                   1e3 * r.lateSpeed, 1e3 * r.frontSpeed, phys.capillaryNumber(r.speed),
                   phys.bondNumber() * sinDegrees(o.angles[i]),
-                  1e3 * phys.dragLimitedSpeed(o.angles[i]), r.msPerFrame,
+                  1e3 * phys.dragLimitedSpeed(o.angles[i]), 100 * r.massLeft, r.msPerFrame,
                   r.onPlate ? "" : "  (left the plate: not fitted)");
     }
   }
   std::printf("  fit U = k (sin a - sin a_c) over the sliding runs:\n");
-  std::printf("  %-22s %10s %10s %8s %14s %8s %10s\n", "setting", "k mm/s", "a_c deg", "R^2",
-              "dCa/d(Bo sin)", "points", "ms/frame");
+  std::printf("  %-22s %10s %10s %8s %14s %8s %9s %10s\n", "setting", "k mm/s", "a_c deg", "R^2",
+              "dCa/d(Bo sin)", "points", "unsteady", "ms/frame");
   for (const Setting& s : settings) {
     const double sinC = s.fit.thresholdSin();
     const double angleC = std::abs(sinC) <= 1 ? std::asin(sinC) * 180 / std::numbers::pi
                                               : std::numeric_limits<double>::quiet_NaN();
-    std::printf("  %-22s %10.3f %10.1f %8.4f %14.4g %8d %10.3f\n", s.name().c_str(),
+    std::printf("  %-22s %10.3f %10.1f %8.4f %14.4g %8d %8.0f%% %10.3f\n", s.name().c_str(),
                 1e3 * s.fit.slope, angleC, s.fit.rSquared,
-                phys.capillaryNumber(s.fit.slope) / phys.bondNumber(), s.fit.points, s.msPerFrame);
+                phys.capillaryNumber(s.fit.slope) / phys.bondNumber(), s.fit.points,
+                100 * s.unsteadiness, s.msPerFrame);
   }
 }
 
@@ -160,6 +173,7 @@ void printJson(const std::vector<Setting>& settings, const SlidePhysics& phys, c
   json.beginObject();
   json.field("benchmark", "tears-slide");
   json.field("particles", o.particles);
+  json.field("trail_loss", o.trailLoss);
   json.field("volume_m3", phys.volume);
   json.field("density_kg_m3", phys.density);
   json.field("viscosity_pa_s", phys.viscosity);
@@ -178,6 +192,7 @@ void printJson(const std::vector<Setting>& settings, const SlidePhysics& phys, c
     json.field("fit_r_squared", s.fit.rSquared);
     json.field("fit_points", s.fit.points);
     json.field("fit_ca_per_bo_sin", phys.capillaryNumber(s.fit.slope) / phys.bondNumber());
+    json.field("unsteadiness", s.unsteadiness);
     json.key("runs");
     json.beginArray();
     for (std::size_t i = 0; i < s.runs.size(); ++i) {
@@ -191,6 +206,7 @@ void printJson(const std::vector<Setting>& settings, const SlidePhysics& phys, c
       json.field("capillary_number", phys.capillaryNumber(r.speed));
       json.field("bond_sin", phys.bondNumber() * sinDegrees(o.angles[i]));
       json.field("drag_limited_speed_m_s", phys.dragLimitedSpeed(o.angles[i]));
+      json.field("mass_left", r.massLeft);
       json.field("ms_per_frame", r.msPerFrame);
       json.field("substeps_per_frame", r.substepsPerFrame);
       json.field("particles_alive", r.alive);
@@ -233,10 +249,12 @@ bool drawPlot(const std::vector<Setting>& settings, const SlidePhysics& phys, co
                       false});
   }
   series.push_back(std::move(drag));
-  const PlotAxes axes{"A sliding drop (" + std::to_string(o.particles) +
-                          " particles) against U = k (sin a - sin a_c)",
-                      "sin(plate angle from the horizontal)", "steady speed of the centroid (mm/s)",
-                      false, false};
+  char title[128];
+  std::snprintf(title, sizeof title,
+                "A %.0f uL drop (%d particles) sliding down a plate: fits U = k (sin a - sin a_c)",
+                phys.volume * 1e9, o.particles);
+  const PlotAxes axes{title, "sin(plate angle from the horizontal)",
+                      "steady speed of the centroid (mm/s)", false, false};
   std::string why;
   if (!writePlot(o.png, axes, series, why)) {
     std::fprintf(stderr, "tears-slide: %s\n", why.c_str());
@@ -273,6 +291,7 @@ int runTearsSlide(int argc, char** argv) {
         setup.solver = solver.method;
         setup.lambdaScale = lambda;
         setup.threads = o.threads;
+        setup.trailLoss = o.trailLoss;
         s.runs.push_back(runSlide(setup));
       }
       fit(s, o);
