@@ -134,6 +134,15 @@ void fit(Setting& s, const Options& o) {
   s.fit = fitLine(x, y);
 }
 
+// Why a run is left out of the fit, if it is.
+std::string note(const SlideRun& r) {
+  if (!r.finite) return "  (non-finite: not fitted)";
+  if (r.recycled > 0)
+    return "  (" + std::to_string(r.recycled) + " particles fell off the plate: not fitted)";
+  if (!r.onPlate) return "  (reached the lower edge: not fitted)";
+  return {};
+}
+
 void printTable(const std::vector<Setting>& settings, const SlidePhysics& phys, const Options& o) {
   std::printf(
       "  drop: %d particles = %.1f uL; rho %.0f kg/m^3, mu %.3g Pa s, gamma %.3g N/m (the Müller "
@@ -151,7 +160,7 @@ void printTable(const std::vector<Setting>& settings, const SlidePhysics& phys, 
                   1e3 * r.lateSpeed, 1e3 * r.frontSpeed, phys.capillaryNumber(r.speed),
                   phys.bondNumber() * sinDegrees(o.angles[i]),
                   1e3 * phys.dragLimitedSpeed(o.angles[i]), 100 * r.massLeft, r.msPerFrame,
-                  r.onPlate ? "" : "  (left the plate: not fitted)");
+                  note(r).c_str());
     }
   }
   std::printf("  fit U = k (sin a - sin a_c) over the sliding runs:\n");
@@ -211,6 +220,7 @@ void printJson(const std::vector<Setting>& settings, const SlidePhysics& phys, c
       json.field("substeps_per_frame", r.substepsPerFrame);
       json.field("particles_alive", r.alive);
       json.field("on_plate", r.onPlate);
+      json.field("recycled_particles", r.recycled);
       json.field("finite", r.finite);
       json.endObject();
     }
