@@ -35,8 +35,8 @@ const Subcommand kSubcommands[] = {
      "tear pipeline (SPH, skin collision, surface, trails) on a cheek sheet or the default head",
      lacrima::bench::runTears},
     {"tears-sweep",
-     "tears: error against a fine reference beside ms per frame (sub-step, kernel, cube, "
-     "neighbours)",
+     "tears: error against fine WCSPH and own-solver references beside ms per frame (sub-step "
+     "per solver, kernel, cube, neighbours), and a thread axis with the error unchanged",
      lacrima::bench::runTearsSweep},
     {"tears-slide",
      "tears: a drop sliding down a plate at several angles against the law of sliding drops, "

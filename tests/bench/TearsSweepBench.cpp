@@ -4,6 +4,9 @@
 // pressure solver); each is reported with its error (SweepErrors.h) beside its milliseconds per
 // frame, as a table, JSON, a CSV file and a log-log PNG plot.
 //
+// The solvers come from one list (SweepSolvers.h): a solver added there gets its sub-step rows,
+// its reference and check, its dashed curve and its thread axis here with no other change.
+//
 // Two references, because the solvers are different models:
 //   the WCSPH reference   WCSPH at sub-step x0.25 and cube x0.25: every row is measured against
 //                         it, so DFSPH rows include the model's difference (an incompressible
@@ -17,8 +20,8 @@
 // simulation + trails + its own mesher.
 //
 // The thread axis reruns each solver's default row (sub-step x1) with each thread count asked:
-// the simulation shares its sub-steps over threads bit-identically (decision 0005), so the final
-// state hash and every error must be the same, and only the milliseconds may change.
+// the simulation shares its sub-steps over threads bit-identically (decisions 0005, 0015), so the
+// final state hash and every error must be the same, and only the milliseconds may change.
 #include "BenchCommandLine.h"
 #include "NumberList.h"
 #include "SweepErrors.h"

@@ -120,5 +120,24 @@ foreach(i RANGE ${last})
       message(FATAL_ERROR "tears-slide setting ${i} run ${run}: the drop did not slide (${speed} m/s)")
     endif()
   endforeach()
+  # Steeper is faster, and R^2 is a fraction: a fit that broke would show here.
+  string(JSON slope GET "${out}" settings ${i} fit_slope_m_s)
+  string(JSON r2 GET "${out}" settings ${i} fit_r_squared)
+  string(JSON shallow GET "${out}" settings ${i} runs 0 speed_m_s)
+  string(JSON steep GET "${out}" settings ${i} runs 2 speed_m_s)
+  if(slope LESS_EQUAL 0 OR r2 LESS 0 OR r2 GREATER 1 OR NOT steep GREATER shallow)
+    message(FATAL_ERROR "tears-slide setting ${i}: slope ${slope}, R^2 ${r2}, ${shallow} m/s at "
+                        "30 degrees against ${steep} at 75")
+  endif()
 endforeach()
 message(STATUS "tears-slide: ${settingCount} settings fitted")
+
+# A bad list is refused with the option named (exit status 2), never run.
+foreach(bad "tears-sweep;--threads-axis;1,x" "tears-slide;--angles;30,120")
+  execute_process(COMMAND "${BENCH}" ${bad} OUTPUT_VARIABLE out ERROR_VARIABLE err
+                  RESULT_VARIABLE status)
+  list(GET bad 1 option)
+  if(NOT status EQUAL 2 OR NOT err MATCHES "${option}: expected a comma-separated list")
+    message(FATAL_ERROR "${bad}: expected exit status 2 naming ${option}, got ${status}: ${err}")
+  endif()
+endforeach()
