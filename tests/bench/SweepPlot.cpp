@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <vector>
 
 namespace lacrima::bench {
 
@@ -188,6 +189,9 @@ bool writePlot(const std::string& path, const PlotAxes& axes, const std::vector<
   QFont small = font;
   small.setPixelSize(12);
   painter.setClipRect(area.adjusted(-8, -8, 8, 8));  // fitted lines may run past the data
+  // Points already labelled: a point drawn on top of one (the same run in two series, e.g. the
+  // default kernel and the default sub-step) keeps the first label, so the text stays readable.
+  std::vector<QPointF> labelled;
   for (std::size_t k = 0; k < series.size(); ++k) {
     const PlotSeries& s = series[k];
     const QColor colour =
@@ -213,6 +217,11 @@ bool writePlot(const std::string& path, const PlotAxes& axes, const std::vector<
       const QPointF c(toX(p.x), toY(p.y));
       painter.setPen(QPen(colour, 2));
       marker(c, s, k);
+      const bool covered = std::any_of(labelled.begin(), labelled.end(), [&](QPointF q) {
+        return std::abs(q.x() - c.x()) < 3 && std::abs(q.y() - c.y()) < 3;
+      });
+      if (covered || p.label.empty()) continue;
+      labelled.push_back(c);
       painter.setPen(colour.darker(140));
       painter.drawText(c + QPointF(8, -8), QString::fromStdString(p.label));
     }

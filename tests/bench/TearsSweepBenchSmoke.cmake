@@ -3,7 +3,8 @@
 # sanity): every solver's own reference with its convergence check, each row against the WCSPH
 # reference and against its own solver's reference, finite; the thread axis with 1 and 2 threads
 # and the same state hash and errors ("error identical"); the CSV with the new columns and the
-# PNG written; the sliding drop's speed, dimensionless numbers and fit finite.
+# PNG written; repeats ending in the same state; the sliding drop's speed, dimensionless numbers
+# and fit finite, faster on steeper plates; bad number lists refused.
 #   cmake -DBENCH=<path to lacrima-bench> -DWORK=<scratch dir> -P TearsSweepBenchSmoke.cmake
 cmake_minimum_required(VERSION 3.20)  # IN_LIST, string(JSON)
 set(number "^-?[0-9][0-9.eE+-]*$")  # JSON null (NaN, infinity) fails this
@@ -15,10 +16,13 @@ endfunction()
 
 file(MAKE_DIRECTORY "${WORK}")
 execute_process(COMMAND "${BENCH}" tears-sweep --particles 24 --frames 6 --threads-axis 1,2 --json
-                        --csv "${WORK}/sweep.csv" --png "${WORK}/sweep.png"
+                        --repeats 2 --csv "${WORK}/sweep.csv" --png "${WORK}/sweep.png"
                 OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE status)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "lacrima-bench tears-sweep exited with ${status}: ${err}")
+endif()
+if(err MATCHES "another state")  # a repeat must end where the first run did
+  message(FATAL_ERROR "tears-sweep is not deterministic across repeats: ${err}")
 endif()
 string(JSON refCount ERROR_VARIABLE parseError LENGTH "${out}" references)
 if(parseError)
