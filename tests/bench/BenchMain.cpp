@@ -10,6 +10,7 @@ int runTears(int argc, char** argv);
 int runGeodesics(int argc, char** argv);
 int runPoses(int argc, char** argv);
 int runTearsSweep(int argc, char** argv);
+int runTearsSlide(int argc, char** argv);
 int runEditor(int argc, char** argv);
 int runPlayer(int argc, char** argv);
 int runHead(int argc, char** argv);
@@ -34,9 +35,13 @@ const Subcommand kSubcommands[] = {
      "tear pipeline (SPH, skin collision, surface, trails) on a cheek sheet or the default head",
      lacrima::bench::runTears},
     {"tears-sweep",
-     "tears: error against a fine reference beside ms per frame (sub-step, kernel, cube, "
-     "neighbours)",
+     "tears: error against fine WCSPH and own-solver references beside ms per frame (sub-step "
+     "per solver, kernel, cube, neighbours), and a thread axis with the error unchanged",
      lacrima::bench::runTearsSweep},
+    {"tears-slide",
+     "tears: a drop sliding down a plate at several angles against the law of sliding drops, "
+     "per solver and sub-step factor",
+     lacrima::bench::runTearsSlide},
     {"geodesics", "geodesic distance: accuracy against time (sphere, plane), ms per feature point",
      lacrima::bench::runGeodesics},
     {"editor",

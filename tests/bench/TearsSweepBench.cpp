@@ -1,41 +1,46 @@
-// lacrima-bench tears-sweep: what accuracy costs in time. One fine reference run of the full tear
+// lacrima-bench tears-sweep: what accuracy costs in time. Fine reference runs of the full tear
 // pipeline on the cheek sheet (or the rigged default head), then runs that each coarsen one
 // quantity (sub-step safety factor, kernel size, marching-cubes cube size, neighbour structure,
-// pressure solver); each is reported with its error against the reference beside its
-// milliseconds per frame, as a table, a CSV file and a log-log PNG plot.
+// pressure solver); each is reported with its error (SweepErrors.h) beside its milliseconds per
+// frame, as a table, JSON, a CSV file and a log-log PNG plot.
 //
-// Errors, in units of the reference particle radius so they read as "how many drop radii off":
-//   particle RMS  positions after the last frame, matched by particle id (ids are assigned in
-//                 emission order, so the same commanded counts give the same ids). Drops are
-//                 chaotic (where a drop splits, or which way a particle goes round another, flips
-//                 with rounding), so this grows with time even between two fine runs;
-//   centroid      distance between each eye's mean particle position and the reference's,
-//                 averaged over the eyes: how far the tears ran, insensitive to that chaos;
-//   surface       symmetric mean distance between the two final tear surfaces' vertices and the
-//                 nearest vertex of the other (a Chamfer distance; vertices of the fine reference
-//                 are dense enough that this approximates point-to-surface distance), plus the
-//                 relative surface area difference.
-// The cube-size series runs extra meshers on the reference simulation, so its particles are the
-// reference's and its error is the surface discretisation alone; its ms per frame is that
-// simulation + trails + its own mesher. The reference is WCSPH: DFSPH and PBF rows include the
-// model's difference (an incompressible fluid against one with a 0.2 m/s speed of sound).
+// The solvers come from one list (SweepSolvers.h): a solver added there gets its sub-step rows,
+// its reference and check, its dashed curve and its thread axis here with no other change.
+//
+// Two references, because the solvers are different models:
+//   the WCSPH reference   WCSPH at sub-step x0.25 and cube x0.25: every row is measured against
+//                         it, so DFSPH rows include the model's difference (an incompressible
+//                         fluid against one with a 0.2 m/s speed of sound), not only inaccuracy;
+//   each solver's own     that solver at sub-step x0.25 (cube x0.25): its rows measured against
+//                         it say how far coarser sub-steps take that solver from where it
+//                         converges. Converged means a run at x0.125 ends closer to it (the
+//                         "reference check") than any of the solver's sweep rows.
+// The cube-size series runs extra meshers on the WCSPH reference simulation, so its particles are
+// the reference's and its error is the surface discretisation alone; its ms per frame is that
+// simulation + trails + its own mesher.
+//
+// The thread axis reruns each solver's default row (sub-step x1) with each thread count asked:
+// the simulation shares its sub-steps over threads bit-identically (decisions 0005, 0015), so the
+// final state hash and every error must be the same, and only the milliseconds may change.
 #include "BenchCommandLine.h"
+#include "NumberList.h"
+#include "SweepErrors.h"
 #include "SweepPlot.h"
+#include "SweepSolvers.h"
 #include "TearsPipeline.h"
 
-#include <Eigen/Geometry>
+#include <lacrima/common/JsonWriter.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <limits>
-#include <map>
+#include <memory>
 #include <optional>
 #include <string>
-#include <unordered_map>
+#include <thread>
 #include <vector>
 
 namespace lacrima::bench {
@@ -44,9 +49,11 @@ namespace {
 
 using namespace lacrima::tears;
 
-// "x1.5" for a scale of 1.5: four characters of the number at most.
+// "x1.5" for a scale of 1.5, "x0.125" for 0.125.
 std::string scaleLabel(double scale) {
-  return std::string("x").append(std::to_string(scale), 0, 4);
+  char text[24];
+  std::snprintf(text, sizeof text, "x%g", scale);
+  return text;
 }
 
 struct Options {
@@ -54,17 +61,21 @@ struct Options {
   int frames = 66;  // 3 s at 22 fps: long enough for drops to run down the sheet
   double fps = 22;
   bool head = false;  // the rigged default head instead of the cheek sheet
-  int threads = 0;    // SimulationOptions::threads of every run
+  bool json = false;
+  int repeats = 3;                 // runs per row; the fastest counts
+  int threads = 0;                 // SimulationOptions::threads of every sweep run
+  std::vector<double> threadAxis;  // thread counts of the axis; empty: 1 and all hardware threads
   std::string csv, png;
 };
 
 std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   BenchCommandLine line(
       "tears-sweep",
-      "Error against a fine reference run beside ms per frame of the full tear pipeline\n"
-      "(simulation + surface + trails) on the cheek sheet or the default head, sweeping the\n"
-      "sub-step safety factor, the kernel size, the cube size, the neighbour structure and\n"
-      "the pressure solver (WCSPH, DFSPH, PBF).");
+      "Error beside ms per frame of the full tear pipeline (simulation + surface + trails) on\n"
+      "the cheek sheet or the default head, against a fine WCSPH reference and against each\n"
+      "solver's own fine run, sweeping the sub-step safety factor per solver (WCSPH, DFSPH, PBF),\n"
+      "the kernel size, the cube size and the neighbour structure; then each solver's default\n"
+      "row at each thread count of the thread axis (the error must not change).");
   line.wholeNumber("particles", "N", "Particles in all (default 200).", 1, 2 * kMaxTearParticles,
                    o.particles);
   line.wholeNumber("frames", "F", "Frames at 22 fps (default 66).", 1, 100000, o.frames);
@@ -72,8 +83,19 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
               "The cheek sheet (default) or the cached default head with the rig's sources.",
               {{"sheet", false}, {"default", true}}, o.head);
   line.wholeNumber("threads", "T",
-                   "Threads each run's simulation shares (default 0: LACRIMA_THREADS, else all).",
+                   "Threads each sweep run's simulation shares (default 0: LACRIMA_THREADS, else "
+                   "all).",
                    0, 256, o.threads);
+  line.option(
+      "threads-axis", "T1,T2,...",
+      "Thread counts the default rows are rerun with (default: 1 and all hardware "
+      "threads).",
+      [&o](const QString& text) { return readNumberList(text, 1, 256, true, o.threadAxis); });
+  line.wholeNumber("repeats", "R",
+                   "Runs per row, the fastest milliseconds kept (default 3; the errors are the "
+                   "same every time).",
+                   1, 100, o.repeats);
+  line.flag("json", "One JSON object instead of the table.", o.json);
   line.text("csv", "FILE", "Also write the table as CSV.", o.csv);
   line.text("png", "FILE", "Also draw error against ms per frame (log axes) as a PNG.", o.png);
   return line.parse(argc, argv);
@@ -85,28 +107,32 @@ struct Variant {
   double lambdaScale = 1, kernelScale = 1, cubeScale = 1;
   NeighbourMethod neighbours = NeighbourMethod::Grid;
   PressureMethod solver = PressureMethod::Wcsph;
-};
-
-// What a run leaves behind for the comparison.
-struct RunResult {
-  double msPerFrame = 0;  // mean over frames of the full pipeline
-  double substepsPerFrame = 0;
-  std::map<std::uint64_t, Eigen::Vector3d> particles;
-  std::array<Eigen::Vector3d, 2> centroid{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
-  std::vector<Eigen::Vector3d> surfaceVertices;
-  double surfaceArea = 0;
+  int threads = 0;  // 0: the sweep's --threads
 };
 
 struct Row {
   Variant variant;
   double msPerFrame = 0, substepsPerFrame = 0;
-  double particleRms = 0, centroidError = 0, surfaceError = 0, areaDifference = 0;
-  int matched = 0;
-  bool surfaceSeries = false;  // the plotted error is the surface error
+  int threads = 1;
+  std::uint64_t stateHash = 0;
+  RunErrors vsReference, vsOwn;  // against the WCSPH reference, against the solver's own
+  bool surfaceSeries = false;    // the plotted error is the surface error
+};
+
+// A solver's converged run and the check that it is converged.
+struct SolverReference {
+  const SolverEntry* solver = nullptr;
+  RunResult fine;         // sub-step x0.25
+  double finerMs = 0;     // the check run's ms per frame (sub-step x0.125)
+  RunErrors check;        // the x0.125 run against the x0.25 one
+  double closestRow = 0;  // the centroid error of the solver's sweep row closest to its reference
+  bool converged =
+      false;  // check.centroid < closestRow: the curve lies above the reference's noise
 };
 
 const TearSettings kDefaults{};
 const SimulationOptions kDefaultOptions{};
+constexpr double kFineLambda = 0.25, kFinerLambda = 0.125, kFineCube = 0.25;
 
 TearSettings settingsFor(const Variant& v) {
   TearSettings s;
@@ -127,25 +153,12 @@ SimulationOptions optionsFor(const Variant& v) {
   return o;
 }
 
-void capture(const TearSurface& surface, RunResult& out) {
-  const auto x = surface.positions();
-  const auto t = surface.triangles();
-  out.surfaceVertices.assign(static_cast<std::size_t>(x.cols()), Eigen::Vector3d::Zero());
-  for (Eigen::Index i = 0; i < x.cols(); ++i)
-    out.surfaceVertices[static_cast<std::size_t>(i)] = x.col(i);
-  out.surfaceArea = 0;
-  for (Eigen::Index k = 0; k < t.cols(); ++k) {
-    const Eigen::Vector3d a = x.col(t(0, k)), b = x.col(t(1, k)), c = x.col(t(2, k));
-    out.surfaceArea += 0.5 * (b - a).cross(c - a).norm();
-  }
-}
-
-// Runs the pipeline; `extraCubes` add meshers at those cube scales (results in `extras`).
-RunResult run(const TearScene& scene, const Variant& v, const Options& o,
-              const std::vector<double>& extraCubes = {},
-              std::vector<RunResult>* extras = nullptr) {
+// Runs the pipeline once; `extraCubes` add meshers at those cube scales (results in `extras`).
+RunResult runOnce(const TearScene& scene, const Variant& v, const Options& o,
+                  const std::vector<double>& extraCubes = {},
+                  std::vector<RunResult>* extras = nullptr) {
   SimulationOptions options = optionsFor(v);
-  options.threads = o.threads;
+  options.threads = v.threads > 0 ? v.threads : o.threads;
   TearPipeline pipeline(scene, settingsFor(v), options);
   TearSimulation& sim = pipeline.simulation();
   std::vector<std::unique_ptr<SurfaceMesher>> meshers;
@@ -172,7 +185,9 @@ RunResult run(const TearScene& scene, const Variant& v, const Options& o,
   RunResult r;
   r.msPerFrame = totalMs / o.frames;
   r.substepsPerFrame = static_cast<double>(sim.counters().substeps) / o.frames;
+  r.threads = sim.threads();
   const ParticleSet& p = sim.particles();
+  r.stateHash = stateHash(p);
   std::array<int, 2> count{0, 0};
   for (int i = 0; i < p.size(); ++i) {
     const auto s = static_cast<std::size_t>(i);
@@ -183,98 +198,283 @@ RunResult run(const TearScene& scene, const Variant& v, const Options& o,
   }
   for (std::size_t e = 0; e < 2; ++e)
     if (count[e] > 0) r.centroid[e] /= count[e];
-  capture(pipeline.mesher().surface(), r);
+  captureSurface(pipeline.mesher().surface(), r);
   if (extras) {
     extras->clear();
     for (std::size_t k = 0; k < meshers.size(); ++k) {
-      RunResult e;
+      RunResult e = r;
       e.msPerFrame = (baseMs + extraMs[k]) / o.frames;
-      e.substepsPerFrame = r.substepsPerFrame;
-      e.particles = r.particles;
-      e.centroid = r.centroid;
-      capture(meshers[k]->surface(), e);
+      captureSurface(meshers[k]->surface(), e);
       extras->push_back(std::move(e));
     }
   }
   return r;
 }
 
-// Nearest-vertex lookups through a hash grid of cell edge `cell` (exact: rings grow until the
-// best distance found is inside the searched cube).
-class NearestVertex {
- public:
-  NearestVertex(const std::vector<Eigen::Vector3d>& points, double cell)
-      : points_(points), cell_(cell) {
-    for (std::size_t i = 0; i < points.size(); ++i)
-      cells_[key(cellOf(points[i]))].push_back(static_cast<int>(i));
+// Runs the pipeline `--repeats` times and keeps the fastest milliseconds: on a shared machine
+// the others' load only ever adds time. The runs are deterministic, so every repeat must end in
+// the same state; one that does not is reported (and the first is kept).
+RunResult run(const TearScene& scene, const Variant& v, const Options& o,
+              const std::vector<double>& extraCubes = {},
+              std::vector<RunResult>* extras = nullptr) {
+  RunResult best = runOnce(scene, v, o, extraCubes, extras);
+  for (int k = 1; k < o.repeats; ++k) {
+    std::vector<RunResult> again;
+    const RunResult r = runOnce(scene, v, o, extraCubes, extras ? &again : nullptr);
+    if (r.stateHash != best.stateHash)
+      std::fprintf(stderr, "tears-sweep: %s %s ended in another state on repeat %d\n",
+                   v.series.c_str(), v.label.c_str(), k + 1);
+    best.msPerFrame = std::min(best.msPerFrame, r.msPerFrame);
+    for (std::size_t e = 0; extras && e < extras->size(); ++e)
+      (*extras)[e].msPerFrame = std::min((*extras)[e].msPerFrame, again[e].msPerFrame);
   }
-  double distance(const Eigen::Vector3d& x) const {
-    if (points_.empty()) return std::numeric_limits<double>::infinity();
-    const Eigen::Vector3i c = cellOf(x);
-    double best = std::numeric_limits<double>::infinity();
-    for (int ring = 0; ring < 64; ++ring) {
-      for (int dx = -ring; dx <= ring; ++dx)
-        for (int dy = -ring; dy <= ring; ++dy)
-          for (int dz = -ring; dz <= ring; ++dz) {
-            if (std::max({std::abs(dx), std::abs(dy), std::abs(dz)}) != ring)
-              continue;  // the shell only
-            const auto it = cells_.find(key(c + Eigen::Vector3i(dx, dy, dz)));
-            if (it == cells_.end()) continue;
-            for (int i : it->second)
-              best = std::min(best, (points_[static_cast<std::size_t>(i)] - x).norm());
-          }
-      if (best <= ring * cell_) return best;  // nothing outside this cube can be closer
-    }
-    for (const Eigen::Vector3d& p : points_)
-      best = std::min(best, (p - x).norm());  // far away: brute force
-    return best;
+  return best;
+}
+
+// The errors of a finished run against both references.
+class Comparison {
+ public:
+  Comparison(const std::vector<SolverReference>& refs, double radius)
+      : refs_(refs), radius_(radius) {}
+  Row row(const Variant& v, const RunResult& r) const {
+    Row row{v, r.msPerFrame, r.substepsPerFrame, r.threads, r.stateHash, {}, {}, false};
+    row.vsReference = errorsBetween(r, refs_.front().fine, radius_, 2 * radius_);
+    row.vsOwn = errorsBetween(r, own(v.solver).fine, radius_, 2 * radius_);
+    return row;
+  }
+  const SolverReference& own(PressureMethod solver) const {
+    for (const SolverReference& ref : refs_)
+      if (ref.solver->method == solver) return ref;
+    return refs_.front();
   }
 
  private:
-  Eigen::Vector3i cellOf(const Eigen::Vector3d& x) const {
-    return (x / cell_).array().floor().cast<int>();
-  }
-  static std::int64_t key(const Eigen::Vector3i& c) {
-    return (std::int64_t(c.x() & 0x1fffff) << 42) | (std::int64_t(c.y() & 0x1fffff) << 21) |
-           std::int64_t(c.z() & 0x1fffff);
-  }
-  const std::vector<Eigen::Vector3d>& points_;
-  double cell_;
-  std::unordered_map<std::int64_t, std::vector<int>> cells_;
+  const std::vector<SolverReference>& refs_;
+  double radius_;
 };
 
-double meanNearest(const std::vector<Eigen::Vector3d>& from, const NearestVertex& to) {
-  if (from.empty()) return 0;
-  double sum = 0;
-  for (const Eigen::Vector3d& x : from) sum += to.distance(x);
-  return sum / static_cast<double>(from.size());
+std::string hashText(std::uint64_t hash) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+  return text;
 }
 
-Row compare(const Variant& v, const RunResult& r, const RunResult& ref, double radius,
-            double cell) {
-  Row row{v, r.msPerFrame, r.substepsPerFrame, 0, 0, 0, 0, 0, false};
-  row.centroidError =
-      0.5 * ((r.centroid[0] - ref.centroid[0]).norm() + (r.centroid[1] - ref.centroid[1]).norm()) /
-      radius;
-  double sum = 0;
-  for (const auto& [id, x] : r.particles) {
-    const auto it = ref.particles.find(id);
-    if (it == ref.particles.end()) continue;
-    sum += (x - it->second).squaredNorm();
-    ++row.matched;
+bool sameErrors(const RunErrors& a, const RunErrors& b) {
+  auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
+  return same(a.particleRms, b.particleRms) && same(a.centroid, b.centroid) &&
+         same(a.surface, b.surface) && same(a.areaDifference, b.areaDifference) &&
+         a.matched == b.matched;
+}
+
+// The thread axis of one solver: its default row at each thread count.
+struct ThreadAxis {
+  const SolverEntry* solver = nullptr;
+  std::vector<Row> rows;
+  bool identical = true;  // every state hash and error equal to the first count's
+};
+
+struct SweepReport {
+  const TearScene* scene = nullptr;
+  double radius = 0;
+  std::vector<SolverReference> refs;
+  std::vector<Row> rows;
+  std::vector<ThreadAxis> threadAxes;
+  bool identical() const {
+    return std::all_of(threadAxes.begin(), threadAxes.end(),
+                       [](const ThreadAxis& a) { return a.identical; });
   }
-  row.particleRms = row.matched ? std::sqrt(sum / row.matched) / radius : 0;
-  if (r.surfaceVertices.empty() || ref.surfaceVertices.empty()) {
-    row.surfaceError = std::numeric_limits<double>::quiet_NaN();
-  } else {
-    const NearestVertex toRef(ref.surfaceVertices, cell), toRun(r.surfaceVertices, cell);
-    row.surfaceError =
-        0.5 * (meanNearest(r.surfaceVertices, toRef) + meanNearest(ref.surfaceVertices, toRun)) /
-        radius;
+};
+
+void printTable(const SweepReport& s) {
+  std::printf(
+      "  errors in reference particle radii (%.4g head units); ms = full pipeline per frame "
+      "(mean); 'own': against the run's own solver at sub-step x%g\n",
+      s.radius, kFineLambda);
+  for (const SolverReference& ref : s.refs)
+    std::printf(
+        "  %s reference (x%g, %.3f ms/frame): x%g (%.3f ms/frame) ends %.3g radii (centroid), "
+        "%.3g (particle RMS) from it; its closest sweep row %.3g: %s\n",
+        ref.solver->name, kFineLambda, ref.fine.msPerFrame, kFinerLambda, ref.finerMs,
+        ref.check.centroid, ref.check.particleRms, ref.closestRow,
+        ref.converged ? "converged" : "NOT converged (the rows are within its noise)");
+  std::printf("  %-26s %-9s %9s %8s %7s %9s %9s %9s %8s %9s %9s\n", "swept", "value", "ms/frame",
+              "substeps", "threads", "centroid", "RMS", "surface", "area", "own cent.", "own RMS");
+  auto print = [](const Row& r) {
+    std::printf("  %-26s %-9s %9.3f %8.1f %7d %9.4g %9.4g %9.4g %7.1f%% %9.4g %9.4g\n",
+                r.variant.series.c_str(), r.variant.label.c_str(), r.msPerFrame, r.substepsPerFrame,
+                r.threads, r.vsReference.centroid, r.vsReference.particleRms, r.vsReference.surface,
+                100 * r.vsReference.areaDifference, r.vsOwn.centroid, r.vsOwn.particleRms);
+  };
+  for (const Row& r : s.rows) print(r);
+  for (const ThreadAxis& axis : s.threadAxes) {
+    for (const Row& r : axis.rows) print(r);
+    std::printf("  %s thread axis: state hash %s, error identical: %s\n", axis.solver->name,
+                hashText(axis.rows.front().stateHash).c_str(), axis.identical ? "yes" : "NO");
   }
-  row.areaDifference =
-      ref.surfaceArea > 0 ? std::abs(r.surfaceArea - ref.surfaceArea) / ref.surfaceArea : 0;
-  return row;
+}
+
+const char* neighbourKey(NeighbourMethod m) {
+  return m == NeighbourMethod::Grid ? "grid" : "octree";
+}
+
+bool writeCsv(const SweepReport& s, const Options& o) {
+  std::ofstream csv(o.csv);
+  csv << "scene,series,value,solver,lambda_scale,kernel_scale,cube_scale,neighbours,threads,"
+         "ms_per_frame,substeps_per_frame,state_hash,particle_rms_radii,centroid_error_radii,"
+         "surface_error_radii,area_difference,matched_particles,own_reference_particle_rms_radii,"
+         "own_reference_centroid_error_radii,own_reference_surface_error_radii\n";
+  auto line = [&](const Row& r) {
+    const Variant& v = r.variant;
+    csv << (o.head ? "default_head" : "cheek_sheet") << ',' << v.series << ',' << v.label << ','
+        << solverOf(v.solver).key << ',' << v.lambdaScale << ',' << v.kernelScale << ','
+        << v.cubeScale << ',' << neighbourKey(v.neighbours) << ',' << r.threads << ','
+        << r.msPerFrame << ',' << r.substepsPerFrame << ',' << hashText(r.stateHash) << ','
+        << r.vsReference.particleRms << ',' << r.vsReference.centroid << ','
+        << r.vsReference.surface << ',' << r.vsReference.areaDifference << ','
+        << r.vsReference.matched << ',' << r.vsOwn.particleRms << ',' << r.vsOwn.centroid << ','
+        << r.vsOwn.surface << '\n';
+  };
+  for (const Row& r : s.rows) line(r);
+  for (const ThreadAxis& axis : s.threadAxes)
+    for (const Row& r : axis.rows) line(r);
+  if (!csv) {
+    std::fprintf(stderr, "tears-sweep: cannot write %s\n", o.csv.c_str());
+    return false;
+  }
+  return true;
+}
+
+void writeErrors(JsonWriter& json, std::string_view name, const RunErrors& e) {
+  json.key(name);
+  json.beginObject();
+  json.field("centroid_radii", e.centroid);
+  json.field("particle_rms_radii", e.particleRms);
+  json.field("surface_radii", e.surface);
+  json.field("area_difference", e.areaDifference);
+  json.field("matched_particles", e.matched);
+  json.endObject();
+}
+
+void writeRow(JsonWriter& json, const Row& r) {
+  const Variant& v = r.variant;
+  json.beginObject();
+  json.field("series", v.series);
+  json.field("value", v.label);
+  json.field("solver", solverOf(v.solver).key);
+  json.field("lambda_scale", v.lambdaScale);
+  json.field("kernel_scale", v.kernelScale);
+  json.field("cube_scale", v.cubeScale);
+  json.field("neighbours", neighbourKey(v.neighbours));
+  json.field("threads", r.threads);
+  json.field("ms_per_frame", r.msPerFrame);
+  json.field("substeps_per_frame", r.substepsPerFrame);
+  json.field("state_hash", hashText(r.stateHash));
+  writeErrors(json, "vs_wcsph_reference", r.vsReference);
+  writeErrors(json, "vs_own_reference", r.vsOwn);
+  json.endObject();
+}
+
+void printJson(const SweepReport& s, const Options& o) {
+  JsonWriter json(JsonWriter::Layout::Compact);
+  json.beginObject();
+  json.field("benchmark", "tears-sweep");
+  json.field("scene", o.head ? "default_head" : "cheek_sheet");
+  json.field("particles", o.particles);
+  json.field("frames", o.frames);
+  json.field("fps", o.fps);
+  json.field("repeats", o.repeats);
+  json.field("particle_radius", s.radius);
+  json.key("references");
+  json.beginArray();
+  for (const SolverReference& ref : s.refs) {
+    json.beginObject();
+    json.field("solver", ref.solver->key);
+    json.field("lambda_scale", kFineLambda);
+    json.field("ms_per_frame", ref.fine.msPerFrame);
+    json.field("check_lambda_scale", kFinerLambda);
+    json.field("check_ms_per_frame", ref.finerMs);
+    writeErrors(json, "check", ref.check);
+    json.field("closest_row_centroid_radii", ref.closestRow);
+    json.field("converged", ref.converged);
+    json.endObject();
+  }
+  json.endArray();
+  json.key("rows");
+  json.beginArray();
+  for (const Row& r : s.rows) writeRow(json, r);
+  json.endArray();
+  json.key("thread_axis");
+  json.beginArray();
+  for (const ThreadAxis& axis : s.threadAxes) {
+    json.beginObject();
+    json.field("solver", axis.solver->key);
+    json.field("error_identical", axis.identical);
+    json.key("runs");
+    json.beginArray();
+    for (const Row& r : axis.rows) writeRow(json, r);
+    json.endArray();
+    json.endObject();
+  }
+  json.endArray();
+  json.field("error_identical", s.identical());
+  json.endObject();
+  std::fputs(std::move(json).finish().c_str(), stdout);
+}
+
+// Curves: per solver its sub-step rows against the WCSPH reference (solid) and, for the other
+// solvers, against their own reference (dashed, hollow markers, same colour), and its reference
+// check as one point; then the kernel, cube and neighbour series against the WCSPH reference.
+bool drawPlot(const SweepReport& s, const Options& o) {
+  std::vector<PlotSeries> series;
+  const int solverCount = int(std::size(kSolvers));
+  for (int k = 0; k < solverCount; ++k) {
+    const SolverEntry& solver = kSolvers[k];
+    const std::string prefix = std::string(solver.name) + " sub-step";
+    PlotSeries vsRef{prefix + ": centroid vs WCSPH ref", {}, k, false, true};
+    PlotSeries vsOwn{prefix + ": centroid vs own " + solver.name + " ref", {}, k, true, true};
+    for (const Row& r : s.rows)
+      if (r.variant.series == prefix + " factor") {
+        vsRef.points.push_back({r.msPerFrame, r.vsReference.centroid, r.variant.label});
+        vsOwn.points.push_back({r.msPerFrame, r.vsOwn.centroid, r.variant.label});
+      }
+    series.push_back(std::move(vsRef));
+    if (&solver != &kReferenceSolver) series.push_back(std::move(vsOwn));
+  }
+  for (int k = 0; k < solverCount; ++k) {
+    const SolverReference& ref = s.refs[std::size_t(k)];
+    series.push_back({std::string(ref.solver->name) + " ref check: x0.125 vs x0.25",
+                      {{ref.finerMs, ref.check.centroid, scaleLabel(kFinerLambda)}},
+                      k,
+                      false,
+                      true,
+                      PlotSeries::Shape::Diamond});
+  }
+  int colour = solverCount;
+  for (const char* name : {"kernel size", "cube size (surface)", "neighbour structure"}) {
+    const bool surface = std::string(name) == "cube size (surface)";
+    PlotSeries curve{std::string(surface ? "cube size: surface" : name) +
+                         (surface ? " error vs WCSPH ref" : ": centroid vs WCSPH ref"),
+                     {},
+                     colour++,
+                     false,
+                     true};
+    for (const Row& r : s.rows)
+      if (r.variant.series == name)
+        curve.points.push_back({r.msPerFrame,
+                                surface ? r.vsReference.surface : r.vsReference.centroid,
+                                r.variant.label});
+    series.push_back(std::move(curve));
+  }
+  std::string why;
+  const PlotAxes axes{
+      "Tears on the " + s.scene->name + ": error against cost (" + std::to_string(o.particles) +
+          " particles, " + std::to_string(o.frames) + " frames)",
+      "ms per frame (simulation + surface + trails)", "error (particle radii)", true, true};
+  if (!writePlot(o.png, axes, series, why)) {
+    std::fprintf(stderr, "tears-sweep: %s\n", why.c_str());
+    return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -285,109 +485,103 @@ int runTearsSweep(int argc, char** argv) {
   const std::optional<TearScene> loaded = benchScene(o.head, "tears-sweep");
   if (!loaded) return 0;
   const TearScene& scene = *loaded;
+  if (o.threadAxis.empty())
+    o.threadAxis = {1.0, double(std::max(1u, std::thread::hardware_concurrency()))};
 
-  // The reference: the smallest sub-step and cube of the sweep, default kernel, grid.
-  const double kFineLambda = 0.25, kFineCube = 0.25;
-  const Variant reference{
-      "reference", "fine", kFineLambda, 1, kFineCube, NeighbourMethod::Grid, PressureMethod::Wcsph};
-  std::printf(
-      "tears-sweep: %d particles, %d frames at %g fps on the %s; reference: sub-step x%g, cube x%g "
-      "...\n",
-      o.particles, o.frames, o.fps, scene.name.c_str(), kFineLambda, kFineCube);
-  std::fflush(stdout);
+  if (!o.json) {
+    std::printf(
+        "tears-sweep: %d particles, %d frames at %g fps on the %s, fastest of %d runs each; "
+        "references: each solver at sub-step x%g, cube x%g ...\n",
+        o.particles, o.frames, o.fps, scene.name.c_str(), o.repeats, kFineLambda, kFineCube);
+    std::fflush(stdout);
+  }
+  SweepReport s;
+  s.scene = &scene;
+
+  // The references, the WCSPH one first; its extra meshers are the cube-size series.
   const std::vector<double> cubeScales = {0.5, 1, 2};
   std::vector<RunResult> cubeRuns;
-  const RunResult ref = run(scene, reference, o, cubeScales, &cubeRuns);
-  const double radius =
-      scene.simulate(settingsFor(reference), optionsFor(reference))->particleRadius();
-  const double cell = 2 * radius;
+  for (const SolverEntry& solver : kSolvers) {
+    const Variant fine{"reference",           "fine",       kFineLambda, 1, kFineCube,
+                       NeighbourMethod::Grid, solver.method};
+    Variant finer = fine;
+    finer.lambdaScale = kFinerLambda;
+    SolverReference ref;
+    ref.solver = &solver;
+    ref.fine = &solver == &kReferenceSolver ? run(scene, fine, o, cubeScales, &cubeRuns)
+                                            : run(scene, fine, o);
+    if (s.refs.empty())
+      s.radius = scene.simulate(settingsFor(fine), optionsFor(fine))->particleRadius();
+    const RunResult check = run(scene, finer, o);
+    ref.finerMs = check.msPerFrame;
+    ref.check = errorsBetween(check, ref.fine, s.radius, 2 * s.radius);
+    s.refs.push_back(std::move(ref));
+  }
+  const Comparison compare(s.refs, s.radius);
 
-  std::vector<Row> rows;
-  rows.push_back(compare(reference, ref, ref, radius, cell));
-  for (double s : {0.5, 1.0, 1.5, 2.0}) {
-    const Variant v{"sub-step factor (lambda)", scaleLabel(s), s, 1, 1, NeighbourMethod::Grid};
-    rows.push_back(compare(v, run(scene, v, o), ref, radius, cell));
+  s.rows.push_back(compare.row(
+      {"reference", "fine", kFineLambda, 1, kFineCube, NeighbourMethod::Grid}, s.refs[0].fine));
+  for (SolverReference& ref : s.refs) {
+    const std::string series = std::string(ref.solver->name) + " sub-step factor";
+    double closest = std::numeric_limits<double>::infinity();
+    for (double lambda : {0.5, 1.0, 1.5, 2.0}) {
+      const Variant v{
+          series, scaleLabel(lambda), lambda, 1, 1, NeighbourMethod::Grid, ref.solver->method};
+      s.rows.push_back(compare.row(v, run(scene, v, o)));
+      closest = std::min(closest, s.rows.back().vsOwn.centroid);
+    }
+    ref.closestRow = closest;
+    ref.converged = ref.check.centroid < closest;
   }
-  for (double s : {0.5, 1.0, 1.5, 2.0}) {
-    const Variant v{"DFSPH, sub-step factor", scaleLabel(s),        s, 1, 1,
-                    NeighbourMethod::Grid,    PressureMethod::Dfsph};
-    rows.push_back(compare(v, run(scene, v, o), ref, radius, cell));
-  }
-  for (double s : {1.0, 2.0, 3.0}) {  // PBF at its default iterations, then fewer sub-steps
-    const Variant v{"PBF, sub-step factor", scaleLabel(s),      s, 1, 1,
-                    NeighbourMethod::Grid,  PressureMethod::Pbf};
-    rows.push_back(compare(v, run(scene, v, o), ref, radius, cell));
-  }
-  for (double s : {0.5, 0.75, 1.0, 1.5}) {
-    const Variant v{"kernel size", scaleLabel(s), 1, s, 1, NeighbourMethod::Grid};
-    rows.push_back(compare(v, run(scene, v, o), ref, radius, cell));
+  for (double k : {0.5, 0.75, 1.0, 1.5}) {
+    const Variant v{"kernel size", scaleLabel(k), 1, k, 1, NeighbourMethod::Grid};
+    s.rows.push_back(compare.row(v, run(scene, v, o)));
   }
   for (std::size_t k = 0; k < cubeScales.size(); ++k) {
     const Variant v{"cube size (surface)", scaleLabel(cubeScales[k]), kFineLambda, 1,
                     cubeScales[k],         NeighbourMethod::Grid};
-    Row row = compare(v, cubeRuns[k], ref, radius, cell);
+    Row row = compare.row(v, cubeRuns[k]);
     row.surfaceSeries = true;
-    rows.push_back(row);
+    s.rows.push_back(row);
   }
   for (NeighbourMethod m : {NeighbourMethod::Grid, NeighbourMethod::Octree}) {
-    const Variant v{
-        "neighbour structure", m == NeighbourMethod::Grid ? "grid" : "octree", 1, 1, 1, m};
-    rows.push_back(compare(v, run(scene, v, o), ref, radius, cell));
+    const Variant v{"neighbour structure", neighbourKey(m), 1, 1, 1, m};
+    s.rows.push_back(compare.row(v, run(scene, v, o)));
+  }
+  for (const SolverEntry& solver : kSolvers) {
+    ThreadAxis axis;
+    axis.solver = &solver;
+    for (double t : o.threadAxis) {
+      const int threads = int(t);
+      Variant v{std::string(solver.name) + " threads",
+                std::to_string(threads) + " thr",
+                1,
+                1,
+                1,
+                NeighbourMethod::Grid,
+                solver.method,
+                threads};
+      axis.rows.push_back(compare.row(v, run(scene, v, o)));
+      const Row& first = axis.rows.front();
+      const Row& last = axis.rows.back();
+      axis.identical = axis.identical && last.stateHash == first.stateHash &&
+                       sameErrors(last.vsReference, first.vsReference) &&
+                       sameErrors(last.vsOwn, first.vsOwn);
+    }
+    s.threadAxes.push_back(std::move(axis));
   }
 
-  std::printf(
-      "  errors in reference particle radii (%.4g head units); ms = full pipeline per frame "
-      "(mean)\n",
-      radius);
-  std::printf("  %-26s %-7s %10s %9s %13s %10s %12s %10s %8s\n", "swept", "value", "ms/frame",
-              "substeps", "particle RMS", "centroid", "surface err", "area diff", "matched");
-  for (const Row& r : rows)
-    std::printf("  %-26s %-7s %10.3f %9.1f %13.4g %10.4g %12.4g %9.1f%% %8d\n",
-                r.variant.series.c_str(), r.variant.label.c_str(), r.msPerFrame, r.substepsPerFrame,
-                r.particleRms, r.centroidError, r.surfaceError, 100 * r.areaDifference, r.matched);
-
+  if (o.json)
+    printJson(s, o);
+  else
+    printTable(s);
   if (!o.csv.empty()) {
-    std::ofstream csv(o.csv);
-    csv << "scene,series,value,solver,lambda_scale,kernel_scale,cube_scale,neighbours,ms_per_frame,"
-           "substeps_per_frame,"
-           "particle_rms_radii,centroid_error_radii,surface_error_radii,area_difference,matched_"
-           "particles\n";
-    for (const Row& r : rows) {
-      const Variant& v = r.variant;
-      csv << (o.head ? "default_head" : "cheek_sheet") << ',' << v.series << ',' << v.label << ','
-          << pressureMethodName(v.solver) << ',' << v.lambdaScale << ',' << v.kernelScale << ','
-          << v.cubeScale << ',' << (v.neighbours == NeighbourMethod::Grid ? "grid" : "octree")
-          << ',' << r.msPerFrame << ',' << r.substepsPerFrame << ',' << r.particleRms << ','
-          << r.centroidError << ',' << r.surfaceError << ',' << r.areaDifference << ',' << r.matched
-          << '\n';
-    }
-    if (!csv) {
-      std::fprintf(stderr, "tears-sweep: cannot write %s\n", o.csv.c_str());
-      return 1;
-    }
-    std::printf("  wrote %s\n", o.csv.c_str());
+    if (!writeCsv(s, o)) return 1;
+    if (!o.json) std::printf("  wrote %s\n", o.csv.c_str());
   }
   if (!o.png.empty()) {
-    std::vector<PlotSeries> series;
-    for (const Row& r : rows) {
-      if (r.variant.series == "reference") continue;
-      if (series.empty() || series.back().name.rfind(r.variant.series, 0) != 0)
-        series.push_back(
-            {r.variant.series + (r.surfaceSeries ? ": surface error" : ": centroid error"), {}});
-      series.back().points.push_back(
-          {r.msPerFrame, r.surfaceSeries ? r.surfaceError : r.centroidError, r.variant.label});
-    }
-    std::string why;
-    if (!writeLogLogPlot(o.png,
-                         "Tears on the " + scene.name + ": error against cost (" +
-                             std::to_string(o.particles) + " particles, " +
-                             std::to_string(o.frames) + " frames)",
-                         "ms per frame (simulation + surface + trails)",
-                         "error vs reference (particle radii)", series, why)) {
-      std::fprintf(stderr, "tears-sweep: %s\n", why.c_str());
-      return 1;
-    }
-    std::printf("  wrote %s (zero errors are not drawn on log axes)\n", o.png.c_str());
+    if (!drawPlot(s, o)) return 1;
+    if (!o.json) std::printf("  wrote %s (zero errors are not drawn on log axes)\n", o.png.c_str());
   }
   return 0;
 }

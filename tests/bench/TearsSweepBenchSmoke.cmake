@@ -1,0 +1,147 @@
+# Smoke test of `lacrima-bench tears-sweep` and `tears-slide` on tiny configurations: both run,
+# print one JSON object each, and report what the issue asks for (no figure is asserted beyond
+# sanity): every solver's own reference with its convergence check, each row against the WCSPH
+# reference and against its own solver's reference, finite; the thread axis with 1 and 2 threads
+# and the same state hash and errors ("error identical"); the CSV with the new columns and the
+# PNG written; repeats ending in the same state; the sliding drop's speed, dimensionless numbers
+# and fit finite, faster on steeper plates; bad number lists refused.
+#   cmake -DBENCH=<path to lacrima-bench> -DWORK=<scratch dir> -P TearsSweepBenchSmoke.cmake
+cmake_minimum_required(VERSION 3.20)  # IN_LIST, string(JSON)
+set(number "^-?[0-9][0-9.eE+-]*$")  # JSON null (NaN, infinity) fails this
+function(expect_number value what)
+  if(NOT value MATCHES "${number}")
+    message(FATAL_ERROR "${what}: expected a finite number, got '${value}'")
+  endif()
+endfunction()
+
+file(MAKE_DIRECTORY "${WORK}")
+execute_process(COMMAND "${BENCH}" tears-sweep --particles 24 --frames 6 --threads-axis 1,2 --json
+                        --repeats 2 --csv "${WORK}/sweep.csv" --png "${WORK}/sweep.png"
+                OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "lacrima-bench tears-sweep exited with ${status}: ${err}")
+endif()
+if(err MATCHES "another state")  # a repeat must end where the first run did
+  message(FATAL_ERROR "tears-sweep is not deterministic across repeats: ${err}")
+endif()
+string(JSON refCount ERROR_VARIABLE parseError LENGTH "${out}" references)
+if(parseError)
+  message(FATAL_ERROR "tears-sweep --json printed no JSON object: ${parseError}\n${out}")
+endif()
+if(refCount LESS 2)
+  message(FATAL_ERROR "expected a reference per solver (WCSPH, DFSPH, ...), got ${refCount}")
+endif()
+math(EXPR last "${refCount} - 1")
+foreach(i RANGE ${last})
+  string(JSON solver GET "${out}" references ${i} solver)
+  string(JSON check GET "${out}" references ${i} check centroid_radii)
+  string(JSON converged GET "${out}" references ${i} converged)
+  expect_number("${check}" "${solver} reference check")
+  if(NOT converged MATCHES "^(ON|OFF|TRUE|FALSE|true|false)$")
+    message(FATAL_ERROR "${solver} reference: 'converged' missing (${converged})")
+  endif()
+endforeach()
+
+# Every row against both references; the solvers' sub-step series present.
+string(JSON rowCount LENGTH "${out}" rows)
+math(EXPR last "${rowCount} - 1")
+set(series "")
+foreach(i RANGE ${last})
+  string(JSON name GET "${out}" rows ${i} series)
+  list(APPEND series "${name}")
+  foreach(reference vs_wcsph_reference vs_own_reference)
+    foreach(field centroid_radii particle_rms_radii)
+      string(JSON value GET "${out}" rows ${i} ${reference} ${field})
+      expect_number("${value}" "row ${i} (${name}) ${reference} ${field}")
+    endforeach()
+  endforeach()
+endforeach()
+foreach(name "WCSPH sub-step factor" "DFSPH sub-step factor" "kernel size" "neighbour structure")
+  if(NOT name IN_LIST series)
+    message(FATAL_ERROR "no '${name}' rows in the sweep")
+  endif()
+endforeach()
+
+# The thread axis: 1 and 2 threads per solver, error identical.
+string(JSON identical GET "${out}" error_identical)
+string(JSON axisCount LENGTH "${out}" thread_axis)
+if(NOT identical OR NOT axisCount EQUAL refCount)
+  message(FATAL_ERROR "thread axis: error_identical ${identical}, ${axisCount} solvers")
+endif()
+math(EXPR last "${axisCount} - 1")
+foreach(i RANGE ${last})
+  string(JSON threads1 GET "${out}" thread_axis ${i} runs 0 threads)
+  string(JSON threads2 GET "${out}" thread_axis ${i} runs 1 threads)
+  string(JSON hash1 GET "${out}" thread_axis ${i} runs 0 state_hash)
+  string(JSON hash2 GET "${out}" thread_axis ${i} runs 1 state_hash)
+  string(JSON ms GET "${out}" thread_axis ${i} runs 1 ms_per_frame)
+  expect_number("${ms}" "thread axis ms per frame")
+  if(NOT threads1 EQUAL 1 OR NOT threads2 EQUAL 2 OR NOT hash1 STREQUAL hash2)
+    message(FATAL_ERROR "thread axis ${i}: threads ${threads1}, ${threads2}, hashes ${hash1}, ${hash2}")
+  endif()
+endforeach()
+
+file(READ "${WORK}/sweep.csv" csv)
+foreach(column threads state_hash own_reference_centroid_error_radii
+               own_reference_particle_rms_radii)
+  if(NOT csv MATCHES "${column}")
+    message(FATAL_ERROR "the sweep's CSV has no ${column} column")
+  endif()
+endforeach()
+file(SIZE "${WORK}/sweep.png" pngBytes)
+if(pngBytes LESS 1000)
+  message(FATAL_ERROR "the sweep's PNG is missing or empty (${pngBytes} bytes)")
+endif()
+message(STATUS "tears-sweep: ${refCount} references, ${rowCount} rows, error identical: ${identical}")
+
+# The sliding drop on two angles, one sub-step factor.
+execute_process(COMMAND "${BENCH}" tears-slide --particles 30 --angles 30,60,75 --substeps 1
+                        --settle 4 --measure 6 --json
+                OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "lacrima-bench tears-slide exited with ${status}: ${err}")
+endif()
+string(JSON settingCount ERROR_VARIABLE parseError LENGTH "${out}" settings)
+if(parseError OR NOT settingCount EQUAL refCount)
+  message(FATAL_ERROR "tears-slide: expected ${refCount} settings (one per solver): ${parseError}\n${out}")
+endif()
+foreach(field bond_number viscosity_pa_s tension_n_m volume_m3)
+  string(JSON value GET "${out}" ${field})
+  expect_number("${value}" "tears-slide ${field}")
+endforeach()
+math(EXPR last "${settingCount} - 1")
+foreach(i RANGE ${last})
+  foreach(field fit_slope_m_s fit_r_squared fit_ca_per_bo_sin ms_per_frame)
+    string(JSON value GET "${out}" settings ${i} ${field})
+    expect_number("${value}" "tears-slide setting ${i} ${field}")
+  endforeach()
+  foreach(run 0 1 2)
+    string(JSON speed GET "${out}" settings ${i} runs ${run} speed_m_s)
+    string(JSON ca GET "${out}" settings ${i} runs ${run} capillary_number)
+    expect_number("${speed}" "tears-slide setting ${i} run ${run} speed")
+    expect_number("${ca}" "tears-slide setting ${i} run ${run} capillary number")
+    if(speed LESS_EQUAL 0)
+      message(FATAL_ERROR "tears-slide setting ${i} run ${run}: the drop did not slide (${speed} m/s)")
+    endif()
+  endforeach()
+  # Steeper is faster, and R^2 is a fraction: a fit that broke would show here.
+  string(JSON slope GET "${out}" settings ${i} fit_slope_m_s)
+  string(JSON r2 GET "${out}" settings ${i} fit_r_squared)
+  string(JSON shallow GET "${out}" settings ${i} runs 0 speed_m_s)
+  string(JSON steep GET "${out}" settings ${i} runs 2 speed_m_s)
+  if(slope LESS_EQUAL 0 OR r2 LESS 0 OR r2 GREATER 1 OR NOT steep GREATER shallow)
+    message(FATAL_ERROR "tears-slide setting ${i}: slope ${slope}, R^2 ${r2}, ${shallow} m/s at "
+                        "30 degrees against ${steep} at 75")
+  endif()
+endforeach()
+message(STATUS "tears-slide: ${settingCount} settings fitted")
+
+# A bad list is refused with the option named (exit status 2), never run.
+foreach(bad "tears-sweep;--threads-axis;1,x" "tears-slide;--angles;30,120")
+  execute_process(COMMAND "${BENCH}" ${bad} OUTPUT_VARIABLE out ERROR_VARIABLE err
+                  RESULT_VARIABLE status)
+  list(GET bad 1 option)
+  if(NOT status EQUAL 2 OR NOT err MATCHES "${option}: expected a comma-separated list")
+    message(FATAL_ERROR "${bad}: expected exit status 2 naming ${option}, got ${status}: ${err}")
+  endif()
+endforeach()
