@@ -35,8 +35,8 @@ struct Options {
   double fps = 22;
   bool json = false;
   bool sway = false;
-  bool head = false;         // the rigged default head instead of the cheek sheet
-  bool keepFalling = false;  // SimulationOptions::retireFallingWater off (the box alone)
+  bool head = false;           // the rigged default head instead of the cheek sheet
+  bool retireFalling = false;  // SimulationOptions::retireFallingWater
   double skin = SimulationOptions{}.neighbourSkin;
   NeighbourMethod neighbours = NeighbourMethod::Grid;
   SurfaceTensionModel tension = SurfaceTensionModel::Mueller;
@@ -104,10 +104,10 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
                    0, 256, o.threads);
   line.choice("head", "The cheek sheet (default) or the cached default head (skipped when absent).",
               {{"sheet", false}, {"default", true}}, o.head);
-  line.flag("keep-falling",
-            "Recycle water only when it leaves the box, not as soon as it falls clear of the "
-            "skin (for comparison).",
-            o.keepFalling);
+  line.flag("retire-falling",
+            "Recycle water as soon as it falls clear of the skin, not only when it leaves the "
+            "box (SimulationOptions::retireFallingWater).",
+            o.retireFalling);
   line.flag("sway", "The sheet (or head) sways (rotates and translates) every frame.", o.sway);
   line.flag("json", "One JSON object instead of the table.", o.json);
   return line.parse(argc, argv);
@@ -199,7 +199,7 @@ int runTears(int argc, char** argv) {
   simOptions.lambdaCfl *= o.substepFactor;
   simOptions.lambdaAcceleration *= o.substepFactor;
   simOptions.threads = o.threads;
-  simOptions.retireFallingWater = !o.keepFalling;
+  simOptions.retireFallingWater = o.retireFalling;
   TearPipeline pipeline(*scene, o.settings, simOptions);
   TearSimulation& sim = pipeline.simulation();
   const int left = (o.particles + 1) / 2, right = o.particles / 2;

@@ -174,8 +174,7 @@ class TearDropsTest : public QObject {
     const SyntheticSkin chin = makeChinSphere();
     SimulationOptions options;
     options.headHeight = 2.7;
-    options.boxMarginMetres = 0.1;       // room to watch the drop fall for a few frames
-    options.retireFallingWater = false;  // ... which it would not get once clear of the sphere
+    options.boxMarginMetres = 0.1;  // room to watch the drop fall for a few frames
     auto sim =
         std::make_unique<TearSimulation>(chin.positions, chin.triangles, TearSettings{}, options);
     sim->setSource(Eye::Left, chin.leftSource);

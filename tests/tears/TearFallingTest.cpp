@@ -19,6 +19,12 @@ using namespace lacrima::tears::testing;
 
 namespace {
 
+SimulationOptions retiring() {
+  SimulationOptions options;
+  options.retireFallingWater = true;  // off by default (SimulationOptions.h)
+  return options;
+}
+
 // Two horizontal squares facing down: a high one over x in [0, 1], a low one over [2, 3]
 // (y = 1 and y = 0), in a box reaching down to y = -2.
 struct Ceilings {
@@ -69,10 +75,10 @@ class TearFallingTest : public QObject {
     QVERIFY(!floor.fallsClear({0.5, 0.5, 0.5}, {0, nan, 0}, g, clearance));
   }
 
-  // Drops fall from under a chin-sized sphere (no adhesion, so they fall soon). With the option
-  // on, water is recycled a few kernel radii below the sphere's lowest point, the counts stay
-  // what was commanded, and the recycled ones are counted; with it off, the same drops fall on
-  // to the box's bottom, 10 cm down (the test would prove nothing otherwise).
+  // Drops fall from under a chin-sized sphere (no adhesion, so they fall soon). Off by default;
+  // with the option on, water is recycled a few kernel radii below the sphere's lowest point, the
+  // counts stay what was commanded, and the recycled ones are counted; with it off, the same drops
+  // fall on to the box's bottom, 10 cm down (the test would prove nothing otherwise).
   void dropsAreRetiredJustBelowTheChin() {
     const SyntheticSkin chin = makeChinSphere();
     double bottom = std::numeric_limits<double>::infinity();
@@ -123,12 +129,12 @@ class TearFallingTest : public QObject {
   // and drops hanging under the sphere with the default adhesion before they let go.
   void waterOnTheSkinIsNotRetired() {
     const SyntheticSkin sheet = makeCheekSheet();
-    auto sim = makeSheetSimulation(sheet);
+    auto sim = makeSheetSimulation(sheet, {}, retiring());
     runAndCheck(*sim, sheet, 30, 30, 44);
     QCOMPARE(sim->counters().recycledFalling, 0LL);
 
     const SyntheticSkin chin = makeChinSphere();
-    auto hanging = makeSheetSimulation(chin);
+    auto hanging = makeSheetSimulation(chin, {}, retiring());
     for (int f = 0; f < 66; ++f) hanging->step(chin.positions, f + 1, 0, kFrameDt);
     QCOMPARE(hanging->counters().recycledFalling, 0LL);
     QCOMPARE(hanging->counters().recycled, 0LL);
@@ -140,7 +146,7 @@ class TearFallingTest : public QObject {
   void defaultHeadCarriesNoWaterBelowTheSkin() {
     if (!lacrima::rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
     const lacrima::HeadMesh head = lacrima::rigging::loadDefaultHead();
-    auto sim = TearSimulation::forHead(head, TearSettings{}, SimulationOptions{});
+    auto sim = TearSimulation::forHead(head, TearSettings{}, retiring());
     const lacrima::HeadSubmesh* skin = head.findSubmesh("skin");
     QVERIFY(skin);
     double bottom = std::numeric_limits<double>::infinity();

@@ -224,9 +224,7 @@ class TearHeadTest : public QObject {
         const Eigen::Vector3f x = head_->positions.col(t[a]);
         if (x.z() > 1.0 && std::abs(x.x()) < 0.5) chin = std::min(chin, double(x.y()));
       }
-    SimulationOptions options;
-    options.retireFallingWater = false;  // watch the drop in flight, below the chin
-    auto sim = TearSimulation::forHead(*head_, {}, options);
+    auto sim = TearSimulation::forHead(*head_);
     const double U = sim->parameters().headUnitsPerMetre;
     const auto microlitres = [&](double mass) {
       return mass / sim->parameters().restDensity / (U * U * U) * 1e9;
