@@ -69,6 +69,10 @@ class TearFallingTest : public QObject {
     // No gravity: a particle at rest stays; one moving down leaves as it goes.
     QVERIFY(!floor.fallsClear({0.5, 0.5, 0.5}, {0, 0, 0}, 0, clearance));
     QVERIFY(floor.fallsClear({0.5, 0.5, 0.5}, {0, -1, 0}, 0, clearance));
+    // Cells far finer than the box allows are widened (bounded memory); the answers hold.
+    floor.build(c.vertices, c.triangles, c.box, 1e-12);
+    QVERIFY(floor.fallsClear({0.5, 0.5, 0.5}, {0, -1, 0}, g, clearance));
+    QVERIFY(!floor.fallsClear({2.5, 0.5, 0.5}, {0, -1, 0}, g, clearance));
     // Bad input decides nothing.
     const double nan = std::numeric_limits<double>::quiet_NaN();
     QVERIFY(!floor.fallsClear({nan, 0.5, 0.5}, {0, -1, 0}, g, clearance));
@@ -123,6 +127,37 @@ class TearFallingTest : public QObject {
     // Retired once 2h clear of the skin and falling faster than a 2h fall from rest gives:
     // within one sub-step after that, a few kernel radii below the lowest point.
     QVERIFY2(lowest[1] < 8, qPrintable(QString("water fell %1 h below the sphere").arg(lowest[1])));
+  }
+
+  // The hard parameters with retiring on: kernel 0.1x and 10x (cells of 2h), no gravity and
+  // ten times it, under the chin sphere: finite, counts kept, everything in the box.
+  void retiringStaysFiniteInHardCases_data() {
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<double>("value");
+    QTest::newRow("kernel x0.1") << "kernel" << 0.05;
+    QTest::newRow("kernel x10") << "kernel" << 5.0;
+    QTest::newRow("gravity 0") << "gravity" << 0.0;
+    QTest::newRow("gravity 100") << "gravity" << 100.0;
+  }
+  void retiringStaysFiniteInHardCases() {
+    QFETCH(QString, name);
+    QFETCH(double, value);
+    const SyntheticSkin chin = makeChinSphere();
+    TearSettings settings;
+    settings.set(name.toStdString(), value);
+    settings.set("adhesion", 0);
+    auto sim = makeSheetSimulation(chin, settings, retiring());
+    for (int f = 0; f < 22; ++f) {
+      sim->step(chin.positions, 80, 40, kFrameDt);
+      QCOMPARE(sim->count(Eye::Left), 80);
+      QCOMPARE(sim->count(Eye::Right), 40);
+      const ParticleSet& p = sim->particles();
+      for (int i = 0; i < p.size(); ++i) {
+        const auto s = static_cast<std::size_t>(i);
+        QVERIFY(p.position[s].allFinite() && p.velocity[s].allFinite());
+        QVERIFY(sim->box().contains(p.position[s]));
+      }
+    }
   }
 
   // Water on the skin is never taken for falling water: tears sliding down the cheek sheet,

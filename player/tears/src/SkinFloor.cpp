@@ -8,17 +8,20 @@ namespace lacrima::tears {
 
 void SkinFloor::build(const Eigen::Matrix3Xd& vertices, std::span<const Eigen::Vector3i> triangles,
                       const Eigen::AlignedBox3d& box, double cell) {
-  cell_ = cell > 0 && std::isfinite(cell) ? cell : 1;
   minX_ = box.min().x();
   minZ_ = box.min().z();
   bottom_ = box.min().y();
-  // The box is finite and a few head heights across at most, so the count is bounded; a
-  // degenerate box gets one column.
+  // At most kMaxCells columns (8 MB): a tiny kernel widens the cells, which only makes the
+  // test more conservative. A degenerate box gets one column.
+  const double sizeX = std::max(0.0, box.sizes().x()), sizeZ = std::max(0.0, box.sizes().z());
+  cell_ = cell > 0 && std::isfinite(cell) ? cell : 1;
+  cell_ = std::max(cell_, std::sqrt(sizeX * sizeZ / kMaxCells));
+  cell_ = std::max({cell_, sizeX / 4096, sizeZ / 4096});
   auto columnsAlong = [this](double extent) {
-    return std::clamp(static_cast<int>(std::ceil(std::max(0.0, extent) / cell_)), 1, 4096);
+    return std::clamp(static_cast<int>(std::ceil(extent / cell_)), 1, 4096);
   };
-  columnsX_ = columnsAlong(box.sizes().x());
-  columnsZ_ = columnsAlong(box.sizes().z());
+  columnsX_ = columnsAlong(sizeX);
+  columnsZ_ = columnsAlong(sizeZ);
   lowest_.assign(static_cast<std::size_t>(columnsX_) * static_cast<std::size_t>(columnsZ_),
                  std::numeric_limits<double>::infinity());
   for (const Eigen::Vector3i& t : triangles) {

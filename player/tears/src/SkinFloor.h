@@ -1,8 +1,9 @@
 #pragma once
 // Which free particles have left the face for good: water falling past the chin with no skin
-// below it will only fall out of the simulation box, so it is recycled as soon as that is
-// certain instead of being carried (as a fast stray that voids the pair list, and a closing
-// speed that shortens the sub-step) down to the box's bottom.
+// below it will only fall out of the simulation box, so with
+// SimulationOptions::retireFallingWater it is recycled as soon as that is certain instead of
+// being carried down to the box's bottom (as a fast stray that voids the pair list, and a
+// closing speed that shortens the sub-step).
 //
 // The surface is summarised by its lowest point over each column of a horizontal grid (cells of
 // edge `cell` in x and z; gravity along -y, TearSimulation::gravity()). A triangle counts in
@@ -42,6 +43,8 @@ class SkinFloor {
   // Columns one decision may read: a particle drifting sideways so fast that its fall covers
   // more is simply kept (recycled at the box, as before).
   static constexpr int kMaxColumns = 1024;
+  // Columns the floor holds at most; finer cells are widened to fit.
+  static constexpr double kMaxCells = 1 << 20;
 
  private:
   double minX_ = 0, minZ_ = 0, bottom_ = 0, cell_ = 1;

@@ -12,12 +12,13 @@ void TearSimulation::recycleEscaped(EmissionSites& sites) {
   // particle after them and void the pair list, a full neighbour search every sub-step while
   // drops keep falling off the chin.
   //
-  // Water falling clear of the skin is gone too (SkinFloor.h): free of contact, moving down at
-  // least as fast as a fall of 2h from rest gives, sqrt(4 g h) (a drop hanging under the chin is
-  // still, so its lowest particles are not taken), and with no skin below its ballistic path
-  // to the box's bottom within 2h (farther than any pair of it and water on the skin can
-  // interact). It would only fall on out of the box, as a fast stray voiding the pair list and
-  // closing on the water below it; it is re-emitted now instead.
+  // With SimulationOptions::retireFallingWater, water falling clear of the skin is gone too
+  // (SkinFloor.h): free of contact, moving down at least as fast as a fall of 2h from rest
+  // gives, sqrt(4 g h) (a drop hanging under the chin is still, so its lowest particles are not
+  // taken), and with no skin below its ballistic path to the box's bottom within 2h (farther
+  // than any pair of it and water on the skin can interact). It would only fall on out of the
+  // box, as a fast stray voiding the pair list and closing on the water below it; it is
+  // re-emitted now instead.
   Internals& in = *internals_;
   auto& escaped = in.escaped;
   for (auto& slots : escaped) slots.clear();
