@@ -10,6 +10,7 @@
 
 #include <lacrima/common/JsonWriter.h>
 #include <lacrima/common/Milliseconds.h>
+#include <lacrima/playback/TearQualityOptions.h>
 
 #include <algorithm>
 #include <chrono>
@@ -34,7 +35,8 @@ struct Options {
   double fps = 22;
   bool json = false;
   bool sway = false;
-  bool head = false;  // the rigged default head instead of the cheek sheet
+  bool head = false;           // the rigged default head instead of the cheek sheet
+  bool retireFalling = false;  // SimulationOptions::retireFallingWater
   double skin = SimulationOptions{}.neighbourSkin;
   NeighbourMethod neighbours = NeighbourMethod::Grid;
   SurfaceTensionModel tension = SurfaceTensionModel::Mueller;
@@ -42,8 +44,9 @@ struct Options {
   int pbfIterations = SimulationOptions{}.pbfIterations;
   double pbfRelaxation = SimulationOptions{}.pbfRelaxation;
   double maxStepMs = 0;
-  double substepFactor = 1;  // scales the CFL and acceleration safety factors
-  int threads = 0;           // SimulationOptions::threads (0 = LACRIMA_THREADS or all)
+  double substepFactor = 1;                     // scales the CFL and acceleration safety factors
+  TearQuality quality = TearQuality::Balanced;  // the apps' level (Balanced: the defaults)
+  int threads = 0;  // SimulationOptions::threads (0 = LACRIMA_THREADS or all)
   TearSettings settings;
 };
 
@@ -97,6 +100,14 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
               o.maxStepMs);
   line.number("substep-factor", "F", "Scales the CFL and acceleration safety factors (default 1).",
               0, 10, o.substepFactor, BenchCommandLine::Low::Excluded);
+  line.choice("quality",
+              "The apps' tear quality level, mapped as they map it (default balanced: the "
+              "simulation's defaults); --substep-factor then scales its CFL and acceleration "
+              "factors further.",
+              {{"preview", TearQuality::Preview},
+               {"balanced", TearQuality::Balanced},
+               {"reference", TearQuality::Reference}},
+              o.quality);
   line.number("skin", "S",
               "Verlet skin of the pair list, in kernel radii (default 0.3; 0 = no reuse).", 0, 2,
               o.skin);
@@ -106,6 +117,10 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
                    0, 256, o.threads);
   line.choice("head", "The cheek sheet (default) or the cached default head (skipped when absent).",
               {{"sheet", false}, {"default", true}}, o.head);
+  line.flag("retire-falling",
+            "Recycle water as soon as it falls clear of the skin, not only when it leaves the "
+            "box (SimulationOptions::retireFallingWater).",
+            o.retireFalling);
   line.flag("sway", "The sheet (or head) sways (rotates and translates) every frame.", o.sway);
   line.flag("json", "One JSON object instead of the table.", o.json);
   return line.parse(argc, argv);
@@ -146,6 +161,36 @@ std::pair<double, double> checkpointCost(TearSimulation& sim) {
 
 const char* mark(bool pass) { return pass ? "PASS" : "MISS"; }
 
+// Where the particles are at one frame: touching the skin (on the face), free inside the
+// skin's bounds (in the air over the face: falling, or thrown off it), or outside those bounds
+// (off the face, in the box's margin, on their way out to be recycled).
+struct Population {
+  int frame = 0;
+  int onFace = 0, inAir = 0, offFace = 0;
+  long long recycled = 0;  // since the previous sample
+};
+
+Population populationOf(const ParticleSet& p, const Eigen::AlignedBox3d& skinBounds) {
+  Population counts;
+  for (int i = 0; i < p.size(); ++i) {
+    const auto s = static_cast<std::size_t>(i);
+    if (p.contact[s].triangle >= 0)
+      ++counts.onFace;
+    else if (skinBounds.contains(p.position[s]))
+      ++counts.inAir;
+    else
+      ++counts.offFace;
+  }
+  return counts;
+}
+
+Eigen::AlignedBox3d skinBoundsOf(const TearScene& scene) {
+  Eigen::AlignedBox3d bounds;
+  for (const Eigen::Vector3i& t : scene.skinTriangles)
+    for (int a = 0; a < 3; ++a) bounds.extend(scene.rest.col(t[a]).cast<double>());
+  return bounds;
+}
+
 }  // namespace
 
 int runTears(int argc, char** argv) {
@@ -154,7 +199,11 @@ int runTears(int argc, char** argv) {
 
   std::optional<TearScene> scene = benchScene(o.head, "tears");
   if (!scene) return 0;
-  SimulationOptions simOptions;
+  // The level's options exactly as the player and the editor get them (one mapping,
+  // playback::simulationOptions); the bench's own choices then replace the level's.
+  TearQualitySettings quality;
+  quality.level = o.quality;
+  SimulationOptions simOptions = playback::simulationOptions(quality);
   simOptions.neighbours = o.neighbours;
   simOptions.surfaceTension = o.tension;
   simOptions.neighbourSkin = o.skin;
@@ -165,6 +214,7 @@ int runTears(int argc, char** argv) {
   simOptions.lambdaCfl *= o.substepFactor;
   simOptions.lambdaAcceleration *= o.substepFactor;
   simOptions.threads = o.threads;
+  simOptions.retireFallingWater = o.retireFalling;
   TearPipeline pipeline(*scene, o.settings, simOptions);
   TearSimulation& sim = pipeline.simulation();
   const int left = (o.particles + 1) / 2, right = o.particles / 2;
@@ -175,6 +225,11 @@ int runTears(int argc, char** argv) {
   double surfaceTotal = 0, trailsTotal = 0;
   bool finite = true;
   Eigen::Matrix3Xf positions = scene->rest;
+  // Half a second between population samples (and the last frame).
+  const int sampleEvery = std::max(1, static_cast<int>(std::lround(o.fps / 2)));
+  const Eigen::AlignedBox3d skinBounds = skinBoundsOf(*scene);
+  std::vector<Population> population;
+  long long recycledBefore = 0;
   for (int f = 0; f < o.frames; ++f) {
     if (o.sway) positions = scene->positionsAt(f * dt, true);
     const FrameTimes t = pipeline.step(positions, left, right, dt);
@@ -188,6 +243,13 @@ int runTears(int argc, char** argv) {
     total.forces += s.forces;
     total.collision += s.collision;
     total.emission += s.emission;
+    if ((f + 1) % sampleEvery == 0 || f + 1 == o.frames) {
+      Population counts = populationOf(sim.particles(), skinBounds);
+      counts.frame = f + 1;
+      counts.recycled = sim.counters().recycled - recycledBefore;
+      recycledBefore = sim.counters().recycled;
+      population.push_back(counts);
+    }
   }
   const ParticleSet& p = sim.particles();
   double maxDistance = 0;
@@ -247,6 +309,7 @@ int runTears(int argc, char** argv) {
     }
     json.field("max_substep_ms", o.maxStepMs);
     json.field("substep_factor", o.substepFactor);
+    json.field("quality", toString(o.quality));
     json.field("scene", o.head ? "default_head" : "cheek_sheet");
     json.field("sway", o.sway);
     json.field("threads", sim.threads());
@@ -278,6 +341,7 @@ int runTears(int argc, char** argv) {
     json.field("clamped", c.clamped);
     json.field("substep_cap_hits", c.substepCapHits);
     json.field("recycled", c.recycled);
+    json.field("recycled_falling", c.recycledFalling);
     json.field("pendant_substeps", c.pendantSubsteps);
     json.field("released_contacts", c.releasedContacts);
     json.field("surface_runs", c.surfaceRuns);
@@ -302,6 +366,18 @@ int runTears(int argc, char** argv) {
     json.field("octree", octreeRate);
     json.field("target_at_least", 1.0);
     json.endObject();
+    json.key("population");  // every half second: where the particles are (Population)
+    json.beginArray();
+    for (const Population& counts : population) {
+      json.beginObject();
+      json.field("frame", counts.frame);
+      json.field("on_face", counts.onFace);
+      json.field("in_air", counts.inAir);
+      json.field("off_face", counts.offFace);
+      json.field("recycled", counts.recycled);
+      json.endObject();
+    }
+    json.endArray();
     json.field("checkpoint_ms", checkpointMs);
     json.field("restore_ms", restoreMs);
     json.field("checkpoint_bytes", static_cast<long long>(checkpointBytes));
@@ -336,11 +412,12 @@ int runTears(int argc, char** argv) {
       total.neighbours / n, total.density / n, total.forces / n, total.collision / n,
       total.emission / n, surfaceTotal / n, trailsTotal / n);
   std::printf(
-      "  counters: sph_steps %lld  substeps %lld (%.1f/frame)  clamped %lld  recycled %lld  "
+      "  counters: sph_steps %lld  substeps %lld (%.1f/frame)  clamped %lld  recycled %lld (%lld "
+      "falling clear)  "
       "ode_queries %lld  trimesh_updates %lld  surface_runs %lld\n"
       "  pendant drops: weighed in %lld sub-steps, %lld contacts let go\n",
-      c.sphSteps, c.substeps, c.substeps / n, c.clamped, c.recycled, c.odeQueries, c.trimeshUpdates,
-      c.surfaceRuns, c.pendantSubsteps, c.releasedContacts);
+      c.sphSteps, c.substeps, c.substeps / n, c.clamped, c.recycled, c.recycledFalling,
+      c.odeQueries, c.trimeshUpdates, c.surfaceRuns, c.pendantSubsteps, c.releasedContacts);
   std::printf(
       "  sub-step limits: cfl %lld  acceleration %lld  viscosity %lld  frame end %lld   pair-list "
       "builds %lld (%.1f/frame)\n",
@@ -355,6 +432,12 @@ int runTears(int argc, char** argv) {
   if (o.solver == PressureMethod::Pbf)
     std::printf("  PBF: %d constraint iterations per sub-step, epsilon %g / h^2\n", o.pbfIterations,
                 o.pbfRelaxation);
+  std::printf(
+      "  where the particles are (frame: on the face / in the air / off the face, "
+      "recycled since the previous line):\n");
+  for (const Population& counts : population)
+    std::printf("    %5d: %6d / %6d / %6d   recycled %lld\n", counts.frame, counts.onFace,
+                counts.inAir, counts.offFace, counts.recycled);
   std::printf("  neighbours within h per particle at the end: %.1f\n", neighboursPerParticle);
   std::printf("  density at the end: max %.4f, mean %.4f rho0\n", densityMax, densityMean);
   std::printf("  checkpoint %.3f ms, restore %.3f ms, %.1f kB\n", checkpointMs, restoreMs,

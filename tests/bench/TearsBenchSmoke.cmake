@@ -48,3 +48,35 @@ if(NOT hash1 STREQUAL hash3 OR NOT hash1 MATCHES "^[0-9a-f]+$")
   message(FATAL_ERROR "state hash differs between 1 and 3 threads: ${hash1} and ${hash3}")
 endif()
 message(STATUS "lacrima-bench tears --threads 1 and 3: state hash ${hash1}")
+
+# --quality maps a level as the apps do (playback::simulationOptions): Reference halves the
+# viscous bound as well as the CFL and acceleration factors, which --substep-factor 0.5 does
+# not. With a viscosity at which the viscous bound sets the sub-steps, Reference takes more.
+foreach(run quality substep)
+  if(run STREQUAL quality)
+    set(choice --quality reference)
+  else()
+    set(choice --substep-factor 0.5)
+  endif()
+  execute_process(COMMAND "${BENCH}" tears --particles 100 --frames 12 --param viscosity=50
+                          ${choice} --json
+                  OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE status)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "lacrima-bench tears ${choice} exited with ${status}: ${err}")
+  endif()
+  string(JSON level${run} GET "${out}" quality)
+  string(JSON substeps${run} GET "${out}" counters substeps)
+  string(JSON samples${run} LENGTH "${out}" population)
+endforeach()
+if(NOT levelquality STREQUAL "reference" OR NOT levelsubstep STREQUAL "balanced")
+  message(FATAL_ERROR "--quality reported '${levelquality}', the default '${levelsubstep}'")
+endif()
+if(NOT substepsquality GREATER substepssubstep)
+  message(FATAL_ERROR "--quality reference took ${substepsquality} sub-steps, no more than "
+                      "--substep-factor 0.5 (${substepssubstep}): the viscous bound was not halved")
+endif()
+if(NOT samplesquality EQUAL 2)
+  message(FATAL_ERROR "expected 2 population samples in 12 frames, got ${samplesquality}")
+endif()
+message(STATUS "--quality reference: ${substepsquality} sub-steps, --substep-factor 0.5: "
+               "${substepssubstep}")

@@ -10,9 +10,16 @@
 #include <lacrima/editor/MainWindow.h>
 #include <lacrima/editor/PreviewPanel.h>
 #include <lacrima/rigging/DefaultHead.h>
+#include <lacrima/viewport/EffectsPanel.h>
 
+#include <algorithm>
+
+#include <QAction>
+#include <QApplication>
+#include <QDialog>
 #include <QFileDialog>
 #include <QImage>
+#include <QLabel>
 #include <QScreen>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -117,6 +124,66 @@ class EditorPreviewTest : public QObject {
     QVERIFY(window.model().document().scene.quality == TearQualitySettings{});
     window.model().undoStack()->redo();
     QVERIFY(window.model().document().scene.quality == settings.scene.quality);
+    window.model().markSaved();
+  }
+
+  // Project settings show the preview's live cost beside the tear quality: the Effects panel's
+  // label is the mean of what the preview measured (tearsStepped) since the dialog opened, and
+  // it follows new measurements while the dialog is open; not a fixed text.
+  void settingsDialogShowsThePreviewsLiveCost() {
+    if (!rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
+    EditorOptions o = options();
+    o.interactive = true;  // the settings dialog opens only then
+    MainWindow window(o);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.preview()->loadHead());
+    QSignalSpy stepped(window.preview(), &PreviewPanel::tearsStepped);
+    window.model().setChannels({{kTearLeftFap, 30}, {kTearRightFap, 30}}, QStringLiteral("tears"));
+    QTRY_VERIFY(!stepped.isEmpty());
+    auto* settings = window.findChild<QAction*>(QStringLiteral("edit.settings"));
+    QVERIFY(settings);
+
+    // The text the panel must show for the preview's frames since `from` (its last
+    // kCostFrames), formatted as EffectsPanel::showCost does.
+    const auto expected = [&stepped](qsizetype from) {
+      from = std::max(from, stepped.count() - qsizetype(viewport::EffectsPanel::kCostFrames));
+      double milliseconds = 0, substeps = 0;
+      for (qsizetype i = from; i < stepped.count(); ++i) {
+        milliseconds += stepped.at(i).at(0).toDouble();
+        substeps += double(stepped.at(i).at(1).toLongLong());
+      }
+      const double n = double(stepped.count() - from);
+      return QStringLiteral("%1 ms per frame, %2 sub-steps")
+          .arg(milliseconds / n, 0, 'f', 1)
+          .arg(substeps / n, 0, 'f', 0);
+    };
+    // Nothing runs the event loop between the trigger and the panel's connection, so the
+    // panel sees exactly the frames the spy records from here on.
+    const qsizetype opened = stepped.count();
+    QStringList shown;
+    bool seen = false;
+    QTimer::singleShot(0, [&] {
+      auto* dialog = qobject_cast<QDialog*>(QApplication::activeModalWidget());
+      QVERIFY(dialog);
+      struct Closer {
+        QDialog* dialog;
+        ~Closer() { dialog->reject(); }  // also when a check below fails
+      } closer{dialog};
+      auto* panel = dialog->findChild<viewport::EffectsPanel*>();
+      QVERIFY(panel);
+      for (qsizetype frames : {opened + 2, opened + 5}) {
+        QTRY_VERIFY_WITH_TIMEOUT(stepped.count() >= frames, 30000);
+        QVERIFY(stepped.last().at(0).toDouble() > 0);  // a measured time
+        QCOMPARE(panel->cost()->text(), expected(opened));
+        shown << panel->cost()->text();
+      }
+      seen = true;
+    });
+    settings->trigger();
+    QVERIFY2(seen, "the settings dialog did not open, or its checks failed");
+    QCOMPARE(shown.size(), 2);
+    qInfo() << "the dialog showed" << shown;
     window.model().markSaved();
   }
 
