@@ -36,7 +36,6 @@ struct Options {
   bool json = false;
   bool sway = false;
   bool head = false;           // the rigged default head instead of the cheek sheet
-  bool retireFalling = false;  // SimulationOptions::retireFallingWater
   double skin = SimulationOptions{}.neighbourSkin;
   NeighbourMethod neighbours = NeighbourMethod::Grid;
   SurfaceTensionModel tension = SurfaceTensionModel::Mueller;
@@ -117,10 +116,6 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
                    0, 256, o.threads);
   line.choice("head", "The cheek sheet (default) or the cached default head (skipped when absent).",
               {{"sheet", false}, {"default", true}}, o.head);
-  line.flag("retire-falling",
-            "Recycle water as soon as it falls clear of the skin, not only when it leaves the "
-            "box (SimulationOptions::retireFallingWater).",
-            o.retireFalling);
   line.flag("sway", "The sheet (or head) sways (rotates and translates) every frame.", o.sway);
   line.flag("json", "One JSON object instead of the table.", o.json);
   return line.parse(argc, argv);
@@ -214,7 +209,6 @@ int runTears(int argc, char** argv) {
   simOptions.lambdaCfl *= o.substepFactor;
   simOptions.lambdaAcceleration *= o.substepFactor;
   simOptions.threads = o.threads;
-  simOptions.retireFallingWater = o.retireFalling;
   TearPipeline pipeline(*scene, o.settings, simOptions);
   TearSimulation& sim = pipeline.simulation();
   const int left = (o.particles + 1) / 2, right = o.particles / 2;
@@ -341,7 +335,6 @@ int runTears(int argc, char** argv) {
     json.field("clamped", c.clamped);
     json.field("substep_cap_hits", c.substepCapHits);
     json.field("recycled", c.recycled);
-    json.field("recycled_falling", c.recycledFalling);
     json.field("pendant_substeps", c.pendantSubsteps);
     json.field("released_contacts", c.releasedContacts);
     json.field("surface_runs", c.surfaceRuns);
@@ -412,11 +405,10 @@ int runTears(int argc, char** argv) {
       total.neighbours / n, total.density / n, total.forces / n, total.collision / n,
       total.emission / n, surfaceTotal / n, trailsTotal / n);
   std::printf(
-      "  counters: sph_steps %lld  substeps %lld (%.1f/frame)  clamped %lld  recycled %lld (%lld "
-      "falling clear)  "
+      "  counters: sph_steps %lld  substeps %lld (%.1f/frame)  clamped %lld  recycled %lld  "
       "ode_queries %lld  trimesh_updates %lld  surface_runs %lld\n"
       "  pendant drops: weighed in %lld sub-steps, %lld contacts let go\n",
-      c.sphSteps, c.substeps, c.substeps / n, c.clamped, c.recycled, c.recycledFalling,
+      c.sphSteps, c.substeps, c.substeps / n, c.clamped, c.recycled,
       c.odeQueries, c.trimeshUpdates, c.surfaceRuns, c.pendantSubsteps, c.releasedContacts);
   std::printf(
       "  sub-step limits: cfl %lld  acceleration %lld  viscosity %lld  frame end %lld   pair-list "

@@ -14,7 +14,6 @@
 #include "PressureSolver.h"
 #include "SkinCollider.h"
 #include "SkinContact.h"
-#include "SkinFloor.h"
 #include "SurfaceTension.h"
 #include "TrailMassLoss.h"
 #include "Viscosity_Mueller2003.h"
@@ -53,11 +52,6 @@ struct TearSimulation::Internals {
   TrailMassLoss massLoss;
   Emitter emitter;
   AdaptiveTimeStep stepper;
-
-  // The surface's lowest point per column, for falling water (SkinFloor.h): built on first need
-  // in a frame (the skin holds still within one), so frames without falling water skip it.
-  SkinFloor floor;
-  bool floorStale = true;
 
   std::vector<Eigen::Vector3d> previous;    // positions before the sub-step's move (scratch)
   std::array<std::vector<int>, 2> escaped;  // per eye, this sub-step (scratch)

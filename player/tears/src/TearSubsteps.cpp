@@ -11,35 +11,13 @@ void TearSimulation::recycleEscaped(EmissionSites& sites) {
   // Escaped particles are re-emitted in their own slots: compacting would renumber every
   // particle after them and void the pair list, a full neighbour search every sub-step while
   // drops keep falling off the chin.
-  //
-  // With SimulationOptions::retireFallingWater, water falling clear of the skin is gone too
-  // (SkinFloor.h): free of contact, moving down at least as fast as a fall of 2h from rest
-  // gives, sqrt(4 g h) (a drop hanging under the chin is still, so its lowest particles are not
-  // taken), and with no skin below its ballistic path to the box's bottom within 2h (farther
-  // than any pair of it and water on the skin can interact). It would only fall on out of the
-  // box, as a fast stray voiding the pair list and closing on the water below it; it is
-  // re-emitted now instead.
-  Internals& in = *internals_;
-  auto& escaped = in.escaped;
+  auto& escaped = internals_->escaped;
   for (auto& slots : escaped) slots.clear();
-  const double g = params_.gravity, clearance = 2 * params_.h;
-  const double fallingSpeed = std::sqrt(std::max(0.0, 4 * g * params_.h));
-  long long falling = 0;
   for (int i = 0; i < particles_.size(); ++i) {
     const auto s = static_cast<std::size_t>(i);
-    bool gone = !box_.contains(particles_.position[s]);
-    if (!gone && options_.retireFallingWater && particles_.contact[s].triangle < 0 &&
-        -particles_.velocity[s].y() > fallingSpeed) {
-      if (in.floorStale) {
-        in.floor.build(skinPositions_, skinTriangles_, box_, clearance);
-        in.floorStale = false;
-      }
-      gone = in.floor.fallsClear(particles_.position[s], particles_.velocity[s], g, clearance);
-      falling += gone ? 1 : 0;
-    }
-    if (gone) escaped[static_cast<std::size_t>(particles_.eye[s])].push_back(i);
+    if (!box_.contains(particles_.position[s]))
+      escaped[static_cast<std::size_t>(particles_.eye[s])].push_back(i);
   }
-  counters_.recycledFalling += falling;
   for (int e = 0; e < 2; ++e) {
     const auto& slots = escaped[static_cast<std::size_t>(e)];
     if (slots.empty()) continue;
@@ -47,8 +25,8 @@ void TearSimulation::recycleEscaped(EmissionSites& sites) {
       sites.site[static_cast<std::size_t>(e)] = siteFor(static_cast<Eye>(e));
       sites.known[static_cast<std::size_t>(e)] = true;
     }
-    in.emitter.respawn(particles_, static_cast<Eye>(e), slots,
-                       sites.site[static_cast<std::size_t>(e)]);
+    internals_->emitter.respawn(particles_, static_cast<Eye>(e), slots,
+                                sites.site[static_cast<std::size_t>(e)]);
     counters_.recycled += static_cast<long long>(slots.size());
   }
 }
@@ -89,7 +67,6 @@ void TearSimulation::simulate(double frameDt) {
   const Eigen::Vector3d g = gravity();
   const double minimumStep = frameDt / options_.maxSubsteps;
   EmissionSites sites;
-  in.floorStale = true;  // the skin moved since the last frame
   double remaining = frameDt;
   CollisionCounters collision;
 

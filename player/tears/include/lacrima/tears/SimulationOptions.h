@@ -63,12 +63,6 @@ struct SimulationOptions {
   double trailDecayMetres = 0.1;  // mass e-folds every 10 cm slid over the skin
   double massFloor = 0.2;         // of the emitted mass
   double boxMarginMetres = 0.03;  // simulation box = skin bounds grown by this
-  // Recycle water falling with no skin below it (past the chin, in front of the neck) as soon
-  // as it can no longer meet the skin, not only when it leaves the box (docs/tears.md,
-  // "Emission"). Off by default: a drop would vanish just under the chin instead of being seen
-  // to fall, and on the default head's 10,000-particle burst it cost more than it saved
-  // (docs/performance.md).
-  bool retireFallingWater = false;
   double wetnessReferenceParticles = 100;  // volume/count at which wetness approaches 1
   // Threads the sub-steps share (the calling thread included): 0 = the environment variable
   // LACRIMA_THREADS when set, else every hardware thread. Results are bit-identical whatever

@@ -16,8 +16,7 @@ struct TearCounters {
   long long solverCapped = 0;  // DFSPH solves stopped at the iteration cap
   // Which limit set each sub-step (the adaptive time step); the rest ended the frame.
   long long cflLimited = 0, accelerationLimited = 0, viscosityLimited = 0;
-  long long recycled = 0;         // left the box, re-emitted at their source
-  long long recycledFalling = 0;  // of those, retired while falling clear of the skin (SkinFloor.h)
+  long long recycled = 0;  // left the box, re-emitted at their source
   long long spawned = 0, removed = 0;
   long long neighbourSearches = 0;  // pair-list builds (the list is reused between them)
   long long straySubsteps = 0,
