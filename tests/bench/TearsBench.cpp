@@ -35,7 +35,7 @@ struct Options {
   double fps = 22;
   bool json = false;
   bool sway = false;
-  bool head = false;           // the rigged default head instead of the cheek sheet
+  bool head = false;  // the rigged default head instead of the cheek sheet
   double skin = SimulationOptions{}.neighbourSkin;
   NeighbourMethod neighbours = NeighbourMethod::Grid;
   SurfaceTensionModel tension = SurfaceTensionModel::Mueller;
@@ -408,8 +408,8 @@ int runTears(int argc, char** argv) {
       "  counters: sph_steps %lld  substeps %lld (%.1f/frame)  clamped %lld  recycled %lld  "
       "ode_queries %lld  trimesh_updates %lld  surface_runs %lld\n"
       "  pendant drops: weighed in %lld sub-steps, %lld contacts let go\n",
-      c.sphSteps, c.substeps, c.substeps / n, c.clamped, c.recycled,
-      c.odeQueries, c.trimeshUpdates, c.surfaceRuns, c.pendantSubsteps, c.releasedContacts);
+      c.sphSteps, c.substeps, c.substeps / n, c.clamped, c.recycled, c.odeQueries, c.trimeshUpdates,
+      c.surfaceRuns, c.pendantSubsteps, c.releasedContacts);
   std::printf(
       "  sub-step limits: cfl %lld  acceleration %lld  viscosity %lld  frame end %lld   pair-list "
       "builds %lld (%.1f/frame)\n",
