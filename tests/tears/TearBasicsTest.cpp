@@ -202,6 +202,19 @@ class TearBasicsTest : public QObject {
             QCOMPARE(index.order()[s], static_cast<int>(s));
           VerletPairs verlet;
           verlet.build(index, h, skin);
+          {
+            // Shared on three threads (1,500 particles, two chunks): the same list.
+            VerletPairs shared;
+            ParallelChunks three(3);
+            three.setParticleCount(static_cast<int>(sorted.size()));
+            QVERIFY(three.shared());
+            shared.build(index, h, skin, three);
+            QCOMPARE(shared.pairCount(), verlet.pairCount());
+            QVERIFY(std::equal(verlet.partners(), verlet.partners() + verlet.pairCount(),
+                               shared.partners()));
+            for (int i = 0; i < verlet.particleCount(); ++i)
+              QVERIFY(shared.begin(i) == verlet.begin(i) && shared.end(i) == verlet.end(i));
+          }
           QVERIFY(verlet.refresh(index, sorted));
           QVERIFY(!verlet.hasStrays());
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -25,37 +26,20 @@ struct LargestTwo {
 
 }  // namespace
 
-void VerletPairs::build(const CellIndex& index, double h, double skin) {
-  const std::size_t n = index.particleCount();
-  const double radius = h + skin;
-  // The test runs in single precision on positions relative to the first particle; the bound
-  // is widened by 1e-5 so float rounding can only add candidates, never drop one within R.
-  const float r2max = static_cast<float>(radius * radius * (1 + 1e-5));
-  h_ = h;
-  skin_ = skin;
-  clearStrays();
-  start_.resize(n + 1);
-  start_[0] = 0;
-  if (partner_.size() < 64) partner_.resize(64);
-  std::size_t written = 0;
-  const double* sx = index.sortedX().data();
-  const double* sy = index.sortedY().data();
-  const double* sz = index.sortedZ().data();
-  fx_.resize(n);
-  fy_.resize(n);
-  fz_.resize(n);
-  for (std::size_t s = 0; s < n; ++s) {
-    fx_[s] = static_cast<float>(sx[s] - sx[0]);
-    fy_[s] = static_cast<float>(sy[s] - sy[0]);
-    fz_[s] = static_cast<float>(sz[s] - sz[0]);
-  }
+// The candidates of the sorted particles [first, last) (cells in key order), appended to `out`
+// from `written` on; start_[s + 1] gets each particle's end, relative to `out`.
+std::size_t VerletPairs::scan(const CellIndex& index, std::uint32_t first, std::uint32_t last,
+                              float r2max, std::vector<std::uint32_t>& out, std::size_t written) {
   const float* fx = fx_.data();
   const float* fy = fy_.data();
   const float* fz = fz_.data();
-
   constexpr std::array<std::array<int, 2>, 4> kForward{{{0, 1}, {1, -1}, {1, 0}, {1, 1}}};
   std::array<CellIndex::Range, 4> rows;
-  for (std::size_t c = 0; c < index.cellCount(); ++c) {
+  // The occupied cell holding `first`: the last one starting at or before it.
+  std::size_t c = 0, cells = index.cellCount();
+  for (std::size_t step = std::bit_floor(std::max<std::size_t>(cells, 1)); step > 0; step /= 2)
+    if (c + step < cells && index.cellStart(c + step) <= first) c += step;
+  for (; c < cells && index.cellStart(c) < last; ++c) {
     const Eigen::Vector3i cell = index.cellCoordinates(c);
     const std::uint32_t ownEnd = index.row(cell.x(), cell.y(), cell.z()).end;
     int rowCount = 0;
@@ -63,18 +47,20 @@ void VerletPairs::build(const CellIndex& index, double h, double skin) {
       const CellIndex::Range r = index.row(cell.x() + dx, cell.y() + dy, cell.z());
       if (r.end > r.begin) rows[static_cast<std::size_t>(rowCount++)] = r;
     }
-    for (std::uint32_t s = index.cellStart(c); s < index.cellStart(c + 1); ++s) {
+    const std::uint32_t begin = std::max(first, index.cellStart(c)),
+                        end = std::min(last, index.cellStart(c + 1));
+    for (std::uint32_t s = begin; s < end; ++s) {
       const float xi = fx[s], yi = fy[s], zi = fz[s];
       const Float4 x4{xi, xi, xi, xi}, y4{yi, yi, yi, yi}, z4{zi, zi, zi, zi},
           r4{r2max, r2max, r2max, r2max};
-      auto scan = [&](std::uint32_t begin, std::uint32_t end) {
-        if (partner_.size() < written + (end - begin))
-          partner_.resize(2 * (written + (end - begin)));
-        std::uint32_t* dst = partner_.data();
+      auto scanRow = [&](std::uint32_t rowBegin, std::uint32_t rowEnd) {
+        if (out.size() < written + (rowEnd - rowBegin))
+          out.resize(2 * (written + (rowEnd - rowBegin)));
+        std::uint32_t* dst = out.data();
         // Four distances at a time, then a branch-free append of each: most candidates fail
         // the test, unpredictably.
-        std::uint32_t t = begin;
-        for (; t + 4 <= end; t += 4) {
+        std::uint32_t t = rowBegin;
+        for (; t + 4 <= rowEnd; t += 4) {
           const Float4 dx = load4(fx + t) - x4, dy = load4(fy + t) - y4, dz = load4(fz + t) - z4;
           const Int4 inside = dx * dx + dy * dy + dz * dz < r4;  // -1 where true
           dst[written] = t;
@@ -86,21 +72,87 @@ void VerletPairs::build(const CellIndex& index, double h, double skin) {
           dst[written] = t + 3;
           written -= static_cast<std::size_t>(static_cast<std::ptrdiff_t>(inside[3]));
         }
-        for (; t < end; ++t) {
+        for (; t < rowEnd; ++t) {
           const float dx = fx[t] - xi, dy = fy[t] - yi, dz = fz[t] - zi;
           dst[written] = t;
           written += static_cast<std::size_t>(dx * dx + dy * dy + dz * dz < r2max);
         }
       };
-      scan(s + 1, ownEnd);
+      scanRow(s + 1, ownEnd);
       for (int r = 0; r < rowCount; ++r)
-        scan(rows[static_cast<std::size_t>(r)].begin, rows[static_cast<std::size_t>(r)].end);
+        scanRow(rows[static_cast<std::size_t>(r)].begin, rows[static_cast<std::size_t>(r)].end);
       start_[s + 1] = static_cast<std::uint32_t>(written);
     }
   }
-  partner_.resize(written);
+  return written;
+}
+
+void VerletPairs::build(const CellIndex& index, double h, double skin) {
+  ParallelChunks serial(1);
+  build(index, h, skin, serial);
+}
+
+// Each particle's candidates depend on its own cell and rows only, so the list is the same
+// integers however it is cut. On one thread the particles are scanned straight into the list;
+// shared, each chunk of particles scans into a buffer of its own and the buffers are then
+// copied into place (each at the total of the chunks before it), which costs a copy of the
+// list that one thread need not pay.
+void VerletPairs::build(const CellIndex& index, double h, double skin, ParallelChunks& parallel) {
+  const std::size_t n = index.particleCount();
+  const double radius = h + skin;
+  // The test runs in single precision on positions relative to the first particle; the bound
+  // is widened by 1e-5 so float rounding can only add candidates, never drop one within R.
+  const float r2max = static_cast<float>(radius * radius * (1 + 1e-5));
+  h_ = h;
+  skin_ = skin;
+  clearStrays();
+  start_.resize(n + 1);
+  start_[0] = 0;
+  if (partner_.size() < 64) partner_.resize(64);
+  const double* sx = index.sortedX().data();
+  const double* sy = index.sortedY().data();
+  const double* sz = index.sortedZ().data();
+  fx_.resize(n);
+  fy_.resize(n);
+  fz_.resize(n);
   anchor_.resize(n);
-  for (std::size_t s = 0; s < n; ++s) anchor_[s] = {sx[s], sy[s], sz[s]};
+  parallel.forEachChunk(n, kParticleChunk, [&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t s = begin; s < end; ++s) {
+      fx_[s] = static_cast<float>(sx[s] - sx[0]);
+      fy_[s] = static_cast<float>(sy[s] - sy[0]);
+      fz_[s] = static_cast<float>(sz[s] - sz[0]);
+      anchor_[s] = {sx[s], sy[s], sz[s]};
+    }
+  });
+
+  std::size_t written = 0;
+  const std::size_t chunks = ParallelChunks::chunkCount(n, kParticleChunk);
+  if (!parallel.shared() || chunks < 2) {
+    written = scan(index, 0, static_cast<std::uint32_t>(n), r2max, partner_, 0);
+  } else {
+    if (chunkPartner_.size() < chunks) chunkPartner_.resize(chunks);
+    chunkCount_.resize(chunks);
+    parallel.forEachChunk(n, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
+      std::vector<std::uint32_t>& out = chunkPartner_[static_cast<std::size_t>(c)];
+      if (out.size() < 64) out.resize(64);
+      chunkCount_[static_cast<std::size_t>(c)] = scan(
+          index, static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end), r2max, out, 0);
+    });
+    chunkOffset_.resize(chunks);
+    for (std::size_t c = 0; c < chunks; ++c) {
+      chunkOffset_[c] = written;
+      written += chunkCount_[c];
+    }
+    if (partner_.size() < written) partner_.resize(written);
+    parallel.forEachChunk(n, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
+      const auto cs = static_cast<std::size_t>(c);
+      const auto offset = static_cast<std::uint32_t>(chunkOffset_[cs]);
+      std::copy_n(chunkPartner_[cs].begin(), chunkCount_[cs],
+                  partner_.begin() + static_cast<std::ptrdiff_t>(offset));
+      for (std::size_t s = begin; s < end; ++s) start_[s + 1] += offset;
+    });
+  }
+  partner_.resize(written);
   valid_ = true;
 }
 

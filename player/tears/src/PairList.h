@@ -31,6 +31,7 @@
 // density pass skips listed pairs that involve a stray and adds the stray pairs instead.
 // Beyond n / 32 strays a rebuild is cheaper, and refresh() asks for one.
 #include "CellIndex.h"
+#include "ParallelChunks.h"
 
 #include <lacrima/tears/NeighbourSearch.h>
 
@@ -44,6 +45,8 @@ class VerletPairs {
  public:
   // `index` was built over these positions, which are in its sorted order.
   void build(const CellIndex& index, double h, double skin);
+  // The same list, the particles' search shared in `parallel`'s fixed chunks.
+  void build(const CellIndex& index, double h, double skin, ParallelChunks& parallel);
   // From full lists (any structure): pairs i < j, no skin (valid for the current positions only).
   void fromFull(const NeighbourList& full, std::span<const Eigen::Vector3d> positions);
 
@@ -74,6 +77,8 @@ class VerletPairs {
 
  private:
   void clearStrays();
+  std::size_t scan(const CellIndex& index, std::uint32_t first, std::uint32_t last, float r2max,
+                   std::vector<std::uint32_t>& out, std::size_t written);
 
   std::vector<std::uint32_t> start_;     // size n + 1
   std::vector<std::uint32_t> partner_;   // j > i
@@ -86,6 +91,9 @@ class VerletPairs {
   std::vector<std::uint32_t> strayList_;
   std::vector<double> medianScratch_;
   int strayCount_ = 0;
+  // Shared builds: each chunk's candidates, their count and place in partner_ (capacity kept).
+  std::vector<std::vector<std::uint32_t>> chunkPartner_;
+  std::vector<std::size_t> chunkCount_, chunkOffset_;
 };
 
 // The pairs within h this sub-step, i < j, with their offset and squared distance.

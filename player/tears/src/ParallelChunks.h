@@ -33,6 +33,9 @@ class ParallelChunks {
     shared_ = pool_.threads() > 1 && particles >= kParallelParticles;
   }
 
+  // Whether the loops are shared now (else they run on the calling thread).
+  bool shared() const { return shared_; }
+
   static std::size_t chunkCount(std::size_t count, std::size_t chunk) {
     return (count + chunk - 1) / chunk;
   }

@@ -56,7 +56,7 @@ void TearSimulation::updatePairs() {
   }
   in.cellIndex.build(particles_.position, h + skin);
   particles_.permute(in.cellIndex.order());  // now sorted position == particle index
-  in.candidates.build(in.cellIndex, h, skin);
+  in.candidates.build(in.cellIndex, h, skin, in.parallel);
   ++counters_.neighbourSearches;
 }
 
