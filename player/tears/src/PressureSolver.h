@@ -21,6 +21,7 @@
 #include <lacrima/tears/TearCounters.h>
 
 #include <memory>
+#include <vector>
 
 namespace lacrima::tears {
 
@@ -53,5 +54,10 @@ class PressureSolver {
   virtual PressureHistory history() const { return {}; }
   virtual void restoreHistory(const PressureHistory&) {}
 };
+
+// The skin normal under each touching particle, zero under a free one: the incompressible
+// solvers (DFSPH, PBF) drop the part of a correction that would push a particle into the skin.
+void contactNormals(const ParticleSet& particles, const SkinView& skin,
+                    std::vector<Eigen::Vector3d>& normals);
 
 }  // namespace lacrima::tears

@@ -228,12 +228,7 @@ double PressureSolver_DFSPH::accelerationBound(double largestFluidAcceleration) 
 
 void PressureSolver_DFSPH::correctVelocities(ParticleSet& p, const ActivePairs& pairs, double dt,
                                              const SkinView& skin, TearCounters& counters) {
-  contactNormal_.resize(p.velocity.size());
-  for (std::size_t i = 0; i < contactNormal_.size(); ++i) {
-    const int t = p.contact[i].triangle;
-    contactNormal_[i] =
-        t >= 0 ? skin.faces[static_cast<std::size_t>(t)].normal : Eigen::Vector3d::Zero();
-  }
+  contactNormals(p, skin, contactNormal_);
   counters.densityIterations += solveDensity(p, pairs, dt, contactNormal_);
   counters.solverCapped += stats_.densityCapped;
   history_.lastSubstep = dt;

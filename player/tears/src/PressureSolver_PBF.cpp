@@ -176,12 +176,7 @@ void PressureSolver_PBF::solve(ParticleSet& p, const ActivePairs& pairs, double 
 
 void PressureSolver_PBF::correctVelocities(ParticleSet& p, const ActivePairs& pairs, double dt,
                                            const SkinView& skin, TearCounters& counters) {
-  contactNormal_.resize(p.velocity.size());
-  for (std::size_t i = 0; i < contactNormal_.size(); ++i) {
-    const int t = p.contact[i].triangle;
-    contactNormal_[i] =
-        t >= 0 ? skin.faces[static_cast<std::size_t>(t)].normal : Eigen::Vector3d::Zero();
-  }
+  contactNormals(p, skin, contactNormal_);
   solve(p, pairs, dt, contactNormal_);
   counters.densityIterations += settings_.iterations;
   history_.lastNetAcceleration = stats_.maxNetAcceleration;
