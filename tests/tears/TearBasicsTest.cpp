@@ -192,7 +192,7 @@ class TearBasicsTest : public QObject {
       for (double h : {0.004, 0.016}) {
         for (bool oneFast : {false, true}) {
           const double skin = 0.3 * h;
-          auto x = scatter(1500, 0.1, clustered ? 5 : 9, clustered);
+          auto x = scatter(2600, 0.1, clustered ? 5 : 9, clustered);
           CellIndex index;
           index.build(x, h + skin);
           std::vector<Eigen::Vector3d> sorted;
@@ -203,7 +203,7 @@ class TearBasicsTest : public QObject {
           VerletPairs verlet;
           verlet.build(index, h, skin);
           {
-            // Shared on three threads (1,500 particles, two chunks): the same list.
+            // Shared on three threads (2,600 particles, three chunks): the same list.
             VerletPairs shared;
             ParallelChunks three(3);
             three.setParticleCount(static_cast<int>(sorted.size()));

@@ -4,14 +4,16 @@
 // checkpoint restored mid-run) and on the default head (skipped when not fetched). Runs have
 // more particles than the sharing threshold and several particle chunks, so the shared loops
 // and their spill lists really run on several threads.
+#include "ParallelChunks.h"  // internal to lacrima_tears
 #include "TearTestSupport.h"
-#include "ThreadPool.h"  // internal to lacrima_tears
+#include "ThreadPool.h"
 
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/tears/SurfaceMesher.h>
 
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <memory>
@@ -24,6 +26,8 @@ using namespace lacrima::tears::testing;
 namespace {
 
 constexpr int kThreadCounts[] = {1, 2, 3, 8};
+// Particles a run must exceed: past the sharing threshold, and three particle chunks or more.
+constexpr int kSharedRun = std::max(2 * static_cast<int>(kParticleChunk), kParallelParticles);
 
 // Particles plus trails (FrameState) and the surface mesh of one frame.
 struct Snapshot {
@@ -128,7 +132,7 @@ class TearThreadsTest : public QObject {
       // recycled drops as strays, removal.
       SheetRun probe(1);
       for (int f = 0; f < kSheetFrames; ++f) probe.step(f);
-      QVERIFY(probe.simulation().particles().size() > 2048);
+      QVERIFY(probe.simulation().particles().size() > kSharedRun);
       QVERIFY(probe.simulation().counters().recycled > 0);
       QVERIFY(probe.simulation().counters().straySubsteps > 0);
       QVERIFY(probe.simulation().counters().removed > 0);
@@ -190,7 +194,7 @@ class TearThreadsTest : public QObject {
         mesher.update(*sim);
         frames.push_back({stateOf(*sim, trails), mesher.surface().positions()});
       }
-      [&] { QVERIFY(sim->particles().size() > 2048); }();
+      [&] { QVERIFY(sim->particles().size() > kSharedRun); }();
       return frames;
     };
     const std::vector<Snapshot> reference = runHead(1);

@@ -19,9 +19,10 @@ namespace lacrima::tears {
 
 inline constexpr std::size_t kParticleChunk = 1024;
 inline constexpr std::size_t kPairChunk = 4096;
-// Measured with lacrima-bench tears --threads 2 on the cheek sheet (docs/performance.md): below
-// this many particles the wake-ups cost more than the second thread saves.
-inline constexpr int kParallelParticles = 1500;
+// Measured with lacrima-bench tears --threads 1 and 2 on the cheek sheet of an idle 2-core
+// machine (docs/performance.md, Threads): at 1,000 and 2,000 particles two threads were slower
+// (the wake-ups cost more than the second thread saves), at 3,000 even, from 4,000 faster.
+inline constexpr int kParallelParticles = 2500;
 
 class ParallelChunks {
  public:

@@ -66,7 +66,7 @@ struct SimulationOptions {
   double wetnessReferenceParticles = 100;  // volume/count at which wetness approaches 1
   // Threads the sub-steps share (the calling thread included): 0 = the environment variable
   // LACRIMA_THREADS when set, else every hardware thread. Results are bit-identical whatever
-  // the count (docs/decisions/0015); below ~1,500 particles every loop stays on the caller.
+  // the count (docs/decisions/0015); below 2,500 particles every loop stays on the caller.
   int threads = 0;
 };
 
