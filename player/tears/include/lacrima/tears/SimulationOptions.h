@@ -60,9 +60,9 @@ struct SimulationOptions {
   // Free particles look for the skin this far (kernel radii) and then skip the query until
   // they have travelled the clearance found: farther means fewer, dearer queries.
   double collisionProbeKernels = 1;
-  double trailDecayMetres = 0.1;  // mass e-folds every 10 cm slid over the skin
-  double massFloor = 0.2;         // of the emitted mass
-  double boxMarginMetres = 0.03;  // simulation box = skin bounds grown by this
+  double trailDecayMetres = 0.1;           // mass e-folds every 10 cm slid over the skin
+  double massFloor = 0.2;                  // of the emitted mass
+  double boxMarginMetres = 0.03;           // simulation box = skin bounds grown by this
   double wetnessReferenceParticles = 100;  // volume/count at which wetness approaches 1
   // Threads the sub-steps share (the calling thread included): 0 = the environment variable
   // LACRIMA_THREADS when set, else every hardware thread. Results are bit-identical whatever
