@@ -148,9 +148,7 @@ void DensitySolver::compute(ParticleSet& p, const VerletPairs& candidates,
   // better than absolute head coordinates would.
   const Eigen::Vector3d origin = p.position[0];
   for (std::size_t i = 0; i < un; ++i) {
-    const Eigen::Vector3d r = p.position[i] - origin;
-    store4(&position_[4 * i], Float4{static_cast<float>(r.x()), static_cast<float>(r.y()),
-                                     static_cast<float>(r.z()), 0.0f});
+    store4(&position_[4 * i], toFloat4(Eigen::Vector3d(p.position[i] - origin)));
     m_[i] = static_cast<float>(p.mass[i]);
     rho_[i] = m_[i] * w0;
   }

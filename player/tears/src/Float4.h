@@ -20,6 +20,13 @@ inline Float4 load4(const float* p) {
 }
 inline void store4(float* p, Float4 v) { std::memcpy(p, &v, sizeof v); }
 
+// A 3-vector (anything with x(), y(), z(), e.g. Eigen::Vector3d) in lanes 0..2, 0 in lane 3.
+template <class Vector3>
+inline Float4 toFloat4(const Vector3& v) {
+  return Float4{static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z()),
+                0.0f};
+}
+
 // x^2 + y^2 + z^2 of lanes 0..2, summed in that order (as the scalar code would).
 inline float dot3(Float4 a, Float4 b) {
   const Float4 s = a * b;

@@ -216,9 +216,7 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs,
   parallel.forEachChunk(un, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
     bool any = false;
     for (std::size_t i = begin; i < end; ++i) {
-      const Eigen::Vector3d& v = p.velocity[i];
-      store4(&velocity_[4 * i], Float4{static_cast<float>(v.x()), static_cast<float>(v.y()),
-                                       static_cast<float>(v.z()), 0.0f});
+      store4(&velocity_[4 * i], toFloat4(p.velocity[i]));
       const float m = static_cast<float>(p.mass[i]), pi = static_cast<float>(p.pressure[i]);
       const float invRho = 1.0f / static_cast<float>(p.density[i]), volume = m * invRho;
       weighted4_[4 * i + 3] = volume * selfLaplacian;

@@ -37,10 +37,7 @@ void PressureSolver_DFSPH::prepare(const ParticleSet& p, const ActivePairs& pair
       if (r2s[k] <= 1e-18f) [[unlikely]] {
         const Eigen::Vector3d e =
             pairDirection(p.id[static_cast<std::size_t>(i)], p.id[pairs.partner[k]]);
-        store4(g + 4 * static_cast<std::size_t>(k),
-               Float4{static_cast<float>(e.x()), static_cast<float>(e.y()),
-                      static_cast<float>(e.z()), 0.0f} *
-                   atZero);
+        store4(g + 4 * static_cast<std::size_t>(k), toFloat4(e) * atZero);
       }
 
   // alpha_i = 1 / (|S_i|^2 + Q_i), S_i = sum_j m_j g_ij, Q_i = sum_j m_i m_j |g_ij|^2.
@@ -78,11 +75,7 @@ void PressureSolver_DFSPH::prepare(const ParticleSet& p, const ActivePairs& pair
 void PressureSolver_DFSPH::loadVelocities(const ParticleSet& p) {
   const std::size_t un = p.velocity.size();
   velocity_.resize(4 * un);
-  for (std::size_t i = 0; i < un; ++i) {
-    const Eigen::Vector3d& v = p.velocity[i];
-    store4(&velocity_[4 * i], Float4{static_cast<float>(v.x()), static_cast<float>(v.y()),
-                                     static_cast<float>(v.z()), 0.0f});
-  }
+  for (std::size_t i = 0; i < un; ++i) store4(&velocity_[4 * i], toFloat4(p.velocity[i]));
   start_ = velocity_;
 }
 

@@ -13,11 +13,6 @@ namespace {
 constexpr double kScorrStrength = 0.1;
 constexpr double kScorrDistance = 0.2;
 
-Float4 toFloat4(const Eigen::Vector3d& v) {
-  return Float4{static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z()),
-                0.0f};
-}
-
 }  // namespace
 
 PressureSolver_PBF::PressureSolver_PBF(double h, const PositionBasedSettings& settings)
