@@ -41,15 +41,11 @@ SlideRun runSlide(const SlideSetup& setup) {
   const double edge = downhill.dot(plate.centre) + 0.5 * kPlateHeight - 0.2;
 
   SimulationOptions options;
-  const SimulationOptions defaults;
   options.pressureSolver = setup.solver;
   options.threads = setup.threads;
   options.headHeight = kHeadHeight;
   if (!setup.trailLoss) options.trailDecayMetres = 1e12;  // e-folds after 10^12 m: none
-  options.lambdaCfl = defaults.lambdaCfl * setup.lambdaScale;
-  options.lambdaAcceleration = defaults.lambdaAcceleration * setup.lambdaScale;
-  options.lambdaViscosity = std::min(defaults.lambdaViscosity,
-                                     defaults.lambdaViscosity * setup.lambdaScale);  // as the sweep
+  options.scaleSubsteps(setup.lambdaScale);               // as the sweep
   TearSimulation sim(plate.positions, plate.triangles, TearSettings{}, options);
   sim.setSource(Eye::Left, plate.leftSource);
   sim.setSource(Eye::Right, plate.rightSource);

@@ -131,7 +131,6 @@ struct SolverReference {
 };
 
 const TearSettings kDefaults{};
-const SimulationOptions kDefaultOptions{};
 constexpr double kFineLambda = 0.25, kFinerLambda = 0.125, kFineCube = 0.25;
 
 TearSettings settingsFor(const Variant& v) {
@@ -145,11 +144,7 @@ SimulationOptions optionsFor(const Variant& v) {
   SimulationOptions o;
   o.neighbours = v.neighbours;
   o.pressureSolver = v.solver;
-  o.lambdaCfl = kDefaultOptions.lambdaCfl * v.lambdaScale;
-  o.lambdaAcceleration = kDefaultOptions.lambdaAcceleration * v.lambdaScale;
-  // Explicit viscosity overshoots past k dt = 1 (AdaptiveTimeStep.h): scale it down, never up.
-  o.lambdaViscosity =
-      std::min(kDefaultOptions.lambdaViscosity, kDefaultOptions.lambdaViscosity * v.lambdaScale);
+  o.scaleSubsteps(v.lambdaScale);
   return o;
 }
 

@@ -21,16 +21,16 @@ using tears::SurfaceTensionModel;
 constexpr std::array<TearQualityLevel, 3> kLevels{{
     {TearQuality::Preview, 1.5, PressureMethod::Wcsph, SurfaceTensionModel::Mueller,
      NeighbourMethod::Grid, "Preview",
-     "Longer sub-steps (x1.5): about two thirds of Balanced's sub-steps and time; drops end 2.9 "
-     "particle radii from a fine reference instead of 1.7"},
+     "Longer sub-steps (x1.5): about two thirds of Balanced's sub-steps and time; drops end 2.6 "
+     "particle radii from a fine reference instead of 1.6"},
     {TearQuality::Balanced, 1.0, PressureMethod::Wcsph, SurfaceTensionModel::Mueller,
      NeighbourMethod::Grid, "Balanced",
-     "The defaults (WCSPH, sub-step factor x1): drops end 1.7 particle radii from a fine "
+     "The defaults (WCSPH, sub-step factor x1): drops end 1.6 particle radii from a fine "
      "reference"},
     {TearQuality::Reference, 0.5, PressureMethod::Wcsph, SurfaceTensionModel::Mueller,
      NeighbourMethod::Grid, "Reference",
      "Shorter sub-steps (x0.5): about twice Balanced's sub-steps, 1.8 times its time; drops end "
-     "1.0 particle radius from a fine reference"},
+     "0.86 particle radii from a fine reference"},
 }};
 
 }  // namespace
@@ -41,15 +41,8 @@ const TearQualityLevel& tearQualityLevel(TearQuality level) {
 
 tears::SimulationOptions simulationOptions(const TearQualitySettings& quality) {
   const TearQualityLevel& level = tearQualityLevel(quality.level);
-  const tears::SimulationOptions defaults;
   tears::SimulationOptions options;
-  // The sweep's scaling (TearsSweepBench.cpp optionsFor): the CFL and acceleration bounds
-  // scale with the factor; the viscous bound only shrinks, since explicit viscosity overshoots
-  // past k dt = 1 (AdaptiveTimeStep.h).
-  options.lambdaCfl = defaults.lambdaCfl * level.substepFactor;
-  options.lambdaAcceleration = defaults.lambdaAcceleration * level.substepFactor;
-  options.lambdaViscosity =
-      std::min(defaults.lambdaViscosity, defaults.lambdaViscosity * level.substepFactor);
+  options.scaleSubsteps(level.substepFactor);  // as the sweep scales them
   options.pressureSolver = level.solver;
   options.surfaceTension = level.tension;
   options.neighbours = level.neighbours;

@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 // How a TearSimulation computes, as opposed to what it simulates (the tear parameters,
 // Parameters.h): the neighbour structure, the pressure and surface-tension methods, the
 // sub-step limits and the bookkeeping scales. The defaults are the measured best
@@ -40,6 +41,16 @@ struct SimulationOptions {
   SurfaceTensionModel surfaceTension = SurfaceTensionModel::Mueller;
   bool clampNegativePressure = true;
   double lambdaCfl = 0.4, lambdaAcceleration = 0.4, lambdaViscosity = 1.0;
+  // Scales the sub-step safety factors from their defaults: the accuracy lever of the quality
+  // levels, tears-sweep and tears-slide. lambda_c and lambda_a scale with `factor`; lambda_v
+  // only shrinks (min(1, factor)), since explicit viscosity overshoots past k dt = 1
+  // (AdaptiveTimeStep.h).
+  void scaleSubsteps(double factor) {
+    const SimulationOptions defaults;
+    lambdaCfl = defaults.lambdaCfl * factor;
+    lambdaAcceleration = defaults.lambdaAcceleration * factor;
+    lambdaViscosity = std::min(defaults.lambdaViscosity, defaults.lambdaViscosity * factor);
+  }
   PressureMethod pressureSolver = PressureMethod::Wcsph;
   // DFSPH: mean compression left after a step at the table's default pressure (0.004); the
   // pressure parameter scales it inversely (pressure x10 = ten times tighter), within
