@@ -38,6 +38,7 @@ struct Options {
   bool head = false;  // the rigged default head instead of the cheek sheet
   double skin = SimulationOptions{}.neighbourSkin;
   NeighbourMethod neighbours = NeighbourMethod::Grid;
+  SkinQueryMethod skinQueries = SimulationOptions{}.skinQueries;
   SurfaceTensionModel tension = SurfaceTensionModel::Mueller;
   PressureMethod solver = SimulationOptions{}.pressureSolver;
   int pbfIterations = SimulationOptions{}.pbfIterations;
@@ -79,6 +80,10 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
               });
   line.choice("neighbours", "Neighbour structure (default grid).",
               {{"grid", NeighbourMethod::Grid}, {"octree", NeighbourMethod::Octree}}, o.neighbours);
+  line.choice("skin-queries",
+              "Who answers the skin-collision queries: grid (default; shared between threads) or "
+              "ode (the reference, one thread at a time).",
+              {{"grid", SkinQueryMethod::Grid}, {"ode", SkinQueryMethod::Ode}}, o.skinQueries);
   line.choice("tension", "Surface tension model (default mueller).",
               {{"mueller", SurfaceTensionModel::Mueller}, {"akinci", SurfaceTensionModel::Akinci}},
               o.tension);
@@ -200,6 +205,7 @@ int runTears(int argc, char** argv) {
   quality.level = o.quality;
   SimulationOptions simOptions = playback::simulationOptions(quality);
   simOptions.neighbours = o.neighbours;
+  simOptions.skinQueries = o.skinQueries;
   simOptions.surfaceTension = o.tension;
   simOptions.neighbourSkin = o.skin;
   simOptions.pressureSolver = o.solver;
@@ -295,6 +301,7 @@ int runTears(int argc, char** argv) {
     json.field("frames", o.frames);
     json.field("fps", o.fps);
     json.field("neighbours", o.neighbours == NeighbourMethod::Grid ? "grid" : "octree");
+    json.field("skin_queries", o.skinQueries == SkinQueryMethod::Grid ? "grid" : "ode");
     json.field("tension_model", o.tension == SurfaceTensionModel::Mueller ? "mueller" : "akinci");
     json.field("solver", pressureMethodName(o.solver));
     if (o.solver == PressureMethod::Pbf) {
@@ -345,6 +352,7 @@ int runTears(int argc, char** argv) {
     json.field("acceleration_limited", c.accelerationLimited);
     json.field("viscosity_limited", c.viscosityLimited);
     json.field("trimesh_updates", c.trimeshUpdates);
+    json.field("grid_queries", c.gridQueries);
     json.field("ode_queries", c.odeQueries);
     json.field("contacts_tracked", c.contactsTracked);
     json.field("swept_particles", c.sweptParticles);
@@ -406,10 +414,11 @@ int runTears(int argc, char** argv) {
       total.emission / n, surfaceTotal / n, trailsTotal / n);
   std::printf(
       "  counters: sph_steps %lld  substeps %lld (%.1f/frame)  clamped %lld  recycled %lld  "
-      "ode_queries %lld  trimesh_updates %lld  surface_runs %lld\n"
+      "skin queries %lld (%s)  trimesh_updates %lld  surface_runs %lld\n"
       "  pendant drops: weighed in %lld sub-steps, %lld contacts let go\n",
-      c.sphSteps, c.substeps, c.substeps / n, c.clamped, c.recycled, c.odeQueries, c.trimeshUpdates,
-      c.surfaceRuns, c.pendantSubsteps, c.releasedContacts);
+      c.sphSteps, c.substeps, c.substeps / n, c.clamped, c.recycled, c.gridQueries + c.odeQueries,
+      o.skinQueries == SkinQueryMethod::Grid ? "grid" : "ode", c.trimeshUpdates, c.surfaceRuns,
+      c.pendantSubsteps, c.releasedContacts);
   std::printf(
       "  sub-step limits: cfl %lld  acceleration %lld  viscosity %lld  frame end %lld   pair-list "
       "builds %lld (%.1f/frame)\n",

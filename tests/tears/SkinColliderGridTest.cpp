@@ -1,10 +1,14 @@
-// The collider skips ODE for sphere and ray queries its triangle grid proves empty
-// (TriangleGrid.h). Skipping must never change an answer: a collider whose grid is built
-// (warm: it has seen more than a thousand queries on this pose) must answer every query
-// bit for bit as one that asks ODE every time (cold: reset to the same pose before the
-// threshold). Checked on the cheek sheet with a collapsed row and scattered zero-area
-// triangles, for nearest() at the radii the simulation uses and for resolve() with particles
-// crossing the sheet fast (the ray path), and that the grid did skip queries.
+// The collider's triangle grid (TriangleGrid.h), checked against ODE on the cheek sheet with a
+// collapsed row and scattered zero-area triangles, for nearest() at the radii the simulation
+// uses and for resolve() with particles crossing the sheet fast (the ray path):
+//  * with SkinQueryMethod::Grid (the default) the grid answers every query: the same nearest
+//    triangle, point and distance as ODE bit for bit, and the same crossings of fast paths
+//    (ODE computes a crossing in single precision, so the crossing point agrees to rounding);
+//  * resolve() shared over 1, 2 and 3 threads gives the same bits;
+//  * with SkinQueryMethod::Ode, ODE is skipped for the queries the grid proves empty, and
+//    skipping never changes an answer: a collider whose grid is built (warm: it has seen more
+//    than a thousand queries on this pose) answers bit for bit as one that asks ODE every time
+//    (cold: reset to the same pose before the threshold).
 #include "SkinCollider.h"  // internal to lacrima_tears (player/tears/src is on this test's include path)
 
 #include <lacrima/tears/SyntheticSkin.h>
@@ -37,15 +41,58 @@ Scene stressSheet() {
   return s;
 }
 
-std::unique_ptr<SkinCollider> colliderFor(const Scene& s) {
+bool sameBits(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::memcmp(a.data(), b.data(), sizeof(double) * 3) == 0;
+}
+
+std::unique_ptr<SkinCollider> colliderFor(const Scene& s, SkinQueryMethod method) {
   Eigen::AlignedBox3d envelope = s.box;
   envelope.min().array() -= 1.0;
   envelope.max().array() += 1.0;
-  return std::make_unique<SkinCollider>(s.vertices, s.triangles, envelope, kRadius, kBand, kProbe);
+  return std::make_unique<SkinCollider>(s.vertices, s.triangles, envelope, kRadius, kBand, kProbe,
+                                        method);
 }
 
-bool sameBits(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  return std::memcmp(a.data(), b.data(), sizeof(double) * 3) == 0;
+// A query point: half near the sheet's vertices (contacts), half anywhere around it.
+Eigen::Vector3d queryPoint(const Scene& scene, std::mt19937_64& rng, int q) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const Eigen::Vector3d lo = scene.box.min().array() - 0.1, size = scene.box.sizes().array() + 0.2;
+  Eigen::Vector3d x = lo + Eigen::Vector3d(unit(rng), unit(rng), unit(rng)).cwiseProduct(size);
+  if (q % 2 == 0) {
+    const Eigen::Vector3d v = scene.vertices.col(
+        static_cast<Eigen::Index>(unit(rng) * static_cast<double>(scene.vertices.cols() - 1)));
+    x = v + 0.04 * Eigen::Vector3d(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5);
+  }
+  return x;
+}
+
+// Particles above the sheet moved in one step through it, past it, or hardly at all, with
+// their starting points in `previous`.
+ParticleSet fastParticles(const Scene& scene, std::mt19937_64& rng, int n,
+                          std::vector<Eigen::Vector3d>& previous) {
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const Eigen::Vector3d normalish(0, 0.34, 0.94);  // the sheet faces +z, tilted up
+  ParticleSet a;
+  previous.clear();
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector3d v = scene.vertices.col(static_cast<Eigen::Index>(
+        (unit(rng) + 1) * 0.5 * static_cast<double>(scene.vertices.cols() - 1)));
+    const Eigen::Vector3d start = v + normalish * (0.05 + 0.1 * (unit(rng) + 1)) +
+                                  0.05 * Eigen::Vector3d(unit(rng), unit(rng), 0);
+    a.add(start, 1.0, static_cast<std::uint64_t>(i), Eye::Left);
+    previous.push_back(start);
+    const double depth = i % 3 == 0 ? -0.4 : (i % 3 == 1 ? 0.2 * unit(rng) : 0.001);
+    a.position.back() = v + normalish * depth + 0.2 * Eigen::Vector3d(unit(rng), unit(rng), 0);
+    a.velocity.back() = (a.position.back() - start) * 22.0;
+  }
+  return a;
+}
+
+bool sameParticle(const ParticleSet& a, const ParticleSet& b, std::size_t s) {
+  return sameBits(a.position[s], b.position[s]) && sameBits(a.velocity[s], b.velocity[s]) &&
+         a.contact[s].triangle == b.contact[s].triangle &&
+         sameBits(a.contact[s].barycentric, b.contact[s].barycentric) &&
+         std::memcmp(&a.clearance[s], &b.clearance[s], sizeof(double)) == 0;
 }
 
 bool sameHit(bool foundA, const SkinHit& a, bool foundB, const SkinHit& b) {
@@ -62,26 +109,100 @@ class SkinColliderGridTest : public QObject {
   Q_OBJECT
 
  private slots:
-  void nearestIsUnchangedBySkipping() {
+  void gridNearestIsOdes() {
     const Scene scene = stressSheet();
-    auto warm = colliderFor(scene), cold = colliderFor(scene);
+    auto grid = colliderFor(scene, SkinQueryMethod::Grid);
+    auto ode = colliderFor(scene, SkinQueryMethod::Ode);
+    CollisionCounters gridCounters, odeCounters;
+    std::mt19937_64 rng(17);
+    const double radii[] = {kRadius + kBand, kRadius + kProbe, 3 * kRadius + 0.02};
+    int found = 0;
+    const int queries = 20000;
+    for (int q = 0; q < queries; ++q) {
+      const Eigen::Vector3d x = queryPoint(scene, rng, q);
+      const double r = radii[q % 3];
+      SkinHit a, b;
+      const bool fa = grid->nearest(x, r, a, gridCounters);
+      const bool fb = ode->nearest(x, r, b, odeCounters);
+      QVERIFY2(sameHit(fa, a, fb, b), qPrintable(QString("query %1 differs").arg(q)));
+      found += fa ? 1 : 0;
+    }
+    QVERIFY(found > queries / 10 && found < queries * 9 / 10);
+    QCOMPARE(gridCounters.gridQueries, static_cast<long long>(queries));
+    QCOMPARE(gridCounters.odeQueries, 0LL);
+    QCOMPARE(gridCounters.trimeshUpdates, 0LL);
+  }
+
+  void gridCrossingsAreOdes() {
+    const Scene scene = stressSheet();
+    const double rounding = 1e-6 * scene.box.sizes().maxCoeff();
+    auto grid = colliderFor(scene, SkinQueryMethod::Grid);
+    auto ode = colliderFor(scene, SkinQueryMethod::Ode);
+    CollisionCounters gridCounters, odeCounters;
+    ParallelChunks oneThread(1);
+    std::mt19937_64 rng(23);
+    int contacts = 0, crossings = 0;
+    for (int batch = 0; batch < 20; ++batch) {
+      std::vector<Eigen::Vector3d> previous;
+      ParticleSet a = fastParticles(scene, rng, 300, previous);
+      ParticleSet b = a;
+      grid->resolve(a, previous, gridCounters, oneThread);
+      ode->resolve(b, previous, odeCounters, oneThread);
+      for (std::size_t s = 0; s < a.position.size(); ++s) {
+        const QString where = QString("batch %1 particle %2").arg(batch).arg(s);
+        QVERIFY2(a.contact[s].triangle == b.contact[s].triangle, qPrintable(where));
+        QVERIFY2((a.position[s] - b.position[s]).norm() <= rounding, qPrintable(where));
+        QVERIFY2((a.velocity[s] - b.velocity[s]).norm() <= 1e-6 * (1 + b.velocity[s].norm()),
+                 qPrintable(where));
+        contacts += a.contact[s].triangle >= 0 ? 1 : 0;
+        crossings += s % 3 == 0 && a.contact[s].triangle >= 0 ? 1 : 0;
+      }
+    }
+    QVERIFY(contacts > 1000);  // caught by the sheet: rays and spheres both answered
+    QVERIFY(crossings > 500);  // through the sheet in one step: the ray path
+    QCOMPARE(gridCounters.odeQueries, 0LL);
+  }
+
+  void sharedResolveIsBitIdentical() {
+    const Scene scene = stressSheet();
+    std::mt19937_64 rng(31);
+    std::vector<Eigen::Vector3d> previous;
+    const ParticleSet start = fastParticles(scene, rng, 3 * kParallelParticles, previous);
+    ParticleSet reference;
+    for (int threads : {1, 2, 3}) {
+      auto grid = colliderFor(scene, SkinQueryMethod::Grid);
+      ParallelChunks parallel(threads);
+      parallel.setParticleCount(static_cast<int>(start.position.size()));
+      QCOMPARE(parallel.shared(), threads > 1);
+      ParticleSet p = start;
+      CollisionCounters counters;
+      grid->resolve(p, previous, counters, parallel);
+      // Then the skin moves a particle radius and more (carrying, anchors and swept rays).
+      Eigen::Matrix3Xd moved = scene.vertices;
+      moved.row(2).array() += 3 * kRadius;
+      grid->moveSurface(moved, p, counters, parallel);
+      if (threads == 1) {
+        reference = p;
+        continue;
+      }
+      for (std::size_t s = 0; s < p.position.size(); ++s)
+        QVERIFY2(sameParticle(p, reference, s),
+                 qPrintable(QString("%1 threads, particle %2").arg(threads).arg(s)));
+    }
+  }
+
+  void odeNearestIsUnchangedBySkipping() {
+    const Scene scene = stressSheet();
+    auto warm = colliderFor(scene, SkinQueryMethod::Ode),
+         cold = colliderFor(scene, SkinQueryMethod::Ode);
     CollisionCounters warmCounters, coldCounters;
     std::mt19937_64 rng(99);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    const Eigen::Vector3d lo = scene.box.min().array() - 0.1,
-                          size = scene.box.sizes().array() + 0.2;
     const double radii[] = {kRadius + kBand, kRadius + kProbe, 3 * kRadius + 0.02};
     int found = 0;
     const int queries = 40 * kBatch;
     for (int q = 0; q < queries; ++q) {
       if (q % kBatch == 0) cold->resetSurface(scene.vertices, coldCounters);  // cold: never a grid
-      // Half the points near the sheet (contacts), half anywhere in the box.
-      Eigen::Vector3d x = lo + Eigen::Vector3d(unit(rng), unit(rng), unit(rng)).cwiseProduct(size);
-      if (q % 2 == 0) {
-        const Eigen::Vector3d v = scene.vertices.col(
-            static_cast<Eigen::Index>(unit(rng) * static_cast<double>(scene.vertices.cols() - 1)));
-        x = v + 0.04 * Eigen::Vector3d(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5);
-      }
+      const Eigen::Vector3d x = queryPoint(scene, rng, q);
       const double r = radii[q % 3];
       SkinHit a, b;
       const bool fa = warm->nearest(x, r, a, warmCounters);
@@ -95,9 +216,11 @@ class SkinColliderGridTest : public QObject {
     QVERIFY(warmCounters.odeQueries < coldCounters.odeQueries - queries / 5);
   }
 
-  void resolveIsUnchangedBySkipping() {
+  void odeResolveIsUnchangedBySkipping() {
     const Scene scene = stressSheet();
-    auto warm = colliderFor(scene), cold = colliderFor(scene);
+    auto warm = colliderFor(scene, SkinQueryMethod::Ode),
+         cold = colliderFor(scene, SkinQueryMethod::Ode);
+    ParallelChunks oneThread(1);
     CollisionCounters warmCounters, coldCounters;
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -107,34 +230,18 @@ class SkinColliderGridTest : public QObject {
       warm->nearest(scene.box.center() + Eigen::Vector3d(unit(rng), unit(rng), unit(rng)),
                     kRadius + kProbe, hit, warmCounters);
     }
-    const Eigen::Vector3d normalish(0, 0.34, 0.94);  // the sheet faces +z, tilted up
     long long swept = 0;
     for (int batch = 0; batch < 20; ++batch) {
       cold->resetSurface(scene.vertices, coldCounters);
-      ParticleSet a;
       std::vector<Eigen::Vector3d> previous;
       const int n = kBatch / 3;  // at most a ray and a sphere query each
-      for (int i = 0; i < n; ++i) {
-        const Eigen::Vector3d v = scene.vertices.col(static_cast<Eigen::Index>(
-            (unit(rng) + 1) * 0.5 * static_cast<double>(scene.vertices.cols() - 1)));
-        const Eigen::Vector3d start = v + normalish * (0.05 + 0.1 * (unit(rng) + 1)) +
-                                      0.05 * Eigen::Vector3d(unit(rng), unit(rng), 0);
-        a.add(start, 1.0, static_cast<std::uint64_t>(i), Eye::Left);
-        previous.push_back(start);
-        // Fast particles: through the sheet, or past it, or hardly moving.
-        const double depth = i % 3 == 0 ? -0.4 : (i % 3 == 1 ? 0.2 * unit(rng) : 0.001);
-        a.position.back() = v + normalish * depth + 0.2 * Eigen::Vector3d(unit(rng), unit(rng), 0);
-        a.velocity.back() = (a.position.back() - start) * 22.0;
-      }
+      ParticleSet a = fastParticles(scene, rng, n, previous);
       ParticleSet b = a;
-      warm->resolve(a, previous, warmCounters);
-      cold->resolve(b, previous, coldCounters);
+      warm->resolve(a, previous, warmCounters, oneThread);
+      cold->resolve(b, previous, coldCounters, oneThread);
       for (int i = 0; i < n; ++i) {
         const auto s = static_cast<std::size_t>(i);
-        QVERIFY2(sameBits(a.position[s], b.position[s]) && sameBits(a.velocity[s], b.velocity[s]) &&
-                     a.contact[s].triangle == b.contact[s].triangle &&
-                     sameBits(a.contact[s].barycentric, b.contact[s].barycentric) &&
-                     std::memcmp(&a.clearance[s], &b.clearance[s], sizeof(double)) == 0,
+        QVERIFY2(sameParticle(a, b, s),
                  qPrintable(QString("batch %1 particle %2 differs").arg(batch).arg(i)));
         swept += a.contact[s].triangle >= 0 ? 1 : 0;
       }

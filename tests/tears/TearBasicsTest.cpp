@@ -349,6 +349,7 @@ class TearBasicsTest : public QObject {
     QCOMPARE(c.neighbourSearches, 0LL);
     QCOMPARE(c.trimeshUpdates, 0LL);
     QCOMPARE(c.odeQueries, 0LL);
+    QCOMPARE(c.gridQueries, 0LL);
     // Crying, then back to zero: once the particles are gone the work stops again.
     for (int f = 0; f < 5; ++f) sim->step(sheet.positions, 10, 10, kFrameDt);
     QVERIFY(sim->counters().substeps > 0);
@@ -359,6 +360,7 @@ class TearBasicsTest : public QObject {
     QCOMPARE(sim->counters().substeps, after.substeps);
     QCOMPARE(sim->counters().trimeshUpdates, after.trimeshUpdates);
     QCOMPARE(sim->counters().odeQueries, after.odeQueries);
+    QCOMPARE(sim->counters().gridQueries, after.gridQueries);
     QCOMPARE(sim->counters().neighbourSearches, after.neighbourSearches);
     QCOMPARE(sim->particles().size(), 0);
   }

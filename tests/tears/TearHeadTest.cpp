@@ -183,8 +183,8 @@ class TearHeadTest : public QObject {
                QByteArray("query ") + QByteArray::number(q) + ": distance " +
                    QByteArray::number(hit.distance) + ", brute force " + QByteArray::number(best));
     }
-    qInfo("%d queries, %d with skin in reach, %lld ODE calls, %lld answered by a scan", checked,
-          found, sim->counters().odeQueries, sim->counters().bruteForceQueries);
+    qInfo("%d queries, %d with skin in reach, %lld grid queries", checked, found,
+          sim->counters().gridQueries);
     QVERIFY(found > 100);
   }
 

@@ -1,4 +1,5 @@
 #include "SkinCollider.h"
+#include "OdeSkinQueries.h"
 #include "TriangleGeometry.h"
 
 #include <algorithm>
@@ -8,24 +9,17 @@
 namespace lacrima::tears {
 namespace {
 
-// Contacts ODE may report per query; a full buffer means the answer may be incomplete
-// (nearest() then narrows the sphere, kShrinkAttempts times at most, before scanning).
-constexpr int kMaxContacts = 32;
+// ODE: a full contact list makes nearest() narrow the sphere, kShrinkAttempts times at most,
+// before scanning every triangle.
 constexpr int kShrinkAttempts = 4;
-constexpr int kEnvelopeVertices = 8;
 // ODE queries a skin pose answers before the collider builds its grid to skip empty ones.
 constexpr int kQueriesBeforeGrid = 1024;
-
-bool finite(const dContactGeom& c) {
-  return std::isfinite(c.depth) && std::isfinite(c.pos[0]) && std::isfinite(c.pos[1]) &&
-         std::isfinite(c.pos[2]);
-}
 
 }  // namespace
 
 SkinCollider::SkinCollider(const Eigen::Matrix3Xd& vertices, std::vector<Eigen::Vector3i> triangles,
                            const Eigen::AlignedBox3d& envelope, double particleRadius,
-                           double contactBand, double probeRadius)
+                           double contactBand, double probeRadius, SkinQueryMethod method)
     : vertices_(vertices),
       triangles_(std::move(triangles)),
       radius_(particleRadius),
@@ -70,34 +64,11 @@ SkinCollider::SkinCollider(const Eigen::Matrix3Xd& vertices, std::vector<Eigen::
     ringTriangles_.insert(ringTriangles_.end(), ring.begin(), ring.end());
     ringStart_[t + 1] = static_cast<int>(ringTriangles_.size());
   }
-
-  odeVertices_.assign(3 * (n + kEnvelopeVertices), 0.0);
-  for (int c = 0; c < kEnvelopeVertices; ++c) {
-    const Eigen::Vector3d corner = envelope.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c));
-    for (int a = 0; a < 3; ++a)
-      odeVertices_[3 * (n + static_cast<std::size_t>(c)) + static_cast<std::size_t>(a)] = corner[a];
-  }
-  for (std::size_t v = 0; v < n; ++v)
-    for (int a = 0; a < 3; ++a)
-      odeVertices_[3 * v + static_cast<std::size_t>(a)] = vertices(a, static_cast<Eigen::Index>(v));
-  odeIndices_.reserve(3 * triangles_.size());
-  for (const auto& t : triangles_)
-    for (int a = 0; a < 3; ++a) odeIndices_.push_back(static_cast<dTriIndex>(t[a]));
-
-  const auto ode = lockOde();
-  data_ = OdeTriMeshData(dGeomTriMeshDataCreate());
-  dGeomTriMeshDataBuildDouble(data_.get(), odeVertices_.data(), 3 * sizeof(double),
-                              static_cast<int>(n + kEnvelopeVertices), odeIndices_.data(),
-                              static_cast<int>(odeIndices_.size()), 3 * sizeof(dTriIndex));
-  mesh_ = OdeGeom(dCreateTriMesh(nullptr, data_.get(), nullptr, nullptr, nullptr));
-  sphere_ = OdeGeom(dCreateSphere(nullptr, radius_));
-  ray_ = OdeGeom(dCreateRay(nullptr, 1.0));
-  // Closest hit, front faces only: a ray that leaves the skin from behind is not a crossing.
-  dGeomRaySetFirstContact(ray_.get(), 0);
-  dGeomRaySetBackfaceCull(ray_.get(), 1);
-  dGeomRaySetClosestHit(ray_.get(), 1);
-  contacts_.resize(kMaxContacts);
+  if (method == SkinQueryMethod::Ode)
+    ode_ = std::make_unique<OdeSkinQueries>(vertices_, triangles_, envelope);
 }
+
+SkinCollider::~SkinCollider() = default;
 
 void SkinCollider::computeNormals(const Eigen::Matrix3Xd& v, std::vector<Eigen::Vector3d>& normals,
                                   std::vector<std::uint8_t>& degenerate) const {
@@ -125,24 +96,30 @@ void SkinCollider::refreshFaces() {
   queriesThisPose_ = 0;
 }
 
+void SkinCollider::buildGrid() {
+  // Cells about one free particle's query across (or a triangle, if larger).
+  grid_.build(faces_, radius_ + probe_);
+  gridBuilt_ = true;
+}
+
 bool SkinCollider::gridReady() {
   if (gridBuilt_) return true;
   // A grid costs about as much as a thousand ODE queries to build: only worth it for a pose
   // that sees many (thousands of particles), not for a drop or two on a moving face.
   if (++queriesThisPose_ <= kQueriesBeforeGrid) return false;
-  // Cells about one free particle's query across (or a triangle, if larger).
-  grid_.build(faces_, radius_ + probe_);
-  gridBuilt_ = true;
+  buildGrid();
+  return true;
+}
+
+bool SkinCollider::shareQueries(const ParallelChunks& parallel) {
+  if (ode_ || !parallel.shared()) return false;
+  if (!gridBuilt_) buildGrid();
   return true;
 }
 
 void SkinCollider::writeOdeVertices(const Eigen::Matrix3Xd& v, CollisionCounters& counters) {
-  for (Eigen::Index c = 0; c < v.cols(); ++c)
-    for (int a = 0; a < 3; ++a)
-      odeVertices_[3 * static_cast<std::size_t>(c) + static_cast<std::size_t>(a)] = v(a, c);
-  // Refit only: a rebuilt (or re-preprocessed) data object would assert in ODE.
-  const auto ode = lockOde();
-  dGeomTriMeshDataUpdate(data_.get());
+  if (!ode_) return;  // the grid is rebuilt from faces_ on demand
+  ode_->update(v);
   ++counters.trimeshUpdates;
 }
 
@@ -200,27 +177,57 @@ bool SkinCollider::contactAround(const Eigen::Vector3d& x, int from, SkinHit& hi
   return found && hit.interior;
 }
 
+bool SkinCollider::nearestOnGrid(const Eigen::Vector3d& x, double radius, SkinHit& hit) {
+  if (!gridBuilt_) buildGrid();
+  bool found = false;
+  grid_.anyNear(x, radius, [&](int t) {
+    if (consider(x, t, radius, hit, found)) found = true;
+    return false;  // every candidate: the nearest wins
+  });
+  return found;
+}
+
+bool SkinCollider::rayOnGrid(const Eigen::Vector3d& from, const Eigen::Vector3d& to, SkinHit& hit) {
+  if (!gridBuilt_) buildGrid();
+  const Eigen::Vector3d d = to - from;
+  const double length = d.norm();
+  if (!(length > 0)) return false;
+  const Eigen::Vector3d dir = d / length;
+  int best = -1;
+  double bestDistance = 0;
+  grid_.any(from.cwiseMin(to), from.cwiseMax(to), [&](int t) {
+    const double distance =
+        segmentEntersFace(from, dir, length, faces_[static_cast<std::size_t>(t)]);
+    if (distance >= 0 &&
+        (best < 0 || distance < bestDistance || (distance == bestDistance && t < best))) {
+      best = t;
+      bestDistance = distance;
+    }
+    return false;
+  });
+  if (best < 0) return false;
+  const TrianglePoint cp =
+      closestPointOnFace(from + bestDistance * dir, faces_[static_cast<std::size_t>(best)]);
+  hit = {best, cp.point, cp.barycentric, cp.interior, bestDistance};
+  return true;
+}
+
 bool SkinCollider::nearest(const Eigen::Vector3d& x, double radius, SkinHit& hit,
                            CollisionCounters& counters) {
+  if (!ode_) {
+    ++counters.gridQueries;
+    return nearestOnGrid(x, radius, hit);
+  }
   // Nothing consider() accepts within the radius: ODE's list could not hold one either.
   if (gridReady() && !anyWithin(x, radius)) return false;
   bool found = false;
   double r = radius;
   for (int attempt = 0; attempt < kShrinkAttempts; ++attempt) {
-    dGeomSphereSetRadius(sphere_.get(), r);
-    dGeomSetPosition(sphere_.get(), x.x(), x.y(), x.z());
     ++counters.odeQueries;
-    const int n = [&] {
-      const auto ode = lockOde();
-      return dCollide(sphere_.get(), mesh_.get(), kMaxContacts, contacts_.data(),
-                      sizeof(dContactGeom));
-    }();
-    for (int c = 0; c < n; ++c) {
-      const dContactGeom& contact = contacts_[static_cast<std::size_t>(c)];
-      if (finite(contact) && consider(x, contact.side2, radius, hit, found)) found = true;
-    }
-    if (n < kMaxContacts)
-      return found;  // complete: every triangle reaching into the sphere was listed
+    bool complete = false;
+    for (int t : ode_->sphere(x, r, complete))
+      if (consider(x, t, radius, hit, found)) found = true;
+    if (complete) return found;  // every triangle reaching into the sphere was listed
     // Saturated: ODE stops at the buffer's size, listing triangles in its tree's order, not by
     // distance, so a closer one may be missing. Anything closer than the best so far lies in
     // the sphere of that radius: ask again with it.
@@ -236,6 +243,10 @@ bool SkinCollider::nearest(const Eigen::Vector3d& x, double radius, SkinHit& hit
 
 bool SkinCollider::rayFirstHit(const Eigen::Vector3d& from, const Eigen::Vector3d& to, SkinHit& hit,
                                CollisionCounters& counters) {
+  if (!ode_) {
+    ++counters.gridQueries;
+    return rayOnGrid(from, to, hit);
+  }
   const Eigen::Vector3d d = to - from;
   const double length = d.norm();
   if (!(length > 0)) return false;
@@ -243,23 +254,17 @@ bool SkinCollider::rayFirstHit(const Eigen::Vector3d& from, const Eigen::Vector3
   if (gridReady() && !grid_.any(from.cwiseMin(to), from.cwiseMax(to), [](int) { return true; }))
     return false;
   const Eigen::Vector3d dir = d / length;
-  dGeomRaySetLength(ray_.get(), length);
-  dGeomRaySet(ray_.get(), from.x(), from.y(), from.z(), dir.x(), dir.y(), dir.z());
   ++counters.odeQueries;
-  const int n = [&] {
-    const auto ode = lockOde();
-    return dCollide(ray_.get(), mesh_.get(), 1, contacts_.data(), sizeof(dContactGeom));
-  }();
-  if (n < 1) return false;
-  const dContactGeom& c = contacts_[0];
-  const int t = c.side2;
-  if (!finite(c) || t < 0 || t >= triangleCount()) return false;
+  int t = -1;
+  Eigen::Vector3d p;
+  double depth = 0;
+  if (!ode_->ray(from, dir, length, t, p, depth)) return false;
+  if (t < 0 || t >= triangleCount()) return false;
   const SkinFace& face = faces_[static_cast<std::size_t>(t)];
   if (face.degenerate) return false;
   if (dir.dot(face.normal) >= 0) return false;  // leaving, not entering
-  const Eigen::Vector3d p(c.pos[0], c.pos[1], c.pos[2]);
   const TrianglePoint cp = closestPointOnFace(p, face);
-  hit = {t, cp.point, cp.barycentric, cp.interior, c.depth};
+  hit = {t, cp.point, cp.barycentric, cp.interior, depth};
   return true;
 }
 
@@ -280,7 +285,7 @@ void SkinCollider::makeContact(int i, ParticleSet& p, const SkinHit& hit) {
 }
 
 double SkinCollider::moveSurface(const Eigen::Matrix3Xd& next, ParticleSet& p,
-                                 CollisionCounters& counters) {
+                                 CollisionCounters& counters, ParallelChunks& parallel) {
   double maxDisplacement = 0;
   for (Eigen::Index c = 0; c < next.cols(); ++c)
     maxDisplacement = std::max(maxDisplacement, (next.col(c) - vertices_.col(c)).norm());
@@ -291,47 +296,51 @@ double SkinCollider::moveSurface(const Eigen::Matrix3Xd& next, ParticleSet& p,
   std::vector<std::uint8_t> nextDegenerate;
   computeNormals(next, nextNormals, nextDegenerate);
 
-  // Free particles the skin could reach this frame: anchor them on the OLD surface (ODE still
-  // holds it), to cast their rays once the new one is in place.
-  struct Anchor {
-    int particle;
-    Eigen::Vector3d from;
-  };
-  std::vector<Anchor> anchors;
+  // Free particles the skin could reach this frame: anchor them on the OLD surface (the grid
+  // or ODE still holds it), to cast their rays once the new one is in place. Each chunk lists
+  // its anchors in particle order, and the lists are joined in chunk order: the anchors are in
+  // particle order whatever the threads.
   const bool sweeping = maxDisplacement > 0.25 * radius_;
-  for (int i = 0; i < p.size(); ++i) {
-    const auto s = static_cast<std::size_t>(i);
-    const int t = p.contact[s].triangle;
-    if (t >= 0) {
-      const auto st = static_cast<std::size_t>(t);
-      if (nextDegenerate[st]) {
-        p.contact[s].triangle = -1;
-        p.clearance[s] = 0;
+  const auto carry = [&](int chunk, std::size_t begin, std::size_t end) {
+    std::vector<Anchor>& anchors = chunkAnchors_[static_cast<std::size_t>(chunk)];
+    CollisionCounters& chunkCounters = chunkCounters_[static_cast<std::size_t>(chunk)];
+    for (std::size_t s = begin; s < end; ++s) {
+      const int t = p.contact[s].triangle;
+      if (t >= 0) {
+        const auto st = static_cast<std::size_t>(t);
+        if (nextDegenerate[st]) {
+          p.contact[s].triangle = -1;
+          p.clearance[s] = 0;
+          continue;
+        }
+        // Carried: same barycentric point, same height along the (rotated) normal.
+        const Eigen::Vector3d q0 = pointAt(t, p.contact[s].barycentric, vertices_);
+        const Eigen::Vector3d o = p.position[s] - q0;
+        const double height = o.dot(normals_[st]);
+        p.position[s] = pointAt(t, p.contact[s].barycentric, next) + (o - height * normals_[st]) +
+                        height * nextNormals[st];
         continue;
       }
-      // Carried: same barycentric point, same height along the (rotated) normal.
-      const Eigen::Vector3d q0 = pointAt(t, p.contact[s].barycentric, vertices_);
-      const Eigen::Vector3d o = p.position[s] - q0;
-      const double height = o.dot(normals_[st]);
-      p.position[s] = pointAt(t, p.contact[s].barycentric, next) + (o - height * normals_[st]) +
-                      height * nextNormals[st];
-      continue;
-    }
-    if (sweeping && p.clearance[s] < maxDisplacement) {
-      SkinHit hit;
-      if (nearest(p.position[s], radius_ + maxDisplacement + radius_, hit, counters)) {
-        const auto st = static_cast<std::size_t>(hit.triangle);
-        if (!nextDegenerate[st]) {
-          const Eigen::Vector3d o = p.position[s] - hit.point;
-          const double height = o.dot(normals_[st]);
-          const Eigen::Vector3d from = pointAt(hit.triangle, hit.barycentric, next) +
-                                       (o - height * normals_[st]) + height * nextNormals[st];
-          anchors.push_back({i, from});
+      if (sweeping && p.clearance[s] < maxDisplacement) {
+        SkinHit hit;
+        if (nearest(p.position[s], radius_ + maxDisplacement + radius_, hit, chunkCounters)) {
+          const auto st = static_cast<std::size_t>(hit.triangle);
+          if (!nextDegenerate[st]) {
+            const Eigen::Vector3d o = p.position[s] - hit.point;
+            const double height = o.dot(normals_[st]);
+            const Eigen::Vector3d from = pointAt(hit.triangle, hit.barycentric, next) +
+                                         (o - height * normals_[st]) + height * nextNormals[st];
+            anchors.push_back({static_cast<int>(s), from});
+          }
         }
       }
+      p.clearance[s] = std::max(0.0, p.clearance[s] - maxDisplacement);
     }
-    p.clearance[s] = std::max(0.0, p.clearance[s] - maxDisplacement);
-  }
+  };
+  forEachParticleChunk(parallel, static_cast<std::size_t>(p.size()), carry, counters);
+  anchors_.clear();
+  for (const auto& anchors : chunkAnchors_)
+    anchors_.insert(anchors_.end(), anchors.begin(), anchors.end());
 
   vertices_ = next;
   normals_ = std::move(nextNormals);
@@ -339,28 +348,43 @@ double SkinCollider::moveSurface(const Eigen::Matrix3Xd& next, ParticleSet& p,
   refreshFaces();
   writeOdeVertices(vertices_, counters);
 
-  for (const Anchor& anchor : anchors) {
-    const auto s = static_cast<std::size_t>(anchor.particle);
-    // The anchor moved with the skin; if the segment to the particle enters the skin, the
-    // surface passed through the particle's path: put it back on the side it came from.
-    const Eigen::Vector3d to = p.position[s];
-    const Eigen::Vector3d dir = to - anchor.from;
-    const double length = dir.norm();
-    if (!(length > 1e-12 * radius_)) continue;
-    SkinHit hit;
-    if (rayFirstHit(anchor.from, to + dir / length * radius_, hit, counters)) {
-      p.position[s] = hit.point;  // on the surface; makeContact lifts it to one radius
-      makeContact(anchor.particle, p, hit);
-      ++counters.sweptParticles;
+  const auto push = [&](int chunk, std::size_t begin, std::size_t end) {
+    CollisionCounters& chunkCounters = chunkCounters_[static_cast<std::size_t>(chunk)];
+    for (std::size_t a = begin; a < end; ++a) {
+      const Anchor& anchor = anchors_[a];
+      const auto s = static_cast<std::size_t>(anchor.particle);
+      // The anchor moved with the skin; if the segment to the particle enters the skin, the
+      // surface passed through the particle's path: put it back on the side it came from.
+      const Eigen::Vector3d to = p.position[s];
+      const Eigen::Vector3d dir = to - anchor.from;
+      const double length = dir.norm();
+      if (!(length > 1e-12 * radius_)) continue;
+      SkinHit hit;
+      if (rayFirstHit(anchor.from, to + dir / length * radius_, hit, chunkCounters)) {
+        p.position[s] = hit.point;  // on the surface; makeContact lifts it to one radius
+        makeContact(anchor.particle, p, hit);
+        ++chunkCounters.sweptParticles;
+      }
     }
-  }
+  };
+  forEachParticleChunk(parallel, anchors_.size(), push, counters);
   return maxDisplacement;
 }
 
 void SkinCollider::resolve(ParticleSet& p, std::span<const Eigen::Vector3d> previous,
-                           CollisionCounters& counters) {
-  for (int i = 0; i < p.size(); ++i) {
-    const auto s = static_cast<std::size_t>(i);
+                           CollisionCounters& counters, ParallelChunks& parallel) {
+  forEachParticleChunk(
+      parallel, static_cast<std::size_t>(p.size()),
+      [&](int chunk, std::size_t begin, std::size_t end) {
+        resolveRange(p, previous, begin, end, chunkCounters_[static_cast<std::size_t>(chunk)]);
+      },
+      counters);
+}
+
+void SkinCollider::resolveRange(ParticleSet& p, std::span<const Eigen::Vector3d> previous,
+                                std::size_t begin, std::size_t end, CollisionCounters& counters) {
+  for (std::size_t s = begin; s < end; ++s) {
+    const int i = static_cast<int>(s);
     SkinContact& contact = p.contact[s];
     const Eigen::Vector3d moved = p.position[s] - previous[s];
     const SkinFace* face =
@@ -390,7 +414,7 @@ void SkinCollider::resolve(ParticleSet& p, std::span<const Eigen::Vector3d> prev
     }
     if (contact.triangle >= 0) {
       // Slid off its triangle (or the triangle collapsed): find the one it is on now, among
-      // the triangles around the old one first, then through ODE.
+      // the triangles around the old one first, then by a query.
       SkinHit hit;
       if (contactAround(p.position[s], contact.triangle, hit)) {
         ++counters.contactsTracked;

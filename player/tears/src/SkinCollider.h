@@ -1,8 +1,11 @@
 #pragma once
-// Collision of tear particles with the deforming skin, through ODE used for CONTACT QUERIES ONLY
-// (no ODE bodies, no world step): the particles are integrated by the SPH solver, ODE finds which
-// skin triangle a particle's sphere touches (dCollide sphere vs trimesh) or which triangle a
-// moving particle's path crosses (dCollide ray vs trimesh).
+// Collision of tear particles with the deforming skin, by CONTACT QUERIES ONLY (no rigid bodies,
+// no world step): the particles are integrated by the SPH solver, and the collider asks which
+// skin triangle a particle's sphere touches or which triangle a moving particle's path crosses.
+// Two methods answer (SkinQueryMethod): a uniform grid over the pose's triangles, the default,
+// which any number of threads may ask at once; or ODE (dCollide sphere/ray vs trimesh), the
+// reference the grid is tested against, which every query must ask under one process-wide lock
+// (OdeSkinQueries.h), so collision with ODE runs on one thread.
 //
 // Why not ODE bodies (the 2009 design)? Measured on this machine class (docs/decisions/0001, 9k
 // triangles, 2 sub-steps per frame, one core): ODE bodies cost 0.54 / 5.6 / 79 ms per frame for
@@ -13,10 +16,12 @@
 // at adhesion 100 because a large constant force fights ODE's penalty/LCP contact. Here adhesion
 // is absorbed by a velocity constraint, so it needs no time-step limit at all.
 //
+// With the grid, a sphere query takes the nearest of every triangle the grid lists near the
+// sphere (consider(), the same test applied to ODE's list), and a ray query the nearest front
+// crossing among the triangles whose boxes meet the segment's (segmentEntersFace). With ODE,
 // ODE is asked only when it could answer something: once a pose has had a thousand queries (a
-// few thousand particles), a grid over its triangles (TriangleGrid.h) proves most sphere and
-// ray queries of particles away from the skin empty without ODE, with the same arithmetic
-// nearest() applies to ODE's list, so every answer is unchanged (fewer dCollide calls only).
+// few thousand particles) the grid proves most queries of particles away from the skin empty
+// without ODE, with the same arithmetic, so every answer is unchanged (fewer dCollide calls).
 //
 // Contacts are tracked on their triangle by barycentric coordinates: while the particle's
 // projection stays inside that triangle, no ODE call is made, and when it slides onto one of the
@@ -31,27 +36,42 @@
 //
 // The skin is one-sided: outside is the side the counter-clockwise triangles face (HeadMesh's
 // convention), which is also how ODE's sphere-trimesh test behaves.
-#include "OdeHandles.h"
+#include "ParallelChunks.h"
 #include "SkinContact.h"
 #include "TriangleGrid.h"
 
 #include <lacrima/tears/ParticleSet.h>
+#include <lacrima/tears/SimulationOptions.h>
 
 #include <Eigen/Geometry>
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
 namespace lacrima::tears {
 
+class OdeSkinQueries;
+
 struct CollisionCounters {
+  long long gridQueries = 0;      // sphere and ray queries answered by the grid alone
   long long odeQueries = 0;       // dCollide calls (sphere and ray)
   long long trimeshUpdates = 0;   // dGeomTriMeshDataUpdate calls
   long long sweptParticles = 0;   // free particles the moving skin swept through, pushed out
   long long contactsTracked = 0;  // contact tests answered from the cached triangle alone
   long long bruteForceQueries =
       0;  // nearest() answered by scanning every triangle (ODE's list was full)
+
+  CollisionCounters& operator+=(const CollisionCounters& c) {
+    gridQueries += c.gridQueries;
+    odeQueries += c.odeQueries;
+    trimeshUpdates += c.trimeshUpdates;
+    sweptParticles += c.sweptParticles;
+    contactsTracked += c.contactsTracked;
+    bruteForceQueries += c.bruteForceQueries;
+    return *this;
+  }
 };
 
 struct SkinHit {
@@ -65,11 +85,13 @@ struct SkinHit {
 class SkinCollider {
  public:
   // vertices: 3 x n in the head frame; triangles index them (counter-clockwise outside).
-  // envelope: the largest region the skin can ever occupy (ODE keeps the geom's bounding box
-  // from build time, so it is built with unreferenced vertices at the envelope's corners).
+  // envelope: the largest region the skin can ever occupy (OdeSkinQueries.h; ODE only).
   SkinCollider(const Eigen::Matrix3Xd& vertices, std::vector<Eigen::Vector3i> triangles,
                const Eigen::AlignedBox3d& envelope, double particleRadius, double contactBand,
-               double probeRadius);
+               double probeRadius, SkinQueryMethod method = SkinQueryMethod::Grid);
+  ~SkinCollider();
+
+  SkinQueryMethod method() const { return ode_ ? SkinQueryMethod::Ode : SkinQueryMethod::Grid; }
 
   int triangleCount() const { return static_cast<int>(triangles_.size()); }
   const Eigen::Vector3d& faceNormal(int t) const { return normals_[static_cast<std::size_t>(t)]; }
@@ -78,22 +100,24 @@ class SkinCollider {
   SkinView view() const { return {faces_}; }
 
   // Moves the skin to `vertices`, carrying tracked particles and pushing out free particles the
-  // skin swept through. Returns the largest vertex displacement.
+  // skin swept through. Returns the largest vertex displacement. The per-particle work is
+  // shared in `parallel`'s fixed chunks when the grid answers the queries (ODE's cannot be).
   double moveSurface(const Eigen::Matrix3Xd& vertices, ParticleSet& particles,
-                     CollisionCounters& counters);
+                     CollisionCounters& counters, ParallelChunks& parallel);
   // Moves the skin without touching particles (first frame, or after the simulation was idle
   // and has no particles).
   void resetSurface(const Eigen::Matrix3Xd& vertices, CollisionCounters& counters);
 
   // After a sub-step moved the particles from `previous`: keeps every particle outside the skin,
   // updates contacts (triangle, barycentric) and clearances, zeroes velocity into the skin, and
-  // adds the distance slid along the skin to `travelled`.
+  // adds the distance slid along the skin to `travelled`. Each particle's answer depends on
+  // that particle alone, so sharing the chunks between threads changes no bit.
   void resolve(ParticleSet& particles, std::span<const Eigen::Vector3d> previous,
-               CollisionCounters& counters);
+               CollisionCounters& counters, ParallelChunks& parallel);
 
-  // The surface state (vertices, normals), for checkpoints: restoring it refits ODE's trimesh to
-  // those vertices, which makes every later query answer exactly as it did after the save (the
-  // mesh's bounding-volume tree has a fixed topology; a refit depends on the vertices alone).
+  // The surface state (vertices, normals), for checkpoints: restoring it rebuilds the grid from
+  // (or refits ODE's trimesh to) those vertices, which makes every later query answer exactly
+  // as it did after the save (both depend on the vertices alone).
   struct Surface {
     Eigen::Matrix3Xd vertices;
     std::vector<Eigen::Vector3d> normals;
@@ -102,13 +126,42 @@ class SkinCollider {
   Surface surface() const { return {vertices_, normals_, degenerate_}; }
   void restoreSurface(const Surface& surface, CollisionCounters& counters);
 
-  // Nearest skin point within `radius` of x (front side only).
+  // Nearest skin point within `radius` of x (front side only). Builds the grid if the pose has
+  // none yet, so it may be called from several threads only once shareQueries() ran.
   bool nearest(const Eigen::Vector3d& x, double radius, SkinHit& hit, CollisionCounters& counters);
 
  private:
   void computeNormals(const Eigen::Matrix3Xd& v, std::vector<Eigen::Vector3d>& normals,
                       std::vector<std::uint8_t>& degenerate) const;
   void writeOdeVertices(const Eigen::Matrix3Xd& v, CollisionCounters& counters);
+  // Whether this pass's per-particle loop may be shared: only with the grid, which it builds
+  // first so that the threads only read it.
+  bool shareQueries(const ParallelChunks& parallel);
+  // Calls body(chunk, begin, end) over [0, count): in `parallel`'s fixed chunks, on its threads,
+  // when shareQueries() allows, else as one range on this thread (each item's answer is the
+  // same either way); then adds the chunks' counters to `counters`.
+  template <class Body>
+  void forEachParticleChunk(ParallelChunks& parallel, std::size_t count, Body&& body,
+                            CollisionCounters& counters) {
+    if (count == 0) return;
+    const bool shared = shareQueries(parallel);
+    const std::size_t chunks = shared ? ParallelChunks::chunkCount(count, kParticleChunk) : 1;
+    chunkCounters_.assign(chunks, {});
+    chunkAnchors_.resize(chunks);
+    for (auto& anchors : chunkAnchors_) anchors.clear();
+    if (shared)
+      parallel.forEachChunk(count, kParticleChunk, body);
+    else
+      body(0, 0, count);
+    for (const CollisionCounters& c : chunkCounters_) counters += c;
+  }
+  void resolveRange(ParticleSet& particles, std::span<const Eigen::Vector3d> previous,
+                    std::size_t begin, std::size_t end, CollisionCounters& counters);
+  // The grid's answers (TriangleGrid.h): every candidate near the sphere, every crossing of the
+  // segment; the nearest wins, ties to the lower triangle index.
+  bool nearestOnGrid(const Eigen::Vector3d& x, double radius, SkinHit& hit);
+  bool rayOnGrid(const Eigen::Vector3d& from, const Eigen::Vector3d& to, SkinHit& hit);
+  void buildGrid();
   // Rebuilds faces_ from vertices_, normals_ and degenerate_ (after every change of pose).
   void refreshFaces();
   // Takes triangle t as the hit if its closest point to x is within radius, in front, and nearer
@@ -117,8 +170,8 @@ class SkinCollider {
   // Whether consider() accepts any triangle for x and radius: when not, a sphere query cannot
   // find anything and ODE is not asked (TriangleGrid.h has the argument).
   bool anyWithin(const Eigen::Vector3d& x, double radius) const;
-  // Counts a query against the current pose; true once grid_ holds that pose (it is built
-  // when the pose has had enough queries to pay for it).
+  // ODE only: counts a query against the current pose; true once grid_ holds that pose (it is
+  // built when the pose has had enough queries to pay for it).
   bool gridReady();
   // A contact for x among the triangles sharing a vertex with `from` (no ODE call): true when
   // the nearest of them within radius + band lies under x (interior), as after a slide onto a
@@ -139,18 +192,20 @@ class SkinCollider {
   // Triangles sharing at least one vertex with each triangle, itself included, each listed
   // once (CSR): the candidates of a contact that slid off its triangle.
   std::vector<int> ringStart_, ringTriangles_;
-  TriangleGrid grid_;  // of faces_, to skip ODE queries that cannot find a triangle
+  TriangleGrid grid_;  // of faces_: the answers, or (ODE) the queries that cannot find one
   bool gridBuilt_ = false;
   int queriesThisPose_ = 0;
   double radius_, band_, probe_, degenerateArea2_;
 
-  // ODE keeps pointers into these two arrays: they are sized once and never reallocated.
-  std::vector<double> odeVertices_;
-  std::vector<dTriIndex> odeIndices_;
-  OdeLibrary library_;
-  OdeTriMeshData data_;
-  OdeGeom mesh_, sphere_, ray_;
-  std::vector<dContactGeom> contacts_;
+  std::unique_ptr<OdeSkinQueries> ode_;  // SkinQueryMethod::Ode only
+  // Per-chunk scratch of the shared passes: counters, and moveSurface's anchors.
+  std::vector<CollisionCounters> chunkCounters_;
+  struct Anchor {
+    int particle;
+    Eigen::Vector3d from;
+  };
+  std::vector<std::vector<Anchor>> chunkAnchors_;
+  std::vector<Anchor> anchors_;
 };
 
 }  // namespace lacrima::tears

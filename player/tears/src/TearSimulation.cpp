@@ -110,7 +110,7 @@ TearSimulation::TearSimulation(const Eigen::Matrix3Xf& rest,
   envelope.max() += grow;
   internals_->collider = std::make_unique<SkinCollider>(
       skinPositions_, skinTriangles_, envelope, params_.particleRadius, params_.contactBand,
-      std::max(0.0, options_.collisionProbeKernels) * params_.h);
+      std::max(0.0, options_.collisionProbeKernels) * params_.h, options_.skinQueries);
 }
 
 TearSimulation::~TearSimulation() = default;
@@ -216,7 +216,8 @@ void TearSimulation::updateSkin(const Eigen::Matrix3Xf& positions) {
     internals_->collider->resetSurface(skinPositions_, c);
     skinStale_ = false;
   } else {
-    internals_->collider->moveSurface(skinPositions_, particles_, c);
+    internals_->parallel.setParticleCount(particles_.size());
+    internals_->collider->moveSurface(skinPositions_, particles_, c, internals_->parallel);
   }
   addCollisionCounters(counters_, c);
 }

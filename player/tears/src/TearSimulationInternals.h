@@ -63,6 +63,7 @@ struct TearSimulation::EmissionSites {
 };
 
 inline void addCollisionCounters(TearCounters& total, const CollisionCounters& c) {
+  total.gridQueries += c.gridQueries;
   total.odeQueries += c.odeQueries;
   total.trimeshUpdates += c.trimeshUpdates;
   total.sweptParticles += c.sweptParticles;

@@ -152,7 +152,7 @@ void TearSimulation::simulate(double frameDt) {
     times_.forces += millisecondsSince(start);
 
     start = SteadyClock::now();
-    in.collider->resolve(particles_, in.previous, collision);
+    in.collider->resolve(particles_, in.previous, collision, in.parallel);
     double lost[2] = {0, 0};
     in.massLoss.apply(particles_, params_.restDensity, lost);
     trailVolume_[0] += lost[0];

@@ -26,6 +26,12 @@ inline const char* pressureMethodName(PressureMethod method) {
                                            : "pbf";
 }
 
+// Who answers the collider's skin queries (which triangle a particle touches, which one its path
+// crosses): a uniform grid over the skin's triangles, which every thread may ask at once, or
+// ODE's trimesh collision, the reference the grid is tested against, which Debian's ODE lets
+// only one thread ask at a time (docs/decisions/0017).
+enum class SkinQueryMethod { Grid, Ode };
+
 // Surface tension: the colour-field curvature force of Müller et al. 2003, or the cohesion and
 // curvature forces of Akinci et al. 2013.
 enum class SurfaceTensionModel { Mueller, Akinci };
@@ -71,6 +77,7 @@ struct SimulationOptions {
   // Free particles look for the skin this far (kernel radii) and then skip the query until
   // they have travelled the clearance found: farther means fewer, dearer queries.
   double collisionProbeKernels = 1;
+  SkinQueryMethod skinQueries = SkinQueryMethod::Grid;  // measured faster (decision 0017)
   double trailDecayMetres = 0.1;           // mass e-folds every 10 cm slid over the skin
   double massFloor = 0.2;                  // of the emitted mass
   double boxMarginMetres = 0.03;           // simulation box = skin bounds grown by this

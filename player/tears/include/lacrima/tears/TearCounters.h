@@ -21,6 +21,9 @@ struct TearCounters {
   long long neighbourSearches = 0;  // pair-list builds (the list is reused between them)
   long long straySubsteps = 0,
             strays = 0;  // sub-steps that kept the list with strays; their strays
+  // Skin queries answered by the collider's grid, or by ODE (SimulationOptions::skinQueries),
+  // ODE trimesh refits, particles the moving skin swept through, contacts kept without a query.
+  long long gridQueries = 0;
   long long trimeshUpdates = 0, odeQueries = 0, sweptParticles = 0, contactsTracked = 0;
   long long bruteForceQueries = 0;  // nearest-skin queries ODE could not answer in full (scanned)
   long long surfaceRuns = 0;        // incremented by the surface mesher via countSurfaceRun()
