@@ -27,7 +27,7 @@ ProjectDocument loadProject(const std::string& path) { return ProjectDocument::l
 
 FapAnimation loadAnimation(const std::string& path) {
   if (!isProjectPath(path)) return readFap(path).animation;
-  return loadProject(path).bake();
+  return ProjectDocument::load(path, ProjectDocument::Use::Bake).bake();
 }
 
 void saveAnimation(const FapAnimation& animation, const std::string& path, bool strict) {

@@ -3,6 +3,7 @@
 #include "CurveSlopes.h"
 
 #include <lacrima/common/CurveHandles.h>
+#include <lacrima/common/JsonWriter.h>
 
 #include <algorithm>
 #include <array>
@@ -20,10 +21,6 @@ using namespace curve_detail;
 // Keys closer than this are the same key: far below a frame at any sane rate, far above
 // the rounding error of times computed as frame / fps.
 constexpr double kSameTime = 1e-9;
-
-// A bake allocates frames * 280 bytes up front; 2^24 frames (4.7 GB, 8.8 days at 22 fps)
-// is beyond any real use, and refusing it beats being killed by the out-of-memory handler.
-constexpr double kMaxBakedFrames = 16777216.0;
 
 void requireValidFps(double fps, const char* caller) {
   if (!std::isfinite(fps) || fps <= 0.0) {
@@ -368,6 +365,11 @@ FapValues KeyframeSequence::evaluate(double seconds) const {
   return result;
 }
 
+double bakedFrameCount(double fps, double start, double end) {
+  if (end < start) return 0;
+  return std::floor((end - start) * fps + 1e-6) + 1.0;
+}
+
 FapAnimation KeyframeSequence::bake(double fps) const {
   if (keys_.empty()) {
     requireValidFps(fps, "bake");
@@ -386,11 +388,11 @@ FapAnimation KeyframeSequence::bake(double fps, double start, double end) const 
   animation.fps = fps;
   if (end < start) return animation;
 
-  const double frames = std::floor((end - start) * fps + 1e-6) + 1.0;
-  if (frames > kMaxBakedFrames) {
-    throw std::length_error("bake: " + std::to_string(static_cast<long long>(frames)) +
-                            " frames exceed the limit of " +
-                            std::to_string(static_cast<long long>(kMaxBakedFrames)));
+  const double frames = bakedFrameCount(fps, start, end);
+  if (!(frames <= kMaxBakedFrames)) {
+    // Printed as a double: the count may exceed every integer type (a key at 6e66 s).
+    throw std::length_error("bake: " + formatJsonNumber(frames) + " frames exceed the limit of " +
+                            formatJsonNumber(kMaxBakedFrames));
   }
   animation.frames.assign(static_cast<std::size_t>(frames), FapValues{});
   animation.animated = unionOfChannels(keys_);

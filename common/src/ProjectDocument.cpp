@@ -260,24 +260,33 @@ bool ProjectDocument::operator==(const ProjectDocument& other) const {
          head == other.head;
 }
 
+namespace {
+
+bool mixed(const PoseLayer& layer) { return !layer.muted && layer.hasIntensity(); }
+
+}  // namespace
+
+std::pair<double, double> ProjectDocument::bakeRange() const {
+  double start = keys.empty() ? std::numeric_limits<double>::infinity() : keys.startTime();
+  double end = keys.empty() ? -std::numeric_limits<double>::infinity() : keys.endTime();
+  for (const PoseLayer& layer : layers) {
+    if (!mixed(layer)) continue;
+    start = std::min(start, layer.startTime());
+    end = std::max(end, layer.endTime());
+  }
+  return {start, end};
+}
+
 FapAnimation ProjectDocument::bake(double rate) const {
-  const auto active = [](const PoseLayer& layer) { return !layer.muted && layer.hasIntensity(); };
-  if (std::none_of(layers.begin(), layers.end(), active)) {
+  if (std::none_of(layers.begin(), layers.end(), mixed)) {
     FapAnimation animation = keys.bake(rate);
     animation.name = name;
     return animation;
   }
-  // The range covers every key and every layer's intensity keys.
-  double start = keys.empty() ? std::numeric_limits<double>::infinity() : keys.startTime();
-  double end = keys.empty() ? -std::numeric_limits<double>::infinity() : keys.endTime();
-  for (const PoseLayer& layer : layers) {
-    if (!active(layer)) continue;
-    start = std::min(start, layer.startTime());
-    end = std::max(end, layer.endTime());
-  }
+  const auto [start, end] = bakeRange();
   FapAnimation animation = keys.bake(rate, start, end);
   for (const PoseLayer& layer : layers) {
-    if (active(layer)) animation.animated |= layer.channels();
+    if (mixed(layer)) animation.animated |= layer.channels();
   }
   for (std::size_t f = 0; f < animation.frames.size(); ++f) {
     const double t = start + static_cast<double>(f) / rate;
@@ -321,7 +330,35 @@ std::string ProjectDocument::toJson() const {
   return std::move(out).finish();
 }
 
-ProjectDocument ProjectDocument::read(const JsonValue& root) {
+namespace {
+
+// Refuses, before anything is baked, a project whose animation would exceed kMaxBakedFrames
+// at its own rate (a key at 16,000 s at 1,000 fps: 16 million frames, 4.5 GB), naming the
+// latest key's time, which sets the length.
+void requireBakeable(const JsonValue& root, const ProjectDocument& document) {
+  const auto [start, end] = document.bakeRange();
+  const double frames = bakedFrameCount(document.fps, start, end);
+  if (frames <= kMaxBakedFrames) return;
+  JsonValue latest = root["fps"];
+  const auto consider = [&](const JsonValue& key) {
+    const JsonValue time = key["time"];
+    if (time.isNumber() && time.number() == end) latest = time;
+  };
+  constexpr std::size_t kRead = std::numeric_limits<std::size_t>::max();  // bounded when read
+  for (const JsonValue& key : root["keys"].array(kRead)) consider(key);
+  if (root.has("layers"))
+    for (const JsonValue& layer : root["layers"].array(kRead))
+      for (const JsonValue& key : layer["intensity"].array(kRead)) consider(key);
+  latest.fail("the animation runs from " + formatJsonNumber(start) + " s to " +
+              formatJsonNumber(end) + " s, " + formatJsonNumber(frames) + " frames at " +
+              formatJsonNumber(document.fps) + " fps; at most " +
+              formatJsonNumber(kMaxBakedFrames) +
+              " frames can be played or exported (shorten it or lower the frame rate)");
+}
+
+}  // namespace
+
+ProjectDocument ProjectDocument::read(const JsonValue& root, Use use) {
   const int version = checkFormatAndVersion(root);
   root.rejectUnknownMembers({"format", "version", "name", "fps", "interpolation", "keys",
                              "tearSources", "scene", "head", "layers"});
@@ -340,15 +377,18 @@ ProjectDocument ProjectDocument::read(const JsonValue& root) {
     if (version < 2) root["layers"].fail("layers need a project of version 2 or later");
     document.layers = projectjson::readLayers(root["layers"], version);
   }
+  if (use == Use::Bake) requireBakeable(root, document);
   return document;
 }
 
-ProjectDocument ProjectDocument::fromJson(std::string_view json, const std::string& displayName) {
-  return read(JsonInput::parse(json, displayName).root());
+ProjectDocument ProjectDocument::fromJson(std::string_view json, const std::string& displayName,
+                                          Use use) {
+  return read(JsonInput::parse(json, displayName).root(), use);
 }
 
-ProjectDocument ProjectDocument::load(const std::string& path) {
-  ProjectDocument document = read(JsonInput::load(path, {"project file", kMaxFileBytes}).root());
+ProjectDocument ProjectDocument::load(const std::string& path, Use use) {
+  ProjectDocument document =
+      read(JsonInput::load(path, {"project file", kMaxFileBytes}).root(), use);
   document.resolveHeadPaths(fs::path(path).parent_path().string());
   return document;
 }

@@ -12,6 +12,15 @@
 namespace lacrima::inline common::projectjson {
 namespace {
 
+// A key's time: seconds from 0 to kMaxKeyTime (a day).
+double readKeyTime(const JsonValue& time) {
+  const double seconds = time.isNumber() ? time.number() : -1.0;
+  if (!(seconds >= 0.0 && seconds <= kMaxKeyTime))
+    time.fail("expected a time in seconds from 0 to " + formatJsonNumber(kMaxKeyTime) + ", got " +
+              time.describe());
+  return seconds;
+}
+
 constexpr double kMaxChannelMagnitude = 1e7;
 // A key a frame of an hour at 240 fps; a 64 MiB file could spell out a few million empty ones.
 constexpr std::size_t kMaxKeys = 1'000'000;
@@ -112,10 +121,7 @@ Keyframe readKey(const JsonValue& value, Interpolation defaultMode, int version)
     value.rejectUnknownMembers({"time", "interpolation", "values"});
   }
   Keyframe key;
-  const JsonValue time = value["time"];
-  if (time.missing()) time.fail("missing");
-  key.time = time.number();
-  if (key.time < 0.0) time.fail("expected a time >= 0 s, got " + formatJsonNumber(key.time));
+  key.time = readKeyTime(value.required("time"));
   key.interpolation =
       value.has("interpolation") ? readInterpolation(value["interpolation"], version) : defaultMode;
   const JsonValue values = value["values"];
@@ -271,9 +277,7 @@ void writeLayer(JsonWriter& out, const PoseLayer& layer) {
 IntensityKey readIntensityKey(const JsonValue& value, int version) {
   value.rejectUnknownMembers({"time", "value", "interpolation"});
   IntensityKey key;
-  const JsonValue time = value.required("time");
-  key.time = time.number();
-  if (key.time < 0.0) time.fail("expected a time >= 0 s, got " + formatJsonNumber(key.time));
+  key.time = readKeyTime(value.required("time"));
   key.value = value.required("value").number(-kMaxIntensity, kMaxIntensity);
   if (value.has("interpolation")) {
     key.interpolation = readInterpolation(value["interpolation"], version);

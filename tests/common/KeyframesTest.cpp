@@ -409,6 +409,26 @@ class KeyframesTest : public QObject {
     // Absurd lengths are refused instead of exhausting memory.
     const KeyframeSequence huge({keyAt(0.0, {{kOpenJaw, 1.0f}}), keyAt(1e9, {{kOpenJaw, 1.0f}})});
     QVERIFY_THROWS_EXCEPTION(std::length_error, huge.bake(1000.0));
+    // One frame past the limit is refused; a count beyond every integer type is reported
+    // as it is (it once went through a long long cast: undefined, printed negative).
+    const double limitSeconds = (kMaxBakedFrames - 1) / 100.0;
+    QCOMPARE(
+        KeyframeSequence({keyAt(0.0, {{kOpenJaw, 1.0f}}), keyAt(limitSeconds, {{kOpenJaw, 2.0f}})})
+            .bake(100.0)
+            .frames.size(),
+        static_cast<std::size_t>(kMaxBakedFrames));
+    QVERIFY_THROWS_EXCEPTION(std::length_error,
+                             KeyframeSequence({keyAt(0.0, {{kOpenJaw, 1.0f}}),
+                                               keyAt(limitSeconds + 0.01, {{kOpenJaw, 2.0f}})})
+                                 .bake(100.0));
+    try {
+      KeyframeSequence({keyAt(0.0, {{kOpenJaw, 1.0f}}), keyAt(6e66, {{kOpenJaw, 1.0f}})})
+          .bake(1000.0);
+      QFAIL("a bake of 6e69 frames was accepted");
+    } catch (const std::length_error& e) {
+      QVERIFY2(QByteArray(e.what()).startsWith("bake: 6e+69 frames exceed the limit of 1048576"),
+               e.what());
+    }
   }
 
   void bakeOfEmptyOrSingleKey() {

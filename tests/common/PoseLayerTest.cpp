@@ -130,8 +130,9 @@ class PoseLayerTest : public QObject {
     QTest::newRow("intensity beyond 100")
         << R"([{"pose": {}, "intensity": [{"time": 0, "value": 1e6}]}])" << 2
         << "layers[0].intensity[0].value: expected a number in [-100, 100]";
-    QTest::newRow("negative time") << R"([{"pose": {}, "intensity": [{"time": -1, "value": 1}]}])"
-                                   << 2 << "layers[0].intensity[0].time: expected a time >= 0 s";
+    QTest::newRow("negative time")
+        << R"([{"pose": {}, "intensity": [{"time": -1, "value": 1}]}])" << 2
+        << "layers[0].intensity[0].time: expected a time in seconds from 0 to 86400";
     QTest::newRow("no intensity") << R"([{"pose": {"open_jaw": 1}}])" << 2
                                   << "layers[0]: missing field \"intensity\"";
   }

@@ -372,6 +372,15 @@ class ProjectDocumentTest : public QObject {
     QTest::newRow("fps as text") << QString::fromStdString(withTopLevel(R"("fps": "22")"))
                                  << "doc.json:1:57"
                                  << "fps: expected a number in (0, 1000]";
+    // Times that once overflowed the bake's message (6e66) or threw std::length_error (1e9).
+    QTest::newRow("time far beyond a day")
+        << QString::fromStdString(withKey(1, R"({"time": 6e66, "values": {"open_jaw": 1}})"))
+        << "doc.json:1:55"
+        << "keys[0].time: expected a time in seconds from 0 to 86400, got 6e+66";
+    QTest::newRow("time of a billion seconds")
+        << QString::fromStdString(withKey(1, R"({"time": 1e9, "values": {"open_jaw": 1}})"))
+        << "doc.json:1:55"
+        << "keys[0].time: expected a time in seconds from 0 to 86400, got 1000000000";
     QTest::newRow("bezier in a version 1 file")
         << QString::fromStdString(
                withKey(1, R"({"time": 0, "interpolation": "bezier", "values": {"open_jaw": 1}})"))
@@ -467,7 +476,7 @@ class ProjectDocumentTest : public QObject {
     QTest::newRow("negative key time")
         << R"({"format": "lacrima-project", "version": 1, "keys": [{"time": -1, "values": {}}]})"
         << "doc.json:1:55"
-        << "keys[0].time: expected a time >= 0 s, got -1";
+        << "keys[0].time: expected a time in seconds from 0 to 86400, got -1";
     QTest::newRow("unknown key field")
         << R"({"format": "lacrima-project", "version": 1, "keys": [{"time": 0, "values": {}, "ease": 1}]})"
         << "doc.json:1:80"
@@ -631,6 +640,33 @@ class ProjectDocumentTest : public QObject {
     } catch (const FileError& error) {
       QCOMPARE(error.message(), std::string("is a folder, not a project file"));
     }
+  }
+
+  // A ~140-byte project asking a bake for 16 million frames (4.5 GB): opened to edit (the
+  // editor can shorten it), refused to bake at the key that sets its length.
+  void bakeLongerThanTheLimitIsRefusedToBake() {
+    const std::string json =
+        R"({"format":"lacrima-project","version":1,"fps":1000,"keys":[{"time":0,"values":{"open_jaw":1}},{"time":16000,"values":{"open_jaw":2}}]})";
+    const ProjectDocument edited = ProjectDocument::fromJson(json, kDisplayName);
+    QCOMPARE(edited.keys.keys().size(), std::size_t{2});
+    QVERIFY_THROWS_EXCEPTION(std::length_error, edited.bake());
+    try {
+      ProjectDocument::fromJson(json, kDisplayName, ProjectDocument::Use::Bake);
+      QFAIL("a project of 16 million frames was accepted to bake");
+    } catch (const FileError& error) {
+      QCOMPARE(QString::fromStdString(error.where().toString()), QString("doc.json:1:96"));
+      QCOMPARE(QString::fromStdString(error.message()),
+               QString("keys[1].time: the animation runs from 0 s to 16000 s, 16000001 frames at "
+                       "1000 fps; at most 1048576 frames can be played or exported (shorten it "
+                       "or lower the frame rate)"));
+    }
+    // One frame under the limit bakes.
+    const std::string fits =
+        R"({"format":"lacrima-project","version":1,"fps":1000,"keys":[{"time":0,"values":{"open_jaw":1}},{"time":1048.575,"values":{"open_jaw":2}}]})";
+    QCOMPARE(ProjectDocument::fromJson(fits, kDisplayName, ProjectDocument::Use::Bake)
+                 .bake()
+                 .frames.size(),
+             std::size_t{1048576});
   }
 
   void loadRefusesHugeFiles() {

@@ -212,6 +212,20 @@ class EditorCoreTest : public QObject {
     QCOMPARE(model.document().keys.keys().size(), std::size_t{1});
   }
 
+  // Keys stay within the day a project file may hold, so what the editor saves loads again.
+  void keysStayWithinADay() {
+    editing::EditorModel model;
+    for (double far : {1e9, 6e66, 86400.01}) {
+      model.setCurrentTime(far);
+      QCOMPARE(model.currentTime(), kMaxKeyTime);
+    }
+    model.setChannel(3, 20);
+    model.moveKeys({kMaxKeyTime}, 100);
+    QCOMPARE(model.document().keys.endTime(), kMaxKeyTime);
+    const ProjectDocument reread = ProjectDocument::fromJson(model.document().toJson(), "day.json");
+    QCOMPARE(reread.keys.endTime(), kMaxKeyTime);
+  }
+
   // --- mirror and symmetric editing --------------------------------------------------------
 
   void mirrorMapsStretchLeftToRight() {

@@ -213,6 +213,26 @@ class PlaybackTest : public QObject {
     }
     QCOMPARE(QString::fromStdString(playback.path()), good);
 
+    // 140 bytes asking for 16 million frames (4.5 GB) are refused before the bake, at the key
+    // that sets the length.
+    const QString longProject = dir_.filePath("long.json");
+    writeText(
+        longProject,
+        R"({"format": "lacrima-project", "version": 1, "fps": 1000, "keys": [)"
+        "\n"
+        R"({"time": 0, "values": {"open_jaw": 1}}, {"time": 16000, "values": {"open_jaw": 2}}]})");
+    try {
+      playback.open(longProject.toStdString());
+      QFAIL("a project of 16 million frames was accepted");
+    } catch (const FileError& e) {
+      QCOMPARE(QString::fromStdString(e.where().file), longProject);
+      QCOMPARE(e.where().line, 2);
+      QVERIFY2(QString(e.what()).contains("keys[1].time") &&
+                   QString(e.what()).contains("at most 1048576 frames"),
+               e.what());
+    }
+    QCOMPARE(QString::fromStdString(playback.path()), good);
+
     try {
       playback.open(dir_.filePath("missing.fap").toStdString());
       QFAIL("a missing file was accepted");

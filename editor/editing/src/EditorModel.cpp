@@ -82,7 +82,8 @@ void EditorModel::resetDocument(ProjectDocument document, bool clean) {
 
 double EditorModel::snapTime(double seconds) const {
   if (!std::isfinite(seconds)) seconds = 0.0;
-  seconds = std::max(0.0, seconds);
+  // Keys live within [0, kMaxKeyTime]: a project with a later key would not load again.
+  seconds = std::clamp(seconds, 0.0, kMaxKeyTime);
   const double frame = frameDuration();
   const auto& keys = document_.keys.keys();
   const auto it = std::lower_bound(keys.begin(), keys.end(), seconds,
@@ -97,7 +98,8 @@ double EditorModel::snapTime(double seconds) const {
     }
   }
   if (nearestKey >= 0.0) return nearestKey;
-  return std::round(seconds * document_.fps) / document_.fps;
+  const double snapped = std::round(seconds * document_.fps) / document_.fps;
+  return snapped <= kMaxKeyTime ? snapped : std::floor(kMaxKeyTime * document_.fps) / document_.fps;
 }
 
 int EditorModel::frameAt(double seconds) const {
@@ -108,7 +110,7 @@ void EditorModel::setCurrentTime(double seconds) { setCurrentTimeExact(snapTime(
 
 void EditorModel::setCurrentTimeExact(double seconds) {
   if (!std::isfinite(seconds)) return;
-  seconds = std::max(0.0, seconds);
+  seconds = std::clamp(seconds, 0.0, kMaxKeyTime);
   if (seconds == time_) return;
   time_ = seconds;
   refreshValues();

@@ -3,6 +3,7 @@
 // finding a key by time, and moving a time by whole frames. Private to lacrima_editing.
 #include <lacrima/editing/KeyChange.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -16,11 +17,14 @@ inline const Keyframe* keyAtTime(const KeyframeSequence& keys, double seconds) {
 }
 
 // `seconds` moved by whole frames of 1 / fps: on-grid times land exactly on the grid (no drift
-// from repeated moves), off-grid times (hand-edited files) keep their offset from it.
+// from repeated moves), off-grid times (hand-edited files) keep their offset from it. Never
+// past kMaxKeyTime, the latest time a project file may hold.
 inline double shiftedByFrames(double seconds, int frames, double fps) {
   const double onGrid = seconds * fps;
-  if (std::abs(onGrid - std::round(onGrid)) < 1e-6) return (std::round(onGrid) + frames) / fps;
-  return seconds + frames / fps;
+  const double shifted = std::abs(onGrid - std::round(onGrid)) < 1e-6
+                             ? (std::round(onGrid) + frames) / fps
+                             : seconds + frames / fps;
+  return std::min(shifted, kMaxKeyTime);
 }
 
 // The keys an edit touches, as they will be after it: copies of the document's keys at those

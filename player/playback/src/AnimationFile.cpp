@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <exception>
+#include <new>
 
 namespace lacrima::playback {
 
@@ -22,10 +24,10 @@ bool isProjectPath(const std::string& path) {
   return endsWith(path, ".json") || endsWith(path, ".lacrima");
 }
 
-AnimationFile readAnimationFile(const std::string& path) {
+AnimationFile readAnimationFile(const std::string& path) try {
   AnimationFile file;
   if (isProjectPath(path)) {
-    const ProjectDocument document = ProjectDocument::load(path);
+    const ProjectDocument document = ProjectDocument::load(path, ProjectDocument::Use::Bake);
     file.project = true;
     file.animation = document.bake();
     file.scene = document.scene;
@@ -42,6 +44,13 @@ AnimationFile readAnimationFile(const std::string& path) {
                       "the file holds no frames; expected at least one mask and value line");
   }
   return file;
+} catch (const FileError&) {
+  throw;
+} catch (const std::bad_alloc&) {
+  throw FileError({path, 0, 0}, "not enough memory to read it");
+} catch (const std::exception& e) {
+  // The readers refuse what they can name a place for; anything else still names the file.
+  throw FileError({path, 0, 0}, e.what());
 }
 
 }  // namespace lacrima::playback

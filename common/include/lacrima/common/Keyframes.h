@@ -29,6 +29,18 @@
 
 namespace lacrima::inline common {
 
+// The longest animation a bake produces: 2^20 frames (294 MB of frames; 13 hours at 22 fps,
+// 17 minutes at the 1,000 fps a project may ask for). A bake allocates every frame up front,
+// so a tiny file naming a key far away must be refused before that, not by the out-of-memory
+// handler.
+inline constexpr double kMaxBakedFrames = 1048576.0;
+// The latest time a key may have, in seconds: a day. Handles reach a day along time too.
+inline constexpr double kMaxKeyTime = 86400.0;
+
+// Frames a bake at `fps` over [start, end] produces (as a double: any finite range and rate
+// give a finite count, which may exceed every integer type).
+double bakedFrameCount(double fps, double start, double end);
+
 // How a channel's curve runs from one of its keys to the next.
 enum class Interpolation { Linear, Smooth, Constant, Bezier };
 
@@ -114,7 +126,9 @@ class KeyframeSequence {
 
   // Dense frames from the first key to the last key inclusive at `fps`:
   // floor((end - start) * fps + 1e-6) + 1 frames; keys at 0 s and 1 s give 23 at 22 fps.
-  // `animated` is the union of the keys' channels.
+  // `animated` is the union of the keys' channels. More than kMaxBakedFrames frames throw
+  // std::length_error before anything is allocated (readers refuse such files earlier, with
+  // the file's name and place).
   FapAnimation bake(double fps) const;
   // The same over [start, end] (frames at start + i / fps), holding before and after the keys;
   // without keys, neutral frames.

@@ -41,6 +41,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace lacrima::inline common {
@@ -91,14 +92,20 @@ struct ProjectDocument {
   bool operator==(const ProjectDocument& other) const;
 
   std::string toJson() const;  // head paths as stored
+
+  // What a project is read for. To Bake (play, export from scripts), a project whose animation
+  // would exceed kMaxBakedFrames at its own rate is refused as it is read, at the key that
+  // sets its length; to Edit, it opens, so that the editor can shorten it.
+  enum class Use { Edit, Bake };
   // Throws FileError with `displayName` and the line/column or JSON path of the problem.
-  static ProjectDocument fromJson(std::string_view json, const std::string& displayName);
+  static ProjectDocument fromJson(std::string_view json, const std::string& displayName,
+                                  Use use = Use::Edit);
   // A project stored as a value of a larger document (a recovery file holds one). Throws
   // FileError naming the line, column and JSON path of the problem.
-  static ProjectDocument read(const JsonValue& value);
+  static ProjectDocument read(const JsonValue& value, Use use = Use::Edit);
 
   // Reads `path` and resolves the head's relative paths against its folder.
-  static ProjectDocument load(const std::string& path);
+  static ProjectDocument load(const std::string& path, Use use = Use::Edit);
   // Atomic (temporary file, then rename). The head's paths are written relative to the folder
   // of `path` when the two share more than the filesystem root, absolute otherwise, so a
   // "Save As" elsewhere still names the same files and a project folder can be moved whole.
@@ -114,9 +121,13 @@ struct ProjectDocument {
   std::optional<Diagnostic> missingHeadFile(const std::string& projectPath) const;
 
   // The animation the project plays and exports, at its own rate or at `rate`, named after it:
-  // the keys with the layers mixed on, from the earliest to the latest key of either.
+  // the keys with the layers mixed on, from the earliest to the latest key of either. More
+  // than kMaxBakedFrames throw std::length_error before anything is allocated.
   FapAnimation bake() const { return bake(fps); }
   FapAnimation bake(double rate) const;
+  // The first and last time bake() covers: the keys' and the unmuted layers' intensity keys'
+  // (start > end when there is nothing to bake).
+  std::pair<double, double> bakeRange() const;
   // Every channel at `seconds`: the keys with the layers mixed on.
   FapValues evaluate(double seconds) const {
     return mixLayers(keys.evaluate(seconds), layers, seconds);
