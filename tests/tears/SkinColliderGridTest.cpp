@@ -103,6 +103,34 @@ bool sameHit(bool foundA, const SkinHit& a, bool foundB, const SkinHit& b) {
          std::memcmp(&a.distance, &b.distance, sizeof(double)) == 0;
 }
 
+// Asks `a` and `b` the same nearest() queries at the simulation's three radii (`before(q)` runs
+// ahead of query q); the answers found, and the first query whose answers differ (-1: none).
+struct NearestComparison {
+  int found = 0, firstDifference = -1;
+};
+template <class Before>
+NearestComparison compareNearest(const Scene& scene, std::uint64_t seed, int queries,
+                                 SkinCollider& a, CollisionCounters& aCounters, SkinCollider& b,
+                                 CollisionCounters& bCounters, Before&& before) {
+  std::mt19937_64 rng(seed);
+  const double radii[] = {kRadius + kBand, kRadius + kProbe, 3 * kRadius + 0.02};
+  NearestComparison result;
+  for (int q = 0; q < queries; ++q) {
+    before(q);
+    const Eigen::Vector3d x = queryPoint(scene, rng, q);
+    const double r = radii[q % 3];
+    SkinHit hitA, hitB;
+    const bool foundA = a.nearest(x, r, hitA, aCounters);
+    const bool foundB = b.nearest(x, r, hitB, bCounters);
+    if (!sameHit(foundA, hitA, foundB, hitB)) {
+      result.firstDifference = q;
+      return result;
+    }
+    result.found += foundA ? 1 : 0;
+  }
+  return result;
+}
+
 }  // namespace
 
 class SkinColliderGridTest : public QObject {
@@ -114,20 +142,11 @@ class SkinColliderGridTest : public QObject {
     auto grid = colliderFor(scene, SkinQueryMethod::Grid);
     auto ode = colliderFor(scene, SkinQueryMethod::Ode);
     CollisionCounters gridCounters, odeCounters;
-    std::mt19937_64 rng(17);
-    const double radii[] = {kRadius + kBand, kRadius + kProbe, 3 * kRadius + 0.02};
-    int found = 0;
     const int queries = 20000;
-    for (int q = 0; q < queries; ++q) {
-      const Eigen::Vector3d x = queryPoint(scene, rng, q);
-      const double r = radii[q % 3];
-      SkinHit a, b;
-      const bool fa = grid->nearest(x, r, a, gridCounters);
-      const bool fb = ode->nearest(x, r, b, odeCounters);
-      QVERIFY2(sameHit(fa, a, fb, b), qPrintable(QString("query %1 differs").arg(q)));
-      found += fa ? 1 : 0;
-    }
-    QVERIFY(found > queries / 10 && found < queries * 9 / 10);
+    const NearestComparison c =
+        compareNearest(scene, 17, queries, *grid, gridCounters, *ode, odeCounters, [](int) {});
+    QVERIFY2(c.firstDifference < 0, qPrintable(QString("query %1 differs").arg(c.firstDifference)));
+    QVERIFY(c.found > queries / 10 && c.found < queries * 9 / 10);
     QCOMPARE(gridCounters.gridQueries, static_cast<long long>(queries));
     QCOMPARE(gridCounters.odeQueries, 0LL);
     QCOMPARE(gridCounters.trimeshUpdates, 0LL);
@@ -196,22 +215,15 @@ class SkinColliderGridTest : public QObject {
     auto warm = colliderFor(scene, SkinQueryMethod::Ode),
          cold = colliderFor(scene, SkinQueryMethod::Ode);
     CollisionCounters warmCounters, coldCounters;
-    std::mt19937_64 rng(99);
-    const double radii[] = {kRadius + kBand, kRadius + kProbe, 3 * kRadius + 0.02};
-    int found = 0;
     const int queries = 40 * kBatch;
-    for (int q = 0; q < queries; ++q) {
-      if (q % kBatch == 0) cold->resetSurface(scene.vertices, coldCounters);  // cold: never a grid
-      const Eigen::Vector3d x = queryPoint(scene, rng, q);
-      const double r = radii[q % 3];
-      SkinHit a, b;
-      const bool fa = warm->nearest(x, r, a, warmCounters);
-      const bool fb = cold->nearest(x, r, b, coldCounters);
-      QVERIFY2(sameHit(fa, a, fb, b), qPrintable(QString("query %1 differs").arg(q)));
-      found += fa ? 1 : 0;
-    }
+    const NearestComparison c =
+        compareNearest(scene, 99, queries, *warm, warmCounters, *cold, coldCounters, [&](int q) {
+          // cold: reset before the grid's threshold, so it always asks ODE
+          if (q % kBatch == 0) cold->resetSurface(scene.vertices, coldCounters);
+        });
+    QVERIFY2(c.firstDifference < 0, qPrintable(QString("query %1 differs").arg(c.firstDifference)));
     // Both kinds of answer occurred, and the warm collider skipped ODE for empty ones.
-    QVERIFY(found > queries / 10 && found < queries * 9 / 10);
+    QVERIFY(c.found > queries / 10 && c.found < queries * 9 / 10);
     QCOMPARE(coldCounters.odeQueries, static_cast<long long>(queries));
     QVERIFY(warmCounters.odeQueries < coldCounters.odeQueries - queries / 5);
   }
