@@ -1,15 +1,16 @@
 #!/usr/bin/env bash
-# lacrima.sh demo | test | build | screenshots
+# lacrima.sh demo | test | build | screenshots | fuzz [SECONDS]
 #   Installs the Debian packages that are missing (packaging/debian-packages.txt), builds
 #   Lacrima in ./build (Release), then runs the demo (demo), every test through CTest (test), or
-#   renders the reference pictures in media/screenshots (screenshots).
+#   renders the reference pictures in media/screenshots (screenshots). fuzz builds the libFuzzer
+#   targets of tests/fuzz with clang in ./build-fuzz and runs each for SECONDS (default 60).
 #   Idempotent; prints only what it does. Run as root on Debian 12, or as a user with sudo.
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${LACRIMA_BUILD_DIR:-$root/build}
 mode=${1:-}
-case "$mode" in demo|test|build|screenshots) ;; *) echo "usage: $0 demo|test|build|screenshots" >&2; exit 2 ;; esac
+case "$mode" in demo|test|build|screenshots|fuzz) ;; *) echo "usage: $0 demo|test|build|screenshots|fuzz [SECONDS]" >&2; exit 2 ;; esac
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
 
@@ -118,7 +119,76 @@ run_tests() {
   ctest --output-on-failure -j "$(nproc)" --timeout 900
 }
 
+
+# Every fuzz target with the seed folder it starts from (tests/fuzz/corpus) and, where a bug was
+# once found, its regression files (tests/fuzz/regressions).
+fuzz_targets() {
+  cat <<'TARGETS'
+fuzz_fap_text fap
+fuzz_fap_file fap
+fuzz_project project
+fuzz_project_bake project project_bake
+fuzz_tear_parameters tear_parameters
+fuzz_presets presets
+fuzz_feature_points feature_points
+fuzz_three_model three_model
+fuzz_mesh_obj mesh_obj
+TARGETS
+}
+
+build_fuzzers() {
+  local fuzz_build=${LACRIMA_FUZZ_BUILD_DIR:-$root/build-fuzz}
+  mkdir -p "$fuzz_build"
+  if [ ! -f "$fuzz_build/CMakeCache.txt" ]; then
+    cmake -S "$root" -B "$fuzz_build" -G Ninja -DCMAKE_BUILD_TYPE=Fuzz \
+      -DCMAKE_CXX_COMPILER=clang++-14 -DLACRIMA_FUZZ=ON >"$fuzz_build/configure.log" 2>&1 ||
+      fail_with_log "configuring the fuzzers (cmake)" "$fuzz_build/configure.log"
+  fi
+  cmake --build "$fuzz_build" -j "$(nproc)" --target fuzzers >"$fuzz_build/build.log" 2>&1 ||
+    fail_with_log "building the fuzzers" "$fuzz_build/build.log"
+  echo "$fuzz_build"
+}
+
+# Runs every target for $1 seconds on a working copy of its seeds (new inputs stay in
+# build-fuzz/corpus), one line per target: executions, their rate, coverage, findings. A
+# finding is written to build-fuzz/findings/TARGET/ and makes the run fail.
+run_fuzzers() {
+  local seconds=$1 fuzz_build target seeds regressions log work found=0
+  fuzz_build=$(build_fuzzers)
+  printf '%-22s %12s %10s %8s %8s  %s\n' target executions "exec/s" cov features findings
+  while read -r target seeds regressions; do
+    work="$fuzz_build/corpus/$target"
+    mkdir -p "$work" "$fuzz_build/findings/$target"
+    log="$fuzz_build/findings/$target.log"
+    local inputs=("$work" "$root/tests/fuzz/corpus/$seeds")
+    [ -n "$regressions" ] && inputs+=("$root/tests/fuzz/regressions/$regressions")
+    LSAN_OPTIONS="suppressions=$root/tests/fuzz/lsan.supp" \
+      "$fuzz_build/bin/$target" -max_total_time="$seconds" -print_final_stats=1 -timeout=10 \
+        -rss_limit_mb=2048 -artifact_prefix="$fuzz_build/findings/$target/" "${inputs[@]}" \
+        >"$log" 2>&1 || true
+    local execs rate cov features findings
+    execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
+    rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -n 1)
+    cov=$(grep -o 'cov: [0-9]*' "$log" | tail -n 1 | cut -d' ' -f2)
+    features=$(grep -o 'ft: [0-9]*' "$log" | tail -n 1 | cut -d' ' -f2)
+    findings=$(find "$fuzz_build/findings/$target" -type f | wc -l)
+    printf '%-22s %12s %10s %8s %8s  %s\n' "$target" "${execs:-?}" "${rate:-?}" "${cov:-?}" \
+      "${features:-?}" "$findings"
+    if [ "$findings" -gt 0 ] || [ -z "$execs" ]; then
+      found=1
+      echo "lacrima: $target: see $log" >&2
+    fi
+  done < <(fuzz_targets)
+  return $found
+}
+
 install_missing_packages
+if [ "$mode" = fuzz ]; then
+  seconds=${2:-60}
+  case "$seconds" in '' | *[!0-9]*) echo "usage: $0 fuzz [SECONDS]" >&2; exit 2 ;; esac
+  run_fuzzers "$seconds"
+  exit $?
+fi
 # The default head comes from the npm registry. Without it the tests that need it skip and the
 # demo leaves out the rig; everything else still runs, so a network problem costs only those.
 head_available=1

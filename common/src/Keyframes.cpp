@@ -60,7 +60,7 @@ double hermite(const Knot& a, const Knot& b, double ma, double mb, double t) {
 // u for t is found by solveBezierTime (CurveHandles.h): bisection safeguarding Newton steps.
 double bezier(const Knot& a, const Knot& b, Handle ha, Handle hb, double t) {
   const double h = b.time - a.time;
-  const auto clampTime = [h](Handle handle, double lo, double hi) {
+  const auto clampTime = [](Handle handle, double lo, double hi) {
     const double dt = std::clamp(handle.dt, lo, hi);
     // Scaling the value with the time keeps the handle's slope when it is shortened.
     const double scale = handle.dt != 0.0 ? dt / handle.dt : 0.0;

@@ -336,7 +336,8 @@ namespace {
 // at its own rate (a key at 16,000 s at 1,000 fps: 16 million frames, 4.5 GB), naming the
 // latest key's time, which sets the length.
 void requireBakeable(const JsonValue& root, const ProjectDocument& document) {
-  const auto [start, end] = document.bakeRange();
+  const std::pair<double, double> range = document.bakeRange();
+  const double start = range.first, end = range.second;  // captured below: no binding (clang 14)
   const double frames = bakedFrameCount(document.fps, start, end);
   if (frames <= kMaxBakedFrames) return;
   JsonValue latest = root["fps"];

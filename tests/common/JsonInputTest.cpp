@@ -176,6 +176,20 @@ class JsonInputTest : public QObject {
     QVERIFY2(syntax.starts_with(broken.toStdString() + ":2:4: invalid JSON: "), syntax.c_str());
   }
 
+  // Memory follows the file, not the limit: a small file loads under a limit of a tebibyte
+  // (reading "up to the limit" in one call once allocated the whole limit first).
+  void loadAllocatesForTheFileNotTheLimit() {
+    QTemporaryDir folder;
+    QVERIFY(folder.isValid());
+    const QString small = folder.filePath("small.json");
+    QFile file(small);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("{\"a\": 1}");
+    file.close();
+    const JsonInput input = JsonInput::load(small.toStdString(), {"test file", qint64{1} << 40});
+    QCOMPARE(input.root()["a"].number(), 1.0);
+  }
+
   void jsonPathLocatorFindsMembersAndElements() {
     const std::string json =
         "{\n \"a\": [1, {\"b\": 2},\n  {\"c\": {\"d\\\"x\": 3}}],\n \"e\": 4, \"a\": []\n}";

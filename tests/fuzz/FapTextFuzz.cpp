@@ -1,0 +1,15 @@
+// FAP text (FapReader::parse): any text is an animation or a FileError.
+#include "FuzzInput.h"
+
+#include <lacrima/common/Diagnostics.h>
+#include <lacrima/common/FapReader.h>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  try {
+    const lacrima::FapReadResult result =
+        lacrima::FapReader::parse(lacrima::fuzz::text(data, size), "fuzz.fap");
+    (void)result.animation.frameCount();
+  } catch (const lacrima::FileError&) {
+  }
+  return 0;
+}

@@ -1,0 +1,15 @@
+// A three.js JSON model (readThreeModel): the format of the MakeHuman default head and its
+// proxies, read at set-up from the npm package.
+#include "FuzzInput.h"
+#include "ThreeJsonModel.h"  // internal to lacrima_rigging (rigging/src is on this target's path)
+
+#include <lacrima/common/Diagnostics.h>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const lacrima::fuzz::InputFile file(data, size, ".json");
+  try {
+    (void)lacrima::rigging::readThreeModel(file.path());
+  } catch (const lacrima::FileError&) {
+  }
+  return 0;
+}
