@@ -3,6 +3,7 @@
 // anchors placed from picks, the rest proposed, a point moved, undo and redo; the saved file
 // validates, reads back to the same document and rigs; bad input leaves the document as it was.
 #include "../rigging/TestHeadFiles.h"
+#include "../support/DefaultHeadSkip.h"
 
 #include <lacrima/common/AtomicSave.h>
 #include <lacrima/common/PoseSet.h>
@@ -160,7 +161,7 @@ class HeadSetupTest : public QObject {
   // The default head as a GLB: materials name the parts without sides ("eye", "eye_2"), so the
   // side comes from the head and the teeth halves from their heights.
   void importsGlbWithRolesFromPositions() {
-    if (!rigging::defaultHeadAvailable()) QSKIP("default head not fetched");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     const HeadMesh head = rigging::loadDefaultHead();
     PoseSet poses;
     poses.vertexCount = head.vertexCount();
@@ -184,7 +185,7 @@ class HeadSetupTest : public QObject {
   // Anchors placed from picks, the rest proposed, a proposed point corrected by hand, undo and
   // redo, a second proposal keeps the hand points.
   void placesProposesMovesWithUndo() {
-    if (!reference_) QSKIP("default head not fetched");
+    if (!reference_) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     HeadSetup setup;
     rigging::FeaturePointFile hand;
     if (const QString why = placeIctAnchors(setup, hand); !why.isEmpty()) QSKIP(qPrintable(why));
@@ -265,7 +266,7 @@ class HeadSetupTest : public QObject {
   // Saved: validates as a complete file, marks hand points, reads back to the same document,
   // and rigs.
   void savesReopensAndRigs() {
-    if (!reference_) QSKIP("default head not fetched");
+    if (!reference_) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     HeadSetup setup;
     rigging::FeaturePointFile hand;
     if (const QString why = placeIctAnchors(setup, hand); !why.isEmpty()) QSKIP(qPrintable(why));
@@ -305,7 +306,7 @@ class HeadSetupTest : public QObject {
   // The same head exported Z-up in millimetres (x, y, z) cm -> (x, -z, y) * 10 mm: the same
   // clicks give the same proposal, point for point, and it rigs (turned upright by the rig).
   void zUpMillimetreHeadGivesTheSameProposal() {
-    if (!reference_) QSKIP("default head not fetched");
+    if (!reference_) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     HeadSetup upright;
     rigging::FeaturePointFile hand;
     if (const QString why = placeIctAnchors(upright, hand); !why.isEmpty()) QSKIP(qPrintable(why));

@@ -2,6 +2,7 @@
 // the sliders, with tears simulated while paused (tear preview) and while playing. Runs under
 // xvfb-run (OGRE needs X); skips when the default head is not fetched.
 #include "../support/ChangedPixels.h"
+#include "../support/DefaultHeadSkip.h"
 #include "IctProject.h"
 
 #include <lacrima/common/FapTable.h>
@@ -51,7 +52,7 @@ class EditorPreviewTest : public QObject {
   void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
 
   void slidersPoseTheFace() {
-    if (!rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     MainWindow window(options());
     window.resize(1280, 800);
     window.show();
@@ -68,7 +69,7 @@ class EditorPreviewTest : public QObject {
   }
 
   void tearPreviewRunsWhilePausedAndPlaybackStepsTears() {
-    if (!rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     MainWindow window(options());
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
@@ -97,7 +98,7 @@ class EditorPreviewTest : public QObject {
   // The tear quality is a project setting: one undo step, and the preview's tears restart
   // with it (the settings dialog's Scene panel shows the preview's tearsStepped() cost).
   void qualityIsAnUndoableSetting() {
-    if (!rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     MainWindow window(options());
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
@@ -131,7 +132,7 @@ class EditorPreviewTest : public QObject {
   // label is the mean of what the preview measured (tearsStepped) since the dialog opened, and
   // it follows new measurements while the dialog is open; not a fixed text.
   void settingsDialogShowsThePreviewsLiveCost() {
-    if (!rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     EditorOptions o = options();
     o.interactive = true;  // the settings dialog opens only then
     MainWindow window(o);
@@ -190,7 +191,7 @@ class EditorPreviewTest : public QObject {
   // Tears set to 0 leave the view and the status line at once, not after a simulation step;
   // and a step never runs on the UI thread: step() returns before the tears exist.
   void tearsToZeroClearAtOnce() {
-    if (!rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     MainWindow window(options());
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
@@ -224,7 +225,7 @@ class EditorPreviewTest : public QObject {
   // ends on its own thread), the new head previews at once, starts dry and weeps; closing the
   // window with a step in flight is clean.
   void headChangeWhileSteppingIsClean() {
-    if (!rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     if (!rigtest::ictHeadAvailable()) QSKIP("../shared (the ICT-FaceKit head) is absent");
     QTemporaryDir folder;
     const QString project = rigtest::writeIctProject(folder.path(), "[]");
@@ -257,7 +258,7 @@ class EditorPreviewTest : public QObject {
 
   // The Tear preview button is checkable and looks it: on and off differ at a glance.
   void tearPreviewButtonShowsItsState() {
-    if (!rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     MainWindow window(options());
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
@@ -280,7 +281,7 @@ class EditorPreviewTest : public QObject {
   // Behind a modal file dialog the preview stays as it was: what the X server shows of the
   // viewport where the dialog does not cover it is the picture from before the dialog.
   void fileDialogLeavesThePreviewAsItWas() {
-    if (!rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     MainWindow window(options());
     window.resize(1280, 800);
     window.show();

@@ -3,6 +3,7 @@
 // message and a head reference that saving keeps; File > Choose head (setHead) is one undoable
 // edit. Runs under xvfb-run (OGRE needs X); skips without ../shared (the ICT-FaceKit head).
 #include "../support/ChangedPixels.h"
+#include "../support/DefaultHeadSkip.h"
 
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/EditorModel.h>
@@ -89,7 +90,7 @@ class EditorProjectHeadTest : public QObject {
   // Opening a project without a head goes back to the default head; opening the ICT project
   // again replaces it.
   void openingAnotherProjectReplacesTheHead() {
-    if (!rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     QTemporaryDir folder;
     const QString ict = rigtest::writeIctProject(folder.path(), kKeys);
     const QString plain = folder.filePath("plain.json");

@@ -6,6 +6,7 @@
 // rigged head (printed; a figure, not an assertion).
 #include "../rigging/TestHeadFiles.h"
 #include "../support/ChangedPixels.h"
+#include "../support/DefaultHeadSkip.h"
 
 #include <lacrima/common/AtomicSave.h>
 #include <lacrima/common/FdpTable.h>
@@ -110,7 +111,7 @@ class HeadWorkspaceTest : public QObject {
 
   void importPlaceProposeDragUndoSave() {
     if (!QFileInfo::exists(kIctMesh)) QSKIP("ICT-FaceKit head not in ../shared");
-    if (!rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     MainWindow window(options());
     window.resize(1280, 860);
     window.show();
@@ -343,7 +344,7 @@ class HeadWorkspaceTest : public QObject {
   // mesh are refused with their exit codes.
   void commandLineOpensTheHeadWorkspace() {
     if (!QFileInfo::exists(kIctMesh)) QSKIP("ICT-FaceKit head not in ../shared");
-    if (!rigging::defaultHeadAvailable()) QSKIP("the default head is not fetched");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     // The 8 anchors of the hand-made file, as a user's partial file.
     QFile hand(kIctFdp);
     QVERIFY(hand.open(QIODevice::ReadOnly));

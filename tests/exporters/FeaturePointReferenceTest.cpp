@@ -2,6 +2,8 @@
 // (skipped when it is not fetched): framed on the point's region, the point drawn in the
 // highlight colour where it is, hidden points flagged, unknown ids give no picture, and every
 // point the head has comes with a description.
+#include "../support/DefaultHeadSkip.h"
+
 #include <lacrima/common/FdpTable.h>
 #include <lacrima/exporters/FeaturePointReference.h>
 #include <lacrima/rigging/DefaultHead.h>
@@ -29,8 +31,7 @@ class FeaturePointReferenceTest : public QObject {
 
  private slots:
   void initTestCase() {
-    if (!rigging::defaultHeadAvailable())
-      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     head_ = std::make_unique<ReferenceHead>(defaultReferenceHead());
   }
 

@@ -1,6 +1,7 @@
 // A head exported Z-up plays upright (issue 13): rigHead brings it into the face frame, so its
 // tears run down its face towards the chin, exactly as the Y-up original's do.
 // Skipped when the default head has not been fetched.
+#include "../support/DefaultHeadSkip.h"
 #include "PlaybackTestSupport.h"
 
 #include <lacrima/common/MediaFiles.h>
@@ -52,8 +53,7 @@ class FaceFramePlaybackTest : public QObject {
 
  private slots:
   void initTestCase() {
-    if (!rigging::defaultHeadAvailable())
-      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
   }
 
   // The default head turned Z-up (and its feature-point file with it) cries for 1.5 s: the

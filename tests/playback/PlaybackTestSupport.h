@@ -1,6 +1,9 @@
 #pragma once
 // Shared by the playback suites: the default head rigged once per suite, and small animations
 // built in memory so each test states exactly what it plays.
+
+#include "../support/DefaultHeadSkip.h"
+
 #include <lacrima/common/FapAnimation.h>
 #include <lacrima/common/FapTable.h>
 #include <lacrima/playback/HeadRig.h>
@@ -15,12 +18,11 @@
 
 // In a suite's initTestCase: rigs the default head into `rig` (a std::unique_ptr<HeadRig>),
 // or skips the suite when the head has not been fetched.
-#define LOAD_DEFAULT_HEAD_RIG(rig)                                         \
-  do {                                                                     \
-    if (!::lacrima::rigging::defaultHeadAvailable())                       \
-      QSKIP("default head not fetched (packaging/fetch-default-head.sh)"); \
-    (rig) = ::lacrima::playback::loadDefaultHeadRig();                     \
-    QVERIFY((rig) && (rig)->blender);                                      \
+#define LOAD_DEFAULT_HEAD_RIG(rig)                                                        \
+  do {                                                                                    \
+    if (!::lacrima::rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD(); \
+    (rig) = ::lacrima::playback::loadDefaultHeadRig();                                    \
+    QVERIFY((rig) && (rig)->blender);                                                     \
   } while (false)
 
 namespace lacrima::playback::test {

@@ -2,6 +2,7 @@
 // claims, explicit choices replace the level's, a short run at every level (and with every
 // advanced choice) stays finite on the default head, shorter sub-steps take more of them, and
 // a quality change restarts the tears where an effect toggle does not.
+#include "../support/DefaultHeadSkip.h"
 #include "PlaybackTestSupport.h"
 
 #include <lacrima/playback/FrameProducer.h>
@@ -122,7 +123,7 @@ class TearQualityTest : public QObject {
   void producerRunsEveryLevelFinite() {
     QFETCH(int, level);
     QFETCH(int, advanced);
-    if (!loadRig()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!loadRig()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     TearQualitySettings quality{static_cast<TearQuality>(level), {}, {}, {}};
     if (advanced == 2) quality.solver = TearSolver::Pbf;
     if (advanced == 1) {
@@ -147,7 +148,7 @@ class TearQualityTest : public QObject {
   // The levels differ where they claim to: the same second of tears takes more sub-steps the
   // shorter the level's sub-steps are.
   void shorterSubstepsTakeMore() {
-    if (!loadRig()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!loadRig()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     const long long preview = run(*rig_, {TearQuality::Preview, {}, {}, {}}).substeps;
     const long long balanced = run(*rig_, {}).substeps;
     const long long reference = run(*rig_, {TearQuality::Reference, {}, {}, {}}).substeps;
@@ -156,7 +157,7 @@ class TearQualityTest : public QObject {
   }
 
   void qualityChangeRestartsTheTears() {
-    if (!loadRig()) QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!loadRig()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     FrameProducer producer(*rig_);
     const FapAnimation animation = cryingAnimation(11, 20);
     for (const FapValues& values : animation.frames) producer.produce(values, 1.0 / kFps, 0);

@@ -10,6 +10,7 @@
 #include <lacrima/rigging/MeshImport.h>
 
 #include "../rigging/TestHeadFiles.h"
+#include "../support/DefaultHeadSkip.h"
 
 #include <QFileInfo>
 #include <QtTest>
@@ -75,7 +76,7 @@ class HeadViewsTest : public QObject {
  private slots:
   void initTestCase() {
     if (!QFileInfo::exists(QString::fromStdString(rigging::defaultHeadPackageDir())))
-      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+      LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     default_ = playback::loadDefaultHeadRig();
     const scene::OrbitView close = player::presetView(*default_, CameraPreset::CloseLeft);
     defaultCloseHeight_ = viewHeightInEs0(close, default_->rig.fapu.es0);

@@ -2,6 +2,8 @@
 // through the Open action's path, Play until frames advance, Reset to a neutral face with no
 // tears; a bad file gives an error dialog and keeps the animation; drops open files; toggles
 // and parameters reach the playback.
+#include "../support/DefaultHeadSkip.h"
+
 #include <lacrima/player/PlayerWindow.h>
 #include <lacrima/player/TearParametersPanel.h>
 #include <lacrima/viewport/EffectsPanel.h>
@@ -44,8 +46,7 @@ class PlayerWindowTest : public QObject {
 
  private slots:
   void initTestCase() {
-    if (!rigging::defaultHeadAvailable())
-      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     window_ = std::make_unique<PlayerWindow>(playback::loadDefaultHeadRig());
     window_->resize(1100, 700);
     window_->show();

@@ -1,6 +1,8 @@
 // lacrima-player --render run as a process (under xvfb-run): a short animation gives one PNG
 // per frame and a contact sheet, progress on stderr; a bad file and a missing display fail
 // with a clear message.
+#include "../support/DefaultHeadSkip.h"
+
 #include <lacrima/common/FapTable.h>
 #include <lacrima/common/FapWriter.h>
 #include <lacrima/rigging/DefaultHead.h>
@@ -49,8 +51,7 @@ class RenderCliTest : public QObject {
 
  private slots:
   void initTestCase() {
-    if (!rigging::defaultHeadAvailable())
-      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     QVERIFY(dir_.isValid());
     // 14 frames: the jaw opens while tears appear at both eyes.
     FapAnimation a;

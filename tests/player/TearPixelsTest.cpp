@@ -6,6 +6,8 @@
 // A tear pixel is one that differs from the same face with no tears at all: the demo with its
 // tear channels cleared, so nothing is simulated. Texture blending is off in both renders, so
 // only the tears' own geometry (surface, trails, particles) can make a difference.
+#include "../support/DefaultHeadSkip.h"
+
 #include <lacrima/playback/Playback.h>
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/scene/CameraPreset.h>
@@ -88,8 +90,7 @@ class TearPixelsTest : public QObject {
 
  private slots:
   void initTestCase() {
-    if (!rigging::defaultHeadAvailable())
-      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     rig_ = loadDefaultHeadRig();
     renderer_ = std::make_unique<scene::FaceRenderer>(rig_->head, kSize);
     Playback probe(*rig_);

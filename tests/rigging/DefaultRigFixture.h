@@ -3,6 +3,9 @@
 // PoseBlender, the player's blend: the set-up shared by the suites that judge poses on the
 // real head (AttachedCardsTest, SkinFoldTest). Without the head in the cache the rig is empty
 // and the suites skip (REQUIRE_DEFAULT_RIG).
+
+#include "../support/DefaultHeadSkip.h"
+
 #include <lacrima/common/FapChannels.h>
 #include <lacrima/common/FapReader.h>
 #include <lacrima/common/HeadMesh.h>
@@ -86,7 +89,7 @@ inline std::vector<FapValues> demoFrames() {
 
 }  // namespace lacrima::testrig
 
-#define REQUIRE_DEFAULT_RIG(fixture)                                                              \
-  do {                                                                                            \
-    if (!(fixture)) QSKIP("default head not in the cache (run packaging/fetch-default-head.sh)"); \
+#define REQUIRE_DEFAULT_RIG(fixture)                     \
+  do {                                                   \
+    if (!(fixture)) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD(); \
   } while (false)

@@ -2,6 +2,7 @@
 // nearest of the 24 axis-aligned rotations, applied before the rig is built. The default head's
 // frame is the identity (nothing changes); the ICT head exported Z-up, facing +y or -z and in
 // millimetres rigs to the same rig.json feature points up to rounding and scale.
+#include "../support/DefaultHeadSkip.h"
 #include "TestHeadFiles.h"
 
 #include <lacrima/rigging/DefaultHead.h>
@@ -194,8 +195,7 @@ class FaceFrameTest : public QObject {
 
   // The default head is modelled in the face frame: rotation I, small tilt, nothing touched.
   void defaultHeadFrameIsTheIdentity() {
-    if (!rigging::defaultHeadAvailable())
-      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     const HeadMesh head = rigging::loadDefaultHead();
     rigging::FeaturePointFile fdp = rigging::validateFeaturePoints(
         rigging::readFeaturePointFile(kDefaultFdp.toStdString()), head, nullptr);
@@ -270,8 +270,7 @@ class FaceFrameTest : public QObject {
   // A face modelled turned (35 degrees about the vertical) stays as modelled: no axis rotation,
   // a warning with the angle. Degenerate points leave the head alone with a warning.
   void turnedOrUnmeasurableFacesAreWarnedAbout() {
-    if (!rigging::defaultHeadAvailable())
-      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     const HeadMesh head = rigging::loadDefaultHead();
     const rigging::FeaturePointFile fdp = rigging::validateFeaturePoints(
         rigging::readFeaturePointFile(kDefaultFdp.toStdString()), head, nullptr);

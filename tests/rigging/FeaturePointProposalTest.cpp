@@ -1,6 +1,7 @@
 // Proposing feature points (issue 13): the default head's points carried onto the ICT head from
 // the 8 anchors, against the hand-made ICT file; the same in another unit and axis convention;
 // and lacrima-rig --complete.
+#include "../support/DefaultHeadSkip.h"
 #include "TestHeadFiles.h"
 
 #include <lacrima/common/AtomicSave.h>
@@ -372,7 +373,7 @@ class FeaturePointProposalTest : public QObject {
   // The default head proposed from its own 8 anchors gives back its own points, up to the
   // eyes' step.
   void defaultHeadProposesItself() {
-    if (!reference_) QSKIP("default head not in the cache (run packaging/fetch-default-head.sh)");
+    if (!reference_) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     const rigging::FeaturePointFile partial = partialOf(referenceFdp_, rigging::proposalAnchors());
     const rigging::FeaturePointFile proposed =
         rigging::proposeFeaturePoints(partial, *reference_, referenceFdp_, *reference_);

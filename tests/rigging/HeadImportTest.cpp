@@ -1,3 +1,5 @@
+#include "../support/DefaultHeadSkip.h"
+
 #include <lacrima/common/HeadMesh.h>
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/rigging/MeshImport.h>
@@ -123,7 +125,7 @@ class HeadImportTest : public QObject {
   // ---- the default head --------------------------------------------------------------------
 
   void defaultHeadHasEveryRoleInOrder() {
-    if (!head_) QSKIP("default head not fetched (bash packaging/fetch-default-head.sh)");
+    if (!head_) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     QCOMPARE(head().submeshes.size(), kRoles.size());
     int next = 0;
     for (size_t i = 0; i < kRoles.size(); ++i) {
@@ -141,7 +143,7 @@ class HeadImportTest : public QObject {
   }
 
   void skinCountsMatchTheReference() {
-    if (!head_) QSKIP("default head not fetched");
+    if (!head_) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     const HeadSubmesh& skin = part("skin");
     // HEAD_MESH.md: the neck-loop cut keeps 4,284 positions / 8,524 triangles / 4,475 vertices
     // after the uv split. The conversion is deterministic, so the counts are exact.
@@ -151,7 +153,7 @@ class HeadImportTest : public QObject {
   }
 
   void proxyCountsMatchTheReference() {
-    if (!head_) QSKIP("default head not fetched");
+    if (!head_) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     // 1,020 eye quads, about 530 eyeball and 490 cornea, half per eye; the halves mirror.
     const int ball =
         static_cast<int>(part("eye_l").triangles.size() + part("eye_r").triangles.size()) / 2;
@@ -171,7 +173,7 @@ class HeadImportTest : public QObject {
   }
 
   void trianglesStayInTheirSubmesh() {
-    if (!head_) QSKIP("default head not fetched");
+    if (!head_) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     int degenerate = 0;
     for (const HeadSubmesh& s : head().submeshes) {
       for (const Eigen::Vector3i& t : s.triangles) {
@@ -188,7 +190,7 @@ class HeadImportTest : public QObject {
   }
 
   void normalsAreUnitAndPositionsFinite() {
-    if (!head_) QSKIP("default head not fetched");
+    if (!head_) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     QVERIFY(head().positions.allFinite());
     QVERIFY(head().uvs.allFinite());
     for (Eigen::Index v = 0; v < head().normals.cols(); ++v)
@@ -198,7 +200,7 @@ class HeadImportTest : public QObject {
   }
 
   void noseTipIsTheFrontmostSkinVertexAndFacesForward() {
-    if (!head_) QSKIP("default head not fetched");
+    if (!head_) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     const HeadSubmesh& skin = part("skin");
     int tip = skin.firstVertex;
     for (int v = skin.firstVertex; v < skin.firstVertex + skin.vertexCount; ++v)
@@ -210,7 +212,7 @@ class HeadImportTest : public QObject {
   }
 
   void everyPartFacesOutwardAtItsFront() {
-    if (!head_) QSKIP("default head not fetched");
+    if (!head_) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     // Counter-clockwise from outside for the proxies too: at the frontmost vertex of each solid
     // part (incisors, tongue tip, cornea apex, eyebrow cards) the normal points forward.
     for (const char* name :
@@ -225,7 +227,7 @@ class HeadImportTest : public QObject {
   }
 
   void skinBoxAndNeckCut() {
-    if (!head_) QSKIP("default head not fetched");
+    if (!head_) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     const HeadSubmesh& skin = part("skin");
     const auto block = head().positions.middleCols(skin.firstVertex, skin.vertexCount);
     const Eigen::Vector3f lo = block.rowwise().minCoeff(), hi = block.rowwise().maxCoeff();
@@ -236,7 +238,7 @@ class HeadImportTest : public QObject {
   }
 
   void eyesSitInTheirSockets() {
-    if (!head_) QSKIP("default head not fetched");
+    if (!head_) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     for (const auto& [name, side] : {std::pair{"eye_l", 1.0f}, std::pair{"eye_r", -1.0f}}) {
       const HeadSubmesh& eye = part(name);
       const rigging::Sphere s = fitSubmeshSphere(head(), eye);
@@ -269,7 +271,7 @@ class HeadImportTest : public QObject {
   }
 
   void teethAndTongueSitInTheMouth() {
-    if (!head_) QSKIP("default head not fetched");
+    if (!head_) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     auto box = [&](const char* name) {
       const HeadSubmesh& s = part(name);
       const auto block = head().positions.middleCols(s.firstVertex, s.vertexCount);
@@ -288,7 +290,7 @@ class HeadImportTest : public QObject {
   }
 
   void materialsPointIntoTheCache() {
-    if (!head_) QSKIP("default head not fetched");
+    if (!head_) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     auto material = [&](const char* sub) {
       return head().materials[static_cast<size_t>(part(sub).material)];
     };
@@ -315,7 +317,7 @@ class HeadImportTest : public QObject {
   }
 
   void damagedPackageIsAClearError() {
-    if (!rigging::defaultHeadAvailable()) QSKIP("default head not fetched");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     const QString copy = QDir(tmp_.path()).filePath("damaged");
     const QDir source(QString::fromStdString(rigging::defaultHeadPackageDir()));
     QDirIterator it(source.path(), QDir::Files, QDirIterator::Subdirectories);

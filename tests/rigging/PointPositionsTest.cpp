@@ -2,6 +2,7 @@
 // re-snap points when the mesh's vertex order changed, and to refuse a file placed on another
 // mesh. The synthetic sheet makes every case small and exact; the default head checks that a
 // re-snapped file rigs like the original.
+#include "../support/DefaultHeadSkip.h"
 #include "../support/FileErrors.h"
 #include "TestHeadFiles.h"
 
@@ -403,8 +404,7 @@ class PointPositionsTest : public QObject {
   // lacrima-rig writes positions into the file --complete saves, rig.json says which face
   // frame it rigged in, and a file for another head is refused with the message.
   void commandLine() {
-    if (!rigging::defaultHeadAvailable())
-      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     if (!QFileInfo::exists(kIctMesh)) QSKIP("ICT-FaceKit head not present in the shared folder");
     rigging::FeaturePointFile partial = rigging::readFeaturePointFile(kIctFdp.toStdString());
     std::erase_if(partial.points, [](const auto& point) { return point.first[0] == '4'; });
@@ -441,8 +441,7 @@ class PointPositionsTest : public QObject {
   // The default head's file with positions, on the head with every sub-mesh's vertices in
   // reverse order: all points re-snap, and the rig is the same (FAPU, feature points, poses).
   void reorderedDefaultHeadRigsTheSame() {
-    if (!rigging::defaultHeadAvailable())
-      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     const HeadMesh head = rigging::loadDefaultHead();
     rigging::FeaturePointFile fdp = rigging::validateFeaturePoints(
         rigging::readFeaturePointFile(kDefaultFdp.toStdString()), head, nullptr);

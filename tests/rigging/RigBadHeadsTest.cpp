@@ -4,6 +4,7 @@
 // duplicate and zero-area triangles rigs with finite weights and poses, warning where a point's
 // influence cannot reach. Most cases run on a small synthetic face (a curved grid with the
 // FAPU points where a face has them), the playback one on the default head.
+#include "../support/DefaultHeadSkip.h"
 #include "TestHeadFiles.h"
 
 #include <lacrima/common/FapTable.h>
@@ -373,8 +374,7 @@ class RigBadHeadsTest : public QObject {
   // player's frame producer, asked for tears, simulates none and keeps posing the face; with
   // the eyes, the same frames do weep (so the first half would notice tears that slip through).
   void playerSimulatesNoTearsWithoutEyes() {
-    if (!rigging::defaultHeadAvailable())
-      QSKIP("default head not in the cache (run packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     rigging::FeaturePointFile fdp =
         rigging::readFeaturePointFile(rigtest::kDefaultFdp.toStdString());
     const HeadMesh head = rigging::loadDefaultHead();

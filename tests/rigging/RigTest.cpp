@@ -1,5 +1,6 @@
 // Rig assembly end to end: feature-point files, RigBuilder on the default head and the ICT head,
 // the exported files and the lacrima-rig command.
+#include "../support/DefaultHeadSkip.h"
 #include "../support/FileErrors.h"
 #include "TestHeadFiles.h"
 
@@ -63,9 +64,9 @@ std::map<int, Eigen::Vector3f> dense(const VertexPose& pose) {
 }  // namespace
 
 // QSKIP ends only the function it is written in, so the check must expand inside each test.
-#define REQUIRE_DEFAULT_HEAD()                                                                \
-  do {                                                                                        \
-    if (!head_) QSKIP("default head not in the cache (run packaging/fetch-default-head.sh)"); \
+#define REQUIRE_DEFAULT_HEAD()                       \
+  do {                                               \
+    if (!head_) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD(); \
   } while (false)
 
 class RigTest : public QObject {

@@ -1,6 +1,7 @@
 // The off-screen renderer on the real default head (skipped when it is not fetched): tears show
 // below the eyes and nowhere else, texture blending changes the eye region and only it, the
 // camera and projection behave. Runs under xvfb-run (OGRE renders through GLX).
+#include "../support/DefaultHeadSkip.h"
 #include "ImageCompare.h"
 #include "SyntheticTears.h"
 
@@ -60,8 +61,7 @@ class FaceRendererTest : public QObject {
 
  private slots:
   void initTestCase() {
-    if (!rigging::defaultHeadAvailable())
-      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     head_ = std::make_unique<HeadMesh>(rigging::loadDefaultHead());
     for (int e = 0; e < 2; ++e) {
       const auto sphere = scene::eyeSphere(*head_, e == 0 ? "eye_l" : "eye_r");

@@ -3,6 +3,8 @@
 // textures, the skin's relief and the tangent frames it is shaded in, the skin's horizons (its
 // shadows), the static occlusion, the
 // orbit camera's framing and mouse mapping, and the named cameras of --render --view.
+#include "../support/DefaultHeadSkip.h"
+
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/scene/CameraPreset.h>
 #include <lacrima/scene/HeadOcclusion.h>
@@ -47,8 +49,7 @@ class OverlayTest : public QObject {
 
  private slots:
   void initTestCase() {
-    if (!rigging::defaultHeadAvailable())
-      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     head_ = std::make_unique<HeadMesh>(rigging::loadDefaultHead());
     const auto l = eyeSphere(*head_, "eye_l"), r = eyeSphere(*head_, "eye_r");
     QVERIFY(l && r);

@@ -2,6 +2,8 @@
 // not the generated sheet: tears emitted at the lower eyelids must run down the cheeks, stay on
 // the skin and survive a jaw-opening deformation arriving in a single frame. Skipped when the
 // head has not been fetched (packaging/fetch-default-head.sh).
+#include "../support/DefaultHeadSkip.h"
+
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/rigging/FeaturePointFile.h>
 #include <lacrima/rigging/RigBuilder.h>
@@ -86,8 +88,7 @@ class TearHeadTest : public QObject {
 
  private slots:
   void initTestCase() {
-    if (!rigging::defaultHeadAvailable())
-      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     head_ = std::make_unique<HeadMesh>(rigging::loadDefaultHead());
     const HeadSubmesh* skin = head_->findSubmesh("skin");
     QVERIFY(skin && head_->findSubmesh("eye_l") && head_->findSubmesh("eye_r"));

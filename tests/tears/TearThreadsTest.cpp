@@ -4,6 +4,7 @@
 // checkpoint restored mid-run) and on the default head (skipped when not fetched). Runs have
 // more particles than the sharing threshold and several particle chunks, so the shared loops
 // and their spill lists really run on several threads.
+#include "../support/DefaultHeadSkip.h"
 #include "ParallelChunks.h"  // internal to lacrima_tears
 #include "TearTestSupport.h"
 #include "ThreadPool.h"
@@ -175,8 +176,7 @@ class TearThreadsTest : public QObject {
   }
 
   void defaultHeadIsBitIdenticalForAnyThreadCount() {
-    if (!rigging::defaultHeadAvailable())
-      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     const HeadMesh head = rigging::loadDefaultHead();
     const HeadSubmesh* skin = head.findSubmesh("skin");
     QVERIFY(skin);

@@ -2,6 +2,7 @@
 // not fetched): it renders once when shown, never again for the same frame or a bare update(),
 // a drag orbits, the wheel zooms, a double-click frames the face again.
 #include "../scene/ImageCompare.h"
+#include "../support/DefaultHeadSkip.h"
 
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/scene/FaceRenderer.h>
@@ -42,8 +43,7 @@ class FaceViewportTest : public QObject {
 
  private slots:
   void initTestCase() {
-    if (!rigging::defaultHeadAvailable())
-      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     if (QGuiApplication::platformName() != QLatin1String("xcb"))
       QSKIP("needs the xcb platform (run under xvfb-run)");
     head_ = std::make_unique<HeadMesh>(rigging::loadDefaultHead());

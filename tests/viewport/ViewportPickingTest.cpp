@@ -6,6 +6,7 @@
 // without /work/shared).
 #include "../rigging/TestHeadFiles.h"
 #include "../scene/ImageCompare.h"
+#include "../support/DefaultHeadSkip.h"
 
 #include <lacrima/common/Milliseconds.h>
 #include <lacrima/rigging/DefaultHead.h>
@@ -182,8 +183,7 @@ class ViewportPickingTest : public QObject {
 
  private slots:
   void initTestCase() {
-    if (!rigging::defaultHeadAvailable())
-      QSKIP("default head not fetched (packaging/fetch-default-head.sh)");
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     if (QGuiApplication::platformName() != QLatin1String("xcb"))
       QSKIP("needs the xcb platform (run under xvfb-run)");
     head_ = std::make_unique<HeadMesh>(rigging::loadDefaultHead());
