@@ -24,12 +24,12 @@
 // without ODE, with the same arithmetic, so every answer is unchanged (fewer dCollide calls).
 //
 // Contacts are tracked on their triangle by barycentric coordinates: while the particle's
-// projection stays inside that triangle, no ODE call is made, and when it slides onto one of the
+// projection stays inside that triangle, no query is made, and when it slides onto one of the
 // triangles around it (sharing a vertex), that one is found from the mesh's adjacency, also
-// without ODE (ODE answers only when the particle ends up over none of them). When the face deforms
-// between frames, a tracked particle is carried with its triangle (same barycentric point, same
-// height along the new normal); a free particle near the skin is anchored to the nearest point of
-// the OLD surface, that anchor is moved with the surface, and a ray from the moved anchor to the
+// without a query (one is made only when the particle ends up over none of them). When the face
+// deforms between frames, a tracked particle is carried with its triangle (same barycentric point,
+// same height along the new normal); a free particle near the skin is anchored to the nearest point
+// of the OLD surface, that anchor is moved with the surface, and a ray from the moved anchor to the
 // particle finds any triangle that swept through it (the jaw snapping open in one frame), which
 // then pushes the particle out along its normal. Free particles keep a conservative clearance
 // (lower bound on their distance to the skin) and are only queried once it is used up.
@@ -90,8 +90,6 @@ class SkinCollider {
                const Eigen::AlignedBox3d& envelope, double particleRadius, double contactBand,
                double probeRadius, SkinQueryMethod method = SkinQueryMethod::Grid);
   ~SkinCollider();
-
-  SkinQueryMethod method() const { return ode_ ? SkinQueryMethod::Ode : SkinQueryMethod::Grid; }
 
   int triangleCount() const { return static_cast<int>(triangles_.size()); }
   const Eigen::Vector3d& faceNormal(int t) const { return normals_[static_cast<std::size_t>(t)]; }
