@@ -370,6 +370,15 @@ double bakedFrameCount(double fps, double start, double end) {
   return std::floor((end - start) * fps + 1e-6) + 1.0;
 }
 
+std::string bakeLengthProblem(double fps, double start, double end) {
+  const double frames = bakedFrameCount(fps, start, end);
+  if (frames <= kMaxBakedFrames) return {};
+  return "the animation runs from " + formatJsonNumber(start) + " s to " + formatJsonNumber(end) +
+         " s, " + formatJsonNumber(frames) + " frames at " + formatJsonNumber(fps) +
+         " fps; at most " + formatJsonNumber(kMaxBakedFrames) +
+         " frames can be played or exported (shorten it or lower the frame rate)";
+}
+
 FapAnimation KeyframeSequence::bake(double fps) const {
   if (keys_.empty()) {
     requireValidFps(fps, "bake");

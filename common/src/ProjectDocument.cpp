@@ -337,24 +337,19 @@ namespace {
 // latest key's time, which sets the length.
 void requireBakeable(const JsonValue& root, const ProjectDocument& document) {
   const std::pair<double, double> range = document.bakeRange();
-  const double start = range.first, end = range.second;  // captured below: no binding (clang 14)
-  const double frames = bakedFrameCount(document.fps, start, end);
-  if (frames <= kMaxBakedFrames) return;
+  const std::string problem = bakeLengthProblem(document.fps, range.first, range.second);
+  if (problem.empty()) return;
   JsonValue latest = root["fps"];
   const auto consider = [&](const JsonValue& key) {
     const JsonValue time = key["time"];
-    if (time.isNumber() && time.number() == end) latest = time;
+    if (time.isNumber() && time.number() == range.second) latest = time;
   };
   constexpr std::size_t kRead = std::numeric_limits<std::size_t>::max();  // bounded when read
   for (const JsonValue& key : root["keys"].array(kRead)) consider(key);
   if (root.has("layers"))
     for (const JsonValue& layer : root["layers"].array(kRead))
       for (const JsonValue& key : layer["intensity"].array(kRead)) consider(key);
-  latest.fail("the animation runs from " + formatJsonNumber(start) + " s to " +
-              formatJsonNumber(end) + " s, " + formatJsonNumber(frames) + " frames at " +
-              formatJsonNumber(document.fps) + " fps; at most " +
-              formatJsonNumber(kMaxBakedFrames) +
-              " frames can be played or exported (shorten it or lower the frame rate)");
+  latest.fail(problem);
 }
 
 }  // namespace

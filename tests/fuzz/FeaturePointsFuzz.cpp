@@ -2,7 +2,6 @@
 // the default head's part names (validateFeaturePoints), as lacrima-rig does with a real one.
 #include "FuzzInput.h"
 
-#include <lacrima/common/Diagnostics.h>
 #include <lacrima/common/HeadMesh.h>
 #include <lacrima/rigging/FeaturePointFile.h>
 
@@ -43,12 +42,11 @@ lacrima::HeadMesh syntheticHead() {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const lacrima::HeadMesh head = syntheticHead();
   const lacrima::fuzz::InputFile file(data, size, ".fdp.json");
-  try {
+  lacrima::fuzz::refusingOnlyWithFileError([&] {
     lacrima::Warnings warnings;
     const auto points = lacrima::rigging::readFeaturePointFile(file.path(), &warnings);
     (void)lacrima::rigging::validateFeaturePoints(points, head, &warnings,
                                                   lacrima::rigging::FeaturePointSet::Partial);
-  } catch (const lacrima::FileError&) {
-  }
+  });
   return 0;
 }

@@ -5,7 +5,9 @@
 // libFuzzer calls LLVMFuzzerTestOneInput once per input; an exception escaping it aborts the run
 // and is reported as a finding, so each target catches exactly the error its reader documents
 // (FileError) and lets anything else through.
+#include <lacrima/common/Diagnostics.h>
 #include <unistd.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -15,6 +17,16 @@
 #include <string_view>
 
 namespace lacrima::fuzz {
+
+// Runs read(); the reader's documented refusal (FileError) is an answer, anything else escapes
+// and is a finding.
+template <class Read>
+void refusingOnlyWithFileError(Read&& read) {
+  try {
+    read();
+  } catch (const FileError&) {
+  }
+}
 
 inline std::string_view text(const std::uint8_t* data, std::size_t size) {
   return {reinterpret_cast<const char*>(data), size};

@@ -3,13 +3,9 @@
 #include "FuzzInput.h"
 #include "ThreeJsonModel.h"  // internal to lacrima_rigging (rigging/src is on this target's path)
 
-#include <lacrima/common/Diagnostics.h>
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const lacrima::fuzz::InputFile file(data, size, ".json");
-  try {
-    (void)lacrima::rigging::readThreeModel(file.path());
-  } catch (const lacrima::FileError&) {
-  }
+  lacrima::fuzz::refusingOnlyWithFileError(
+      [&] { (void)lacrima::rigging::readThreeModel(file.path()); });
   return 0;
 }

@@ -2,7 +2,6 @@
 
 #include <lacrima/common/FapReader.h>
 #include <lacrima/common/FapWriter.h>
-#include <lacrima/common/JsonWriter.h>
 #include <lacrima/editing/KeyReduction.h>
 
 #include <QFileInfo>
@@ -51,14 +50,8 @@ FapExportResult exportFap(const ProjectDocument& document, const std::string& pa
     throw FileError({path, 0, 0},
                     "nothing to export: the project has no keys yet (press K to add one)");
   const auto [start, end] = document.bakeRange();
-  const double frames = bakedFrameCount(options.fps, start, end);
-  if (!(frames <= kMaxBakedFrames))
-    throw FileError({path, 0, 0}, "the animation runs from " + formatJsonNumber(start) + " s to " +
-                                      formatJsonNumber(end) + " s, " + formatJsonNumber(frames) +
-                                      " frames at " + formatJsonNumber(options.fps) +
-                                      " fps; at most " + formatJsonNumber(kMaxBakedFrames) +
-                                      " frames can be exported (shorten it or lower the frame "
-                                      "rate)");
+  if (const std::string problem = bakeLengthProblem(options.fps, start, end); !problem.empty())
+    throw FileError({path, 0, 0}, problem);
   FapAnimation animation = document.bake(options.fps);
   FapExportResult result;
   result.frames = animation.frameCount();

@@ -301,6 +301,9 @@ double SkinCollider::moveSurface(const Eigen::Matrix3Xd& next, ParticleSet& p,
   // its anchors in particle order, and the lists are joined in chunk order: the anchors are in
   // particle order whatever the threads.
   const bool sweeping = maxDisplacement > 0.25 * radius_;
+  chunkAnchors_.resize(
+      ParallelChunks::chunkCount(static_cast<std::size_t>(p.size()), kParticleChunk));
+  for (auto& anchors : chunkAnchors_) anchors.clear();
   const auto carry = [&](int chunk, std::size_t begin, std::size_t end) {
     std::vector<Anchor>& anchors = chunkAnchors_[static_cast<std::size_t>(chunk)];
     CollisionCounters& chunkCounters = chunkCounters_[static_cast<std::size_t>(chunk)];

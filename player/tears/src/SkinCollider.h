@@ -145,8 +145,6 @@ class SkinCollider {
     const bool shared = shareQueries(parallel);
     const std::size_t chunks = shared ? ParallelChunks::chunkCount(count, kParticleChunk) : 1;
     chunkCounters_.assign(chunks, {});
-    chunkAnchors_.resize(chunks);
-    for (auto& anchors : chunkAnchors_) anchors.clear();
     if (shared)
       parallel.forEachChunk(count, kParticleChunk, body);
     else

@@ -44,7 +44,7 @@ namespace lacrima::tears {
 inline double segmentEntersFace(const Eigen::Vector3d& from, const Eigen::Vector3d& dir,
                                 double length, const SkinFace& face) {
   constexpr double kEdgeSlack = 1e-9;
-  if (face.degenerate || !(dir.dot(face.normal) < 0)) return -1;
+  if (face.degenerate) return -1;
   const Eigen::Vector3d p = dir.cross(face.ac);
   const double det = face.ab.dot(p);
   if (!(det > 0)) return -1;

@@ -40,6 +40,10 @@ inline constexpr double kMaxKeyTime = 86400.0;
 // Frames a bake at `fps` over [start, end] produces (as a double: any finite range and rate
 // give a finite count, which may exceed every integer type).
 double bakedFrameCount(double fps, double start, double end);
+// Why a bake at `fps` over [start, end] is refused ("the animation runs from 0 s to 16000 s,
+// 16000001 frames at 1000 fps; at most 1048576 frames can be played or exported (...)"), or
+// empty when it fits within kMaxBakedFrames. The readers and the editor's export say this.
+std::string bakeLengthProblem(double fps, double start, double end);
 
 // How a channel's curve runs from one of its keys to the next.
 enum class Interpolation { Linear, Smooth, Constant, Bezier };
