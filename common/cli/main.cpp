@@ -28,7 +28,7 @@ const char* const kCommandSummary =
     "  dump FILE                          decoded frames as CSV (frame,fap1,...,fap70)\n"
     "  interpolate IN -o OUT [--fps 22] [--smooth]\n"
     "                                     IN's frames as keys, resampled densely at --fps\n"
-    "  convert IN -o OUT [--strict]       .fap <-> project .json; --strict: 68-FAP .fap\n";
+    "  convert IN -o OUT [--strict]       .fap <-> .lacrima/.json; --strict: 68-FAP .fap\n";
 
 // "3-26 39-42 63": compact list of the channels in a mask.
 std::string channelRanges(const ChannelMask& mask) {
@@ -172,7 +172,8 @@ int main(int argc, char** argv) {
        [&](QCommandLineParser& p) {
          p.addOptions({fpsOption, smoothOption});
        }},
-      {"convert", "Convert between .fap and project .json (by OUT's extension).", "IN", true,
+      {"convert", "Convert between .fap and a project, .lacrima or .json (by OUT's extension).",
+       "IN", true,
        [&](QCommandLineParser& p, const std::string& in, const std::string& out) {
          return convert(in, out, p.isSet(strictOption));
        },
@@ -197,7 +198,8 @@ int main(int argc, char** argv) {
     QCommandLineParser parser;
     parser.setApplicationDescription(command.description);
     parser.addHelpOption();
-    parser.addPositionalArgument(command.positional, "Input .fap file or project .json.");
+    parser.addPositionalArgument(command.positional,
+                                 "Input .fap file or project (.lacrima or .json).");
     if (command.takesOutput) parser.addOption(outputOption);
     command.addOptions(parser);
     QStringList commandArgs = args.mid(1);

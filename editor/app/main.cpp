@@ -1,6 +1,6 @@
 // lacrima-editor: keyframe MPEG-4 facial animation with tears.
 //
-//   lacrima-editor [FILE]                 a project (.json) or a FAP file to import
+//   lacrima-editor [FILE]                 a project (.lacrima, .json) or a FAP file to import
 //   lacrima-editor FILE --screenshot PNG  render the window (with the preview) to PNG and exit
 //   lacrima-editor --head MESH [--points FDP] [--propose]
 //                                         the Head workspace on MESH (bring your own head)
@@ -89,9 +89,10 @@ int main(int argc, char** argv) {
       QStringLiteral("Keyframe MPEG-4 facial animation with real-time tears."));
   parser.addHelpOption();
   parser.addVersionOption();
-  parser.addPositionalArgument(QStringLiteral("file"),
-                               QStringLiteral("A project (.json) to open or a FAP file to import."),
-                               QStringLiteral("[file]"));
+  parser.addPositionalArgument(
+      QStringLiteral("file"),
+      QStringLiteral("A project (.lacrima or .json) to open or a FAP file to import."),
+      QStringLiteral("[file]"));
   const QCommandLineOption screenshot(QStringLiteral("screenshot"),
                                       QStringLiteral("Save the window as PNG to <file> and exit."),
                                       QStringLiteral("file"));

@@ -1,4 +1,5 @@
 // MainWindow: files, recent files, autosave and recovery, closing.
+#include <lacrima/common/ProjectPath.h>
 #include <lacrima/editor/MainWindow.h>
 #include <lacrima/editor/NumberField.h>
 
@@ -37,9 +38,10 @@ const QString kRecentKey = QStringLiteral("files/recent");
 const QString kToleranceKey = QStringLiteral("import/tolerance");
 const QString kReduceKey = QStringLiteral("import/reduce");
 
-bool isFapFile(const QString& path) {
-  return !path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive);
-}
+bool isFapFile(const QString& path) { return !isProjectPath(path.toStdString()); }
+
+const QString kProjectSuffix =
+    QString::fromLatin1(kProjectExtension.data(), kProjectExtension.size());
 
 QString joinWarnings(const Warnings& warnings) {
   QStringList lines;
@@ -204,7 +206,8 @@ void MainWindow::openDialog() {
   if (!options_.interactive || !maybeSave()) return;
   const QString path = QFileDialog::getOpenFileName(
       this, tr("Open project or FAP file"), QFileInfo(filePath_).path(),
-      tr("Projects and FAP files (*.json *.fap);;Projects (*.json);;FAP files (*.fap)"));
+      tr("Projects and FAP files (*.lacrima *.json *.fap);;Projects (*.lacrima *.json);;FAP files "
+         "(*.fap)"));
   if (!path.isEmpty()) openFile(path);
 }
 
@@ -212,11 +215,12 @@ bool MainWindow::saveDialog() {
   if (!options_.interactive) return false;
   QString suggestion = filePath_;
   if (suggestion.isEmpty())
-    suggestion = QString::fromStdString(model_->document().name) + QStringLiteral(".json");
-  QString path =
-      QFileDialog::getSaveFileName(this, tr("Save project"), suggestion, tr("Projects (*.json)"));
+    suggestion = QString::fromStdString(model_->document().name) + kProjectSuffix;
+  QString path = QFileDialog::getSaveFileName(this, tr("Save project"), suggestion,
+                                              tr("Projects (*.lacrima *.json)"));
   if (path.isEmpty()) return false;
-  if (!path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive)) path += QStringLiteral(".json");
+  // A .json name the user typed stays: older projects keep their name when saved again.
+  if (!isProjectPath(path.toStdString())) path += kProjectSuffix;
   return saveTo(path);
 }
 

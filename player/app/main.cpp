@@ -139,6 +139,7 @@ int windowMode(QApplication& app, const QCommandLineParser& parser, const QSize*
   window.show();
   if (!files.isEmpty() && !window.openFile(files.front()) && screenshot) return kExitBadInput;
   if (!screenshot) {
+    window.loopAction()->setChecked(parser.isSet("loop"));
     if (parser.isSet("play")) window.play();
     return app.exec();
   }
@@ -198,21 +199,22 @@ int main(int argc, char** argv) {
   QCommandLineParser parser;
   parser.setApplicationDescription(
       "Plays MPEG-4 facial animation with real-time tears: a FAP file (.fap) or a Lacrima project\n"
-      "(.json) on the default head, on the head the project names (its \"head\" entry), or on\n"
-      "your own (--mesh, --fdp, which override the project's head).\n\n"
+      "(.lacrima or .json) on the default head, on the head the project names (its \"head\"\n"
+      "entry), or on your own (--mesh, --fdp, which override the project's head).\n\n"
       "Examples:\n"
       "  lacrima-player media/demo/crying.fap\n"
       "  xvfb-run -a lacrima-player --render out/ --size 1280x720 media/demo/crying.fap\n"
       "  xvfb-run -a lacrima-player --render close/ --view close-left media/demo/crying.fap\n"
       "  lacrima-player --mesh head.obj --fdp head.fdp.json animation.fap\n"
-      "  lacrima-player my-character/project.json\n\n"
-      "Keys: Space play/pause, Home reset, Left/Right one frame, V reset the view, Ctrl+O open.\n"
+      "  lacrima-player my-character/project.lacrima\n\n"
+      "Keys: Space play/pause, Home reset, Left/Right one frame, L loop, V reset the view, Ctrl+O\n"
+      "open.\n"
       "Mouse: left drag orbits, right drag pans, the wheel zooms, double-click frames the face.\n\n"
       "Exit codes: 0 success, 1 bad input or failed write, 2 wrong usage.");
   parser.addHelpOption();
   parser.addVersionOption();
-  parser.addPositionalArgument("FILE", "The animation: a .fap file or a project (.json).",
-                               "[FILE]");
+  parser.addPositionalArgument(
+      "FILE", "The animation: a .fap file or a project (.lacrima or .json).", "[FILE]");
   parser.addOptions({
       {"render",
        "Render every frame to OUT_DIR/frame_NNNN.png plus contact_sheet.png, then exit (needs an X "
@@ -231,6 +233,7 @@ int main(int argc, char** argv) {
        "FILE"},
       {"fdp", "The feature-point file (*.fdp.json) of --mesh.", "FILE"},
       {"play", "Start playing as soon as the file is open."},
+      {"loop", "Play again from the start at the end (Playback > Loop, L)."},
       {"screenshot", "Grab the whole window to PNG after showing FILE at --at seconds, then exit.",
        "PNG"},
       {"at", "Time for --screenshot, in seconds (default 0).", "SECONDS", "0"},

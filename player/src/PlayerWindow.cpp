@@ -6,6 +6,7 @@
 #include <lacrima/player/TearParametersPanel.h>
 
 #include <lacrima/common/MediaFiles.h>
+#include <lacrima/common/ProjectPath.h>
 #include <lacrima/playback/AnimationFile.h>
 #include <lacrima/viewport/EffectsPanel.h>
 #include <lacrima/viewport/FaceViewport.h>
@@ -80,6 +81,7 @@ PlayerWindow::~PlayerWindow() = default;
 void PlayerWindow::buildActions() {
   QStyle* s = style();
   open_ = new QAction(s->standardIcon(QStyle::SP_DialogOpenButton), tr("&Open..."), this);
+  open_->setObjectName(QStringLiteral("file.open"));
   open_->setShortcut(QKeySequence::Open);
   open_->setToolTip(tr("Open a FAP file or a Lacrima project (Ctrl+O)"));
   connect(open_, &QAction::triggered, this, &PlayerWindow::chooseFile);
@@ -109,6 +111,11 @@ void PlayerWindow::buildActions() {
     pause();
     seek((playback_->currentFrame() + 1) / playback_->frameRate());
   });
+  loop_ = new QAction(tr("&Loop"), this);
+  loop_->setObjectName(QStringLiteral("playback.loop"));
+  loop_->setCheckable(true);
+  loop_->setShortcut(Qt::Key_L);
+  loop_->setToolTip(tr("Play again from the start at the end (L)"));
   resetView_ = new QAction(tr("Reset &view"), this);
   resetView_->setShortcut(Qt::Key_V);
   resetView_->setToolTip(tr("Frame the face again (V, or double-click the face)"));
@@ -121,14 +128,14 @@ void PlayerWindow::buildActions() {
   file->addSeparator();
   file->addAction(quit_);
   QMenu* playMenu = menuBar()->addMenu(tr("&Playback"));
-  for (QAction* a : {play_, reset_, stepBack_, stepForward_}) playMenu->addAction(a);
+  for (QAction* a : {play_, reset_, stepBack_, stepForward_, loop_}) playMenu->addAction(a);
   viewMenu_ = menuBar()->addMenu(tr("&View"));
   viewMenu_->addAction(resetView_);
   // Application-wide, so the keys also work while the floating Scene panel has the focus;
   // modal dialogs still block them, and text fields keep Space and the arrows for typing.
-  for (QAction* a : {play_, reset_, stepBack_, stepForward_, resetView_})
+  for (QAction* a : {play_, reset_, stepBack_, stepForward_, loop_, resetView_})
     a->setShortcutContext(Qt::ApplicationShortcut);
-  addActions({play_, reset_, stepBack_, stepForward_, resetView_});
+  addActions({play_, reset_, stepBack_, stepForward_, loop_, resetView_});
 }
 
 void PlayerWindow::buildLayout() {
@@ -232,7 +239,7 @@ bool PlayerWindow::openFile(const QString& path) {
   std::optional<HeadFiles> newHead;
   try {
     const std::string file = path.toStdString();
-    if (!headFixed_ && playback::isProjectPath(file)) {
+    if (!headFixed_ && isProjectPath(file)) {
       newHead = headOfFile(file);
       if (newHead != head_) {
         newRig = loadHeadFor(newHead, file);
@@ -370,7 +377,13 @@ void PlayerWindow::tick() {
   const long long framesBefore = playback_->producer().counters().frames;
   display(playback_->seek(std::min(t, end)));
   recordTearCost(framesBefore);
-  if (t >= end) pause();
+  if (t >= end && loop_->isChecked()) {
+    // From the first checkpoint, as Play at the end does: every pass shows the same tears.
+    display(playback_->seek(0));
+    clock_.setTime(0);
+  } else if (t >= end) {
+    pause();
+  }
   updateTransport();
 }
 

@@ -1,11 +1,12 @@
 #include <lacrima/player/ProjectHead.h>
 
+#include <lacrima/common/ProjectPath.h>
 #include <lacrima/playback/AnimationFile.h>
 
 namespace lacrima::player {
 
 std::optional<HeadFiles> headOfFile(const std::string& path) {
-  if (!playback::isProjectPath(path)) return std::nullopt;
+  if (!isProjectPath(path)) return std::nullopt;
   return ProjectDocument::load(path).head;
 }
 

@@ -92,7 +92,8 @@ rigging::FeaturePointFile completeFeaturePoints(const rigging::FeaturePointFile&
   if (!rigging::defaultHeadAvailable())
     throw FileError({rigging::defaultHeadPackageDir(), 0, 0},
                     "--complete carries the default head's feature points, but the default head "
-                    "is not in the cache; run packaging/fetch-default-head.sh first");
+                    "is not in the cache; run " +
+                        rigging::defaultHeadFetchCommand() + " first");
   const HeadMesh reference = rigging::loadDefaultHead();
   const rigging::FeaturePointFile referenceFdp =
       rigging::readFeaturePointFile(findMediaFile("default-head.fdp.json"));
@@ -149,9 +150,9 @@ int run(QCommandLineParser& parser) {
   const std::string meshName = useDefault ? "the default head" : parser.value("mesh").toStdString();
   if (useDefault) {
     if (!rigging::defaultHeadAvailable())
-      throw FileError(
-          {rigging::defaultHeadPackageDir(), 0, 0},
-          "the default head is not in the cache; run packaging/fetch-default-head.sh first");
+      throw FileError({rigging::defaultHeadPackageDir(), 0, 0},
+                      "the default head is not in the cache; run " +
+                          rigging::defaultHeadFetchCommand() + " first");
     mesh = rigging::loadDefaultHead();
     if (fdpPath.empty()) fdpPath = findMediaFile("default-head.fdp.json");
   } else {
@@ -297,7 +298,9 @@ int main(int argc, char** argv) {
   parser.addHelpOption();
   parser.addVersionOption();
   parser.addOptions({
-      {"default", "Rig the default MakeHuman head (fetched by packaging/fetch-default-head.sh)."},
+      {"default",
+       "Rig the default MakeHuman head (fetched by lacrima-fetch-head; in a checkout, by "
+       "packaging/fetch-default-head.sh)."},
       {"mesh", "Rig this head file (any format assimp reads).", "FILE"},
       {"fdp", "Feature-point file (*.fdp.json); default head: the bundled one.", "FILE"},
       {{"o", "output"},

@@ -220,8 +220,8 @@ HeadMesh loadDefaultHead(const std::string& packageDir) {
   for (std::string_view relative : kDefaultHeadFiles)
     if (!QFileInfo(qpath(file(relative))).isFile())
       throw FileError(SourceLocation{file(relative)},
-                      "missing: the default head is not (completely) fetched; run "
-                      "packaging/fetch-default-head.sh");
+                      "missing: the default head is not (completely) fetched; run " +
+                          defaultHeadFetchCommand());
 
   const ThreeModel body = readThreeModel(file(kDefaultHeadBody));
   HeadMesh mesh;

@@ -1,6 +1,7 @@
 // Where the default head's files live: the cache rule shared with packaging/fetch-default-head.sh.
 #include "DefaultHeadFiles.h"
 
+#include <lacrima/common/MediaFiles.h>
 #include <lacrima/rigging/DefaultHead.h>
 
 #include <QDir>
@@ -39,6 +40,13 @@ bool defaultHeadAvailable() {
              .isFile())
       return false;
   return true;
+}
+
+std::string defaultHeadFetchCommand() {
+  const std::string dir = executableDir();
+  if (!dir.empty() && QFileInfo(QString::fromStdString(dir + "/lacrima-fetch-head")).isFile())
+    return "lacrima-fetch-head";
+  return "packaging/fetch-default-head.sh";
 }
 
 }  // namespace lacrima::rigging

@@ -10,9 +10,11 @@
 #include <assimp/Importer.hpp>
 
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <set>
+#include <string>
 #include <vector>
 
 namespace lacrima::rigging {
@@ -30,13 +32,29 @@ struct MeshInstance {
   aiMatrix4x4 transform;
 };
 
+// What a head file may ask for. A file's size bounds what assimp reads; the vertex and
+// triangle bounds hold after instancing, where a few kilobytes of nodes naming one mesh over and
+// over could otherwise ask for billions. Heads people rig have tens of thousands of vertices,
+// far below them. The node depth bounds the recursion below.
+constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t{1} << 30;
+constexpr std::size_t kMaxVertices = std::size_t{1} << 22;
+constexpr std::size_t kMaxTriangles = std::size_t{1} << 23;
+constexpr std::size_t kMaxInstances = 100'000;
+constexpr int kMaxNodeDepth = 256;
+
 // Every (node, mesh) pair of the node graph, depth first, with the node's global transform.
-void collectInstances(const aiNode* node, const aiMatrix4x4& parent,
-                      std::vector<MeshInstance>& out) {
+void collectInstances(const std::string& path, const aiNode* node, const aiMatrix4x4& parent,
+                      int depth, std::vector<MeshInstance>& out) {
+  if (depth > kMaxNodeDepth)
+    fail(path, "its nodes nest deeper than " + std::to_string(kMaxNodeDepth) + " levels");
   const aiMatrix4x4 global = parent * node->mTransformation;
-  for (unsigned i = 0; i < node->mNumMeshes; ++i) out.push_back({node->mMeshes[i], global});
+  for (unsigned i = 0; i < node->mNumMeshes; ++i) {
+    if (out.size() == kMaxInstances)
+      fail(path, "its nodes place meshes more than " + std::to_string(kMaxInstances) + " times");
+    out.push_back({node->mMeshes[i], global});
+  }
   for (unsigned i = 0; i < node->mNumChildren; ++i)
-    collectInstances(node->mChildren[i], global, out);
+    collectInstances(path, node->mChildren[i], global, depth + 1, out);
 }
 
 // The texture's absolute path, or "" when it is embedded or missing.
@@ -138,8 +156,11 @@ HeadMesh importHeadMesh(const std::string& path) {
   std::error_code error;
   if (!fs::exists(path, error)) fail(path, "no such file");
   if (!fs::is_regular_file(path, error)) fail(path, "not a regular file");
-  if (fs::file_size(path, error) == 0 && !error)
-    fail(path, std::string("the file is empty; ") + kExpected);
+  const std::uintmax_t bytes = fs::file_size(path, error);
+  if (bytes == 0 && !error) fail(path, std::string("the file is empty; ") + kExpected);
+  if (!error && bytes > kMaxFileBytes)
+    fail(path, "the file is " + std::to_string(bytes >> 20) + " MiB; a head may be at most " +
+                   std::to_string(kMaxFileBytes >> 20) + " MiB");
 
   Assimp::Importer importer;
   // JoinIdenticalVertices merges the OBJ reader's per-corner copies (same position, uv and
@@ -161,18 +182,24 @@ HeadMesh importHeadMesh(const std::string& path) {
     fail(path, "assimp read an incomplete scene (no mesh data)");
 
   std::vector<MeshInstance> instances;
-  collectInstances(scene->mRootNode, aiMatrix4x4(), instances);
+  collectInstances(path, scene->mRootNode, aiMatrix4x4(), 0, instances);
 
   HeadMesh head;
-  int vertexTotal = 0;
+  std::size_t vertexTotal = 0, faceTotal = 0;
   bool anyUvs = false;
   for (const MeshInstance& instance : instances) {
     const aiMesh& mesh = *scene->mMeshes[instance.mesh];
-    vertexTotal += static_cast<int>(mesh.mNumVertices);
+    vertexTotal += mesh.mNumVertices;
+    faceTotal += mesh.mNumFaces;
     anyUvs = anyUvs || mesh.HasTextureCoords(0);
+    if (vertexTotal > kMaxVertices || faceTotal > kMaxTriangles)
+      fail(path, "its meshes, as its nodes place them, have more than " +
+                     std::to_string(kMaxVertices) + " vertices or " +
+                     std::to_string(kMaxTriangles) + " faces; a head may have at most that");
   }
-  head.positions.resize(3, vertexTotal);
-  head.uvs = anyUvs ? Eigen::Matrix2Xf::Zero(2, vertexTotal) : Eigen::Matrix2Xf(2, 0);
+  head.positions.resize(3, static_cast<Eigen::Index>(vertexTotal));
+  head.uvs = anyUvs ? Eigen::Matrix2Xf::Zero(2, static_cast<Eigen::Index>(vertexTotal))
+                    : Eigen::Matrix2Xf(2, 0);
 
   std::map<unsigned, int> materialOf;  // assimp material index -> head material index
   std::set<std::string> names;
@@ -217,6 +244,12 @@ HeadMesh importHeadMesh(const std::string& path) {
   }
   if (head.triangleCount() == 0)
     fail(path, "no triangles in it (" + describeContent(*scene) + "); " + kExpected);
+  if (!head.positions.allFinite()) {
+    Eigen::Index bad = 0;
+    while (head.positions.col(bad).allFinite()) ++bad;
+    fail(path, "vertex " + std::to_string(bad + 1) +
+                   " has a coordinate that is not a finite number; a head's vertices must be");
+  }
   if (!hasArea(head))
     fail(path, "every one of its " + std::to_string(head.triangleCount()) +
                    " triangles has zero area (no surface); " + kExpected);

@@ -3,6 +3,7 @@
 // tears; a bad file gives an error dialog and keeps the animation; drops open files; toggles
 // and parameters reach the playback.
 #include "../support/DefaultHeadSkip.h"
+#include "../support/MalformedFiles.h"
 
 #include <lacrima/player/PlayerWindow.h>
 #include <lacrima/player/TearParametersPanel.h>
@@ -13,6 +14,7 @@
 
 #include <lacrima/playback/TearQualityOptions.h>
 
+#include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -119,6 +121,62 @@ class PlayerWindowTest : public QObject {
     QCOMPARE(QString::fromStdString(window_->playback().path()), kDemo);
     QVERIFY(window_->windowTitle().contains("crying.fap"));
     QVERIFY(qAbs(window_->playback().currentTime() - 5.0) < 1e-9);
+  }
+
+  // Every malformed fixture, through File ▸ Open (the dialogs answered as a user would) and by
+  // drag and drop: refused with a message naming the file, the demo still loaded (issue 16).
+  void refusesEveryMalformedFile() {
+    QCoreApplication::setAttribute(Qt::AA_DontUseNativeDialogs);
+    QVERIFY(window_->openFile(kDemo));
+    const int frames = window_->playback().frameCount();
+    auto* open = window_->findChild<QAction*>(QStringLiteral("file.open"));
+    QVERIFY(open);
+    const QStringList files = test::malformedFiles();
+    QVERIFY(files.size() >= 10);
+    for (const QString& file : files) {
+      for (const bool dropped : {false, true}) {
+        QSignalSpy failed(window_.get(), &PlayerWindow::openFailed);
+        QStringList messages;
+        test::answeringDialogs(file, messages, [&] {
+          if (dropped) {
+            QMimeData mime;
+            mime.setUrls({QUrl::fromLocalFile(file)});
+            QDragEnterEvent enter(QPoint(50, 50), Qt::CopyAction, &mime, Qt::LeftButton,
+                                  Qt::NoModifier);
+            QApplication::sendEvent(window_.get(), &enter);
+            QDropEvent drop(QPointF(50, 50), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+            QApplication::sendEvent(window_.get(), &drop);
+          } else {
+            open->trigger();
+          }
+          QTRY_COMPARE(failed.count(), 1);
+          QTRY_COMPARE(messages.size(), 1);  // the error box, read and closed
+        });
+        if (QTest::currentTestFailed()) return;
+        const QString name = QFileInfo(file).fileName();
+        QVERIFY2(failed.front().front().toString().startsWith(file), qPrintable(file));
+        QVERIFY2(messages.front().contains(name), qPrintable(messages.front()));
+        QCOMPARE(QString::fromStdString(window_->playback().path()), kDemo);
+        QCOMPARE(window_->playback().frameCount(), frames);
+      }
+    }
+  }
+
+  // Loop (L, --loop): at the end playing goes on from the start; without it, it stops there.
+  void loopPlaysAgainFromTheStart() {
+    QVERIFY(window_->openFile(kDemo));
+    const double end = window_->playback().duration();
+    window_->seek(end - 0.2);
+    window_->loopAction()->setChecked(true);
+    window_->play();
+    QTRY_VERIFY_WITH_TIMEOUT(window_->playback().currentTime() < 1.0, 10000);
+    QVERIFY(window_->playing());
+    window_->pause();
+    window_->loopAction()->setChecked(false);
+    window_->seek(end - 0.2);
+    window_->play();
+    QTRY_VERIFY_WITH_TIMEOUT(!window_->playing(), 10000);
+    QVERIFY(window_->playback().currentTime() > end - 0.1);
   }
 
   void dropOpensFile() {

@@ -474,6 +474,76 @@ class HeadImportTest : public QObject {
     QVERIFY2(contains(noTriangles, lines.toStdString()) && contains(noTriangles, "triangles"),
              noTriangles.c_str());
   }
+
+  // Hostile heads (issue 16): sizes bounded after instancing, recursion bounded, every vertex
+  // finite; each refused with a FileError naming the file and the limit.
+  void instancedBeyondTheVertexLimitIsRefused() {
+    // 1,024 vertices placed by 5,000 nodes: 5 million vertices from a 100 KB file.
+    const QString path = QDir(tmp_.path()).filePath("instanced.gltf");
+    writeFile(path, gltfOf(1024, 5000, false));
+    const std::string message = errorOf([&] { rigging::importHeadMesh(path.toStdString()); });
+    QVERIFY2(contains(message, path.toStdString()) && contains(message, "4194304 vertices"),
+             message.c_str());
+  }
+
+  void deeplyNestedNodesAreRefused() {
+    const QString path = QDir(tmp_.path()).filePath("nested.gltf");
+    writeFile(path, gltfOf(3, 300, true));
+    const std::string message = errorOf([&] { rigging::importHeadMesh(path.toStdString()); });
+    QVERIFY2(contains(message, path.toStdString()) && contains(message, "deeper than 256"),
+             message.c_str());
+    // The same chain within the bound imports: one instance per level.
+    writeFile(path, gltfOf(3, 200, true));
+    QCOMPARE(rigging::importHeadMesh(path.toStdString()).positions.cols(), 3 * 200);
+  }
+
+  void nonFiniteVerticesAreRefused() {
+    const QString path = QDir(tmp_.path()).filePath("nan.obj");
+    writeFile(path, "v 0 0 0\nv nan 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\n");
+    const std::string message = errorOf([&] { rigging::importHeadMesh(path.toStdString()); });
+    QVERIFY2(contains(message, path.toStdString()) && contains(message, "not a finite number"),
+             message.c_str());
+  }
+
+ private:
+  // A glTF 2.0 file with one mesh of `vertices` points (a fan of triangles on a circle) placed
+  // by `nodes` nodes: all children of the scene (`nested` false) or each the child of the last.
+  static QByteArray gltfOf(int vertices, int nodes, bool nested) {
+    QByteArray buffer;
+    for (int v = 0; v < vertices; ++v) {
+      const float angle = 6.2831853f * static_cast<float>(v) / static_cast<float>(vertices);
+      const float p[3] = {v == 0 ? 0.0f : std::cos(angle), v == 0 ? 0.0f : std::sin(angle), 0.0f};
+      buffer.append(reinterpret_cast<const char*>(p), sizeof p);
+    }
+    const int positionBytes = static_cast<int>(buffer.size());
+    for (int v = 1; v + 1 < vertices || v == 1; ++v) {
+      const quint32 t[3] = {0, static_cast<quint32>(v), static_cast<quint32>((v + 1) % vertices)};
+      buffer.append(reinterpret_cast<const char*>(t), sizeof t);
+    }
+    const int indexCount = static_cast<int>(buffer.size() - positionBytes) / 4;
+    QByteArray nodeList, sceneNodes;
+    for (int n = 0; n < nodes; ++n) {
+      QByteArray node = "{\"mesh\":0";
+      if (nested && n + 1 < nodes) node += ",\"children\":[" + QByteArray::number(n + 1) + "]";
+      nodeList += (n ? "," : "") + node + "}";
+      if (!nested) sceneNodes += (n ? "," : "") + QByteArray::number(n);
+    }
+    if (nested) sceneNodes = "0";
+    return "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[" + sceneNodes +
+           "]}],\"nodes\":[" + nodeList +
+           "],\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"indices\":1}]}],"
+           "\"buffers\":[{\"byteLength\":" +
+           QByteArray::number(buffer.size()) + ",\"uri\":\"data:application/octet-stream;base64," +
+           buffer.toBase64() + "\"}],\"bufferViews\":[{\"buffer\":0,\"byteLength\":" +
+           QByteArray::number(positionBytes) +
+           "},{\"buffer\":0,\"byteOffset\":" + QByteArray::number(positionBytes) +
+           ",\"byteLength\":" + QByteArray::number(buffer.size() - positionBytes) +
+           "}],\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":" +
+           QByteArray::number(vertices) +
+           ",\"type\":\"VEC3\",\"min\":[-1,-1,0],\"max\":[1,1,0]},{\"bufferView\":1,"
+           "\"componentType\":5125,\"count\":" +
+           QByteArray::number(indexCount) + ",\"type\":\"SCALAR\"}]}";
+  }
 };
 
 QTEST_GUILESS_MAIN(HeadImportTest)

@@ -1,28 +1,12 @@
 // Reading a FAP file or a project for playback (AnimationFile.h).
 #include <lacrima/common/FapReader.h>
+#include <lacrima/common/ProjectPath.h>
 #include <lacrima/playback/AnimationFile.h>
 
-#include <algorithm>
-#include <cctype>
 #include <exception>
 #include <new>
 
 namespace lacrima::playback {
-
-namespace {
-
-bool endsWith(std::string text, std::string_view suffix) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  return text.size() >= suffix.size() &&
-         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-}  // namespace
-
-bool isProjectPath(const std::string& path) {
-  return endsWith(path, ".json") || endsWith(path, ".lacrima");
-}
 
 AnimationFile readAnimationFile(const std::string& path) try {
   AnimationFile file;

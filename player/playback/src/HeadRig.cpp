@@ -61,10 +61,10 @@ std::unique_ptr<HeadRig> rigHead(HeadMesh head, const rigging::FeaturePointFile&
 
 std::unique_ptr<HeadRig> loadDefaultHeadRig() {
   if (!rigging::defaultHeadAvailable())
-    throw FileError(
-        {rigging::defaultHeadPackageDir(), 0, 0},
-        "the default head is not in the cache; fetch it with packaging/fetch-default-head.sh "
-        "(packaging/lacrima.sh does), or bring your own with --mesh FILE --fdp FILE");
+    throw FileError({rigging::defaultHeadPackageDir(), 0, 0},
+                    "the default head is not in the cache; fetch it with " +
+                        rigging::defaultHeadFetchCommand() +
+                        ", or bring your own with --mesh FILE --fdp FILE");
   return rigHeadFromFile(rigging::loadDefaultHead(), findMediaFile("default-head.fdp.json"),
                          "the default head in " + rigging::defaultHeadPackageDir());
 }

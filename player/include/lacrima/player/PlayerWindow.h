@@ -78,6 +78,7 @@ class PlayerWindow : public QMainWindow {
   QAction* openAction() const { return open_; }
   QAction* playAction() const { return play_; }
   QAction* resetAction() const { return reset_; }
+  QAction* loopAction() const { return loop_; }  // checkable: play again from the start
 
   // Error dialogs are window-modal and do not block; tests and scripts may turn them off
   // (the error still goes to stderr and the status bar).
@@ -124,7 +125,8 @@ class PlayerWindow : public QMainWindow {
   viewport::EffectsPanel* effects_;
   TearParametersPanel* parameters_;
   QMenu* viewMenu_;
-  QAction *open_, *openDemo_, *play_, *reset_, *resetView_, *quit_, *stepBack_, *stepForward_;
+  QAction *open_, *openDemo_, *play_, *reset_, *loop_, *resetView_, *quit_, *stepBack_,
+      *stepForward_;
   TearParameterValues fileParameters_;
   std::deque<qint64> renderTimes_;  // ms stamps of the last second's renders
   QElapsedTimer sinceStart_;

@@ -30,8 +30,13 @@ std::string defaultHeadCacheDir();
 std::string defaultHeadPackageDir();
 
 // Whether every file loadDefaultHead reads is present in defaultHeadPackageDir(). False means:
-// run packaging/fetch-default-head.sh (or packaging/lacrima.sh, which calls it).
+// run defaultHeadFetchCommand().
 bool defaultHeadAvailable();
+
+// The command that fetches the default head, for messages: "lacrima-fetch-head" when it is
+// installed beside the running program, else the checkout's "packaging/fetch-default-head.sh"
+// (the same script under its source name), so each message names what the user has.
+std::string defaultHeadFetchCommand();
 
 // Converts the head from the package folder `packageDir` (laid out as the package's "package/"
 // folder). Normals come from HeadMesh::computeNormals. Takes about 0.1 s, most of it parsing

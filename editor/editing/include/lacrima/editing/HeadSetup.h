@@ -50,7 +50,7 @@ struct ProposalReference {
   HeadMesh mesh;
   rigging::FeaturePointFile file;
   // The default head with media/default-head.fdp.json. Throws FileError (not fetched yet:
-  // packaging/fetch-default-head.sh).
+  // rigging::defaultHeadFetchCommand()).
   static std::shared_ptr<const ProposalReference> loadDefault();
 };
 

@@ -19,8 +19,6 @@ struct AnimationFile {
   Warnings warnings;        // the FAP reader's (gaps filled, odd header, ...)
 };
 
-bool isProjectPath(const std::string& path);
-
 // Throws FileError naming the file, the line (and column or JSON path) and what was expected,
 // also for a file that decodes to no frames at all.
 AnimationFile readAnimationFile(const std::string& path);
