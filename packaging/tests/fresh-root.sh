@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# fresh-root.sh BUILD SOURCE DEB_DIR ROOTS
+# fresh-root.sh BUILD SOURCE DEB_DIR ROOTS [base]
 #   The .deb of DEB_DIR (package_deb makes it) on a fresh Debian 12: a minimal root made with
 #   debootstrap, where `apt-get install ./lacrima_*.deb` resolves the dependencies from the
 #   package's metadata alone. There, as an ordinary user, the installed programs must give what
@@ -9,10 +9,11 @@
 #
 #   ROOTS keeps, between runs, the debootstrapped root with the validators installed (base/)
 #   and apt's downloaded packages (archives/); every run installs into a fresh copy (work/).
+#   With "base" it only makes base/ (package_fresh_root_base, which runs beside package_deb).
 #   Needs root, debootstrap and Debian's mirror (and npm's registry, for the head); without
 #   them it skips, and under CI=true it fails.
 set -euo pipefail
-build=$1 source=$2 debs=$3 roots=$4
+build=$1 source=$2 debs=$3 roots=$4 only_base=${5:-}
 . "$source/packaging/tests/lib.sh"
 
 [ "$(id -u)" -eq 0 ] || skip_or_fail "making a Debian root needs root (debootstrap, chroot, mount)"
@@ -105,6 +106,8 @@ if [ ! -f "$base/.lacrima-base" ]; then
   touch "$base/.lacrima-base"
   echo "base root ready in $((SECONDS - start)) s"
 fi
+
+[ "$only_base" != base ] || exit 0
 
 deb=$(ls "$debs"/lacrima_*.deb 2>/dev/null | head -n 1 || true)
 [ -n "$deb" ] || fail "no lacrima_*.deb in $debs (package_deb makes it)"
