@@ -34,9 +34,13 @@ JsonInput JsonInput::load(const std::string& path, const FileLimits& limits) {
   // QFile refuses folders with "Unknown error"; say what is actually wrong.
   if (QFileInfo(file).isDir()) fail("is a folder, not a " + kind);
   if (!file.open(QIODevice::ReadOnly)) fail("cannot open: " + file.errorString().toStdString());
+  // Whole MiB from 1 MiB up, else bytes: "0 MiB" would say nothing under a small limit.
+  const auto size = [](qint64 bytes) {
+    return bytes >= (qint64{1} << 20) ? std::to_string(bytes >> 20) + " MiB"
+                                      : std::to_string(bytes) + " bytes";
+  };
   const auto tooLarge = [&](qint64 bytes) {
-    fail("is " + std::to_string(bytes >> 20) + " MiB or more; " + kind + "s are limited to " +
-         std::to_string(limits.maxBytes >> 20) + " MiB");
+    fail("is " + size(bytes) + " or more; " + kind + "s are limited to " + size(limits.maxBytes));
   };
   if (file.size() > limits.maxBytes) tooLarge(file.size());
   // Read in pieces up to one byte past the limit: pipes and special files report size 0, and

@@ -166,6 +166,16 @@ class JsonInputTest : public QObject {
     file.close();
     QCOMPARE(loadErrorOf(large, 1 << 20),
              large.toStdString() + ": is 1 MiB or more; test files are limited to 1 MiB");
+    // Under a limit below 1 MiB the sizes are in bytes (they printed as "0 MiB").
+    QCOMPARE(loadErrorOf(large, 1000),
+             large.toStdString() + ": is 1 MiB or more; test files are limited to 1000 bytes");
+    QFile small(folder.filePath("small.json"));
+    QVERIFY(small.open(QIODevice::WriteOnly));
+    QVERIFY(small.resize(2000));
+    small.close();
+    QCOMPARE(loadErrorOf(small.fileName(), 1000),
+             small.fileName().toStdString() +
+                 ": is 2000 bytes or more; test files are limited to 1000 bytes");
 
     const QString broken = folder.filePath("broken.json");
     QFile brokenFile(broken);
