@@ -24,6 +24,11 @@ cache=${LACRIMA_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/lacrima}
 
 base=$roots/base work=$roots/work archives=$roots/archives ref=$roots/reference
 mkdir -p "$roots" "$archives/partial"
+# The Debian packages this machine has downloaded (the test command's own apt-get install keeps
+# them) are linked into archives/, so that neither debootstrap nor apt fetches them again: fewer
+# downloads, fewer ways for a slow mirror to fail the test. Both check every kept package against
+# the mirror's index and fetch a stale one anew. Across file systems nothing is linked.
+cp -ln /var/cache/apt/archives/*.deb "$archives/" 2>/dev/null || true
 start_all=$SECONDS
 
 # Unmounts everything below $1, deepest first; refuses to go on while anything stays mounted
