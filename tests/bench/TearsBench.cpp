@@ -29,6 +29,22 @@ namespace {
 
 using namespace lacrima::tears;
 
+// FNV-1a (64 bits) over the bits of the matrices, in order, as "%016x": with state_hash it lets
+// anyone check that the surface and the trails, too, do not change with the thread count.
+template <typename... Matrices>
+std::string bitsHash(const Matrices&... matrices) {
+  std::uint64_t hash = 0xcbf29ce484222325ull;
+  const auto mix = [&hash](const auto& m) {
+    const auto* b = reinterpret_cast<const unsigned char*>(m.data());
+    for (std::size_t k = 0; k < static_cast<std::size_t>(m.size()) * sizeof(*m.data()); ++k)
+      hash = (hash ^ b[k]) * 0x100000001b3ull;
+  };
+  (mix(matrices), ...);
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+  return text;
+}
+
 struct Options {
   int particles = 100;
   int frames = 110;
@@ -292,6 +308,12 @@ int runTears(int argc, char** argv) {
   const TearCounters& c = sim.counters();
   const double target = o.particles <= 100 ? 1.0 : (o.particles >= 10000 ? 1000.0 / 22.0 : 0);
 
+  const TearSurface& surface = pipeline.mesher().surface();
+  const TrailMesh& trail = pipeline.trails().mesh();
+  const std::string surfaceHash =
+      bitsHash(surface.positions(), surface.normals(), surface.triangles());
+  const std::string trailHash =
+      bitsHash(trail.positions(), trail.normals(), trail.alpha(), trail.triangles());
   if (o.json) {
     JsonWriter json(JsonWriter::Layout::Compact);
     json.beginObject();
@@ -317,6 +339,8 @@ int runTears(int argc, char** argv) {
     char hash[17];
     std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(stateHash(p)));
     json.field("state_hash", hash);
+    json.field("surface_hash", surfaceHash);
+    json.field("trail_hash", trailHash);
     json.field("ms_per_frame", median);
     json.field("ms_per_frame_mean", mean);
     json.field("ms_per_frame_max", sorted.back());
@@ -448,6 +472,7 @@ int runTears(int argc, char** argv) {
       gridRate, octreeRate, mark(gridRate >= 1));
   std::printf("  state hash (positions and velocities): %016llx\n",
               static_cast<unsigned long long>(stateHash(p)));
+  std::printf("  surface hash %s, trail hash %s\n", surfaceHash.c_str(), trailHash.c_str());
   std::printf("  all finite: %s   max distance from the skin centre: %.2f half skin heights\n",
               finite ? "yes" : "NO", maxDistance);
   return finite ? 0 : 1;

@@ -1,7 +1,7 @@
 # Smoke test of `lacrima-bench tears --json`: the benchmark runs, prints one JSON object, and
 # what it reports is sane (the commanded particles alive, every value finite, sub-steps taken,
-# the stray counter present, the same state hash for 1 and 3 threads). Speed is not checked
-# here: figures are read, never asserted.
+# the stray counter present, the same state, surface and trail hashes for 1 and 3 threads).
+# Speed is not checked here: figures are read, never asserted.
 #   cmake -DBENCH=<path to lacrima-bench> -P TearsBenchSmoke.cmake
 execute_process(COMMAND "${BENCH}" tears --particles 100 --frames 12 --json
                 OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE status)
@@ -31,7 +31,8 @@ if(NOT substeps GREATER_EQUAL 12 OR strays LESS 0)
 endif()
 message(STATUS "lacrima-bench tears: ${alive} particles, ${substeps} sub-steps in ${frames} frames")
 
-# --threads: the JSON names the count, and the state hash is the same for 1 and 3 threads.
+# --threads: the JSON names the count, and the particles, the surface and the trails hash the
+# same for 1 and 3 threads (3,000 particles: past the sharing threshold).
 foreach(threads 1 3)
   execute_process(COMMAND "${BENCH}" tears --particles 3000 --frames 12 --threads ${threads} --json
                   OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE status)
@@ -40,6 +41,8 @@ foreach(threads 1 3)
   endif()
   string(JSON reported GET "${out}" threads)
   string(JSON hash${threads} GET "${out}" state_hash)
+  string(JSON surface${threads} GET "${out}" surface_hash)
+  string(JSON trail${threads} GET "${out}" trail_hash)
   if(NOT reported EQUAL threads)
     message(FATAL_ERROR "--threads ${threads} reported ${reported} threads")
   endif()
@@ -47,7 +50,13 @@ endforeach()
 if(NOT hash1 STREQUAL hash3 OR NOT hash1 MATCHES "^[0-9a-f]+$")
   message(FATAL_ERROR "state hash differs between 1 and 3 threads: ${hash1} and ${hash3}")
 endif()
-message(STATUS "lacrima-bench tears --threads 1 and 3: state hash ${hash1}")
+if(NOT surface1 STREQUAL surface3 OR NOT trail1 STREQUAL trail3 OR NOT surface1 MATCHES "^[0-9a-f]+$"
+   OR NOT trail1 MATCHES "^[0-9a-f]+$")
+  message(FATAL_ERROR "surface or trail hash differs between 1 and 3 threads: surface "
+                      "${surface1} and ${surface3}, trails ${trail1} and ${trail3}")
+endif()
+message(STATUS "lacrima-bench tears --threads 1 and 3: state hash ${hash1}, surface ${surface1}, "
+               "trails ${trail1}")
 
 # --quality maps a level as the apps do (playback::simulationOptions): Reference halves the
 # viscous bound as well as the CFL and acceleration factors, which --substep-factor 0.5 does

@@ -294,6 +294,36 @@ class TearBasicsTest : public QObject {
     QCOMPARE(total, x.size());
   }
 
+  void cellRowsAreTheirOccupiedCells() {
+    // rowCells (the drop finder's neighbour runs) and row (the searches' particle runs) against
+    // a cell-by-cell lookup, around every occupied cell and beyond the box's edges.
+    const auto x = scatter(400, 0.05, 12, true);
+    CellIndex index;
+    index.build(x, 0.01);
+    for (std::size_t c = 0; c < index.cellCount(); ++c) {
+      const Eigen::Vector3i cell = index.cellCoordinates(c);
+      for (int dx = -2; dx <= 2; ++dx)
+        for (int dy = -2; dy <= 2; ++dy) {
+          std::vector<std::uint32_t> expected;
+          for (int dz = -1; dz <= 1; ++dz) {
+            const std::int64_t n = index.findCell(cell + Eigen::Vector3i(dx, dy, dz));
+            if (n >= 0) expected.push_back(static_cast<std::uint32_t>(n));
+          }
+          const CellIndex::Range run = index.rowCells(cell.x() + dx, cell.y() + dy, cell.z());
+          std::vector<std::uint32_t> listed;
+          for (std::uint32_t n = run.begin; n < run.end; ++n) listed.push_back(n);
+          QCOMPARE(listed, expected);
+          const CellIndex::Range particles = index.row(cell.x() + dx, cell.y() + dy, cell.z());
+          if (expected.empty()) {
+            QCOMPARE(particles.end - particles.begin, 0u);
+          } else {
+            QCOMPARE(particles.begin, index.cellStart(expected.front()));
+            QCOMPARE(particles.end, index.cellStart(expected.back() + 1));
+          }
+        }
+    }
+  }
+
   void parameterJsonLoadsAndValidates() {
     const TearSettings s = TearSettings::fromJson(R"({"pressure": 0.008, "kernel": 0.25})");
     QCOMPARE(s.pressure, 0.008);

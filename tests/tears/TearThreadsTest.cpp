@@ -3,7 +3,7 @@
 // threads, on the cheek sheet (spawning, removal, recycling, strays, a swaying sheet, a
 // checkpoint restored mid-run) and on the default head (skipped when not fetched). Runs have
 // more particles than the sharing threshold and several particle chunks, so the shared loops
-// and their spill lists really run on several threads.
+// and their spill lists really run on several threads, and the mesher splats in several slabs.
 #include "../support/DefaultHeadSkip.h"
 #include "ParallelChunks.h"  // internal to lacrima_tears
 #include "TearTestSupport.h"
@@ -33,11 +33,28 @@ constexpr int kSharedRun = std::max(2 * static_cast<int>(kParticleChunk), kParal
 // Particles plus trails (FrameState) and the surface mesh of one frame.
 struct Snapshot {
   FrameState state;
-  Eigen::MatrixXd surface;
+  Eigen::MatrixXd surface;     // vertex positions, then normals
+  Eigen::MatrixXi triangles;   // one column per triangle
+  std::size_t surfaceSlabs{};  // how many slabs the mesher shared its splat in (not compared)
 };
 
+Snapshot snapshotOf(const TearSimulation& sim, const TrailBuilder& trails,
+                    const SurfaceMesher& mesher) {
+  const TearSurface& surface = mesher.surface();
+  Eigen::MatrixXd vertices(6, surface.vertexCount());
+  vertices << surface.positions(), surface.normals();
+  return {stateOf(sim, trails), vertices, surface.triangles(), mesher.stats().slabs};
+}
+
 bool sameBits(const Snapshot& a, const Snapshot& b) {
-  return testing::sameBits(a.state, b.state) && testing::sameBits(a.surface, b.surface);
+  return testing::sameBits(a.state, b.state) && testing::sameBits(a.surface, b.surface) &&
+         a.triangles == b.triangles;
+}
+
+// Whether some frame's splat was shared in several slabs.
+bool surfaceShared(const std::vector<Snapshot>& frames) {
+  return std::any_of(frames.begin(), frames.end(),
+                     [](const Snapshot& s) { return s.surfaceSlabs > 1; });
 }
 
 // The sheet run: short sheet (drops run off its bottom and are recycled, re-emitted in place
@@ -69,10 +86,7 @@ class SheetRun {
     trails_.update(*sim_, x, kFrameDt);
     mesher_.update(*sim_);
   }
-  Snapshot snapshot() const {
-    Snapshot s{stateOf(*sim_, trails_), mesher_.surface().positions()};
-    return s;
-  }
+  Snapshot snapshot() const { return snapshotOf(*sim_, trails_, mesher_); }
   TearSimulation& simulation() { return *sim_; }
   TrailBuilder& trails() { return trails_; }
   SurfaceMesher& mesher() { return mesher_; }
@@ -143,6 +157,7 @@ class TearThreadsTest : public QObject {
     for (int threads : kThreadCounts) {
       if (threads == 1) continue;
       const std::vector<Snapshot> frames = sheetFrames(threads);
+      QVERIFY2(surfaceShared(frames), "the surface was never shared between threads");
       for (int f = 0; f < kSheetFrames; ++f)
         QVERIFY2(
             sameBits(frames[static_cast<std::size_t>(f)], reference[static_cast<std::size_t>(f)]),
@@ -192,7 +207,7 @@ class TearThreadsTest : public QObject {
         sim->step(head.positions, 1600, 1600, kFrameDt);
         trails.update(*sim, head.positions, kFrameDt);
         mesher.update(*sim);
-        frames.push_back({stateOf(*sim, trails), mesher.surface().positions()});
+        frames.push_back(snapshotOf(*sim, trails, mesher));
       }
       [&] { QVERIFY(sim->particles().size() > kSharedRun); }();
       return frames;
@@ -201,6 +216,7 @@ class TearThreadsTest : public QObject {
     for (int threads : kThreadCounts) {
       if (threads == 1) continue;
       const std::vector<Snapshot> frames = runHead(threads);
+      QVERIFY(surfaceShared(frames));
       for (int f = 0; f < kFrames; ++f)
         QVERIFY2(
             sameBits(frames[static_cast<std::size_t>(f)], reference[static_cast<std::size_t>(f)]),

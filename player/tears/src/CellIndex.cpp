@@ -151,7 +151,7 @@ Eigen::Vector3i CellIndex::cellCoordinates(std::size_t c) const {
   return {xx + low_.x(), y + low_.y(), z + low_.z()};
 }
 
-CellIndex::Range CellIndex::row(int cx, int cy, int cz) const {
+CellIndex::Range CellIndex::rowCells(int cx, int cy, int cz) const {
   if (cx < low_.x() || cy < low_.y() || cx >= low_.x() + dims_.x() || cy >= low_.y() + dims_.y())
     return {};
   const int z0 = std::max(cz - 1, low_.z()), z1 = std::min(cz + 1, low_.z() + dims_.z() - 1);
@@ -164,9 +164,15 @@ CellIndex::Range CellIndex::row(int cx, int cy, int cz) const {
     if (c < 0) continue;
     auto end = static_cast<std::size_t>(c) + 1;
     while (end < cellKey_.size() && cellKey_[end] <= last) ++end;
-    return {cellStart_[static_cast<std::size_t>(c)], cellStart_[end]};
+    return {static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(end)};
   }
   return {};
+}
+
+CellIndex::Range CellIndex::row(int cx, int cy, int cz) const {
+  const Range cells = rowCells(cx, cy, cz);
+  if (cells.begin == cells.end) return {};
+  return {cellStart_[cells.begin], cellStart_[cells.end]};
 }
 
 }  // namespace lacrima::tears

@@ -49,6 +49,8 @@ class CellIndex {
     std::uint32_t begin = 0, end = 0;
   };
   Range row(int cx, int cy, int cz) const;
+  // The same row as occupied cell indices [begin, end), in key order (z ascending).
+  Range rowCells(int cx, int cy, int cz) const;
 
  private:
   bool inBox(int cx, int cy, int cz) const;

@@ -21,15 +21,17 @@ void DropFinder::find(const ParticleSet& particles, const UniformGrid& grid) {
       stack_.pop_back();
       for (std::uint32_t s = index.cellStart(c); s < index.cellStart(c + 1); ++s)
         particles_.push_back(order[s]);
+      // The 26 neighbours as nine runs along z (CellIndex::rowCells), in (dx, dy, dz) order.
       const Eigen::Vector3i cell = index.cellCoordinates(c);
       for (int dx = -1; dx <= 1; ++dx)
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dz = -1; dz <= 1; ++dz) {
-            const std::int64_t n = index.findCell(cell + Eigen::Vector3i(dx, dy, dz));
-            if (n < 0 || visited_[static_cast<std::size_t>(n)]) continue;
-            visited_[static_cast<std::size_t>(n)] = 1;
-            stack_.push_back(static_cast<std::size_t>(n));
+        for (int dy = -1; dy <= 1; ++dy) {
+          const CellIndex::Range run = index.rowCells(cell.x() + dx, cell.y() + dy, cell.z());
+          for (std::size_t n = run.begin; n < run.end; ++n) {
+            if (visited_[n]) continue;
+            visited_[n] = 1;
+            stack_.push_back(n);
           }
+        }
     }
     drop.count = static_cast<int>(particles_.size()) - drop.first;
     int left = 0;

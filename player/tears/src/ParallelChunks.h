@@ -60,4 +60,16 @@ class ParallelChunks {
   bool shared_ = false;
 };
 
+// parallel->forEachChunk, or the same chunks in order on the calling thread when there is no
+// ParallelChunks (a mesher or finder used on its own, as the tests do).
+template <class Body>
+void forEachChunkOn(ParallelChunks* parallel, std::size_t count, std::size_t chunk, Body&& body) {
+  if (parallel) {
+    parallel->forEachChunk(count, chunk, body);
+    return;
+  }
+  for (std::size_t begin = 0, c = 0; begin < count; begin += chunk, ++c)
+    body(static_cast<int>(c), begin, std::min(count, begin + chunk));
+}
+
 }  // namespace lacrima::tears

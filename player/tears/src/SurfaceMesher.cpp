@@ -1,6 +1,7 @@
 #include "CellIndex.h"
 #include "Float4.h"
 #include "MarchingCubesTable.h"
+#include "ParallelChunks.h"
 #include "SurfaceMesherField.h"
 #include "SurfaceMesherKeyMap.h"
 #include "VectorState.h"
@@ -23,9 +24,13 @@ using Int4 = int __attribute__((vector_size(16)));  // lane masks of Float4 comp
 using Lattice = Eigen::Matrix<std::int64_t, 3, 1>;
 
 constexpr int kShift = 2;  // 4^3 cubes: 8^3 ran as fast but doubles the memory of sparse drops
-constexpr int kBlock = 1 << kShift;                            // cubes per block edge
-constexpr int kBlockCorners = kBlock * kBlock * kBlock;        // corners owned by a block
-constexpr int kBlockFloats = 4 * kBlockCorners;                // value, then the gradient's x, y, z
+constexpr int kBlock = 1 << kShift;                      // cubes per block edge
+constexpr int kBlockCorners = kBlock * kBlock * kBlock;  // corners owned by a block
+// Per block: the value, then the gradient's x, y and z at its corners, then four floats that
+// nothing reads. A four-wide add that runs past a line's last corner adds exact zeros to the
+// corners after it; the padding keeps those within the block, so two threads splatting slabs
+// of whole blocks never touch one float.
+constexpr int kBlockFloats = 4 * kBlockCorners + 4;
 constexpr int kLines = (kBlock + 1) * (kBlock + 1);            // padded (x, y) lines of a block
 constexpr std::uint16_t kFullLine = (1u << (kBlock + 1)) - 1;  // a padded line all inside
 constexpr unsigned kLowBits = (1u << kBlock) - 1;              // the block's own corners of a line
@@ -105,7 +110,9 @@ const TearSurface& SurfaceMesher::update(TearSimulation& simulation, std::size_t
   const ScaledParameters& p = simulation.parameters();
   SurfaceMesherSettings settings{p.h, p.cubeSize, p.iso, maxCubes};
   const UniformGrid& grid = simulation.grid();
-  build(particles.position, meshedMasses(particles, skip), grid, settings);
+  ParallelChunks& parallel = simulation.parallelChunks();
+  parallel.setParticleCount(particles.size());
+  mesh(particles.position, meshedMasses(particles, skip), grid, settings, &parallel);
   simulation.countSurfaceRun();
   stats_.milliseconds = millisecondsSince(start);
   return surface_;
@@ -127,6 +134,13 @@ std::span<const double> SurfaceMesher::meshedMasses(const ParticleSet& particles
 const TearSurface& SurfaceMesher::build(std::span<const Eigen::Vector3d> positions,
                                         std::span<const double> masses, const UniformGrid& grid,
                                         const SurfaceMesherSettings& settings) {
+  return mesh(positions, masses, grid, settings, nullptr);
+}
+
+const TearSurface& SurfaceMesher::mesh(std::span<const Eigen::Vector3d> positions,
+                                       std::span<const double> masses, const UniformGrid& grid,
+                                       const SurfaceMesherSettings& settings,
+                                       ParallelChunks* parallel) {
   clearUpperVectorState();
   const auto start = SteadyClock::now();
   const double h = settings.kernelRadius;
@@ -138,7 +152,7 @@ const TearSurface& SurfaceMesher::build(std::span<const Eigen::Vector3d> positio
   surface_.clear();
   stats_ = {};
   if (positions.empty()) return surface_;
-  field_->bind(positions, masses, grid, h);
+  field_->bind(positions, masses, grid, h, parallel);
   const CellIndex& index = grid.index();
   stats_.activeCells = index.cellCount();
 
@@ -193,7 +207,7 @@ const TearSurface& SurfaceMesher::build(std::span<const Eigen::Vector3d> positio
   stats_.cubes = stats_.corners = block_.size() * kBlockCorners;
 
   linkBlocks();
-  splat(s);
+  splat(s, low.y(), high.y(), parallel);
   const auto iso = static_cast<float>(settings.iso);
   classify(iso);
   createVertices(s, iso);
@@ -256,22 +270,87 @@ void SurfaceMesher::linkBlocks() {
 // c and grad c at the corners, particle by particle: each particle adds a d^2 (d, e) to the
 // corners of its support box with d > 0 (d = 1 - r^2/h^2, e = (corner - x) / h, a = V w h^6),
 // cheaper than gathering 27 cells per corner. c = sum a d^3 and grad c = -6 / h sum a d^2 e.
-// The box's per-axis offsets, blocks and block-local coordinates are tabulated once per particle,
-// so the corner loop is a handful of single-precision operations and one four-float add.
-void SurfaceMesher::splat(double s) {
+//
+// Threads: the lattice is cut into slabs along y and each slab adds its particles' shares to
+// its own corners only, particle by particle in sorted order. Every corner thus receives the
+// same additions in the same order however many slabs there are, so the sums are bit-identical
+// for any thread count, and one thread runs the one slab exactly as before. The cut is along y
+// because tears run down the face: streams are long in y and narrow in x, so slabs across them
+// share few particles (cut along x, the particles within h of a cut were a third of the sheet's).
+void SurfaceMesher::splat(double s, double lowY, double highY, ParallelChunks* parallel) {
+  sum_.resize(block_.size() * kBlockFloats);
+  std::memset(sum_.data(), 0, sum_.size() * sizeof(float));
+  const std::size_t slabs = cutSlabs(s, lowY, highY, parallel);
+  stats_.slabs = slabs;
+  forEachChunkOn(parallel, slabs, 1, [&](int k, std::size_t, std::size_t) {
+    const auto slab = static_cast<std::size_t>(k);
+    splatSlab(s, slabBound_[slab], slabBound_[slab + 1], splatScratch_[slab]);
+  });
+}
+
+// Slabs of about equal particle counts, two per thread when the simulation shares its loops
+// (the pool hands them out in order, so a slow slab does not hold a thread idle), one
+// otherwise. Slab k covers lattice y in [slabBound_[k], slabBound_[k + 1]), whole blocks (see
+// kBlockFloats for why); the cuts are the quantiles of a sample of the particles' heights (up to
+// 1,024), inside the box of the particles with volume (the others may lie anywhere). Each slab
+// gets the particles whose support reaches it, in sorted order. Returns the slab count.
+std::size_t SurfaceMesher::cutSlabs(double s, double lowY, double highY,
+                                    const ParallelChunks* parallel) {
+  const std::size_t slabs =
+      parallel && parallel->shared() ? 2 * static_cast<std::size_t>(parallel->threads()) : 1;
+  slabBound_.assign(slabs + 1, std::numeric_limits<std::int64_t>::min());
+  slabBound_.back() = std::numeric_limits<std::int64_t>::max();
+  if (splatScratch_.size() < slabs) splatScratch_.resize(slabs);
+  for (std::size_t k = 0; k < slabs; ++k) splatScratch_[k].particles.clear();
+  const CellIndex& index = field_->index();
+  const auto y = index.sortedY();
+  const auto weight = field_->sortedSplatWeights();
+  if (slabs == 1) {
+    for (std::uint32_t t = 0; t < y.size(); ++t)
+      if (weight[t] != 0) splatScratch_[0].particles.push_back(t);
+    return 1;
+  }
+  const std::size_t stride = std::max<std::size_t>(1, y.size() / 1024);
+  heightSample_.clear();
+  for (std::size_t t = 0; t < y.size(); t += stride)
+    heightSample_.push_back(std::isfinite(y[t]) ? std::clamp(y[t], lowY, highY) : lowY);
+  std::sort(heightSample_.begin(), heightSample_.end());
+  for (std::size_t k = 1; k < slabs; ++k)
+    slabBound_[k] =
+        std::max(slabBound_[k - 1],
+                 kBlock * blockOf(floorDiv(heightSample_[k * heightSample_.size() / slabs], s)));
+  const double h = field_->kernelRadius();
+  for (std::uint32_t t = 0; t < y.size(); ++t) {
+    if (weight[t] == 0) continue;
+    const std::int64_t low = ceilDiv(y[t] - h, s), high = floorDiv(y[t] + h, s);
+    std::size_t k = 0;
+    while (slabBound_[k + 1] <= low) ++k;  // the last bound is the int64 maximum
+    for (; k < slabs && slabBound_[k] <= high; ++k) splatScratch_[k].particles.push_back(t);
+  }
+  return slabs;
+}
+
+// The shares of the slab's particles for its corners, those with lattice y in [yFrom, yTo).
+// The box's per-axis offsets, blocks and block-local coordinates are tabulated once per
+// particle, for the whole box so that they do not depend on the slab, and the corner loop is a
+// handful of single-precision operations and one four-float add.
+void SurfaceMesher::splatSlab(double s, std::int64_t yFrom, std::int64_t yTo,
+                              SplatScratch& scratch) {
   const double h = field_->kernelRadius(), inverse = 1.0 / h;
   const auto step = static_cast<float>(s * inverse);
   const CellIndex& index = field_->index();
   const auto weight = field_->sortedSplatWeights();
-  sum_.resize(block_.size() * kBlockFloats + 4);  // +4: the last four-wide add may overhang
-  std::memset(sum_.data(), 0, sum_.size() * sizeof(float));
   Lattice lastLow = Lattice::Constant(1), lastHigh = Lattice::Zero(), dims = Lattice::Zero();
   const Float4 lane = {0, 1, 2, 3}, zero = {0, 0, 0, 0};
-  for (std::size_t t = 0; t < index.particleCount(); ++t) {
-    if (weight[t] == 0) continue;
+  for (const std::uint32_t t : scratch.particles) {
     const Eigen::Vector3d x(index.sortedX()[t], index.sortedY()[t], index.sortedZ()[t]);
     const SupportBox box = supportOf(x, h, s);
     if (box.empty()) continue;
+    const Lattice n = box.high - box.low + Lattice::Ones();
+    // The box's y points inside the slab (the bounds may be the int64 limits).
+    const std::int64_t jBegin = yFrom > box.low.y() ? yFrom - box.low.y() : 0;
+    const std::int64_t jEnd = yTo <= box.high.y() ? yTo - box.low.y() : n.y();
+    if (jBegin >= jEnd) continue;
     Lattice bl, bh;
     for (int a = 0; a < 3; ++a) {
       bl[a] = blockOf(box.low[a]);
@@ -282,26 +361,26 @@ void SurfaceMesher::splat(double s) {
       lastLow = bl;
       lastHigh = bh;
       dims = bh - bl + Lattice::Ones();
-      particleBlocks_.clear();
+      scratch.blocks.clear();
       for (std::int64_t bx = bl.x(); bx <= bh.x(); ++bx)
         for (std::int64_t by = bl.y(); by <= bh.y(); ++by)
           for (std::int64_t bz = bl.z(); bz <= bh.z(); ++bz)
-            particleBlocks_.push_back(blockAt(Lattice(bx, by, bz)));
+            scratch.blocks.push_back(blockAt(Lattice(bx, by, bz)));
     }
     // Per axis and box point: offset from the particle in kernel units, block (relative to bl)
     // and block-local coordinate. Offsets are padded with four zeros for four-wide loads.
-    const Lattice n = box.high - box.low + Lattice::Ones();
-    axisTable_.resize(static_cast<std::size_t>(n.sum()));
-    offsetTable_.resize(static_cast<std::size_t>(n.sum()) + 12);
+    scratch.axis.resize(static_cast<std::size_t>(n.sum()));
+    scratch.offset.resize(static_cast<std::size_t>(n.sum()) + 12);
     std::array<AxisPoint*, 3> axis{};
     std::array<float*, 3> offset{};
     for (int a = 0, at = 0; a < 3; at += static_cast<int>(n[a]) + 4, ++a) {
-      axis[static_cast<std::size_t>(a)] = &axisTable_[static_cast<std::size_t>(at - 4 * a)];
-      offset[static_cast<std::size_t>(a)] = &offsetTable_[static_cast<std::size_t>(at)];
-      const auto first = static_cast<float>((static_cast<double>(box.low[a]) * s - x[a]) * inverse);
+      axis[static_cast<std::size_t>(a)] = &scratch.axis[static_cast<std::size_t>(at - 4 * a)];
+      offset[static_cast<std::size_t>(a)] = &scratch.offset[static_cast<std::size_t>(at)];
+      const auto firstOffset =
+          static_cast<float>((static_cast<double>(box.low[a]) * s - x[a]) * inverse);
       for (std::int64_t k = 0; k < n[a]; ++k) {
         const std::int64_t lattice = box.low[a] + k;
-        offset[static_cast<std::size_t>(a)][k] = first + static_cast<float>(k) * step;
+        offset[static_cast<std::size_t>(a)][k] = firstOffset + static_cast<float>(k) * step;
         axis[static_cast<std::size_t>(a)][k] = {static_cast<int>(blockOf(lattice) - bl[a]),
                                                 local(lattice)};
       }
@@ -311,7 +390,7 @@ void SurfaceMesher::splat(double s) {
     const Float4 a = {weightT, weightT, weightT, weightT};
     for (std::int64_t i = 0; i < n.x(); ++i) {
       const float ex = offset[0][i];
-      for (std::int64_t j = 0; j < n.y(); ++j) {
+      for (std::int64_t j = jBegin; j < jEnd; ++j) {
         const float ey = offset[1][j];
         const float rest = 1.0f - ex * ex - ey * ey;
         if (rest <= 0) continue;
@@ -327,7 +406,7 @@ void SurfaceMesher::splat(double s) {
           const int blockZ = axis[2][k].block;
           std::int64_t end = k + 1;
           while (end < n.z() && axis[2][end].block == blockZ) ++end;
-          const std::int32_t b = particleBlocks_[row + static_cast<std::size_t>(blockZ)];
+          const std::int32_t b = scratch.blocks[row + static_cast<std::size_t>(blockZ)];
           float* base = &sum_[static_cast<std::size_t>(b) * kBlockFloats + slot +
                               static_cast<std::size_t>(axis[2][k].local)];
           for (; k < end; k += 4, base += 4) {

@@ -11,6 +11,9 @@
 namespace lacrima::tears {
 namespace {
 using Int4 = int __attribute__((vector_size(16)));  // lane masks of Float4 comparisons
+// Occupied cells per shared chunk of the density pass: about 5 particles a cell on a sheet, so
+// a chunk is about the particle chunk of the simulation's loops.
+constexpr std::size_t kCellChunk = 256;
 }  // namespace
 
 template <typename Visit>
@@ -32,7 +35,8 @@ void SurfaceMesherField::forNeighbours(const Eigen::Vector3d& x, Visit&& visit) 
 }
 
 void SurfaceMesherField::bind(std::span<const Eigen::Vector3d> positions,
-                              std::span<const double> masses, const UniformGrid& grid, double h) {
+                              std::span<const double> masses, const UniformGrid& grid, double h,
+                              ParallelChunks* parallel) {
   if (!(h > 0) || !std::isfinite(h))
     throw std::invalid_argument("colour field: kernel radius must be positive");
   if (masses.size() != positions.size())
@@ -79,36 +83,42 @@ void SurfaceMesherField::bind(std::span<const Eigen::Vector3d> positions,
   const Float4 one = {1, 1, 1, 1}, zero = {0, 0, 0, 0};
   const Int4 lane = {0, 1, 2, 3};
   const double scale = w_ * h2_ * h2_ * h2_;  // rho = scale * heaviest * sum
-  for (std::size_t c = 0; c < index.cellCount(); ++c) {
-    // The nine runs of the 27 cells around this cell, shared by all its particles.
-    const Eigen::Vector3i cell = index.cellCoordinates(c);
-    std::array<CellIndex::Range, 9> rows;
-    for (int dx = -1, r = 0; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy, ++r)
-        rows[static_cast<std::size_t>(r)] = index.row(cell.x() + dx, cell.y() + dy, cell.z());
-    for (std::uint32_t s = index.cellStart(c); s < index.cellStart(c + 1); ++s) {
-      const Float4 xs = {fx_[s], fx_[s], fx_[s], fx_[s]}, ys = {fy_[s], fy_[s], fy_[s], fy_[s]},
-                   zs = {fz_[s], fz_[s], fz_[s], fz_[s]};
-      Float4 sum = zero;
-      for (const CellIndex::Range& r : rows)
-        for (std::uint32_t t = r.begin; t < r.end; t += 4) {
-          const Float4 ex = load4(&fx_[t]) - xs, ey = load4(&fy_[t]) - ys, ez = load4(&fz_[t]) - zs;
-          const Float4 d = one - (ex * ex + ey * ey + ez * ez);
-          const Int4 left = Int4{1, 1, 1, 1} * static_cast<int>(r.end - t);
-          const Int4 keep = (d > zero) & (lane < left);
-          const Float4 kept = reinterpret_cast<Float4>(reinterpret_cast<Int4>(d) & keep);
-          sum += load4(&fm_[t]) * kept * kept * kept;
+  forEachChunkOn(
+      parallel, index.cellCount(), kCellChunk,
+      [&](int, std::size_t firstCell, std::size_t endCell) {
+        for (std::size_t c = firstCell; c < endCell; ++c) {
+          // The nine runs of the 27 cells around this cell, shared by all its particles.
+          const Eigen::Vector3i cell = index.cellCoordinates(c);
+          std::array<CellIndex::Range, 9> rows;
+          for (int dx = -1, r = 0; dx <= 1; ++dx)
+            for (int dy = -1; dy <= 1; ++dy, ++r)
+              rows[static_cast<std::size_t>(r)] = index.row(cell.x() + dx, cell.y() + dy, cell.z());
+          for (std::uint32_t s = index.cellStart(c); s < index.cellStart(c + 1); ++s) {
+            const Float4 xs = {fx_[s], fx_[s], fx_[s], fx_[s]},
+                         ys = {fy_[s], fy_[s], fy_[s], fy_[s]},
+                         zs = {fz_[s], fz_[s], fz_[s], fz_[s]};
+            Float4 sum = zero;
+            for (const CellIndex::Range& r : rows)
+              for (std::uint32_t t = r.begin; t < r.end; t += 4) {
+                const Float4 ex = load4(&fx_[t]) - xs, ey = load4(&fy_[t]) - ys,
+                             ez = load4(&fz_[t]) - zs;
+                const Float4 d = one - (ex * ex + ey * ey + ez * ez);
+                const Int4 left = Int4{1, 1, 1, 1} * static_cast<int>(r.end - t);
+                const Int4 keep = (d > zero) & (lane < left);
+                const Float4 kept = reinterpret_cast<Float4>(reinterpret_cast<Int4>(d) & keep);
+                sum += load4(&fm_[t]) * kept * kept * kept;
+              }
+            const double rho = static_cast<double>(sum[0]) + sum[1] + sum[2] + sum[3];
+            const double m = masses[static_cast<std::size_t>(order[s])];
+            // rho >= m_s W(0) > 0 for a positive mass (the particle sees itself); a non-positive
+            // mass contributes nothing to the field.
+            if (m > 0 && rho > 0 && std::isfinite(rho)) {
+              volume_[s] = m / (scale * heaviest * rho);
+              splat_[s] = static_cast<float>(m * inverseMass / rho);
+            }
+          }
         }
-      const double rho = static_cast<double>(sum[0]) + sum[1] + sum[2] + sum[3];
-      const double m = masses[static_cast<std::size_t>(order[s])];
-      // rho >= m_s W(0) > 0 for a positive mass (the particle sees itself); a non-positive mass
-      // contributes nothing to the field.
-      if (m > 0 && rho > 0 && std::isfinite(rho)) {
-        volume_[s] = m / (scale * heaviest * rho);
-        splat_[s] = static_cast<float>(m * inverseMass / rho);
-      }
-    }
-  }
+      });
 }
 
 double SurfaceMesherField::value(const Eigen::Vector3d& x) const {

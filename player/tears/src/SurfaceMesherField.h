@@ -21,7 +21,10 @@
 // (Float4.h) on positions in kernel units relative to the particles' bounding box, where
 // rho_j / (w h^6) = sum_k m_k (1 - r_jk^2 / h^2)^3 is a sum of O(m) terms: float keeps ~7
 // digits of the volumes, far below what the linear interpolation of marching cubes resolves.
+// Each cell writes only its own particles' volumes, so the cells are shared between threads in
+// fixed chunks (ParallelChunks.h) and the result does not depend on the thread count.
 #include "CellIndex.h"
+#include "ParallelChunks.h"
 
 #include <lacrima/tears/UniformGrid.h>
 
@@ -35,9 +38,10 @@ namespace lacrima::tears {
 class SurfaceMesherField {
  public:
   // `grid` must be built over `positions` with cell edge h and must outlive the queries.
-  // Throws std::invalid_argument if it was not (other edge, other particle count).
+  // Throws std::invalid_argument if it was not (other edge, other particle count). `parallel`:
+  // the threads to share the density pass with, or none.
   void bind(std::span<const Eigen::Vector3d> positions, std::span<const double> masses,
-            const UniformGrid& grid, double h);
+            const UniformGrid& grid, double h, ParallelChunks* parallel = nullptr);
 
   double kernelRadius() const { return h_; }
   double value(const Eigen::Vector3d& x) const;

@@ -54,6 +54,7 @@ TearSimulation::Internals::Internals(const ScaledParameters& p, const TearSettin
 }
 
 int TearSimulation::threads() const { return internals_->parallel.threads(); }
+ParallelChunks& TearSimulation::parallelChunks() { return internals_->parallel; }
 
 void TearSimulation::Internals::chooseMethods(const ScaledParameters& p,
                                               const TearSettings& settings,

@@ -70,22 +70,20 @@ const TrailMesh& TrailBuilder::update(const ParticleSet& particles, const Unifor
 void TrailBuilder::advance(const ParticleSet& particles, const UniformGrid& grid, double h,
                            double particleRadius) {
   finder_.find(particles, grid);
+  findPreviousTracks(particles);
   nextTracks_.clear();
-  nextOwner_.clear();
   predecessorUse_.assign(tracks_.size(), 0);
   predecessor_.clear();
   sources_.clear();
   for (const FoundDrop& drop : finder_.drops()) {
     votes_.clear();  // (track, particles) — a drop rarely has more than two predecessors
-    for (int i : finder_.particlesOf(drop)) {
-      const std::uint64_t id = particles.id[static_cast<std::size_t>(i)];
-      const auto it =
-          std::lower_bound(owner_.begin(), owner_.end(), std::pair<std::uint64_t, int>{id, -1});
-      if (it == owner_.end() || it->first != id) continue;
+    for (int k = drop.first; k < drop.first + drop.count; ++k) {
+      const int previous = previousTrack_[static_cast<std::size_t>(k)];
+      if (previous < 0) continue;
       auto vote = std::find_if(votes_.begin(), votes_.end(),
-                               [&](const auto& v) { return v.first == it->second; });
+                               [&](const auto& v) { return v.first == previous; });
       if (vote == votes_.end())
-        votes_.emplace_back(it->second, 1);
+        votes_.emplace_back(previous, 1);
       else
         ++vote->second;
     }
@@ -112,14 +110,35 @@ void TrailBuilder::advance(const ParticleSet& particles, const UniformGrid& grid
       reshaped = predecessorUse_[p] > 1 || sources_[d] > 1;  // split, or merged
     }
     continueTrack(track, particles, drop, h, particleRadius, reshaped);
-    const int index = static_cast<int>(nextTracks_.size());
-    nextTracks_.push_back(track);
-    for (int i : finder_.particlesOf(drop))
-      nextOwner_.emplace_back(particles.id[static_cast<std::size_t>(i)], index);
+    nextTracks_.push_back(track);  // track d continues drop d
   }
-  std::sort(nextOwner_.begin(), nextOwner_.end());
+  // The owners for the next update: every particle's id with its drop's track, by id.
+  owner_.resize(byId_.size());
+  for (std::size_t r = 0; r < byId_.size(); ++r)
+    owner_[r] = {byId_[r].first, dropOf_[static_cast<std::size_t>(byId_[r].second)]};
   tracks_.swap(nextTracks_);
-  owner_.swap(nextOwner_);
+}
+
+// previousTrack_[k]: the track that owned the k-th particle of the finder's list in the last
+// update, or -1 (a new particle). The list is sorted by id and merged with the owners, also
+// sorted by id: one sort and a linear walk instead of a binary search per particle.
+void TrailBuilder::findPreviousTracks(const ParticleSet& particles) {
+  const auto listed = finder_.particleIndices();
+  byId_.resize(listed.size());
+  dropOf_.resize(listed.size());
+  for (std::size_t k = 0; k < listed.size(); ++k)
+    byId_[k] = {particles.id[static_cast<std::size_t>(listed[k])], static_cast<int>(k)};
+  const auto drops = finder_.drops();
+  for (std::size_t d = 0; d < drops.size(); ++d)
+    std::fill_n(dropOf_.begin() + drops[d].first, drops[d].count, static_cast<int>(d));
+  std::sort(byId_.begin(), byId_.end());
+  previousTrack_.assign(listed.size(), -1);
+  std::size_t o = 0;
+  for (const auto& [id, k] : byId_) {
+    while (o < owner_.size() && owner_[o].first < id) ++o;
+    if (o < owner_.size() && owner_[o].first == id)
+      previousTrack_[static_cast<std::size_t>(k)] = owner_[o].second;
+  }
 }
 
 void TrailBuilder::continueTrack(Track& track, const ParticleSet& particles, const FoundDrop& drop,

@@ -26,6 +26,8 @@ class DropFinder {
   void find(const ParticleSet& particles, const UniformGrid& grid);
 
   std::span<const FoundDrop> drops() const { return drops_; }
+  // Every drop's particle indices, drop after drop.
+  std::span<const int> particleIndices() const { return particles_; }
   std::span<const int> particlesOf(const FoundDrop& drop) const {
     return std::span<const int>(particles_)
         .subspan(static_cast<std::size_t>(drop.first), static_cast<std::size_t>(drop.count));

@@ -45,6 +45,7 @@
 namespace lacrima::tears {
 
 struct EmissionSite;
+class ParallelChunks;
 
 // What TearSimulation::forHead takes from the head besides its skin.
 struct HeadTearOptions {
@@ -118,6 +119,9 @@ class TearSimulation {
   const SimulationOptions& options() const { return options_; }
   // Threads the sub-steps share: options().threads resolved (SimulationOptions.h).
   int threads() const;
+  // Those threads, lent between frames to the surface mesher (ParallelChunks.h, internal to
+  // the library); only on the thread that steps this simulation, never during step().
+  ParallelChunks& parallelChunks();
   const UnitScale& scale() const { return scale_; }
   Eigen::Vector3d gravity() const { return {0, -params_.gravity, 0}; }
   // Particles leaving this box are recycled.

@@ -127,6 +127,7 @@ class TrailBuilder {
   };
   void advance(const ParticleSet& particles, const UniformGrid& grid, double h,
                double particleRadius);
+  void findPreviousTracks(const ParticleSet& particles);
   // `reshaped`: the drop split off or merged this update, so its centre jumped.
   void continueTrack(Track& track, const ParticleSet& particles, const FoundDrop& drop, double h,
                      double particleRadius, bool reshaped);
@@ -140,7 +141,10 @@ class TrailBuilder {
   std::vector<TrailSegment> segments_;
   std::vector<Track> tracks_, nextTracks_;
   std::vector<std::pair<std::uint64_t, int>> owner_;  // particle id -> track, sorted by id
-  std::vector<std::pair<std::uint64_t, int>> nextOwner_;
+  // Scratch of an update, per particle of the drop finder's list (k): (id, k) sorted by id,
+  // the drop of k and the track that owned it before.
+  std::vector<std::pair<std::uint64_t, int>> byId_;
+  std::vector<int> dropOf_, previousTrack_;
   std::vector<std::pair<int, int>> votes_;
   std::vector<int> seeds_, remap_, predecessorUse_, predecessor_, sources_, heirsSeen_;
   std::vector<std::uint8_t> referenced_;
