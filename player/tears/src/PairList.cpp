@@ -29,7 +29,8 @@ struct LargestTwo {
 // The candidates of the sorted particles [first, last) (cells in key order), appended to `out`
 // from `written` on; start_[s + 1] gets each particle's end, relative to `out`.
 std::size_t VerletPairs::scan(const CellIndex& index, std::uint32_t first, std::uint32_t last,
-                              float r2max, std::vector<std::uint32_t>& out, std::size_t written) {
+                              float r2max, UninitialisedVector<std::uint32_t>& out,
+                              std::size_t written) {
   const float* fx = fx_.data();
   const float* fy = fy_.data();
   const float* fz = fz_.data();
@@ -133,7 +134,7 @@ void VerletPairs::build(const CellIndex& index, double h, double skin, ParallelC
     if (chunkPartner_.size() < chunks) chunkPartner_.resize(chunks);
     chunkCount_.resize(chunks);
     parallel.forEachChunk(n, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
-      std::vector<std::uint32_t>& out = chunkPartner_[static_cast<std::size_t>(c)];
+      UninitialisedVector<std::uint32_t>& out = chunkPartner_[static_cast<std::size_t>(c)];
       if (out.size() < 64) out.resize(64);
       chunkCount_[static_cast<std::size_t>(c)] = scan(
           index, static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end), r2max, out, 0);

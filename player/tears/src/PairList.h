@@ -32,6 +32,7 @@
 // Beyond n / 32 strays a rebuild is cheaper, and refresh() asks for one.
 #include "CellIndex.h"
 #include "ParallelChunks.h"
+#include "UninitialisedAllocator.h"
 
 #include <lacrima/tears/NeighbourSearch.h>
 
@@ -78,12 +79,12 @@ class VerletPairs {
  private:
   void clearStrays();
   std::size_t scan(const CellIndex& index, std::uint32_t first, std::uint32_t last, float r2max,
-                   std::vector<std::uint32_t>& out, std::size_t written);
+                   UninitialisedVector<std::uint32_t>& out, std::size_t written);
 
-  std::vector<std::uint32_t> start_;     // size n + 1
-  std::vector<std::uint32_t> partner_;   // j > i
-  std::vector<Eigen::Vector3d> anchor_;  // positions at the build
-  std::vector<float> fx_, fy_, fz_;      // build scratch: sorted positions in float
+  std::vector<std::uint32_t> start_;            // size n + 1
+  UninitialisedVector<std::uint32_t> partner_;  // j > i
+  std::vector<Eigen::Vector3d> anchor_;         // positions at the build
+  std::vector<float> fx_, fy_, fz_;             // build scratch: sorted positions in float
   double h_ = 0, skin_ = 0;
   bool valid_ = false;
   std::vector<std::uint8_t> stray_;
@@ -92,7 +93,7 @@ class VerletPairs {
   std::vector<double> medianScratch_;
   int strayCount_ = 0;
   // Shared builds: each chunk's candidates, their count and place in partner_ (capacity kept).
-  std::vector<std::vector<std::uint32_t>> chunkPartner_;
+  std::vector<UninitialisedVector<std::uint32_t>> chunkPartner_;
   std::vector<std::size_t> chunkCount_, chunkOffset_;
 };
 
