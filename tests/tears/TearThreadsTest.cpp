@@ -14,6 +14,8 @@
 
 #include <QtTest>
 
+#include <malloc.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -188,6 +190,26 @@ class TearThreadsTest : public QObject {
       QVERIFY2(sameBits(run.snapshot(), expected),
                qPrintable(QStringLiteral("restored run on %1 threads diverged").arg(threads)));
     }
+  }
+
+  void checkpointsAreNoLargerOnMoreThreads() {
+    // A checkpoint copies the solver's state, not its working buffers (Scratch.h): a shared
+    // pair-list build keeps a buffer per chunk, which checkpoints once carried too (twice the
+    // memory on two threads at 10,000 particles).
+    const auto bytesPerCheckpoint = [](int threads) {
+      SheetRun run(threads);
+      for (int f = 0; f < 20; ++f) run.step(f);
+      [&] { QVERIFY(run.simulation().particles().size() > kSharedRun); }();
+      const double before = static_cast<double>(mallinfo2().uordblks);
+      std::vector<TearCheckpoint> kept;
+      for (int k = 0; k < 4; ++k) kept.push_back(run.simulation().checkpoint());
+      return (static_cast<double>(mallinfo2().uordblks) - before) / 4;
+    };
+    const double one = bytesPerCheckpoint(1), three = bytesPerCheckpoint(3);
+    if (!(one > 0)) QSKIP("mallinfo2 does not see this build's allocator (a sanitizer's)");
+    QVERIFY2(three < 1.05 * one, qPrintable(QStringLiteral("%1 bytes on 3 threads, %2 on 1")
+                                                .arg(three, 0, 'f', 0)
+                                                .arg(one, 0, 'f', 0)));
   }
 
   void defaultHeadIsBitIdenticalForAnyThreadCount() {

@@ -11,6 +11,8 @@
 //
 // Occupied cells are found through an open-addressing hash of their keys (linear probing,
 // 2^k >= 2 x cells slots), so memory is O(n) however far the particles spread.
+#include "Scratch.h"
+
 #include <Eigen/Core>
 
 #include <cstdint>
@@ -68,10 +70,13 @@ class CellIndex {
   std::vector<std::uint32_t> slotCell_;
   int slotBits_ = 0;
 
-  // Scratch of the radix sort, kept between builds (no per-step allocation).
-  std::vector<std::uint64_t> key_, keyScratch_;
-  std::vector<int> orderScratch_;
-  std::vector<Eigen::Vector3i> cell_;
+  // Buffers of the radix sort, kept between builds (no per-step allocation; Scratch.h).
+  struct SortBuffers {
+    std::vector<std::uint64_t> key, keyScratch;
+    std::vector<int> orderScratch;
+    std::vector<Eigen::Vector3i> cell;
+  };
+  Scratch<SortBuffers> sort_;
 };
 
 }  // namespace lacrima::tears

@@ -32,6 +32,7 @@
 // Beyond n / 32 strays a rebuild is cheaper, and refresh() asks for one.
 #include "CellIndex.h"
 #include "ParallelChunks.h"
+#include "Scratch.h"
 #include "UninitialisedAllocator.h"
 
 #include <lacrima/tears/NeighbourSearch.h>
@@ -84,17 +85,21 @@ class VerletPairs {
   std::vector<std::uint32_t> start_;            // size n + 1
   UninitialisedVector<std::uint32_t> partner_;  // j > i
   std::vector<Eigen::Vector3d> anchor_;         // positions at the build
-  std::vector<float> fx_, fy_, fz_;             // build scratch: sorted positions in float
   double h_ = 0, skin_ = 0;
   bool valid_ = false;
   std::vector<std::uint8_t> stray_;
   std::vector<Pair> strayPairs_;
-  std::vector<std::uint32_t> strayList_;
-  std::vector<double> medianScratch_;
   int strayCount_ = 0;
-  // Shared builds: each chunk's candidates, their count and place in partner_ (capacity kept).
-  std::vector<UninitialisedVector<std::uint32_t>> chunkPartner_;
-  std::vector<std::size_t> chunkCount_, chunkOffset_;
+  // Working buffers of build() and refresh(), kept for their capacity (Scratch.h).
+  struct Buffers {
+    std::vector<float> fx, fy, fz;      // build: sorted positions in float
+    std::vector<double> median;         // refresh: drifts along one axis
+    std::vector<std::uint32_t> strays;  // refresh: this sub-step's strays
+    // Shared builds: each chunk's candidates, their count and place in partner_.
+    std::vector<UninitialisedVector<std::uint32_t>> chunkPartner;
+    std::vector<std::size_t> chunkCount, chunkOffset;
+  };
+  Scratch<Buffers> buffers_;
 };
 
 // The pairs within h this sub-step, i < j, with their offset and squared distance.
