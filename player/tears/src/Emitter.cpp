@@ -26,23 +26,24 @@ int Emitter::removeOldest(ParticleSet& p, Eye eye, int count) const {
 }
 
 const std::vector<Eigen::Vector3d>& Emitter::latticeWithin(double radius) {
-  if (radius <= latticeRadius_) return lattice_;
-  latticeRadius_ = std::max(radius, 2 * latticeRadius_);
-  const int n = static_cast<int>(std::ceil(latticeRadius_));
-  lattice_.clear();
+  Lattice& lattice = *lattice_;
+  if (radius <= lattice.radius) return lattice.offsets;
+  lattice.radius = std::max(radius, 2 * lattice.radius);
+  const int n = static_cast<int>(std::ceil(lattice.radius));
+  lattice.offsets.clear();
   for (int i = -n; i <= n; ++i)
     for (int j = -n; j <= n; ++j)
       for (int k = -n; k <= n; ++k)
-        if (i * i + j * j + k * k <= latticeRadius_ * latticeRadius_)
-          lattice_.emplace_back(i, j, k);
+        if (i * i + j * j + k * k <= lattice.radius * lattice.radius)
+          lattice.offsets.emplace_back(i, j, k);
   // Nearest first; ties in a fixed lexicographic order, so the sequence is reproducible.
-  std::sort(lattice_.begin(), lattice_.end(),
+  std::sort(lattice.offsets.begin(), lattice.offsets.end(),
             [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
               const double na = a.squaredNorm(), nb = b.squaredNorm();
               if (na != nb) return na < nb;
               return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
             });
-  return lattice_;
+  return lattice.offsets;
 }
 
 std::vector<Emitter::Placement> Emitter::place(const ParticleSet& p, int count,

@@ -9,6 +9,8 @@
 // coincident points (which would store enormous pressure energy). A tiny jitter derived from the
 // particle id (never from time or a global random generator) breaks the lattice's symmetry
 // identically on every run.
+#include "Scratch.h"
+
 #include <lacrima/tears/ParticleSet.h>
 
 #include <array>
@@ -51,8 +53,14 @@ class Emitter {
 
   double spacing_, mass_;
   std::uint64_t nextId_ = 1;
-  std::vector<Eigen::Vector3d> lattice_;  // offsets in units of spacing, nearest first
-  double latticeRadius_ = 0;
+  // Lattice offsets in units of spacing within `radius`, nearest first: a cache that a copy (a
+  // checkpoint) does not take (Scratch.h). Any cached radius gives the same placements: the
+  // order of the points is the same, a larger cache only spares a rescan.
+  struct Lattice {
+    std::vector<Eigen::Vector3d> offsets;
+    double radius = 0;
+  };
+  Scratch<Lattice> lattice_;
 };
 
 }  // namespace lacrima::tears

@@ -2,8 +2,8 @@
 // A member that copies of its owner do not take: working buffers kept between calls only for
 // their capacity. A checkpoint is a copy of the solver's state (TearCheckpoint.cpp); copying
 // the pair list's and the cell index's buffers made a checkpoint at 10,000 particles on two
-// threads twice the size of one on one thread (8.2 against 4.2 MB). A copy starts empty, an
-// assignment keeps the buffers it has, a move moves them.
+// threads twice the size of one on one thread (8.2 against 4.2 MB; 3.3 MB without them). A copy
+// starts empty, an assignment keeps the buffers it has, a move moves them.
 #include <utility>
 
 namespace lacrima::tears {
