@@ -587,6 +587,12 @@ class TearBasicsTest : public QObject {
     trailsB = savedTrails;
     for (int f = 60; f < 120; ++f) stepA(*b, trailsB, f);
     QVERIFY(sameBits(stateOf(*b, trailsB), expected));
+    // A copy of the trails continues as the original would, though it starts without the
+    // original's working buffers (Scratch.h); the restore above kept the simulation's own.
+    b->restore(saved);
+    TrailBuilder copiedTrails = savedTrails;
+    for (int f = 60; f < 120; ++f) stepA(*b, copiedTrails, f);
+    QVERIFY(sameBits(stateOf(*b, copiedTrails), expected));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, a->restore(saved));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, a->restore(TearCheckpoint{}));
   }

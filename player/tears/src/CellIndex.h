@@ -11,7 +11,7 @@
 //
 // Occupied cells are found through an open-addressing hash of their keys (linear probing,
 // 2^k >= 2 x cells slots), so memory is O(n) however far the particles spread.
-#include "Scratch.h"
+#include <lacrima/tears/Scratch.h>
 
 #include <Eigen/Core>
 

@@ -9,7 +9,7 @@
 // coincident points (which would store enormous pressure energy). A tiny jitter derived from the
 // particle id (never from time or a global random generator) breaks the lattice's symmetry
 // identically on every run.
-#include "Scratch.h"
+#include <lacrima/tears/Scratch.h>
 
 #include <lacrima/tears/ParticleSet.h>
 

@@ -30,9 +30,9 @@
 // h + skin / 2 < cell edge of that point, so the 27 cells around it hold every one). The
 // density pass skips listed pairs that involve a stray and adds the stray pairs instead.
 // Beyond n / 32 strays a rebuild is cheaper, and refresh() asks for one.
+#include <lacrima/tears/Scratch.h>
 #include "CellIndex.h"
 #include "ParallelChunks.h"
-#include "Scratch.h"
 #include "UninitialisedAllocator.h"
 
 #include <lacrima/tears/NeighbourSearch.h>

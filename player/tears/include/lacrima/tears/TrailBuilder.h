@@ -31,6 +31,7 @@
 // when its newer section is dry, a section when nothing refers to it. At most maxSections
 // sections are kept (the oldest segments go first), so memory is bounded by the settings.
 #include <lacrima/tears/DropFinder.h>
+#include <lacrima/tears/Scratch.h>
 #include <lacrima/tears/TrailSkin.h>
 
 #include <Eigen/Core>
@@ -136,18 +137,24 @@ class TrailBuilder {
 
   TrailSkin skin_;
   TrailSettings settings_;
-  DropFinder finder_;
   std::vector<TrailSection> sections_;
   std::vector<TrailSegment> segments_;
-  std::vector<Track> tracks_, nextTracks_;
+  std::vector<Track> tracks_;
   std::vector<std::pair<std::uint64_t, int>> owner_;  // particle id -> track, sorted by id
-  // Scratch of an update, per particle of the drop finder's list (k): (id, k) sorted by id,
-  // the drop of k and the track that owned it before.
-  std::vector<std::pair<std::uint64_t, int>> byId_;
-  std::vector<int> dropOf_, previousTrack_;
-  std::vector<std::pair<int, int>> votes_;
-  std::vector<int> seeds_, remap_, predecessorUse_, predecessor_, sources_, heirsSeen_;
-  std::vector<std::uint8_t> referenced_;
+  // Working buffers of an update, kept for their capacity; a copy kept beside a checkpoint does
+  // not take them (Scratch.h).
+  struct Buffers {
+    DropFinder finder;
+    std::vector<Track> nextTracks;
+    // Per particle of the finder's list (k): (id, k) sorted by id, the drop of k and the track
+    // that owned it before.
+    std::vector<std::pair<std::uint64_t, int>> byId;
+    std::vector<int> dropOf, previousTrack;
+    std::vector<std::pair<int, int>> votes;
+    std::vector<int> seeds, remap, predecessorUse, predecessor, sources, heirsSeen;
+    std::vector<std::uint8_t> referenced;
+  };
+  Scratch<Buffers> work_;
   TrailMesh mesh_;
   UniformGrid emptyGrid_;  // passed on when the simulation has no particles (its grid is not built)
   std::array<double, 2> wetArea_{0, 0};
