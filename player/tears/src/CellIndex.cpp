@@ -43,6 +43,7 @@ std::uint64_t CellIndex::keyOf(int cx, int cy, int cz) const {
 }
 
 void CellIndex::build(std::span<const Eigen::Vector3d> x, double edge) {
+  SortBuffers& scratch = *sort_;
   const std::size_t n = x.size();
   edge_ = edge;
   inverse_ = 1.0 / edge;
@@ -61,20 +62,20 @@ void CellIndex::build(std::span<const Eigen::Vector3d> x, double edge) {
     return;
   }
 
-  sort_->cell.resize(n);
+  scratch.cell.resize(n);
   Eigen::Vector3i lo = Eigen::Vector3i::Constant(std::numeric_limits<int>::max());
   Eigen::Vector3i hi = Eigen::Vector3i::Constant(std::numeric_limits<int>::min());
   for (std::size_t i = 0; i < n; ++i) {
     const Eigen::Vector3i c = cellOf(x[i]);
-    sort_->cell[i] = c;
+    scratch.cell[i] = c;
     lo = lo.cwiseMin(c);
     hi = hi.cwiseMax(c);
   }
   low_ = lo;
   dims_ = hi - lo + Eigen::Vector3i::Ones();
-  sort_->key.resize(n);
+  scratch.key.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    sort_->key[i] = keyOf(sort_->cell[i].x(), sort_->cell[i].y(), sort_->cell[i].z());
+    scratch.key[i] = keyOf(scratch.cell[i].x(), scratch.cell[i].y(), scratch.cell[i].z());
     order_[i] = static_cast<int>(i);
   }
   const std::uint64_t maxKey = keyOf(hi.x(), hi.y(), hi.z());
@@ -83,28 +84,28 @@ void CellIndex::build(std::span<const Eigen::Vector3d> x, double edge) {
   const int digitBits = n < 2048 ? 8 : 11;
   const std::size_t radix = std::size_t{1} << digitBits;
   const int keyBits = std::max(1, static_cast<int>(std::bit_width(maxKey)));
-  sort_->keyScratch.resize(n);
-  sort_->orderScratch.resize(n);
+  scratch.keyScratch.resize(n);
+  scratch.orderScratch.resize(n);
   std::vector<std::uint32_t>& count = cellStart_;  // borrowed as the histogram until the end
   for (int shift = 0; shift < keyBits; shift += digitBits) {
     count.assign(radix + 1, 0);
-    for (std::size_t i = 0; i < n; ++i) ++count[((sort_->key[i] >> shift) & (radix - 1)) + 1];
-    if (count[1 + ((sort_->key[0] >> shift) & (radix - 1))] == n)
+    for (std::size_t i = 0; i < n; ++i) ++count[((scratch.key[i] >> shift) & (radix - 1)) + 1];
+    if (count[1 + ((scratch.key[0] >> shift) & (radix - 1))] == n)
       continue;  // one digit value: no-op pass
     for (std::size_t d = 0; d < radix; ++d) count[d + 1] += count[d];
     for (std::size_t i = 0; i < n; ++i) {
-      const std::uint32_t slot = count[(sort_->key[i] >> shift) & (radix - 1)]++;
-      sort_->keyScratch[slot] = sort_->key[i];
-      sort_->orderScratch[slot] = order_[i];
+      const std::uint32_t slot = count[(scratch.key[i] >> shift) & (radix - 1)]++;
+      scratch.keyScratch[slot] = scratch.key[i];
+      scratch.orderScratch[slot] = order_[i];
     }
-    sort_->key.swap(sort_->keyScratch);
-    order_.swap(sort_->orderScratch);
+    scratch.key.swap(scratch.keyScratch);
+    order_.swap(scratch.orderScratch);
   }
 
   cellStart_.clear();
   for (std::size_t s = 0; s < n; ++s) {
-    if (s == 0 || sort_->key[s] != sort_->key[s - 1]) {
-      cellKey_.push_back(sort_->key[s]);
+    if (s == 0 || scratch.key[s] != scratch.key[s - 1]) {
+      cellKey_.push_back(scratch.key[s]);
       cellStart_.push_back(static_cast<std::uint32_t>(s));
     }
     const Eigen::Vector3d& p = x[static_cast<std::size_t>(order_[s])];

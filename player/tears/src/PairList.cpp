@@ -31,9 +31,10 @@ struct LargestTwo {
 std::size_t VerletPairs::scan(const CellIndex& index, std::uint32_t first, std::uint32_t last,
                               float r2max, UninitialisedVector<std::uint32_t>& out,
                               std::size_t written) {
-  const float* fx = buffers_->fx.data();
-  const float* fy = buffers_->fy.data();
-  const float* fz = buffers_->fz.data();
+  Buffers& work = *buffers_;
+  const float* fx = work.fx.data();
+  const float* fy = work.fy.data();
+  const float* fz = work.fz.data();
   constexpr std::array<std::array<int, 2>, 4> kForward{{{0, 1}, {1, -1}, {1, 0}, {1, 1}}};
   std::array<CellIndex::Range, 4> rows;
   // The occupied cell holding `first`: the last one starting at or before it.
@@ -99,6 +100,7 @@ void VerletPairs::build(const CellIndex& index, double h, double skin) {
 // copied into place (each at the total of the chunks before it), which costs a copy of the
 // list that one thread need not pay.
 void VerletPairs::build(const CellIndex& index, double h, double skin, ParallelChunks& parallel) {
+  Buffers& work = *buffers_;
   const std::size_t n = index.particleCount();
   const double radius = h + skin;
   // The test runs in single precision on positions relative to the first particle; the bound
@@ -113,15 +115,15 @@ void VerletPairs::build(const CellIndex& index, double h, double skin, ParallelC
   const double* sx = index.sortedX().data();
   const double* sy = index.sortedY().data();
   const double* sz = index.sortedZ().data();
-  buffers_->fx.resize(n);
-  buffers_->fy.resize(n);
-  buffers_->fz.resize(n);
+  work.fx.resize(n);
+  work.fy.resize(n);
+  work.fz.resize(n);
   anchor_.resize(n);
   parallel.forEachChunk(n, kParticleChunk, [&](int, std::size_t begin, std::size_t end) {
     for (std::size_t s = begin; s < end; ++s) {
-      buffers_->fx[s] = static_cast<float>(sx[s] - sx[0]);
-      buffers_->fy[s] = static_cast<float>(sy[s] - sy[0]);
-      buffers_->fz[s] = static_cast<float>(sz[s] - sz[0]);
+      work.fx[s] = static_cast<float>(sx[s] - sx[0]);
+      work.fy[s] = static_cast<float>(sy[s] - sy[0]);
+      work.fz[s] = static_cast<float>(sz[s] - sz[0]);
       anchor_[s] = {sx[s], sy[s], sz[s]};
     }
   });
@@ -131,24 +133,24 @@ void VerletPairs::build(const CellIndex& index, double h, double skin, ParallelC
   if (!parallel.shared() || chunks < 2) {
     written = scan(index, 0, static_cast<std::uint32_t>(n), r2max, partner_, 0);
   } else {
-    if (buffers_->chunkPartner.size() < chunks) buffers_->chunkPartner.resize(chunks);
-    buffers_->chunkCount.resize(chunks);
+    if (work.chunkPartner.size() < chunks) work.chunkPartner.resize(chunks);
+    work.chunkCount.resize(chunks);
     parallel.forEachChunk(n, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
-      UninitialisedVector<std::uint32_t>& out = buffers_->chunkPartner[static_cast<std::size_t>(c)];
+      UninitialisedVector<std::uint32_t>& out = work.chunkPartner[static_cast<std::size_t>(c)];
       if (out.size() < 64) out.resize(64);
-      buffers_->chunkCount[static_cast<std::size_t>(c)] = scan(
+      work.chunkCount[static_cast<std::size_t>(c)] = scan(
           index, static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end), r2max, out, 0);
     });
-    buffers_->chunkOffset.resize(chunks);
+    work.chunkOffset.resize(chunks);
     for (std::size_t c = 0; c < chunks; ++c) {
-      buffers_->chunkOffset[c] = written;
-      written += buffers_->chunkCount[c];
+      work.chunkOffset[c] = written;
+      written += work.chunkCount[c];
     }
     if (partner_.size() < written) partner_.resize(written);
     parallel.forEachChunk(n, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
       const auto cs = static_cast<std::size_t>(c);
-      const auto offset = static_cast<std::uint32_t>(buffers_->chunkOffset[cs]);
-      std::copy_n(buffers_->chunkPartner[cs].begin(), buffers_->chunkCount[cs],
+      const auto offset = static_cast<std::uint32_t>(work.chunkOffset[cs]);
+      std::copy_n(work.chunkPartner[cs].begin(), work.chunkCount[cs],
                   partner_.begin() + static_cast<std::ptrdiff_t>(offset));
       for (std::size_t s = begin; s < end; ++s) start_[s + 1] += offset;
     });
@@ -181,6 +183,7 @@ void VerletPairs::clearStrays() {
 }
 
 bool VerletPairs::refresh(const CellIndex& index, std::span<const Eigen::Vector3d> x) {
+  Buffers& work = *buffers_;
   clearStrays();
   if (!valid_ || x.size() != anchor_.size() || index.particleCount() != x.size()) return false;
   // The two largest displacements: no pair can have closed by more than their sum. Measured
@@ -214,27 +217,26 @@ bool VerletPairs::refresh(const CellIndex& index, std::span<const Eigen::Vector3
   const std::size_t stride = (n + 1023) / 1024;
   Eigen::Vector3d median;
   for (int axis = 0; axis < 3; ++axis) {
-    buffers_->median.clear();
+    work.median.clear();
     for (std::size_t i = 0; i < n; i += stride)
-      buffers_->median.push_back(x[i][axis] - anchor_[i][axis]);
-    const auto middle =
-        buffers_->median.begin() + static_cast<std::ptrdiff_t>(buffers_->median.size() / 2);
-    std::nth_element(buffers_->median.begin(), middle, buffers_->median.end());
+      work.median.push_back(x[i][axis] - anchor_[i][axis]);
+    const auto middle = work.median.begin() + static_cast<std::ptrdiff_t>(work.median.size() / 2);
+    std::nth_element(work.median.begin(), middle, work.median.end());
     median[axis] = *middle;
   }
   const std::size_t limit = n / 32;
   const double half2 = 0.25 * skin_ * skin_;
-  buffers_->strays.clear();
+  work.strays.clear();
   for (std::size_t i = 0; i < n; ++i)
     if (!((x[i] - anchor_[i] - median).squaredNorm() < half2)) {
-      buffers_->strays.push_back(static_cast<std::uint32_t>(i));
-      if (buffers_->strays.size() > limit) return false;
+      work.strays.push_back(static_cast<std::uint32_t>(i));
+      if (work.strays.size() > limit) return false;
     }
   stray_.assign(n, 0);
-  for (std::uint32_t f : buffers_->strays) stray_[f] = 1;
-  strayCount_ = static_cast<int>(buffers_->strays.size());
+  for (std::uint32_t f : work.strays) stray_[f] = 1;
+  strayCount_ = static_cast<int>(work.strays.size());
   const double reach = h_ + skin_, reach2 = reach * reach;
-  for (std::uint32_t f : buffers_->strays) {
+  for (std::uint32_t f : work.strays) {
     // Partner j now within h: its anchor x_j - median - e_j lies within h + skin / 2 of
     // x_f - median, inside the 27 cells around that point.
     const Eigen::Vector3i c = index.cellOf(x[f] - median);
@@ -246,10 +248,10 @@ bool VerletPairs::refresh(const CellIndex& index, std::span<const Eigen::Vector3
             strayPairs_.push_back({std::min(f, j), std::max(f, j)});
       }
   }
-  for (std::size_t a = 0; a < buffers_->strays.size(); ++a)
-    for (std::size_t b = a + 1; b < buffers_->strays.size(); ++b)
-      if ((x[buffers_->strays[a]] - x[buffers_->strays[b]]).squaredNorm() < reach2)
-        strayPairs_.push_back({buffers_->strays[a], buffers_->strays[b]});
+  for (std::size_t a = 0; a < work.strays.size(); ++a)
+    for (std::size_t b = a + 1; b < work.strays.size(); ++b)
+      if ((x[work.strays[a]] - x[work.strays[b]]).squaredNorm() < reach2)
+        strayPairs_.push_back({work.strays[a], work.strays[b]});
   std::sort(strayPairs_.begin(), strayPairs_.end());
   return true;
 }

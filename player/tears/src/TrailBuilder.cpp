@@ -69,97 +69,99 @@ const TrailMesh& TrailBuilder::update(const ParticleSet& particles, const Unifor
 // Matches this update's drops to last update's tracks by particle id and continues them.
 void TrailBuilder::advance(const ParticleSet& particles, const UniformGrid& grid, double h,
                            double particleRadius) {
-  work_->finder.find(particles, grid);
+  Buffers& w = *work_;
+  w.finder.find(particles, grid);
   findPreviousTracks(particles);
-  work_->nextTracks.clear();
-  work_->predecessorUse.assign(tracks_.size(), 0);
-  work_->predecessor.clear();
-  work_->sources.clear();
-  for (const FoundDrop& drop : work_->finder.drops()) {
-    work_->votes.clear();  // (track, particles) — a drop rarely has more than two predecessors
+  w.nextTracks.clear();
+  w.predecessorUse.assign(tracks_.size(), 0);
+  w.predecessor.clear();
+  w.sources.clear();
+  for (const FoundDrop& drop : w.finder.drops()) {
+    w.votes.clear();  // (track, particles) — a drop rarely has more than two predecessors
     for (int k = drop.first; k < drop.first + drop.count; ++k) {
-      const int previous = work_->previousTrack[static_cast<std::size_t>(k)];
+      const int previous = w.previousTrack[static_cast<std::size_t>(k)];
       if (previous < 0) continue;
-      auto vote = std::find_if(work_->votes.begin(), work_->votes.end(),
+      auto vote = std::find_if(w.votes.begin(), w.votes.end(),
                                [&](const auto& v) { return v.first == previous; });
-      if (vote == work_->votes.end())
-        work_->votes.emplace_back(previous, 1);
+      if (vote == w.votes.end())
+        w.votes.emplace_back(previous, 1);
       else
         ++vote->second;
     }
     int predecessor = -1, best = 0;
-    for (const auto& [track, count] : work_->votes)
+    for (const auto& [track, count] : w.votes)
       if (count > best || (count == best && track < predecessor)) {
         predecessor = track;
         best = count;
       }
-    work_->predecessor.push_back(predecessor);
-    work_->sources.push_back(static_cast<int>(work_->votes.size()));
-    if (predecessor >= 0) ++work_->predecessorUse[static_cast<std::size_t>(predecessor)];
+    w.predecessor.push_back(predecessor);
+    w.sources.push_back(static_cast<int>(w.votes.size()));
+    if (predecessor >= 0) ++w.predecessorUse[static_cast<std::size_t>(predecessor)];
   }
-  work_->heirsSeen.assign(tracks_.size(), 0);
-  for (std::size_t d = 0; d < work_->finder.drops().size(); ++d) {
-    const FoundDrop& drop = work_->finder.drops()[d];
-    const int predecessor = work_->predecessor[d];
+  w.heirsSeen.assign(tracks_.size(), 0);
+  for (std::size_t d = 0; d < w.finder.drops().size(); ++d) {
+    const FoundDrop& drop = w.finder.drops()[d];
+    const int predecessor = w.predecessor[d];
     Track track;
     bool reshaped = false;
     if (predecessor >= 0) {
       const auto p = static_cast<std::size_t>(predecessor);
       track = tracks_[p];
-      if (work_->heirsSeen[p]++ > 0) ++branches_;  // every heir after the first is a branch
-      reshaped = work_->predecessorUse[p] > 1 || work_->sources[d] > 1;  // split, or merged
+      if (w.heirsSeen[p]++ > 0) ++branches_;  // every heir after the first is a branch
+      reshaped = w.predecessorUse[p] > 1 || w.sources[d] > 1;  // split, or merged
     }
     continueTrack(track, particles, drop, h, particleRadius, reshaped);
-    work_->nextTracks.push_back(track);  // track d continues drop d
+    w.nextTracks.push_back(track);  // track d continues drop d
   }
   // The owners for the next update: every particle's id with its drop's track, by id.
-  owner_.resize(work_->byId.size());
-  for (std::size_t r = 0; r < work_->byId.size(); ++r)
-    owner_[r] = {work_->byId[r].first,
-                 work_->dropOf[static_cast<std::size_t>(work_->byId[r].second)]};
-  tracks_.swap(work_->nextTracks);
+  owner_.resize(w.byId.size());
+  for (std::size_t r = 0; r < w.byId.size(); ++r)
+    owner_[r] = {w.byId[r].first, w.dropOf[static_cast<std::size_t>(w.byId[r].second)]};
+  tracks_.swap(w.nextTracks);
 }
 
-// work_->previousTrack[k]: the track that owned the k-th particle of the finder's list in the last
+// previousTrack[k]: the track that owned the k-th particle of the finder's list in the last
 // update, or -1 (a new particle). The list is sorted by id and merged with the owners, also
 // sorted by id: one sort and a linear walk instead of a binary search per particle.
 void TrailBuilder::findPreviousTracks(const ParticleSet& particles) {
-  const auto listed = work_->finder.particleIndices();
-  work_->byId.resize(listed.size());
-  work_->dropOf.resize(listed.size());
+  Buffers& w = *work_;
+  const auto listed = w.finder.particleIndices();
+  w.byId.resize(listed.size());
+  w.dropOf.resize(listed.size());
   for (std::size_t k = 0; k < listed.size(); ++k)
-    work_->byId[k] = {particles.id[static_cast<std::size_t>(listed[k])], static_cast<int>(k)};
-  const auto drops = work_->finder.drops();
+    w.byId[k] = {particles.id[static_cast<std::size_t>(listed[k])], static_cast<int>(k)};
+  const auto drops = w.finder.drops();
   for (std::size_t d = 0; d < drops.size(); ++d)
-    std::fill_n(work_->dropOf.begin() + drops[d].first, drops[d].count, static_cast<int>(d));
-  std::sort(work_->byId.begin(), work_->byId.end());
-  work_->previousTrack.assign(listed.size(), -1);
+    std::fill_n(w.dropOf.begin() + drops[d].first, drops[d].count, static_cast<int>(d));
+  std::sort(w.byId.begin(), w.byId.end());
+  w.previousTrack.assign(listed.size(), -1);
   std::size_t o = 0;
-  for (const auto& [id, k] : work_->byId) {
+  for (const auto& [id, k] : w.byId) {
     while (o < owner_.size() && owner_[o].first < id) ++o;
     if (o < owner_.size() && owner_[o].first == id)
-      work_->previousTrack[static_cast<std::size_t>(k)] = owner_[o].second;
+      w.previousTrack[static_cast<std::size_t>(k)] = owner_[o].second;
   }
 }
 
 void TrailBuilder::continueTrack(Track& track, const ParticleSet& particles, const FoundDrop& drop,
                                  double h, double particleRadius, bool reshaped) {
-  work_->seeds.clear();
-  for (int i : work_->finder.particlesOf(drop)) {
+  Buffers& w = *work_;
+  w.seeds.clear();
+  for (int i : w.finder.particlesOf(drop)) {
     const int t = particles.contact[static_cast<std::size_t>(i)].triangle;
     // Contacts past the skin's triangles are on other collision surfaces (the eyes): not skin.
-    if (t >= 0 && t < skin_.triangleCount() && work_->seeds.size() < kMaxSeeds &&
-        std::find(work_->seeds.begin(), work_->seeds.end(), t) == work_->seeds.end())
-      work_->seeds.push_back(t);
+    if (t >= 0 && t < skin_.triangleCount() && w.seeds.size() < kMaxSeeds &&
+        std::find(w.seeds.begin(), w.seeds.end(), t) == w.seeds.end())
+      w.seeds.push_back(t);
   }
-  if (work_->seeds.empty()) {
+  if (w.seeds.empty()) {
     // In the air (a drop that fell off the chin): it wets nothing, and its track ends, so where
     // it lands a new trail starts instead of a strip bridging the gap.
     track = Track{};
     return;
   }
-  if (track.centre.triangle >= 0) work_->seeds.push_back(track.centre.triangle);
-  const SkinAnchor centre = skin_.closest(drop.centre, work_->seeds);
+  if (track.centre.triangle >= 0) w.seeds.push_back(track.centre.triangle);
+  const SkinAnchor centre = skin_.closest(drop.centre, w.seeds);
   if (centre.triangle < 0) return;
   const Eigen::Vector3d c = skin_.point(centre);
   const Eigen::Vector3d n = skin_.normal(centre.triangle);
@@ -187,7 +189,7 @@ void TrailBuilder::continueTrack(Track& track, const ParticleSet& particles, con
   const Eigen::Vector3d a = n.cross(t);
   double left = -std::numeric_limits<double>::infinity(),
          right = std::numeric_limits<double>::infinity(), top = 0;
-  for (int i : work_->finder.particlesOf(drop)) {
+  for (int i : w.finder.particlesOf(drop)) {
     const Eigen::Vector3d d = particles.position[static_cast<std::size_t>(i)] - c;
     const double across = d.dot(a);
     left = std::max(left, across);
@@ -199,13 +201,11 @@ void TrailBuilder::continueTrack(Track& track, const ParticleSet& particles, con
   const double footprint = sphericalCap(drop.count * parcelVolume(particleRadius),
                                         settings_.contactAngleDegrees * kRadian)
                                .contactRadius;
-  work_->seeds.push_back(centre.triangle);
+  w.seeds.push_back(centre.triangle);
   TrailSection section;
   section.eye = drop.eye;
-  section.point[0] =
-      skin_.closest(c + std::max(left + particleRadius, footprint) * a, work_->seeds);
-  section.point[2] =
-      skin_.closest(c + std::min(right - particleRadius, -footprint) * a, work_->seeds);
+  section.point[0] = skin_.closest(c + std::max(left + particleRadius, footprint) * a, w.seeds);
+  section.point[2] = skin_.closest(c + std::min(right - particleRadius, -footprint) * a, w.seeds);
   section.point[1] = centre;
   section.point[1].height = std::min(h, settings_.middleHeightFraction * (top + particleRadius));
   if (section.point[0].triangle < 0) section.point[0] = centre;
@@ -231,6 +231,7 @@ void TrailBuilder::continueTrack(Track& track, const ParticleSet& particles, con
 // sections' ages fall along the list) and, past the cap, the oldest wet ones; then compacts
 // the sections still referred to.
 void TrailBuilder::dryAndCap() {
+  Buffers& w = *work_;
   const double dry = settings_.drySeconds;
   std::size_t removed = 0;
   while (removed < segments_.size() &&
@@ -243,16 +244,14 @@ void TrailBuilder::dryAndCap() {
   const auto maxSections = static_cast<std::size_t>(settings_.maxSections);
   std::size_t live = 0;
   while (true) {
-    work_->referenced.assign(sections_.size(), 0);
+    w.referenced.assign(sections_.size(), 0);
     for (std::size_t s = removed; s < segments_.size(); ++s) {
-      work_->referenced[static_cast<std::size_t>(segments_[s].from)] = 1;
-      work_->referenced[static_cast<std::size_t>(segments_[s].to)] = 1;
+      w.referenced[static_cast<std::size_t>(segments_[s].from)] = 1;
+      w.referenced[static_cast<std::size_t>(segments_[s].to)] = 1;
     }
     for (const Track& track : tracks_)
-      if (track.lastSection >= 0)
-        work_->referenced[static_cast<std::size_t>(track.lastSection)] = 1;
-    live =
-        static_cast<std::size_t>(std::count(work_->referenced.begin(), work_->referenced.end(), 1));
+      if (track.lastSection >= 0) w.referenced[static_cast<std::size_t>(track.lastSection)] = 1;
+    live = static_cast<std::size_t>(std::count(w.referenced.begin(), w.referenced.end(), 1));
     if (live <= maxSections) break;
     if (removed < segments_.size()) {
       // Dropping the oldest segment of a chain frees its older section: about one per segment.
@@ -263,21 +262,21 @@ void TrailBuilder::dryAndCap() {
   }
   segments_.erase(segments_.begin(), segments_.begin() + static_cast<std::ptrdiff_t>(removed));
 
-  work_->remap.assign(sections_.size(), -1);
+  w.remap.assign(sections_.size(), -1);
   std::size_t kept = 0;
   for (std::size_t s = 0; s < sections_.size(); ++s) {
-    if (!work_->referenced[s]) continue;
-    work_->remap[s] = static_cast<int>(kept);
+    if (!w.referenced[s]) continue;
+    w.remap[s] = static_cast<int>(kept);
     sections_[kept++] = sections_[s];
   }
   sections_.resize(kept);
   for (TrailSegment& segment : segments_) {
-    segment.from = work_->remap[static_cast<std::size_t>(segment.from)];
-    segment.to = work_->remap[static_cast<std::size_t>(segment.to)];
+    segment.from = w.remap[static_cast<std::size_t>(segment.from)];
+    segment.to = w.remap[static_cast<std::size_t>(segment.to)];
   }
   for (Track& track : tracks_)
     if (track.lastSection >= 0)
-      track.lastSection = work_->remap[static_cast<std::size_t>(track.lastSection)];
+      track.lastSection = w.remap[static_cast<std::size_t>(track.lastSection)];
 }
 
 void TrailBuilder::rebuildMesh() {
