@@ -147,7 +147,8 @@ QWidget* HeadWorkspace::createToolBar() {
   redo->setObjectName(QStringLiteral("head.redo"));
   redo->setShortcuts(
       {QKeySequence(QStringLiteral("Ctrl+Shift+Z")), QKeySequence(QStringLiteral("Ctrl+Y"))});
-  for (const auto& [a, label] : {std::pair{undo, tr("Undo")}, std::pair{redo, tr("Redo")}}) {
+  for (const auto& [action, label] : {std::pair{undo, tr("Undo")}, std::pair{redo, tr("Redo")}}) {
+    QAction* a = action;  // a variable, not a binding, so that clang 14 can capture it
     addAction(a);
     // A short fixed label; the action's own text ("Undo Propose points") goes to the tooltip,
     // so a long command name never widens the bar (and the window with it).

@@ -86,11 +86,11 @@ class FluidForcePass {
   // floats are one SSE register, so a scattered vector update is one load, one add and one store.
   std::vector<float> velocity_, scalars_;
   std::vector<float> acc_, weighted4_, gradient4_;
-  // Per-pair kernel factors, from r alone (one flat, vectorised loop over the pairs), and
-  // (v_i - v_j).(x_i - x_j), reduced to the closing speed after the pair loop.
+  // Per-pair kernel factors, from r alone (a flat, vectorised loop over a chunk's pairs before
+  // its pair loop), and (v_i - v_j).(x_i - x_j), reduced to the chunk's closing speed after it.
   std::vector<float> radial_, lapVisc_, gradColour_, lapColour_, approach_;
   std::vector<Spill> spills_;                    // per particle chunk, capacity kept
-  std::vector<float> closing_;                   // per pair chunk: largest closing speed^2
+  std::vector<float> closing_;                   // per particle chunk: largest closing speed^2
   std::vector<unsigned char> anyPressureChunk_;  // per particle chunk
   float h_ = 0, h2_ = 0, spiky_ = 0, atZero_ = 0, visc_ = 0, poly6_ = 0;
 };

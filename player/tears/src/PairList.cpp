@@ -111,7 +111,11 @@ void VerletPairs::build(const CellIndex& index, double h, double skin, ParallelC
   clearStrays();
   start_.resize(n + 1);
   start_[0] = 0;
-  if (partner_.size() < 64) partner_.resize(64);
+  // The list was cut to its count at the end of the last build; its whole capacity is usable
+  // again (growing an UninitialisedVector within capacity costs nothing). Measured against the
+  // count instead, a list a few pairs longer than the last one reallocated at almost every
+  // rebuild, each time onto freshly mapped pages.
+  partner_.resize(std::max<std::size_t>(partner_.capacity(), 64));
   const double* sx = index.sortedX().data();
   const double* sy = index.sortedY().data();
   const double* sz = index.sortedZ().data();

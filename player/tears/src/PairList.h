@@ -102,14 +102,16 @@ class VerletPairs {
   Scratch<Buffers> buffers_;
 };
 
-// The pairs within h this sub-step, i < j, with their offset and squared distance.
-// The float arrays are the pair geometry DensitySolver already computed (relative to one origin,
-// single precision), kept so the force pass streams them instead of gathering positions again.
+// The pairs within h this sub-step, i < j, with their squared distance, and the positions
+// DensitySolver measured them with (single precision, relative to one origin). A pass recomputes
+// a pair's offset as position i - position j, the same float operation, so it gets the density
+// pass's bits; the offsets are not stored (16 bytes a pair, written every sub-step and read
+// back, where the positions are 16 bytes a particle that stay in cache).
 struct ActivePairs {
   std::vector<std::uint32_t> start;  // size n + 1
   std::vector<std::uint32_t> partner;
-  std::vector<float> offset;  // 4 per pair: x_i - x_j, then 0 (one SSE register)
-  std::vector<float> r2;      // |x_i - x_j|^2
+  std::vector<float> r2;        // |x_i - x_j|^2
+  std::vector<float> position;  // 4 per particle: x, y, z, 0 (one SSE register)
 
   int particleCount() const { return static_cast<int>(start.empty() ? 0 : start.size() - 1); }
   std::size_t pairCount() const { return partner.size(); }

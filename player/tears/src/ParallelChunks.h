@@ -1,8 +1,8 @@
 #pragma once
 // How the tear simulation shares a loop between threads and stays bit-identical whatever the
 // thread count (docs/decisions/0005, 0015):
-//   * the work is cut into FIXED chunks (kParticleChunk particles, kPairChunk pairs) whose
-//     bounds depend on the item count only, never on the number of threads;
+//   * the work is cut into FIXED chunks (kParticleChunk particles; a chunk's pairs are those of
+//     its particles) whose bounds depend on the item count only, never on the number of threads;
 //   * each chunk writes only its own outputs (the particles or pairs of its range) or a partial
 //     result of its own (partials[c]);
 //   * partial results are combined by the caller in chunk order, on one thread.
@@ -18,7 +18,6 @@
 namespace lacrima::tears {
 
 inline constexpr std::size_t kParticleChunk = 1024;
-inline constexpr std::size_t kPairChunk = 4096;
 // Measured with lacrima-bench tears --threads 1 and 2 on the cheek sheet of an idle 2-core
 // machine (docs/performance.md, Threads): at 1,000 and 2,000 particles two threads were slower
 // (the wake-ups cost more than the second thread saves), at 3,000 even, from 4,000 faster.

@@ -20,15 +20,19 @@ void PressureSolver_DFSPH::prepare(const ParticleSet& p, const ActivePairs& pair
   const float h = static_cast<float>(w_.radius());
   const float coefficient = static_cast<float>(w_.gradientCoefficient());
   const float atZero = static_cast<float>(w_.gradientMagnitudeAtZero());
-  // Gradients: one flat loop over the pairs (their offsets and r^2 from DensitySolver).
-  const float* offset = pairs.offset.data();
+  // Gradients, per pair (offsets from DensitySolver's positions, r^2 as it measured it).
+  const float* x = pairs.position.data();
   const float* r2s = pairs.r2.data();
   float* g = gradient_.data();
-  for (std::size_t k = 0; k < pairCount; ++k) {
-    const float r = std::sqrt(r2s[k]);
-    const float hr = h - r;
-    const float divisor = r2s[k] > 1e-18f ? r : 1.0f;
-    store4(g + 4 * k, (coefficient * hr * hr / divisor) * load4(offset + 4 * k));
+  for (std::size_t i = 0; i < un; ++i) {
+    const Float4 xi = load4(x + 4 * i);
+    for (std::uint32_t k = pairs.start[i]; k < pairs.start[i + 1]; ++k) {
+      const float r = std::sqrt(r2s[k]);
+      const float hr = h - r;
+      const float divisor = r2s[k] > 1e-18f ? r : 1.0f;
+      const Float4 d = xi - load4(x + 4 * std::size_t{pairs.partner[k]});
+      store4(g + 4 * std::size_t{k}, (coefficient * hr * hr / divisor) * d);
+    }
   }
   // Coincident pairs (rare): a fixed direction from the ids, pointing from j to i.
   for (int i = 0; i < n; ++i)

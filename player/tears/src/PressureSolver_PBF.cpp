@@ -44,18 +44,18 @@ void PressureSolver_PBF::constraints(const ActivePairs& pairs, std::span<const s
   const bool scorr = settings_.artificialPressure;
   const float* m = m_.data();
   const float* d = d_.data();
-  const float* offset = pairs.offset.data();
+  const float* x = pairs.position.data();
   for (std::size_t i = 0; i < un; ++i) rho_[i] = m[i] * w0;
   std::fill(sum_.begin(), sum_.end(), 0.0f);
   std::fill(diagonal_.begin(), diagonal_.end(), 0.0f);
   for (std::size_t i = 0; i < un; ++i) {
-    const Float4 di = load4(d + 4 * i);
+    const Float4 xi = load4(x + 4 * i), di = load4(d + 4 * i);
     const float mi = m[i];
     Float4 sumI{0, 0, 0, 0};
     float rhoI = 0, diagonalI = 0;
     for (std::uint32_t k = pairs.start[i]; k < pairs.start[i + 1]; ++k) {
       const std::size_t j = pairs.partner[k];
-      const Float4 r = load4(offset + 4 * static_cast<std::size_t>(k)) + di - load4(d + 4 * j);
+      const Float4 r = (xi - load4(x + 4 * j)) + di - load4(d + 4 * j);
       const float r2 = dot3(r, r);
       float* gk = &g_[4 * static_cast<std::size_t>(k)];
       if (r2 >= h2) {  // moved apart beyond the kernel during the solve
