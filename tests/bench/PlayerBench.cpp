@@ -131,6 +131,8 @@ int runPlayer(int argc, char** argv) {
       json.field("height", o.height);
       json.field("frames", frames);
       json.field("peak_particles", peakParticles);
+      json.field("checkpoints", playback.checkpointCount());
+      json.field("checkpoint_bytes", static_cast<long long>(playback.checkpointBytes()));
       json.field("rig_ms", rigMs);
       json.field("fps", fps);
       json.field("ms_per_frame_mean", wallMs / frames);
@@ -156,6 +158,9 @@ int runPlayer(int argc, char** argv) {
       std::printf("  %-12s %10.2f %7.1f%%\n", "other", other / frames, 100.0 * other / wallMs);
       std::printf("  %-12s %10.2f   (median %.2f, max %.2f)\n", "whole frame", wallMs / frames,
                   median, worst);
+      constexpr double kMiB = 1 << 20;
+      std::printf("checkpoints: %d, %.1f MiB (budget %.0f MiB)\n", playback.checkpointCount(),
+                  playback.checkpointBytes() / kMiB, playback::Playback::kCheckpointBudget / kMiB);
       std::printf("frames per second: %.1f  (target >= %.0f: %s)\n", fps, kTargetFps,
                   pass ? "met" : "NOT MET");
     }

@@ -16,6 +16,7 @@
 
 #include <array>
 #include <fstream>
+#include <limits>
 #include <map>
 
 using namespace lacrima;
@@ -89,6 +90,54 @@ class PlaybackTest : public QObject {
     scrubbed.seek(seconds(60));
     QVERIFY2(sameParticles(*scrubbed.view().particles, reference[60]),
              "a reset left something of the old tears");
+  }
+
+  // Checkpoints never hold more than their budget: over it, every other one goes and the
+  // interval doubles. Seeking back still gives a straight play's particles, bit for bit.
+  void checkpointsStayWithinTheirBudget() {
+    const FapAnimation animation = cryingAnimation(70, 40);
+    SceneSettings scene;
+    scene.particles = true;
+    Playback straight(*rig_, 1000);
+    straight.setAnimation(animation, scene);
+    std::map<int, tears::ParticleSet> reference;
+    for (int f = 0; f <= 60; ++f) {
+      straight.seek(seconds(f));
+      if (f == 13 || f == 50 || f == 60) reference[f] = *straight.view().particles;
+    }
+
+    Playback unbounded(*rig_, 2, std::numeric_limits<std::size_t>::max());
+    unbounded.setAnimation(animation, scene);
+    unbounded.seek(seconds(60));
+    QCOMPARE(unbounded.checkpointCount(), 31);  // before frames 0, 2, ..., 60
+    QCOMPARE(unbounded.checkpointInterval(), 2);
+    const std::size_t each = unbounded.checkpointBytes() / 31;
+    QVERIFY(each > 0);
+
+    const std::size_t budget = 7 * each;
+    Playback bounded(*rig_, 2, budget);
+    bounded.setAnimation(animation, scene);
+    for (int f = 0; f <= 60; ++f) {
+      bounded.seek(seconds(f));
+      QVERIFY2(bounded.checkpointBytes() <= budget, "the checkpoints outgrew their budget");
+    }
+    QVERIFY(bounded.checkpointCount() >= 3);
+    QVERIFY(bounded.checkpointInterval() > 2);
+    QCOMPARE(bounded.checkpointInterval() % 2, 0);
+    QCOMPARE(bounded.framesSimulated(), 61LL);
+    for (int f : {13, 50, 60}) {
+      bounded.seek(seconds(f));
+      QVERIFY2(sameParticles(*bounded.view().particles, reference[f]),
+               "a thinned checkpoint list changed the tears");
+    }
+    // A scene change that restarts the tears starts the checkpoints over at the first interval
+    // (at frame 0, so that the replay to where we were takes none but frame 0's).
+    bounded.seek(0);
+    SceneSettings other = scene;
+    other.quality.level = TearQuality::Preview;
+    bounded.setScene(other);
+    QCOMPARE(bounded.checkpointInterval(), 2);
+    QCOMPARE(bounded.checkpointCount(), 1);
   }
 
   // The eyes are part of the tears' collision surface: tears welling up at the upper lid, over

@@ -10,6 +10,8 @@
 
 #include <QtTest>
 
+#include <malloc.h>
+
 #include <cmath>
 #include <numbers>
 
@@ -255,6 +257,25 @@ class TearTrailsTest : public QObject {
     QVERIFY(trails.segments().size() >= 10);
     QVERIFY(trails.wetArea(Eye::Right) > 0);
     checkOnSheet(trails.mesh());
+  }
+
+  // A copy (the player keeps one with every checkpoint) shares the skin's tables instead of
+  // copying them: half a megabyte on the default head, most of a checkpoint of the demo.
+  void copiesShareTheSkinTables() {
+    Scene scene;
+    TrailBuilder trails(scene.sheet.triangles);
+    for (int f = 0; f < 10; ++f) scene.step(trails, {{0.3, 0.8 - 0.005 * f, 30, 1}});
+    const std::size_t tables = scene.sheet.triangles.size() * (sizeof(Eigen::Vector3i) + 3 * 4);
+    QVERIFY(trails.bytes() < tables);
+    const double before = static_cast<double>(mallinfo2().uordblks);
+    std::vector<TrailBuilder> kept(4, trails);
+    const double each = (static_cast<double>(mallinfo2().uordblks) - before) / 4;
+    if (!(each > 0)) QSKIP("mallinfo2 does not see this build's allocator (a sanitizer's)");
+    QVERIFY2(each < 0.25 * static_cast<double>(tables),
+             qPrintable(QStringLiteral("a copy took %1 bytes; the tables are %2")
+                            .arg(each, 0, 'f', 0)
+                            .arg(tables)));
+    QVERIFY(each <= 1.5 * static_cast<double>(trails.bytes()));
   }
 
   // The simulation's own tears: trails appear on the sheet behind them.

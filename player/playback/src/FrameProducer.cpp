@@ -51,6 +51,11 @@ class FrameProducer::Checkpoint {
   explicit Checkpoint(tears::TrailBuilder t) : trails(std::move(t)) {}
 };
 
+std::size_t FrameProducer::bytes(const Checkpoint& checkpoint) {
+  return sizeof(Checkpoint) - sizeof(tears::TrailBuilder) + checkpoint.trails.bytes() +
+         (checkpoint.simulation ? checkpoint.simulation->bytes() : 0);
+}
+
 struct FrameProducer::State {
   const HeadRig& rig;
   SceneSettings scene;

@@ -12,6 +12,8 @@ namespace lacrima::playback {
 
 struct Playback::State {
   const HeadRig& rig;
+  const int firstInterval;
+  const std::size_t budget;
   int interval;
   FrameProducer producer;
   FapAnimation animation;
@@ -21,13 +23,48 @@ struct Playback::State {
   TearSources sources;
   // Producer state just BEFORE producing frame k, by k. Going to frame f restores the largest
   // k <= f and produces k..f, so a restore is always followed by a fresh frame.
-  std::map<int, std::shared_ptr<const FrameProducer::Checkpoint>> checkpoints;
-  int nextFrame = 0;  // the next frame to produce
+  struct Stored {
+    std::shared_ptr<const FrameProducer::Checkpoint> checkpoint;
+    std::size_t bytes = 0;
+  };
+  std::map<int, Stored> checkpoints;
+  std::size_t held = 0;  // bytes in `checkpoints`
+  int nextFrame = 0;     // the next frame to produce
   double time = 0;
   long long simulated = 0;
 
-  State(const HeadRig& r, int checkpointInterval)
-      : rig(r), interval(std::max(1, checkpointInterval)), producer(r) {}
+  State(const HeadRig& r, int checkpointInterval, std::size_t checkpointBudget)
+      : rig(r),
+        firstInterval(std::max(1, checkpointInterval)),
+        budget(checkpointBudget),
+        interval(firstInterval),
+        producer(r) {}
+
+  void clearCheckpoints() {
+    checkpoints.clear();
+    held = 0;
+    interval = firstInterval;
+  }
+
+  void keep(int frame) {
+    Stored stored{producer.checkpoint(), 0};
+    stored.bytes = FrameProducer::bytes(*stored.checkpoint);
+    held += stored.bytes;
+    checkpoints[frame] = std::move(stored);
+    // Over budget: keep every other one (the multiples of twice the interval; frame 0's is
+    // one), so they stay evenly spaced and later ones are taken at the new spacing.
+    while (held > budget && checkpoints.size() > 1) {
+      interval *= 2;
+      for (auto it = checkpoints.begin(); it != checkpoints.end();) {
+        if (it->first % interval != 0) {
+          held -= it->second.bytes;
+          it = checkpoints.erase(it);
+        } else {
+          ++it;
+        }
+      }
+    }
+  }
 
   double progressAt(double seconds) const {
     const double d = animation.duration();
@@ -48,14 +85,13 @@ struct Playback::State {
         nextFrame = 0;
       } else {
         --it;
-        producer.restore(*it->second);
+        producer.restore(*it->second.checkpoint);
         nextFrame = it->first;
       }
     }
     const double dt = 1.0 / animation.fps;
     for (; nextFrame <= frame; ++nextFrame) {
-      if (nextFrame % interval == 0 && !checkpoints.contains(nextFrame))
-        checkpoints[nextFrame] = producer.checkpoint();
+      if (nextFrame % interval == 0 && !checkpoints.contains(nextFrame)) keep(nextFrame);
       producer.produce(animation.frames[static_cast<std::size_t>(nextFrame)], dt,
                        progressAt(nextFrame / animation.fps));
       ++simulated;
@@ -63,8 +99,8 @@ struct Playback::State {
   }
 };
 
-Playback::Playback(const HeadRig& rig, int checkpointInterval)
-    : state_(std::make_unique<State>(rig, checkpointInterval)) {}
+Playback::Playback(const HeadRig& rig, int checkpointInterval, std::size_t checkpointBudget)
+    : state_(std::make_unique<State>(rig, checkpointInterval, checkpointBudget)) {}
 
 Playback::~Playback() = default;
 
@@ -94,7 +130,7 @@ void Playback::setAnimation(FapAnimation animation, const SceneSettings& scene,
   s.sources = sources;
   s.path.clear();
   s.warnings.clear();
-  s.checkpoints.clear();
+  s.clearCheckpoints();
   s.producer.setTearSources(sources);
   s.producer.reset();
   s.nextFrame = 0;
@@ -120,7 +156,7 @@ void Playback::setScene(const SceneSettings& scene) {
   if (restart && !s.animation.frames.empty()) {
     // New parameters make every stored state wrong: replay from the start to where we were,
     // so the picture is what a straight play with these parameters shows.
-    s.checkpoints.clear();
+    s.clearCheckpoints();
     s.nextFrame = 0;
     seek(s.time);
   }
@@ -150,6 +186,8 @@ void Playback::reset() {
 
 const FrameProducer& Playback::producer() const { return state_->producer; }
 int Playback::checkpointCount() const { return static_cast<int>(state_->checkpoints.size()); }
+std::size_t Playback::checkpointBytes() const { return state_->held; }
+int Playback::checkpointInterval() const { return state_->interval; }
 long long Playback::framesSimulated() const { return state_->simulated; }
 
 }  // namespace lacrima::playback

@@ -17,6 +17,18 @@ constexpr std::size_t kMaxSeeds = 32;  // contact triangles of a drop used to st
 constexpr double kRadian = std::numbers::pi / 180;
 }  // namespace
 
+std::size_t TrailMesh::bytes() const {
+  return sizeof(*this) + (position_.size() + normal_.size()) * sizeof(Eigen::Vector3d) +
+         alpha_.size() * sizeof(double) + triangle_.size() * sizeof(Eigen::Vector3i);
+}
+
+// The working buffers are left out: a copy does not take them (Scratch.h).
+std::size_t TrailBuilder::bytes() const {
+  return sizeof(*this) - sizeof(skin_) - sizeof(mesh_) + skin_.bytes() + mesh_.bytes() +
+         sections_.size() * sizeof(TrailSection) + segments_.size() * sizeof(TrailSegment) +
+         tracks_.size() * sizeof(Track) + owner_.size() * sizeof(owner_.front());
+}
+
 TrailBuilder::TrailBuilder(std::vector<Eigen::Vector3i> skinTriangles,
                            const TrailSettings& settings)
     : skin_(std::move(skinTriangles)), settings_(settings) {

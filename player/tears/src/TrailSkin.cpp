@@ -4,29 +4,38 @@
 
 #include <algorithm>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
 namespace lacrima::tears {
 
-TrailSkin::TrailSkin(std::vector<Eigen::Vector3i> triangles) : triangles_(std::move(triangles)) {
-  for (const auto& t : triangles_) {
-    if (t.minCoeff() < 0) throw std::invalid_argument("trail skin: negative vertex index");
-    maxVertex_ = std::max(maxVertex_, t.maxCoeff());
+TrailSkin::TrailSkin(std::vector<Eigen::Vector3i> triangles) {
+  auto tables = std::make_shared<Tables>();
+  Tables& t = *tables;
+  t.triangles = std::move(triangles);
+  for (const auto& triangle : t.triangles) {
+    if (triangle.minCoeff() < 0) throw std::invalid_argument("trail skin: negative vertex index");
+    t.maxVertex = std::max(t.maxVertex, triangle.maxCoeff());
   }
-  vertexStart_.assign(static_cast<std::size_t>(maxVertex_ + 2), 0);
-  for (const auto& t : triangles_)
-    for (int k = 0; k < 3; ++k) ++vertexStart_[static_cast<std::size_t>(t[k] + 1)];
-  for (std::size_t v = 1; v < vertexStart_.size(); ++v) vertexStart_[v] += vertexStart_[v - 1];
-  vertexTriangles_.resize(static_cast<std::size_t>(vertexStart_.back()));
-  std::vector<int> fill(vertexStart_.begin(), vertexStart_.end() - 1);
-  for (std::size_t i = 0; i < triangles_.size(); ++i)
+  t.vertexStart.assign(static_cast<std::size_t>(t.maxVertex + 2), 0);
+  for (const auto& triangle : t.triangles)
+    for (int k = 0; k < 3; ++k) ++t.vertexStart[static_cast<std::size_t>(triangle[k] + 1)];
+  for (std::size_t v = 1; v < t.vertexStart.size(); ++v) t.vertexStart[v] += t.vertexStart[v - 1];
+  t.vertexTriangles.resize(static_cast<std::size_t>(t.vertexStart.back()));
+  std::vector<int> fill(t.vertexStart.begin(), t.vertexStart.end() - 1);
+  for (std::size_t i = 0; i < t.triangles.size(); ++i)
     for (int k = 0; k < 3; ++k)
-      vertexTriangles_[static_cast<std::size_t>(
-          fill[static_cast<std::size_t>(triangles_[i][k])]++)] = static_cast<int>(i);
+      t.vertexTriangles[static_cast<std::size_t>(
+          fill[static_cast<std::size_t>(t.triangles[i][k])]++)] = static_cast<int>(i);
+  tables_ = std::move(tables);
+}
+
+std::size_t TrailSkin::bytes() const {
+  return sizeof(*this);  // the tables are shared
 }
 
 Eigen::Vector3d TrailSkin::normal(int triangle) const {
-  const Eigen::Vector3i& t = triangles_[static_cast<std::size_t>(triangle)];
+  const Eigen::Vector3i& t = tables_->triangles[static_cast<std::size_t>(triangle)];
   const Eigen::Vector3d a = vertex(t[0]);
   const Eigen::Vector3d n = (vertex(t[1]) - a).cross(vertex(t[2]) - a);
   const double norm = n.norm();
@@ -36,7 +45,7 @@ Eigen::Vector3d TrailSkin::normal(int triangle) const {
 }
 
 Eigen::Vector3d TrailSkin::point(const SkinAnchor& anchor) const {
-  const Eigen::Vector3i& t = triangles_[static_cast<std::size_t>(anchor.triangle)];
+  const Eigen::Vector3i& t = tables_->triangles[static_cast<std::size_t>(anchor.triangle)];
   const Eigen::Vector3d& w = anchor.barycentric;
   return w[0] * vertex(t[0]) + w[1] * vertex(t[1]) + w[2] * vertex(t[2]) +
          anchor.height * normal(anchor.triangle);
@@ -47,7 +56,7 @@ SkinAnchor TrailSkin::closest(const Eigen::Vector3d& x, std::span<const int> see
   double bestDistance = std::numeric_limits<double>::infinity();
   auto consider = [&](int triangle) {
     if (normal(triangle).isZero()) return false;  // degenerate: no normal to raise points along
-    const Eigen::Vector3i& t = triangles_[static_cast<std::size_t>(triangle)];
+    const Eigen::Vector3i& t = tables_->triangles[static_cast<std::size_t>(triangle)];
     const TrianglePoint p = closestPointOnTriangle(x, vertex(t[0]), vertex(t[1]), vertex(t[2]));
     const double d = (p.point - x).squaredNorm();
     if (d >= bestDistance) return false;
@@ -62,11 +71,11 @@ SkinAnchor TrailSkin::closest(const Eigen::Vector3d& x, std::span<const int> see
   // pathological mesh cannot loop for long).
   for (int step = 0; step < 64 && best.triangle >= 0; ++step) {
     const int current = best.triangle;
-    const Eigen::Vector3i& t = triangles_[static_cast<std::size_t>(current)];
+    const Eigen::Vector3i& t = tables_->triangles[static_cast<std::size_t>(current)];
     for (int k = 0; k < 3; ++k)
-      for (int i = vertexStart_[static_cast<std::size_t>(t[k])];
-           i < vertexStart_[static_cast<std::size_t>(t[k]) + 1]; ++i)
-        consider(vertexTriangles_[static_cast<std::size_t>(i)]);
+      for (int i = tables_->vertexStart[static_cast<std::size_t>(t[k])];
+           i < tables_->vertexStart[static_cast<std::size_t>(t[k]) + 1]; ++i)
+        consider(tables_->vertexTriangles[static_cast<std::size_t>(i)]);
     if (best.triangle == current) break;
   }
   return best;

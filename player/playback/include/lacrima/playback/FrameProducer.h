@@ -75,6 +75,8 @@ class FrameProducer {
   class Checkpoint;
   std::shared_ptr<const Checkpoint> checkpoint() const;
   void restore(const Checkpoint& checkpoint);
+  // Memory a checkpoint holds: the simulation's state, the trails, the face's values.
+  static std::size_t bytes(const Checkpoint& checkpoint);
 
   const ProducerTimes& lastTimes() const;
   const ProducerCounters& counters() const;

@@ -4,6 +4,11 @@
 // restores the nearest earlier checkpoint (one every `checkpointInterval` frames) and replays
 // forward from it; going forward steps on from the current frame.
 //
+// The checkpoints' memory is bounded: when they hold more than `checkpointBudget` bytes (a
+// checkpoint is about 3.5 MB at 10,000 tear particles, so a 10-minute animation at one a second
+// would hold 2 GB), every other one is dropped and the interval doubles. Seeking back then
+// replays more frames, never more memory; frame 0's checkpoint always stays.
+//
 // The tears advance once per animation frame (dt = 1 / fps). Between frames, the face is
 // interpolated (FapAnimation::sample) so a viewport rendering faster than the file stays smooth.
 #include <lacrima/common/Diagnostics.h>
@@ -11,6 +16,7 @@
 #include <lacrima/common/ProjectDocument.h>
 #include <lacrima/playback/FrameProducer.h>
 
+#include <cstddef>
 #include <memory>
 #include <string>
 
@@ -18,7 +24,10 @@ namespace lacrima::playback {
 
 class Playback {
  public:
-  explicit Playback(const HeadRig& rig, int checkpointInterval = 50);
+  static constexpr std::size_t kCheckpointBudget = std::size_t{512} << 20;
+
+  explicit Playback(const HeadRig& rig, int checkpointInterval = 50,
+                    std::size_t checkpointBudget = kCheckpointBudget);
   ~Playback();
 
   // A .fap file or a project (.json, .lacrima). Throws FileError (file, line, what was expected);
@@ -53,7 +62,9 @@ class Playback {
 
   const FrameProducer& producer() const;
   int checkpointCount() const;
-  long long framesSimulated() const;  // produce() calls so far (replays after seeks included)
+  std::size_t checkpointBytes() const;  // what they hold now
+  int checkpointInterval() const;       // frames between them now (doubled at each thinning)
+  long long framesSimulated() const;    // produce() calls so far (replays after seeks included)
 
  private:
   struct State;

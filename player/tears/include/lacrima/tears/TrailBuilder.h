@@ -82,6 +82,7 @@ class TrailMesh {
   Eigen::Map<const Eigen::Matrix3Xi> triangles() const {
     return {triangle_.empty() ? nullptr : triangle_.front().data(), 3, triangleCount()};
   }
+  std::size_t bytes() const;  // held by a copy (the buffers' sizes, not their capacities)
 
  private:
   friend class TrailBuilder;
@@ -119,6 +120,8 @@ class TrailBuilder {
   long long branches() const { return branches_; }  // splits seen so far
   int trackedDrops() const { return static_cast<int>(tracks_.size()); }
   double lastMilliseconds() const { return milliseconds_; }
+  // Memory a copy holds (what a checkpoint kept beside the simulation costs).
+  std::size_t bytes() const;
 
  private:
   struct Track {

@@ -8,6 +8,7 @@
 // triangles however large the head is.
 #include <Eigen/Core>
 
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -29,9 +30,10 @@ class TrailSkin {
   void bind(const Eigen::Matrix3Xf& positions) { positions_ = &positions; }
   void unbind() { positions_ = nullptr; }
   bool bound() const { return positions_ != nullptr; }
-  int triangleCount() const { return static_cast<int>(triangles_.size()); }
+  int triangleCount() const { return static_cast<int>(tables_->triangles.size()); }
   // The largest vertex index the triangles use (positions must have more columns).
-  int maxVertex() const { return maxVertex_; }
+  int maxVertex() const { return tables_->maxVertex; }
+  std::size_t bytes() const;  // held by a copy (not the tables, which copies share)
 
   Eigen::Vector3d vertex(int v) const { return positions_->col(v).cast<double>(); }
   // Unit outward normal, or zero for a degenerate triangle.
@@ -42,9 +44,14 @@ class TrailSkin {
   SkinAnchor closest(const Eigen::Vector3d& x, std::span<const int> seeds) const;
 
  private:
-  std::vector<Eigen::Vector3i> triangles_;
-  std::vector<int> vertexStart_, vertexTriangles_;  // CSR: triangles around each vertex
-  int maxVertex_ = -1;
+  // Never change after construction, so copies (a trail builder kept with every player
+  // checkpoint) share them: half a megabyte on the default head.
+  struct Tables {
+    std::vector<Eigen::Vector3i> triangles;
+    std::vector<int> vertexStart, vertexTriangles;  // CSR: triangles around each vertex
+    int maxVertex = -1;
+  };
+  std::shared_ptr<const Tables> tables_;
   const Eigen::Matrix3Xf* positions_ = nullptr;
 };
 
