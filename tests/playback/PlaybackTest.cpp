@@ -40,6 +40,20 @@ class PlaybackTest : public QObject {
   std::unique_ptr<HeadRig> rig_;
   QTemporaryDir dir_;
 
+  // The particles of a plain play (no checkpoint but frame 0's) at `frames`, in increasing order.
+  std::map<int, tears::ParticleSet> straightPlay(const FapAnimation& animation,
+                                                 const SceneSettings& scene,
+                                                 std::initializer_list<int> frames) {
+    Playback straight(*rig_, 1000);
+    straight.setAnimation(animation, scene);
+    std::map<int, tears::ParticleSet> particles;
+    for (int f : frames) {
+      straight.seek(seconds(f));
+      particles[f] = *straight.view().particles;
+    }
+    return particles;
+  }
+
  private slots:
   void initTestCase() {
     LOAD_DEFAULT_HEAD_RIG(rig_);
@@ -52,13 +66,7 @@ class PlaybackTest : public QObject {
     const FapAnimation animation = cryingAnimation(70, 40);
     SceneSettings scene;
     scene.particles = true;
-    Playback straight(*rig_, 1000);  // no checkpoint but frame 0's: a plain play
-    straight.setAnimation(animation, scene);
-    std::map<int, tears::ParticleSet> reference;
-    for (int f = 0; f <= 60; ++f) {
-      straight.seek(seconds(f));
-      if (f == 25 || f == 47 || f == 60) reference[f] = *straight.view().particles;
-    }
+    auto reference = straightPlay(animation, scene, {25, 47, 60});
     QCOMPARE(reference[60].size(), 80);
 
     Playback scrubbed(*rig_, 10);
@@ -98,13 +106,7 @@ class PlaybackTest : public QObject {
     const FapAnimation animation = cryingAnimation(70, 40);
     SceneSettings scene;
     scene.particles = true;
-    Playback straight(*rig_, 1000);
-    straight.setAnimation(animation, scene);
-    std::map<int, tears::ParticleSet> reference;
-    for (int f = 0; f <= 60; ++f) {
-      straight.seek(seconds(f));
-      if (f == 13 || f == 50 || f == 60) reference[f] = *straight.view().particles;
-    }
+    auto reference = straightPlay(animation, scene, {13, 50, 60});
 
     Playback unbounded(*rig_, 2, std::numeric_limits<std::size_t>::max());
     unbounded.setAnimation(animation, scene);
