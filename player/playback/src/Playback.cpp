@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
@@ -53,7 +54,8 @@ struct Playback::State {
     checkpoints[frame] = std::move(stored);
     // Over budget: keep every other one (the multiples of twice the interval; frame 0's is
     // one), so they stay evenly spaced and later ones are taken at the new spacing.
-    while (held > budget && checkpoints.size() > 1) {
+    while (held > budget && checkpoints.size() > 1 &&
+           interval <= std::numeric_limits<int>::max() / 2) {
       interval *= 2;
       for (auto it = checkpoints.begin(); it != checkpoints.end();) {
         if (it->first % interval != 0) {
