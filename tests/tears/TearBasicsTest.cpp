@@ -168,6 +168,9 @@ class TearBasicsTest : public QObject {
         if (active.r2[k] != dx * dx + dy * dy + dz * dz || xi[3] != 0.0f || xj[3] != 0.0f)
           faulty = true;
       }
+    std::size_t kept = 0;
+    for (const auto& partners : sets) kept += partners.size();
+    faulty = faulty || 2 * active.pairCount() != kept;  // each pair is in two sets
     Poly6Kernel w(h);
     double worstDensity = 0;
     for (std::size_t i = 0; i < p.position.size(); ++i) {

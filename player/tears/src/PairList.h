@@ -114,7 +114,8 @@ struct ActivePairs {
   std::vector<float> position;  // 4 per particle: x, y, z, 0 (one SSE register)
 
   int particleCount() const { return static_cast<int>(start.empty() ? 0 : start.size() - 1); }
-  std::size_t pairCount() const { return partner.size(); }
+  // The pairs kept (the arrays are longer: they keep room for every candidate).
+  std::size_t pairCount() const { return start.empty() ? 0 : start.back(); }
 };
 
 }  // namespace lacrima::tears
