@@ -229,7 +229,7 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs,
   });
   const bool anyPressure =
       std::find(anyPressureChunk_.begin(), anyPressureChunk_.end(), 1) != anyPressureChunk_.end();
-  const std::size_t pairCount = n > 0 ? pairs.start[un] : 0;
+  const std::size_t pairCount = pairs.pairCount();
   for (auto* v : {&approach_, &radial_, &lapVisc_, &gradColour_, &lapColour_})
     if (v->size() < pairCount) v->resize(pairs.partner.size());
 

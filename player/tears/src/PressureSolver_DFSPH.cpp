@@ -13,7 +13,7 @@ PressureSolver_DFSPH::PressureSolver_DFSPH(double h, const DivergenceFreeSetting
 void PressureSolver_DFSPH::prepare(const ParticleSet& p, const ActivePairs& pairs) {
   const int n = p.size();
   const auto un = static_cast<std::size_t>(n);
-  const std::size_t pairCount = n > 0 ? pairs.start[un] : 0;
+  const std::size_t pairCount = pairs.pairCount();
   if (gradient_.size() < 4 * pairCount) gradient_.resize(4 * pairs.partner.size());
   m_.resize(un);
   for (std::size_t i = 0; i < un; ++i) m_[i] = static_cast<float>(p.mass[i]);

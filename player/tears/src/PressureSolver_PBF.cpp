@@ -133,7 +133,7 @@ void PressureSolver_PBF::solve(ParticleSet& p, const ActivePairs& pairs, double 
   const auto un = static_cast<std::size_t>(n);
   stats_ = {};
   if (n == 0 || !(dt > 0)) return;
-  const std::size_t pairCount = pairs.start[un];
+  const std::size_t pairCount = pairs.pairCount();
   if (g_.size() < 4 * pairCount) g_.resize(4 * pairs.partner.size());
   if (settings_.artificialPressure && scorr_.size() < pairCount) scorr_.resize(pairCount);
   m_.resize(un);

@@ -22,9 +22,10 @@ std::size_t TrailMesh::bytes() const {
          alpha_.size() * sizeof(double) + triangle_.size() * sizeof(Eigen::Vector3i);
 }
 
-// The working buffers are left out: a copy does not take them (Scratch.h).
+// The working buffers are left out: a copy does not take them (Scratch.h); nor are the skin's
+// tables, which copies share (TrailSkin.h).
 std::size_t TrailBuilder::bytes() const {
-  return sizeof(*this) - sizeof(skin_) - sizeof(mesh_) + skin_.bytes() + mesh_.bytes() +
+  return sizeof(*this) - sizeof(mesh_) + mesh_.bytes() +
          sections_.size() * sizeof(TrailSection) + segments_.size() * sizeof(TrailSegment) +
          tracks_.size() * sizeof(Track) + owner_.size() * sizeof(owner_.front());
 }

@@ -30,10 +30,6 @@ TrailSkin::TrailSkin(std::vector<Eigen::Vector3i> triangles) {
   tables_ = std::move(tables);
 }
 
-std::size_t TrailSkin::bytes() const {
-  return sizeof(*this);  // the tables are shared
-}
-
 Eigen::Vector3d TrailSkin::normal(int triangle) const {
   const Eigen::Vector3i& t = tables_->triangles[static_cast<std::size_t>(triangle)];
   const Eigen::Vector3d a = vertex(t[0]);

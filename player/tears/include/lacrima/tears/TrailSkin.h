@@ -33,7 +33,6 @@ class TrailSkin {
   int triangleCount() const { return static_cast<int>(tables_->triangles.size()); }
   // The largest vertex index the triangles use (positions must have more columns).
   int maxVertex() const { return tables_->maxVertex; }
-  std::size_t bytes() const;  // held by a copy (not the tables, which copies share)
 
   Eigen::Vector3d vertex(int v) const { return positions_->col(v).cast<double>(); }
   // Unit outward normal, or zero for a degenerate triangle.
