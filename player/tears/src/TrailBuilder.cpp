@@ -25,9 +25,9 @@ std::size_t TrailMesh::bytes() const {
 // The working buffers are left out: a copy does not take them (Scratch.h); nor are the skin's
 // tables, which copies share (TrailSkin.h).
 std::size_t TrailBuilder::bytes() const {
-  return sizeof(*this) - sizeof(mesh_) + mesh_.bytes() +
-         sections_.size() * sizeof(TrailSection) + segments_.size() * sizeof(TrailSegment) +
-         tracks_.size() * sizeof(Track) + owner_.size() * sizeof(owner_.front());
+  return sizeof(*this) - sizeof(mesh_) + mesh_.bytes() + sections_.size() * sizeof(TrailSection) +
+         segments_.size() * sizeof(TrailSegment) + tracks_.size() * sizeof(Track) +
+         owner_.size() * sizeof(owner_.front());
 }
 
 TrailBuilder::TrailBuilder(std::vector<Eigen::Vector3i> skinTriangles,
