@@ -141,6 +141,8 @@ class TearBasicsTest : public QObject {
   // kept once with i < j and what the pass computed matches double precision over all pairs:
   // every kept pair's offset (from the stored positions) and r^2, and every density (the particle
   // itself included), so the SIMD candidate loop is held to the plain sums with and without strays.
+  // Shared on three threads, the pass must give the same bits, and each particle's reach must be
+  // its largest candidate partner (the density windows are sized by it).
   static std::vector<std::set<int>> keptPairs(const ParticleSet& p, const VerletPairs& verlet,
                                               double h, bool& faulty) {
     ParticleSet copy = p;
@@ -148,10 +150,28 @@ class TearBasicsTest : public QObject {
     DensitySolver(h).compute(copy, verlet, active);
     std::vector<std::set<int>> sets(p.position.size());
     faulty = false;
+    {
+      ParticleSet sharedCopy = p;
+      ActivePairs shared;
+      ParallelChunks three(3);
+      three.setParticleCount(p.size());
+      DensitySolver(h).compute(sharedCopy, verlet, shared, &three);
+      faulty = faulty || sharedCopy.density != copy.density || shared.first != active.first ||
+               shared.last != active.last || shared.pairCount() != active.pairCount();
+      for (int i = 0; i < verlet.particleCount(); ++i) {
+        std::uint32_t largest = static_cast<std::uint32_t>(i);
+        for (std::uint32_t k = verlet.begin(i); k < verlet.end(i); ++k)
+          largest = std::max(largest, verlet.partners()[k]);
+        faulty = faulty || verlet.reach(i) != largest;
+        const auto si = static_cast<std::size_t>(i);
+        for (std::uint32_t k = active.begin(si); k < active.end(si); ++k)
+          faulty = faulty || shared.partner[k] != active.partner[k] || shared.r2[k] != active.r2[k];
+      }
+    }
     double worstOffset = 0;
     for (int i = 0; i < active.particleCount(); ++i)
-      for (std::uint32_t k = active.start[static_cast<std::size_t>(i)];
-           k < active.start[static_cast<std::size_t>(i) + 1]; ++k) {
+      for (std::uint32_t k = active.begin(static_cast<std::size_t>(i));
+           k < active.end(static_cast<std::size_t>(i)); ++k) {
         const int j = static_cast<int>(active.partner[k]);
         faulty = faulty || j <= i || !sets[static_cast<std::size_t>(i)].insert(j).second;
         sets[static_cast<std::size_t>(j)].insert(i);

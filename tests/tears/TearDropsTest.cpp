@@ -25,14 +25,15 @@ double microlitres(double volume, const ScaledParameters& p) {
 // Every pair closer than h, each once (i < j), as the density pass lists them.
 ActivePairs pairsWithin(const ParticleSet& p, double h) {
   ActivePairs pairs;
-  pairs.start.push_back(0);
   for (int i = 0; i < p.size(); ++i) {
+    pairs.first.push_back(static_cast<std::uint32_t>(pairs.partner.size()));
     for (int j = i + 1; j < p.size(); ++j)
       if ((p.position[static_cast<std::size_t>(i)] - p.position[static_cast<std::size_t>(j)])
               .squaredNorm() < h * h)
         pairs.partner.push_back(static_cast<std::uint32_t>(j));
-    pairs.start.push_back(static_cast<std::uint32_t>(pairs.partner.size()));
+    pairs.last.push_back(static_cast<std::uint32_t>(pairs.partner.size()));
   }
+  pairs.kept = pairs.partner.size();
   return pairs;
 }
 

@@ -35,8 +35,8 @@ bool DropDetachment_Tate1864::update(const ParticleSet& p, const ActivePairs& pa
   for (int i = 0; i < pairs.particleCount(); ++i) {
     if (role_[static_cast<std::size_t>(i)] == kHeld) continue;
     int a = root(i);  // stays the root of i's set: a link only ever lowers it
-    for (std::uint32_t k = pairs.start[static_cast<std::size_t>(i)];
-         k < pairs.start[static_cast<std::size_t>(i) + 1]; ++k) {
+    for (std::uint32_t k = pairs.begin(static_cast<std::size_t>(i));
+         k < pairs.end(static_cast<std::size_t>(i)); ++k) {
       const auto j = static_cast<std::size_t>(pairs.partner[k]);
       // Most partners hang right under i's root already (its last links): skip the walk. A
       // held particle is never linked (its parent is itself, above i), so this test comes first.

@@ -82,7 +82,7 @@ void FluidForcePass::accumulate(const ActivePairs& pairs, std::uint32_t begin, s
   const float* lapColour = lapColour_.data();
   // At most every pair of the chunk spills: sized once for that (capacity is kept), so the
   // loop writes through plain pointers.
-  const std::size_t most = pairs.start[end] - pairs.start[begin];
+  const std::size_t most = pairs.end(end - 1) - pairs.begin(begin);
   if (spill.partner.size() < most) {
     spill.partner.resize(most);
     spill.share.resize(12 * most);
@@ -103,8 +103,8 @@ void FluidForcePass::accumulate(const ActivePairs& pairs, std::uint32_t begin, s
     Float4 ai{0, 0, 0, 0}, gi{0, 0, 0, 0}, wvi{0, 0, 0, 0};
     float wi = 0, li = 0;
     // The bound is read once: the float stores below could alias it as far as GCC knows.
-    const std::uint32_t last = pairs.start[si + 1];
-    for (std::uint32_t k = pairs.start[si]; k < last; ++k) {
+    const std::uint32_t last = pairs.end(si);
+    for (std::uint32_t k = pairs.begin(si); k < last; ++k) {
       const std::uint32_t j = partner[k];
       const std::size_t j4 = 4 * static_cast<std::size_t>(j);
       const Float4 d = xi - load4(x + j4);
@@ -229,9 +229,8 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs,
   });
   const bool anyPressure =
       std::find(anyPressureChunk_.begin(), anyPressureChunk_.end(), 1) != anyPressureChunk_.end();
-  const std::size_t pairCount = pairs.pairCount();
   for (auto* v : {&approach_, &radial_, &lapVisc_, &gradColour_, &lapColour_})
-    if (v->size() < pairCount) v->resize(pairs.partner.size());
+    if (v->size() < pairs.indexLimit()) v->resize(pairs.indexLimit());
 
   // One job per particle chunk does its pairs from start to end: their kernel factors, the pair
   // loop, their largest closing speed. The per-pair arrays are then written and read back by
@@ -240,7 +239,7 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs,
   if (spills_.size() < particleChunks) spills_.resize(particleChunks);
   closing_.assign(particleChunks, 0.0f);
   parallel.forEachChunk(un, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
-    const std::size_t first = pairs.start[begin], count = pairs.start[end] - first;
+    const std::size_t first = pairs.begin(begin), count = pairs.end(end - 1) - first;
     pairFactors(pairs.r2.data() + first, count, h_, h2_, spiky_, visc_, poly6_,
                 radial_.data() + first, lapVisc_.data() + first, gradColour_.data() + first,
                 lapColour_.data() + first);

@@ -27,7 +27,8 @@ struct LargestTwo {
 }  // namespace
 
 // The candidates of the sorted particles [first, last) (cells in key order), appended to `out`
-// from `written` on; start_[s + 1] gets each particle's end, relative to `out`.
+// from `written` on; start_[s + 1] gets each particle's end, relative to `out`, and reach_[s]
+// its largest partner.
 std::size_t VerletPairs::scan(const CellIndex& index, std::uint32_t first, std::uint32_t last,
                               float r2max, UninitialisedVector<std::uint32_t>& out,
                               std::size_t written) {
@@ -80,9 +81,12 @@ std::size_t VerletPairs::scan(const CellIndex& index, std::uint32_t first, std::
           written += static_cast<std::size_t>(dx * dx + dy * dy + dz * dz < r2max);
         }
       };
+      const std::size_t before = written;
       scanRow(s + 1, ownEnd);
       for (int r = 0; r < rowCount; ++r)
         scanRow(rows[static_cast<std::size_t>(r)].begin, rows[static_cast<std::size_t>(r)].end);
+      // The rows follow key order, so the candidates ascend and the last is the largest.
+      reach_[s] = written > before ? out[written - 1] : s;
       start_[s + 1] = static_cast<std::uint32_t>(written);
     }
   }
@@ -111,6 +115,7 @@ void VerletPairs::build(const CellIndex& index, double h, double skin, ParallelC
   clearStrays();
   start_.resize(n + 1);
   start_[0] = 0;
+  reach_.resize(n);
   // The list was cut to its count at the end of the last build; its whole capacity is usable
   // again (growing an UninitialisedVector within capacity costs nothing). Measured against the
   // count instead, a list a few pairs longer than the last one reallocated at almost every
@@ -167,10 +172,16 @@ void VerletPairs::fromFull(const NeighbourList& full, std::span<const Eigen::Vec
   const int n = full.particleCount();
   start_.resize(static_cast<std::size_t>(n) + 1);
   start_[0] = 0;
+  reach_.resize(static_cast<std::size_t>(n));
   partner_.clear();
   for (int i = 0; i < n; ++i) {
+    auto& reach = reach_[static_cast<std::size_t>(i)];
+    reach = static_cast<std::uint32_t>(i);
     for (int j : full.of(i))
-      if (j > i) partner_.push_back(static_cast<std::uint32_t>(j));
+      if (j > i) {
+        partner_.push_back(static_cast<std::uint32_t>(j));
+        reach = std::max(reach, static_cast<std::uint32_t>(j));
+      }
     start_[static_cast<std::size_t>(i) + 1] = static_cast<std::uint32_t>(partner_.size());
   }
   anchor_.assign(x.begin(), x.end());

@@ -13,7 +13,8 @@
 // Built from a CellIndex over particles already in cell order (sorted position == particle
 // index): the candidates of particle s are s+1 .. the end of its own z-row, plus the four
 // "forward" rows (dx, dy) = (0, 1), (1, -1), (1, 0), (1, 1); their mirror images are the other
-// particle's forward rows, so each pair is met exactly once.
+// particle's forward rows, so each pair is met exactly once. Cell keys are x-major, so those rows
+// come in sorted order and each particle's candidates ascend.
 //
 // Drift. A displacement v common to every particle changes no distance, so d_i above may be
 // measured as x_i - x_i0 - v for any one v: the test uses the middle of the displacements'
@@ -64,6 +65,9 @@ class VerletPairs {
   std::uint32_t begin(int i) const { return start_[static_cast<std::size_t>(i)]; }
   std::uint32_t end(int i) const { return start_[static_cast<std::size_t>(i) + 1]; }
   const std::uint32_t* partners() const { return partner_.data(); }
+  // The largest candidate partner of particle i (i itself when it has none): how far the
+  // density pass's scatter from i reaches.
+  std::uint32_t reach(int i) const { return reach_[static_cast<std::size_t>(i)]; }
 
   // This sub-step's strays (refresh()): empty flags when there are none, else one per particle
   // (1 = its listed pairs are void), and the pairs of every stray within h + skin of it now, as
@@ -84,6 +88,7 @@ class VerletPairs {
 
   std::vector<std::uint32_t> start_;            // size n + 1
   UninitialisedVector<std::uint32_t> partner_;  // j > i
+  std::vector<std::uint32_t> reach_;            // size n
   std::vector<Eigen::Vector3d> anchor_;         // positions at the build
   double h_ = 0, skin_ = 0;
   bool valid_ = false;
@@ -107,15 +112,24 @@ class VerletPairs {
 // a pair's offset as position i - position j, the same float operation, so it gets the density
 // pass's bits; the offsets are not stored (16 bytes a pair, written every sub-step and read
 // back, where the positions are 16 bytes a particle that stay in cache).
+//
+// Particle i's pairs are k in [begin(i), end(i)). The pairs of one chunk of particles
+// (kParticleChunk, ParallelChunks.h) lie together, from where the chunk's candidates start:
+// chunks filled by different threads need not know how many pairs the others keep, and the
+// room their unkept candidates leave stays unused (size per-pair arrays by indexLimit()).
 struct ActivePairs {
-  std::vector<std::uint32_t> start;  // size n + 1
-  std::vector<std::uint32_t> partner;
-  std::vector<float> r2;        // |x_i - x_j|^2
-  std::vector<float> position;  // 4 per particle: x, y, z, 0 (one SSE register)
+  std::vector<std::uint32_t> first, last;  // size n: [first[i], last[i]) are i's pairs
+  std::vector<std::uint32_t> partner;      // indexLimit() long
+  std::vector<float> r2;                   // |x_i - x_j|^2
+  std::vector<float> position;             // 4 per particle: x, y, z, 0 (one SSE register)
+  std::size_t kept = 0;                    // pairs in all
 
-  int particleCount() const { return static_cast<int>(start.empty() ? 0 : start.size() - 1); }
-  // The pairs kept (the arrays are longer: they keep room for every candidate).
-  std::size_t pairCount() const { return start.empty() ? 0 : start.back(); }
+  int particleCount() const { return static_cast<int>(first.size()); }
+  std::uint32_t begin(std::size_t i) const { return first[i]; }
+  std::uint32_t end(std::size_t i) const { return last[i]; }
+  std::size_t pairCount() const { return kept; }
+  // One past the largest pair index in use or reserved: the length of a per-pair array.
+  std::size_t indexLimit() const { return partner.size(); }
 };
 
 }  // namespace lacrima::tears

@@ -13,8 +13,7 @@ PressureSolver_DFSPH::PressureSolver_DFSPH(double h, const DivergenceFreeSetting
 void PressureSolver_DFSPH::prepare(const ParticleSet& p, const ActivePairs& pairs) {
   const int n = p.size();
   const auto un = static_cast<std::size_t>(n);
-  const std::size_t pairCount = pairs.pairCount();
-  if (gradient_.size() < 4 * pairCount) gradient_.resize(4 * pairs.partner.size());
+  if (gradient_.size() < 4 * pairs.indexLimit()) gradient_.resize(4 * pairs.indexLimit());
   m_.resize(un);
   for (std::size_t i = 0; i < un; ++i) m_[i] = static_cast<float>(p.mass[i]);
   const float h = static_cast<float>(w_.radius());
@@ -26,7 +25,7 @@ void PressureSolver_DFSPH::prepare(const ParticleSet& p, const ActivePairs& pair
   float* g = gradient_.data();
   for (std::size_t i = 0; i < un; ++i) {
     const Float4 xi = load4(x + 4 * i);
-    for (std::uint32_t k = pairs.start[i]; k < pairs.start[i + 1]; ++k) {
+    for (std::uint32_t k = pairs.begin(i); k < pairs.end(i); ++k) {
       const float r = std::sqrt(r2s[k]);
       const float hr = h - r;
       const float divisor = r2s[k] > 1e-18f ? r : 1.0f;
@@ -36,8 +35,8 @@ void PressureSolver_DFSPH::prepare(const ParticleSet& p, const ActivePairs& pair
   }
   // Coincident pairs (rare): a fixed direction from the ids, pointing from j to i.
   for (int i = 0; i < n; ++i)
-    for (std::uint32_t k = pairs.start[static_cast<std::size_t>(i)];
-         k < pairs.start[static_cast<std::size_t>(i) + 1]; ++k)
+    for (std::uint32_t k = pairs.begin(static_cast<std::size_t>(i));
+         k < pairs.end(static_cast<std::size_t>(i)); ++k)
       if (r2s[k] <= 1e-18f) [[unlikely]] {
         const Eigen::Vector3d e =
             pairDirection(p.id[static_cast<std::size_t>(i)], p.id[pairs.partner[k]]);
@@ -54,7 +53,7 @@ void PressureSolver_DFSPH::prepare(const ParticleSet& p, const ActivePairs& pair
     const float mi = m[si];
     Float4 si4{0, 0, 0, 0};
     float qi = 0;
-    for (std::uint32_t k = pairs.start[si]; k < pairs.start[si + 1]; ++k) {
+    for (std::uint32_t k = pairs.begin(si); k < pairs.end(si); ++k) {
       const std::size_t j = pairs.partner[k];
       const Float4 gk = load4(g + 4 * static_cast<std::size_t>(k));
       const float q = mi * m[j] * dot3(gk, gk);
@@ -102,7 +101,7 @@ void PressureSolver_DFSPH::densityRates(const ActivePairs& pairs, int n) {
     const Float4 vi = load4(v + 4 * i);
     const float mi = m[i];
     float ri = 0;
-    for (std::uint32_t k = pairs.start[i]; k < pairs.start[i + 1]; ++k) {
+    for (std::uint32_t k = pairs.begin(i); k < pairs.end(i); ++k) {
       const std::size_t j = pairs.partner[k];
       const float u = dot3(vi - load4(v + 4 * j), load4(g + 4 * static_cast<std::size_t>(k)));
       ri += m[j] * u;
@@ -121,7 +120,7 @@ void PressureSolver_DFSPH::applyKappa(const ActivePairs& pairs, int n) {
   for (std::size_t i = 0; i < un; ++i) {
     const float ki = kappa[i], mi = m[i];
     Float4 dvi{0, 0, 0, 0};
-    for (std::uint32_t k = pairs.start[i]; k < pairs.start[i + 1]; ++k) {
+    for (std::uint32_t k = pairs.begin(i); k < pairs.end(i); ++k) {
       const std::size_t j = pairs.partner[k];
       const float s = ki + kappa[j];
       // Both particles at rest density or stretched: no correction (frequent, unpredictable;

@@ -53,7 +53,7 @@ void PressureSolver_PBF::constraints(const ActivePairs& pairs, std::span<const s
     const float mi = m[i];
     Float4 sumI{0, 0, 0, 0};
     float rhoI = 0, diagonalI = 0;
-    for (std::uint32_t k = pairs.start[i]; k < pairs.start[i + 1]; ++k) {
+    for (std::uint32_t k = pairs.begin(i); k < pairs.end(i); ++k) {
       const std::size_t j = pairs.partner[k];
       const Float4 r = (xi - load4(x + 4 * j)) + di - load4(d + 4 * j);
       const float r2 = dot3(r, r);
@@ -107,7 +107,7 @@ void PressureSolver_PBF::correct(const ActivePairs& pairs,
   for (std::size_t i = 0; i < un; ++i) {
     const float li = lambda[i], mi = m[i];
     Float4 dpi{0, 0, 0, 0};
-    for (std::uint32_t k = pairs.start[i]; k < pairs.start[i + 1]; ++k) {
+    for (std::uint32_t k = pairs.begin(i); k < pairs.end(i); ++k) {
       const std::size_t j = pairs.partner[k];
       const float s = li + lambda[j] + (scorr ? scorr_[k] : 0.0f);
       const Float4 f = s * load4(g + 4 * static_cast<std::size_t>(k));
@@ -133,9 +133,9 @@ void PressureSolver_PBF::solve(ParticleSet& p, const ActivePairs& pairs, double 
   const auto un = static_cast<std::size_t>(n);
   stats_ = {};
   if (n == 0 || !(dt > 0)) return;
-  const std::size_t pairCount = pairs.pairCount();
-  if (g_.size() < 4 * pairCount) g_.resize(4 * pairs.partner.size());
-  if (settings_.artificialPressure && scorr_.size() < pairCount) scorr_.resize(pairCount);
+  if (g_.size() < 4 * pairs.indexLimit()) g_.resize(4 * pairs.indexLimit());
+  if (settings_.artificialPressure && scorr_.size() < pairs.indexLimit())
+    scorr_.resize(pairs.indexLimit());
   m_.resize(un);
   rho_.resize(un);
   lambda_.resize(un);

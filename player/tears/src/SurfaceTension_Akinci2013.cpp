@@ -9,7 +9,7 @@ void SurfaceTension_Akinci2013::addAccelerations(ParticleSet& p, const ActivePai
   normal_.assign(n, Eigen::Vector3d::Zero());
   // n_i = h sum_j V_j grad W(x_i - x_j); grad W is odd, so j gets the opposite sign.
   for (std::size_t i = 0; i < n; ++i) {
-    for (std::uint32_t k = pairs.start[i]; k < pairs.start[i + 1]; ++k) {
+    for (std::uint32_t k = pairs.begin(i); k < pairs.end(i); ++k) {
       const std::uint32_t j = pairs.partner[k];
       const Eigen::Vector3d r = p.position[i] - p.position[j];
       const Eigen::Vector3d g = w_.gradient(r, r.squaredNorm());
@@ -21,7 +21,7 @@ void SurfaceTension_Akinci2013::addAccelerations(ParticleSet& p, const ActivePai
   // F_ij / (gamma m_i) = K_ij (-(n_i - n_j) - m_j C(r) / r r_vec); for j, r_vec and n swap sign.
   force_.assign(n, Eigen::Vector3d::Zero());
   for (std::size_t i = 0; i < n; ++i) {
-    for (std::uint32_t k = pairs.start[i]; k < pairs.start[i + 1]; ++k) {
+    for (std::uint32_t k = pairs.begin(i); k < pairs.end(i); ++k) {
       const std::uint32_t j = pairs.partner[k];
       const Eigen::Vector3d r = p.position[i] - p.position[j];
       const double distance = r.norm();

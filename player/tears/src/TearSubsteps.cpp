@@ -78,7 +78,7 @@ void TearSimulation::simulate(double frameDt) {
     times_.neighbours += millisecondsSince(start);
 
     start = SteadyClock::now();
-    in.density.compute(particles_, in.candidates, in.pairs);
+    in.density.compute(particles_, in.candidates, in.pairs, &in.parallel);
     pressure.computePressures(particles_, in.pairs, remaining, counters_);
     times_.density += millisecondsSince(start);
 
