@@ -17,9 +17,13 @@
 #include <malloc.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstdlib>
 #include <memory>
+#include <mutex>
+#include <thread>
 #include <vector>
 
 using namespace lacrima;
@@ -128,6 +132,33 @@ class TearThreadsTest : public QObject {
         pool.run(chunks, [&hits](int c) { ++hits[static_cast<std::size_t>(c)]; });
       for (int c = 0; c < chunks; ++c) QCOMPARE(hits[static_cast<std::size_t>(c)], 50);
     }
+  }
+
+  void stalledThreadsChunksAreTakenByOthers() {
+    // Each thread owns a block of chunks; one that stalls (here the caller, on the first chunk
+    // it takes) must not hold up the run: the worker runs its own block, then takes the rest of
+    // the caller's from the back. Without taking from other blocks this waits out the deadline.
+    ThreadPool pool(2);
+    constexpr int kChunks = 8;
+    const std::thread::id caller = std::this_thread::get_id();
+    std::mutex mutex;
+    std::condition_variable othersDone;
+    std::vector<std::thread::id> ranOn(kChunks);
+    int done = 0;
+    bool stalledOnce = false, timedOut = false;
+    pool.run(kChunks, [&](int c) {
+      std::unique_lock lock(mutex);
+      ranOn[static_cast<std::size_t>(c)] = std::this_thread::get_id();
+      if (std::this_thread::get_id() == caller && !stalledOnce) {
+        stalledOnce = true;
+        timedOut = !othersDone.wait_for(lock, std::chrono::seconds(20),
+                                        [&] { return done == kChunks - 1; });
+      } else if (++done == kChunks - 1) {
+        othersDone.notify_all();
+      }
+    });
+    QVERIFY(!timedOut);
+    QCOMPARE(std::count(ranOn.begin(), ranOn.end(), caller), 1);
   }
 
   void threadCountIsResolved() {

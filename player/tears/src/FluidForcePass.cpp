@@ -198,7 +198,8 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs,
   const auto un = static_cast<std::size_t>(n);
   velocity_.resize(4 * un);
   scalars_.resize(4 * un);
-  for (auto* v : {&acc_, &weighted4_, &gradient4_}) v->assign(4 * un, 0.0f);
+  // Zeroed chunk by chunk below, by the thread that will sum into them.
+  for (auto* v : {&acc_, &weighted4_, &gradient4_}) v->resize(4 * un);
   // Kernel coefficients, so the loops only multiply (Kernels.h):
   //   grad W_spiky = spiky (h - r)^2 / r r_vec,  lap W_visc = visc (h - r),
   //   grad W_poly6 = poly6 (h^2 - r^2)^2 r_vec,  lap W_poly6 = poly6 (h^2 - r^2)(3 h^2 - 7 r^2).
@@ -217,6 +218,9 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs,
   anyPressureChunk_.assign(particleChunks, 0);
   parallel.forEachChunk(un, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
     bool any = false;
+    for (auto* v : {&acc_, &weighted4_, &gradient4_})
+      std::fill(v->begin() + static_cast<std::ptrdiff_t>(4 * begin),
+                v->begin() + static_cast<std::ptrdiff_t>(4 * end), 0.0f);
     for (std::size_t i = begin; i < end; ++i) {
       store4(&velocity_[4 * i], toFloat4(p.velocity[i]));
       const float m = static_cast<float>(p.mass[i]), pi = static_cast<float>(p.pressure[i]);

@@ -145,10 +145,14 @@ void TearSimulation::simulate(double frameDt) {
         }
       }
     }
-    in.previous.assign(particles_.position.begin(), particles_.position.end());
-    for (int i = 0; i < particles_.size(); ++i)
-      particles_.position[static_cast<std::size_t>(i)] +=
-          dt * particles_.velocity[static_cast<std::size_t>(i)];
+    in.previous.resize(particles_.position.size());
+    in.parallel.forEachChunk(particles_.position.size(), kParticleChunk,
+                             [&](int, std::size_t begin, std::size_t end) {
+                               for (std::size_t i = begin; i < end; ++i) {
+                                 in.previous[i] = particles_.position[i];
+                                 particles_.position[i] += dt * particles_.velocity[i];
+                               }
+                             });
     times_.forces += millisecondsSince(start);
 
     start = SteadyClock::now();

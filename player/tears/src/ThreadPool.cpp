@@ -20,13 +20,27 @@ ThreadPool::~ThreadPool() {
 void ThreadPool::start() {
   workers_.reserve(static_cast<std::size_t>(threads_ - 1));
   for (int t = 1; t < threads_; ++t)
-    workers_.emplace_back([this](const std::stop_token& stop) { work(stop); });
+    workers_.emplace_back([this, t](const std::stop_token& stop) { work(stop, t); });
 }
 
-void ThreadPool::drain() {
+int ThreadPool::take(int thread) {
+  const auto own = static_cast<std::size_t>(thread);
+  if (front_[own] < back_[own]) return front_[own]++;
+  // Own block done: the last chunk of the block with the most left (its owner keeps the
+  // chunks next to the ones it has just run).
+  std::size_t victim = own;
+  int most = 0;
+  for (std::size_t u = 0; u < front_.size(); ++u)
+    if (back_[u] - front_[u] > most) {
+      most = back_[u] - front_[u];
+      victim = u;
+    }
+  return most > 0 ? --back_[victim] : -1;
+}
+
+void ThreadPool::drain(int thread) {
   std::unique_lock lock(mutex_);
-  while (next_ < chunks_) {
-    const int c = next_++;
+  for (int c = take(thread); c >= 0; c = take(thread)) {
     const std::function<void(int)>& job = *job_;
     lock.unlock();
     job(c);
@@ -35,7 +49,7 @@ void ThreadPool::drain() {
   }
 }
 
-void ThreadPool::work(const std::stop_token& stop) {
+void ThreadPool::work(const std::stop_token& stop, int thread) {
   std::uint64_t seen = 0;
   for (;;) {
     {
@@ -43,7 +57,7 @@ void ThreadPool::work(const std::stop_token& stop) {
       if (!wake_.wait(lock, stop, [&] { return generation_ != seen; })) return;
       seen = generation_;
     }
-    drain();
+    drain(thread);
   }
 }
 
@@ -58,16 +72,22 @@ void ThreadPool::run(int chunks, const std::function<void(int)>& job) {
     std::lock_guard lock(mutex_);
     job_ = &job;
     chunks_ = chunks;
-    next_ = 0;
     done_ = 0;
+    const auto t = static_cast<std::size_t>(threads_);
+    front_.resize(t);
+    back_.resize(t);
+    for (std::size_t k = 0; k < t; ++k) {
+      front_[k] = static_cast<int>(k * static_cast<std::size_t>(chunks) / t);
+      back_[k] = static_cast<int>((k + 1) * static_cast<std::size_t>(chunks) / t);
+    }
     ++generation_;
   }
   wake_.notify_all();
-  drain();
+  drain(0);
   std::unique_lock lock(mutex_);
   finished_.wait(lock, [&] { return done_ == chunks_; });
   // Every chunk is handed out before done_ reaches chunks_, so a worker that wakes late finds
-  // next_ == chunks_ and goes back to sleep without touching job_.
+  // no chunk left and goes back to sleep without touching job_.
 }
 
 int resolveThreadCount(int requested) {

@@ -3,11 +3,17 @@
 // (ParallelChunks.h says how work is cut so that results do not depend on the thread count).
 //
 // run(chunks, job) calls job(c) once for every chunk c in [0, chunks), on the workers and on
-// the calling thread, and returns when all have finished. Chunks are handed out in order under
-// the pool's mutex (a chunk is tens of microseconds of work, the lock tens of nanoseconds), so
-// which thread runs which chunk varies from run to run: a job must write only outputs that
-// belong to its chunk. The workers are started on the first run that has more than one chunk,
-// so a simulation that never has enough particles to share never starts one.
+// the calling thread, and returns when all have finished. Thread t (the caller is 0) owns the
+// t-th of `threads` equal blocks of chunks and runs them in order; a thread done with its block
+// takes the last chunk of the block with the most left. So a loop over the particles gives each
+// thread the same particles in every pass of a sub-step, whose data then stays in that core's
+// cache (on this project's VM two threads ran the 10,000-particle sheet 7 % faster than with
+// chunks handed out in order), and a thread that wakes late or is descheduled holds up no one.
+// Chunks are taken under the pool's mutex (a chunk is tens of microseconds of work, the lock
+// tens of nanoseconds); which thread runs which chunk still varies from run to run, so a job
+// must write only outputs that belong to its chunk. The workers are started on the first run that
+// has more than one chunk, so a simulation that never has enough particles to share never starts
+// one.
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -32,8 +38,9 @@ class ThreadPool {
 
  private:
   void start();
-  void work(const std::stop_token& stop);
-  void drain();  // takes chunks of the current run until none is left
+  void work(const std::stop_token& stop, int thread);
+  void drain(int thread);  // runs chunks of the current run until none is left
+  int take(int thread);    // the next chunk for `thread`, or -1; mutex_ held
 
   int threads_;
   std::vector<std::jthread> workers_;
@@ -44,8 +51,9 @@ class ThreadPool {
   // The current run, all guarded by mutex_.
   const std::function<void(int)>* job_ = nullptr;
   int chunks_ = 0;
-  int next_ = 0;  // next chunk to hand out
   int done_ = 0;  // chunks finished
+  // Thread t's block of chunks still to run, [front_[t], back_[t]).
+  std::vector<int> front_, back_;
 };
 
 // The thread count a simulation uses: `requested` when positive, else LACRIMA_THREADS when it
