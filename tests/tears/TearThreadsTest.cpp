@@ -158,7 +158,8 @@ class TearThreadsTest : public QObject {
       }
     });
     QVERIFY(!timedOut);
-    QCOMPARE(std::count(ranOn.begin(), ranOn.end(), caller), 1);
+    // The caller ran only the chunk it stalled on (none, if it was descheduled for the whole run).
+    QVERIFY(std::count(ranOn.begin(), ranOn.end(), caller) <= 1);
   }
 
   void threadCountIsResolved() {
