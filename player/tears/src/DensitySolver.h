@@ -14,9 +14,10 @@
 // window of its own, one float for each particle from its first to the farthest partner its
 // pairs reach (VerletPairs::reach), so no two threads write one float and the hot loop has no
 // test for where a partner is. The windows hold about 1.5 n floats in all on the sheet and 1.7 n
-// on the default head at 10,000 particles; a window never exceeds n. Then each particle's density
-// is its own chunk's sum plus the earlier chunks' sums for it, in chunk order: the same sum in the
-// same order for any number of threads.
+// on the default head at 10,000 particles, 3-5 n on the head at 100,000 (a window spans about
+// one x-slab of cells, which grows with the count); a window never exceeds n. Then each particle's
+// density is its own chunk's sum plus the earlier chunks' sums for it, in chunk order: the same sum
+// in the same order for any number of threads.
 #include "Kernels.h"
 #include "PairList.h"
 #include "ParallelChunks.h"
