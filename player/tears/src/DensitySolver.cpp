@@ -179,7 +179,6 @@ void DensitySolver::compute(ParticleSet& p, const VerletPairs& candidates, Activ
   // A chunk's pairs start where its candidates do, after the stray pairs of earlier particles.
   const std::size_t chunks = ParallelChunks::chunkCount(un, kParticleChunk);
   if (windows_.size() < chunks) windows_.resize(chunks);
-  keptPerChunk_.resize(chunks);
   forEachChunkOn(parallel, un, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
     const auto b = static_cast<std::uint32_t>(begin), e = static_cast<std::uint32_t>(end);
     const std::size_t stray = static_cast<std::size_t>(
@@ -191,9 +190,10 @@ void DensitySolver::compute(ParticleSet& p, const VerletPairs& candidates, Activ
       accumulate<true>(candidates, active, b, e, slot, stray, window);
     else
       accumulate<false>(candidates, active, b, e, slot, stray, window);
-    keptPerChunk_[static_cast<std::size_t>(c)] = active.last[end - 1] - slot;
   });
-  for (std::size_t kept : keptPerChunk_) active.kept += kept;
+  // A chunk's kept pairs lie together from its first particle's first pair.
+  for (std::size_t begin = 0; begin < un; begin += kParticleChunk)
+    active.kept += active.last[std::min(un, begin + kParticleChunk) - 1] - active.first[begin];
   // Each density: its own chunk's sum, then the earlier chunks' sums for it, in chunk order.
   forEachChunkOn(parallel, un, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
     const Window& own = windows_[static_cast<std::size_t>(c)];

@@ -57,7 +57,6 @@ class DensitySolver {
   // positions are written into ActivePairs.
   mutable std::vector<float> m_, rho_;
   mutable std::vector<Window> windows_;
-  mutable std::vector<std::size_t> keptPerChunk_;
 };
 
 }  // namespace lacrima::tears
