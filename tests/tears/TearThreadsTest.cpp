@@ -67,9 +67,11 @@ bool surfaceShared(const std::vector<Snapshot>& frames) {
 // as strays), swaying, with counts that rise and then fall (spawning and removal).
 class SheetRun {
  public:
-  explicit SheetRun(int threads) : sheet_(makeSheet()), trails_(sheet_.triangles) {
+  explicit SheetRun(int threads, int maxSubsteps = SimulationOptions{}.maxSubsteps)
+      : sheet_(makeSheet()), trails_(sheet_.triangles) {
     SimulationOptions options;
     options.threads = threads;
+    options.maxSubsteps = maxSubsteps;
     sim_ = makeSheetSimulation(sheet_, {}, options);
   }
   static SyntheticSkin makeSheet() {
@@ -124,12 +126,15 @@ class TearThreadsTest : public QObject {
  private slots:
   void poolRunsEveryChunkOnce() {
     // Many runs back to back (workers that wake late must not take a chunk of the next run),
-    // chunk counts below, at and far above the thread count.
+    // chunk counts below, at and far above the thread count; every fifth run after a pause
+    // longer than the spin, so that runs start both on spinning and on sleeping workers.
     ThreadPool pool(4);
     for (int chunks : {0, 1, 3, 4, 64, 1000}) {
       std::vector<int> hits(static_cast<std::size_t>(chunks), 0);
-      for (int run = 0; run < 50; ++run)
+      for (int run = 0; run < 50; ++run) {
+        if (run % 5 == 0) std::this_thread::sleep_for(3 * ThreadPool::kSpin);
         pool.run(chunks, [&hits](int c) { ++hits[static_cast<std::size_t>(c)]; });
+      }
       for (int c = 0; c < chunks; ++c) QCOMPARE(hits[static_cast<std::size_t>(c)], 50);
     }
   }
@@ -197,6 +202,26 @@ class TearThreadsTest : public QObject {
             sameBits(frames[static_cast<std::size_t>(f)], reference[static_cast<std::size_t>(f)]),
             qPrintable(QStringLiteral("%1 threads differ from 1 at frame %2").arg(threads).arg(f)));
     }
+  }
+
+  void cappedSubstepsAreBitIdenticalForAnyThreadCount() {
+    // Two sub-steps a frame at most: the sub-steps are capped, and the velocity clamps that
+    // make a capped step stable run chunk by chunk, fused with the move. Same bits and the same
+    // number of clamps on 1 and 3 threads.
+    constexpr int kFrames = 16, kFewSubsteps = 2;
+    std::vector<Snapshot> ends;
+    std::vector<long long> clamps;
+    for (int threads : {1, 3}) {
+      SheetRun run(threads, kFewSubsteps);
+      for (int f = 0; f < kFrames; ++f) run.step(f);
+      QVERIFY(run.simulation().particles().size() > kSharedRun);
+      QVERIFY(run.simulation().counters().substepCapHits > 0);
+      ends.push_back(run.snapshot());
+      clamps.push_back(run.simulation().counters().clamped);
+    }
+    QVERIFY(clamps[0] > 0);
+    QCOMPARE(clamps[1], clamps[0]);
+    QVERIFY(sameBits(ends[1], ends[0]));
   }
 
   void checkpointRestoredOnOtherThreadCountsRepeatsTheRun() {

@@ -80,16 +80,11 @@ void FluidForcePass::accumulate(const ActivePairs& pairs, std::uint32_t begin, s
   const float* lapVisc = lapVisc_.data();
   const float* gradColour = gradColour_.data();
   const float* lapColour = lapColour_.data();
-  // At most every pair of the chunk spills: sized once for that (capacity is kept), so the
-  // loop writes through plain pointers.
-  const std::size_t most = pairs.end(end - 1) - pairs.begin(begin);
-  if (spill.partner.size() < most) {
-    spill.partner.resize(most);
-    spill.share.resize(12 * most);
-  }
+  // The loop writes spills through plain pointers, re-read when the list grows.
   std::uint32_t* spillPartner = spill.partner.data();
   float* spillShare = spill.share.data();
-  std::uint32_t spilled = 0;
+  std::size_t spilled = 0;
+  std::uint32_t lowest = std::numeric_limits<std::uint32_t>::max(), highest = 0;
 
   for (std::uint32_t i = begin; i < end; ++i) {
     const auto si = static_cast<std::size_t>(i);
@@ -154,8 +149,15 @@ void FluidForcePass::accumulate(const ActivePairs& pairs, std::uint32_t begin, s
         store4(weighted + j4, load4(weighted + j4) + wvj);
         if constexpr (Colour) store4(gradient + j4, load4(gradient + j4) - gj);
       } else {
+        if (spilled == spill.partner.size()) [[unlikely]] {
+          spill.grow();
+          spillPartner = spill.partner.data();
+          spillShare = spill.share.data();
+        }
         spillPartner[spilled] = j;
-        float* share = spillShare + 12 * static_cast<std::size_t>(spilled);
+        lowest = std::min(lowest, j);
+        highest = std::max(highest, j);
+        float* share = spillShare + 12 * spilled;
         store4(share, toJ);
         store4(share + 4, wvj);
         store4(share + 8, gj);
@@ -170,19 +172,31 @@ void FluidForcePass::accumulate(const ActivePairs& pairs, std::uint32_t begin, s
     if constexpr (Colour) store4(gradient + i4, load4(gradient + i4) + gi);
   }
   spill.count = spilled;
+  spill.lowest = lowest;
+  spill.highest = highest;
+}
+
+void FluidForcePass::Spill::grow() {
+  const std::size_t room = std::max<std::size_t>(1024, 2 * partner.size());
+  partner.resize(room);
+  share.resize(12 * room);
 }
 
 // The spilled shares, chunk by chunk in order, each list in pair order: one fixed order of
-// additions per particle, whichever thread ran which chunk. Lanes that a pass without pressure
-// leaves untouched get a share of exactly 0 there (x + 0 = x).
-void FluidForcePass::addSpills(std::size_t chunks, bool colour) {
+// additions per particle, whichever thread ran which chunk. A list mostly reaches the next
+// chunk or two only, so its partner range rules most lists out without a look at their entries.
+// Lanes that a pass without pressure leaves untouched get a share of exactly 0 there (x + 0 = x).
+void FluidForcePass::addSpills(std::size_t chunk, std::size_t begin, std::size_t end, bool colour) {
   float* acc = acc_.data();
   float* weighted = weighted4_.data();
   float* gradient = gradient4_.data();
-  for (std::size_t c = 0; c < chunks; ++c) {
+  for (std::size_t c = 0; c < chunk; ++c) {
     const Spill& spill = spills_[c];
+    if (spill.count == 0 || spill.highest < begin || spill.lowest >= end) continue;
     for (std::size_t e = 0; e < spill.count; ++e) {
-      const std::size_t j4 = 4 * static_cast<std::size_t>(spill.partner[e]);
+      const std::size_t j = spill.partner[e];
+      if (j < begin || j >= end) continue;
+      const std::size_t j4 = 4 * j;
       const float* share = &spill.share[12 * e];
       store4(acc + j4, load4(acc + j4) + load4(share));
       store4(weighted + j4, load4(weighted + j4) + load4(share + 4));
@@ -193,7 +207,7 @@ void FluidForcePass::addSpills(std::size_t chunks, bool colour) {
 
 double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs,
                            const Viscosity_Mueller2003& viscosity, bool colour,
-                           ParallelChunks& parallel) {
+                           ParallelChunks& parallel, const ChunkWork& afterChunk) {
   const int n = p.size();
   const auto un = static_cast<std::size_t>(n);
   velocity_.resize(4 * un);
@@ -259,7 +273,6 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs,
     closing_[static_cast<std::size_t>(c)] =
         largestClosingSpeed2(approach_.data() + first, pairs.r2.data() + first, count);
   });
-  addSpills(particleChunks, colour);
   // The largest closing speed: a maximum per chunk, then over the chunks (a maximum is exact,
   // so this is the serial value too).
   float closing2 = 0;
@@ -270,11 +283,12 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs,
   gradient_.resize(colour ? un : 0);
   laplacian_.resize(colour ? un : 0);
   const double nu = viscosity.nu();
-  parallel.forEachChunk(un, kParticleChunk, [&](int, std::size_t begin, std::size_t end) {
+  parallel.forEachChunk(un, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
+    addSpills(static_cast<std::size_t>(c), begin, end, colour);
     for (std::size_t i = begin; i < end; ++i) {
       const float* a = &acc_[4 * i];
       const float* w = &weighted4_[4 * i];
-      p.acceleration[i] += Eigen::Vector3d(a[0], a[1], a[2]);
+      p.acceleration[i] = Eigen::Vector3d(a[0], a[1], a[2]);
       weightSum_[i] = a[3];
       weighted_[i] = Eigen::Vector3d(w[0], w[1], w[2]);
       p.viscosityRate[i] = nu * weightSum_[i] * scalars_[4 * i + 2];
@@ -284,6 +298,7 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs,
         laplacian_[i] = weighted4_[4 * i + 3];
       }
     }
+    if (afterChunk) afterChunk(c, begin, end);
   });
   return std::sqrt(static_cast<double>(closing2));
 }

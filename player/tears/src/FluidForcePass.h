@@ -19,8 +19,9 @@
 // Threads (ParallelChunks.h): the particles are cut into fixed chunks of kParticleChunk. A
 // chunk sums its own particles' terms and adds the partner's share directly when the partner is
 // in the chunk too; a partner beyond the chunk gets its share through the chunk's spill list
-// (partner, share), which is added after all chunks have run, chunk by chunk in order. Every
-// particle's sums thus take the same additions in the same order for any thread count.
+// (partner, share). Once all chunks have run, each chunk adds the spills aimed at its particles,
+// from the earlier chunks' lists in chunk order, each list in its own order. Every particle's
+// sums thus take the same additions in the same order for any thread count.
 //
 // Both pair passes run in single precision on copies of the particle state: 3-vectors as 4
 // floats (x, y, z, 0), so each scattered vector update is one SSE2 load, add and store, and the
@@ -32,11 +33,13 @@
 #include "Kernels.h"
 #include "PairList.h"
 #include "ParallelChunks.h"
+#include "UninitialisedAllocator.h"
 #include "Viscosity_Mueller2003.h"
 
 #include <lacrima/tears/ParticleSet.h>
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -46,15 +49,21 @@ class FluidForcePass {
  public:
   explicit FluidForcePass(double h) : spikyKernel_(h), viscosityKernel_(h), poly6Kernel_(h) {}
 
-  // Adds pressure to particles.acceleration, fills particles.viscosityRate, weightSum() and
-  // weightedVelocity(), and with `colourField` colourGradient() and colourLaplacian(). Returns
+  // Per-particle work that needs the pass's results: afterChunk(c, begin, end) runs in the
+  // pass's last shared loop once particles [begin, end) have them (one hand-over between the
+  // threads fewer than a loop of its own).
+  using ChunkWork = std::function<void(int chunk, std::size_t begin, std::size_t end)>;
+
+  // Sets particles.acceleration to the pressure acceleration, fills particles.viscosityRate,
+  // weightSum() and weightedVelocity(), and with `colourField` colourGradient() and
+  // colourLaplacian(); then calls afterChunk, if any, on every chunk. Returns
   // the largest closing speed -(v_i - v_j).(x_i - x_j) / r over pairs within h, the velocity
   // part of Monaghan's signal velocity in the CFL condition: SPH is Galilean invariant (a drop
   // sliding as a whole at any speed is as stable as one at rest), and pairs that slide past or
   // separate compress nothing.
   // Reads the velocities: call it before they change in this sub-step.
   double run(ParticleSet& particles, ActivePairs& pairs, const Viscosity_Mueller2003& viscosity,
-             bool colourField, ParallelChunks& parallel);
+             bool colourField, ParallelChunks& parallel, const ChunkWork& afterChunk = {});
   std::span<const double> weightSum() const { return weightSum_; }
   std::span<const Eigen::Vector3d> weightedVelocity() const { return weighted_; }
   // grad c_i and lap c_i of the last run with colourField (empty otherwise).
@@ -64,16 +73,22 @@ class FluidForcePass {
  private:
   // A chunk's shares for partners beyond it: the partner's index and its 12 floats
   // (acceleration, weighted velocity, colour gradient; lane 3 as in acc_ and weighted4_).
+  // Sized by what spilled before (a tenth of a chunk's pairs or so on the sheet, where sizing
+  // for every pair held 10 MB at 10,000 particles), grown by doubling in the loop's rare spill
+  // branch; never zeroed, since every entry in use is written first.
   struct Spill {
-    std::vector<std::uint32_t> partner;
-    std::vector<float> share;
-    std::size_t count = 0;  // entries in use
+    UninitialisedVector<std::uint32_t> partner;
+    UninitialisedVector<float> share;
+    std::size_t count = 0;                  // entries in use
+    std::uint32_t lowest = 0, highest = 0;  // of the partners in use, when count > 0
+    void grow();                            // doubles the room (resize keeps what is there)
   };
   // The pair loop over the particles [begin, end).
   template <bool Colour, bool Pressure>
   void accumulate(const ActivePairs& pairs, std::uint32_t begin, std::uint32_t end,
                   std::uint64_t const* ids, Spill& spill);
-  void addSpills(std::size_t chunks, bool colour);
+  // Adds the shares that chunks before `chunk` spilled onto particles [begin, end).
+  void addSpills(std::size_t chunk, std::size_t begin, std::size_t end, bool colour);
 
   SpikyKernel spikyKernel_;  // pressure
   ViscosityKernel viscosityKernel_;

@@ -15,23 +15,15 @@ double SkinContactForces::adhesionOf(const ParticleSet& p, int i) const {
 }
 
 void SkinContactForces::applyExternal(ParticleSet& p, const Eigen::Vector3d& g, double dt,
-                                      ParallelChunks& parallel) const {
-  parallel.forEachChunk(p.velocity.size(), kParticleChunk,
-                        [&](int, std::size_t begin, std::size_t end) {
-                          for (std::size_t s = begin; s < end; ++s)
-                            p.velocity[s] += dt * (p.acceleration[s] + g);
-                        });
+                                      std::size_t begin, std::size_t end) const {
+  for (std::size_t s = begin; s < end; ++s) p.velocity[s] += dt * (p.acceleration[s] + g);
 }
 
 void SkinContactForces::constrain(ParticleSet& p, const SkinView& skin, const Eigen::Vector3d& g,
-                                  double dt, std::span<const double> spare,
-                                  ParallelChunks& parallel) const {
+                                  double dt, std::span<const double> spare, std::size_t begin,
+                                  std::size_t end) const {
   if (dt <= 0) return;
-  parallel.forEachChunk(p.velocity.size(), kParticleChunk,
-                        [&](int, std::size_t begin, std::size_t end) {
-                          for (std::size_t s = begin; s < end; ++s)
-                            constrainOne(p, skin, g, dt, spare, s);
-                        });
+  for (std::size_t s = begin; s < end; ++s) constrainOne(p, skin, g, dt, spare, s);
 }
 
 void SkinContactForces::constrainOne(ParticleSet& p, const SkinView& skin, const Eigen::Vector3d& g,

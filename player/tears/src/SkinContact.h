@@ -21,7 +21,6 @@
 // unit mass (the spare adhesion plus the pressing part of gravity and fluid forces), integrated
 // implicitly so it can stop a particle but never reverse it, for any friction and dt:
 //   v_t <- v_t / (1 + dt mu N / m)   with mu = friction / (0.3 m/s).
-#include "ParallelChunks.h"
 
 #include <lacrima/tears/ParticleSet.h>
 
@@ -61,17 +60,20 @@ class SkinContactForces {
   // Adhesion acceleration magnitude for particle i (0 when not touching).
   double adhesionOf(const ParticleSet& particles, int i) const;
 
-  // v += dt (a + g) for every particle (a: the fluid forces of this sub-step). Both passes
-  // are per particle, so they share `parallel`'s chunks with results independent of threads.
+  // v += dt (a + g) for particles [begin, end) (a: the fluid forces of this sub-step). Both
+  // passes work per particle, so the sub-step runs them on its chunks, fused with the other
+  // per-particle work next to them (one shared loop instead of several).
   void applyExternal(ParticleSet& particles, const Eigen::Vector3d& gravity, double dt,
-                     ParallelChunks& parallel) const;
+                     std::size_t begin, std::size_t end) const;
 
   // For particles touching the skin: adhesion (it needs the contact normal), then the normal
   // velocity constraint, then friction. `spare`: empty (all 1), or per particle the share of
   // its drop's holding capacity not in use (DropDetachment_Tate1864::spare()): 0 = the drop
   // let go, no adhesion; otherwise adhesion holds and that share of it loads friction.
+  // Particles [begin, end).
   void constrain(ParticleSet& particles, const SkinView& skin, const Eigen::Vector3d& gravity,
-                 double dt, std::span<const double> spare, ParallelChunks& parallel) const;
+                 double dt, std::span<const double> spare, std::size_t begin,
+                 std::size_t end) const;
 
  private:
   void constrainOne(ParticleSet& particles, const SkinView& skin, const Eigen::Vector3d& gravity,

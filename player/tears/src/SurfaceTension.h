@@ -4,8 +4,10 @@
 // spreading into a film. Two models, each in its own class named after its paper:
 //   SurfaceTension_Mueller2003.h  the colour-field curvature force (the default);
 //   SurfaceTension_Akinci2013.h   cohesion plus curvature minimisation.
-// A sub-step calls addAccelerations() right after the force pass (FluidForcePass.h), which sums
-// the colour field's gradient and Laplacian along the way for a model that asks for them.
+// A sub-step calls prepare() before the force pass (FluidForcePass.h), which sums the colour
+// field's gradient and Laplacian along the way for a model that asks for them, and then
+// addAccelerations() on each chunk of particles as the force pass finishes it, in the pass's
+// last shared loop.
 #include "FluidForcePass.h"
 #include "PairList.h"
 
@@ -26,9 +28,13 @@ class SurfaceTension {
 
   // Whether the force pass is to sum the colour field's gradient and Laplacian.
   virtual bool needsColourField() const = 0;
-  // Adds the tension's accelerations for the sub-step's pairs; `pass` is the sub-step's force pass.
-  virtual void addAccelerations(ParticleSet& particles, const ActivePairs& pairs,
-                                const FluidForcePass& pass) = 0;
+  // Work over the sub-step's pairs that the per-particle part needs (none by default).
+  virtual void prepare(const ParticleSet& /*particles*/, const ActivePairs& /*pairs*/) {}
+  // Adds the tension's accelerations to particles [begin, end); `pass` is the sub-step's force
+  // pass, done for those particles. Writes nothing outside the range, so chunks may run on any
+  // thread.
+  virtual void addAccelerations(ParticleSet& particles, const FluidForcePass& pass,
+                                std::size_t begin, std::size_t end) = 0;
 };
 
 }  // namespace lacrima::tears

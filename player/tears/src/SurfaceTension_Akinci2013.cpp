@@ -2,8 +2,7 @@
 
 namespace lacrima::tears {
 
-void SurfaceTension_Akinci2013::addAccelerations(ParticleSet& p, const ActivePairs& pairs,
-                                                 const FluidForcePass&) {
+void SurfaceTension_Akinci2013::prepare(const ParticleSet& p, const ActivePairs& pairs) {
   if (gamma_ <= 0) return;
   const auto n = static_cast<std::size_t>(p.size());
   normal_.assign(n, Eigen::Vector3d::Zero());
@@ -32,7 +31,12 @@ void SurfaceTension_Akinci2013::addAccelerations(ParticleSet& p, const ActivePai
       force_[j] += correction * (curvature + (p.mass[i] * c) * r);
     }
   }
-  for (std::size_t i = 0; i < n; ++i) p.acceleration[i] += gamma_ * force_[i];
+}
+
+void SurfaceTension_Akinci2013::addAccelerations(ParticleSet& p, const FluidForcePass&,
+                                                 std::size_t begin, std::size_t end) {
+  if (gamma_ <= 0) return;
+  for (std::size_t i = begin; i < end; ++i) p.acceleration[i] += gamma_ * force_[i];
 }
 
 }  // namespace lacrima::tears

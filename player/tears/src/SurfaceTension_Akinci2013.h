@@ -19,8 +19,10 @@ class SurfaceTension_Akinci2013 final : public SurfaceTension {
       : h_(h), w_(h), c_(h), gamma_(gamma), rho0_(restDensity) {}
 
   bool needsColourField() const override { return false; }
-  void addAccelerations(ParticleSet& particles, const ActivePairs& pairs,
-                        const FluidForcePass& pass) override;
+  // The normals and the pair forces (two passes over the pairs, on one thread).
+  void prepare(const ParticleSet& particles, const ActivePairs& pairs) override;
+  void addAccelerations(ParticleSet& particles, const FluidForcePass& pass, std::size_t begin,
+                        std::size_t end) override;
 
  private:
   double h_;

@@ -16,8 +16,8 @@ class SurfaceTension_Mueller2003 final : public SurfaceTension {
   SurfaceTension_Mueller2003(double h, double sigma) : h_(h), sigma_(sigma) {}
 
   bool needsColourField() const override { return sigma_ > 0; }
-  void addAccelerations(ParticleSet& particles, const ActivePairs& pairs,
-                        const FluidForcePass& pass) override;
+  void addAccelerations(ParticleSet& particles, const FluidForcePass& pass, std::size_t begin,
+                        std::size_t end) override;
 
  private:
   double h_;

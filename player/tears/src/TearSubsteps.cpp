@@ -10,14 +10,16 @@ namespace lacrima::tears {
 void TearSimulation::recycleEscaped(EmissionSites& sites) {
   // Escaped particles are re-emitted in their own slots: compacting would renumber every
   // particle after them and void the pair list, a full neighbour search every sub-step while
-  // drops keep falling off the chin.
+  // drops keep falling off the chin. The chunks found them; gathered in chunk order, each
+  // eye's list is in particle order.
   auto& escaped = internals_->escaped;
   for (auto& slots : escaped) slots.clear();
-  for (int i = 0; i < particles_.size(); ++i) {
-    const auto s = static_cast<std::size_t>(i);
-    if (!box_.contains(particles_.position[s]))
-      escaped[static_cast<std::size_t>(particles_.eye[s])].push_back(i);
-  }
+  const std::size_t chunks = ParallelChunks::chunkCount(particles_.position.size(), kParticleChunk);
+  for (std::size_t c = 0; c < chunks; ++c)
+    for (std::size_t e = 0; e < 2; ++e) {
+      const std::vector<int>& found = internals_->chunkLeavings[c].escaped[e];
+      escaped[e].insert(escaped[e].end(), found.begin(), found.end());
+    }
   for (int e = 0; e < 2; ++e) {
     const auto& slots = escaped[static_cast<std::size_t>(e)];
     if (slots.empty()) continue;
@@ -83,16 +85,27 @@ void TearSimulation::simulate(double frameDt) {
     times_.density += millisecondsSince(start);
 
     start = SteadyClock::now();
-    std::fill(particles_.acceleration.begin(), particles_.acceleration.end(),
-              Eigen::Vector3d::Zero());
-    const double relativeSpeed = in.forcePass.run(particles_, in.pairs, in.viscosity,
-                                                  in.tension->needsColourField(), in.parallel);
-    in.tension->addAccelerations(particles_, in.pairs, in.forcePass);
+    in.tension->prepare(particles_, in.pairs);
+    // Tension and the step limits' maxima per chunk, in the force pass's last loop; a maximum
+    // is exact, so combining the chunks' in any order gives the one-thread value.
+    const std::size_t chunks =
+        ParallelChunks::chunkCount(particles_.position.size(), kParticleChunk);
+    in.chunkMaxima.assign(chunks, {0.0, 0.0});
+    const auto finishChunk = [&](int c, std::size_t begin, std::size_t end) {
+      in.tension->addAccelerations(particles_, in.forcePass, begin, end);
+      auto& [acceleration2, rate] = in.chunkMaxima[static_cast<std::size_t>(c)];
+      for (std::size_t i = begin; i < end; ++i) {
+        acceleration2 = std::max(acceleration2, particles_.acceleration[i].squaredNorm());
+        rate = std::max(rate, particles_.viscosityRate[i]);
+      }
+    };
+    const double relativeSpeed =
+        in.forcePass.run(particles_, in.pairs, in.viscosity, in.tension->needsColourField(),
+                         in.parallel, finishChunk);
     double maxAcceleration2 = 0, maxRate = 0;
-    for (int i = 0; i < particles_.size(); ++i) {
-      maxAcceleration2 = std::max(
-          maxAcceleration2, particles_.acceleration[static_cast<std::size_t>(i)].squaredNorm());
-      maxRate = std::max(maxRate, particles_.viscosityRate[static_cast<std::size_t>(i)]);
+    for (const auto& [acceleration2, rate] : in.chunkMaxima) {
+      maxAcceleration2 = std::max(maxAcceleration2, acceleration2);
+      maxRate = std::max(maxRate, rate);
     }
     const double longest = options_.maxSubstepSeconds > 0
                                ? std::min(remaining, options_.maxSubstepSeconds)
@@ -126,42 +139,62 @@ void TearSimulation::simulate(double frameDt) {
       }
     }
     const double dt = choice.dt;
-    in.viscosity.apply(particles_, in.forcePass.weightedVelocity(), in.forcePass.weightSum(), dt);
-    in.contact.applyExternal(particles_, g, dt, in.parallel);
+    const std::size_t n = particles_.position.size();
+    // More per-particle work shares a loop wherever nothing between needs other particles: every
+    // shared loop costs a hand-over between threads, and the operations on each particle are
+    // the same, in the same order, as in separate loops (so the same bits).
+    in.parallel.forEachChunk(n, kParticleChunk, [&](int, std::size_t begin, std::size_t end) {
+      in.viscosity.apply(particles_, in.forcePass.weightedVelocity(), in.forcePass.weightSum(), dt,
+                         begin, end);
+      in.contact.applyExternal(particles_, g, dt, begin, end);
+    });
     pressure.correctVelocities(particles_, in.pairs, dt, in.collider->view(), counters_);
     if (in.detachment.update(particles_, in.pairs, in.collider->view(), g)) {
       ++counters_.pendantSubsteps;
       counters_.releasedContacts += in.detachment.releasedCount();
     }
-    in.contact.constrain(particles_, in.collider->view(), g, dt, in.detachment.spare(),
-                         in.parallel);
-    if (capped) {
-      const double vLimit = in.stepper.lambdaCfl() * h / dt;
-      for (auto& v : particles_.velocity) {
-        const double norm = v.norm();
-        if (norm > vLimit) {
-          v *= vLimit / norm;
-          ++counters_.clamped;
+    const double vLimit = capped ? in.stepper.lambdaCfl() * h / dt : 0.0;
+    in.previous.resize(n);
+    in.clampedPerChunk.assign(chunks, 0);
+    in.parallel.forEachChunk(n, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
+      in.contact.constrain(particles_, in.collider->view(), g, dt, in.detachment.spare(), begin,
+                           end);
+      for (std::size_t i = begin; i < end; ++i) {
+        if (capped) {
+          Eigen::Vector3d& v = particles_.velocity[i];
+          const double norm = v.norm();
+          if (norm > vLimit) {
+            v *= vLimit / norm;
+            ++in.clampedPerChunk[static_cast<std::size_t>(c)];
+          }
         }
+        in.previous[i] = particles_.position[i];
+        particles_.position[i] += dt * particles_.velocity[i];
       }
-    }
-    in.previous.resize(particles_.position.size());
-    in.parallel.forEachChunk(particles_.position.size(), kParticleChunk,
-                             [&](int, std::size_t begin, std::size_t end) {
-                               for (std::size_t i = begin; i < end; ++i) {
-                                 in.previous[i] = particles_.position[i];
-                                 particles_.position[i] += dt * particles_.velocity[i];
-                               }
-                             });
+    });
+    for (const long long clamped : in.clampedPerChunk) counters_.clamped += clamped;
     times_.forces += millisecondsSince(start);
 
     start = SteadyClock::now();
     in.collider->resolve(particles_, in.previous, collision, in.parallel);
+    if (in.chunkLeavings.size() < chunks) in.chunkLeavings.resize(chunks);
+    in.parallel.forEachChunk(n, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
+      Internals::ChunkLeavings& found = in.chunkLeavings[static_cast<std::size_t>(c)];
+      found.lost.clear();
+      for (auto& slots : found.escaped) slots.clear();
+      in.massLoss.apply(particles_, params_.restDensity, begin, end, found.lost);
+      for (std::size_t i = begin; i < end; ++i) {
+        particles_.age[i] += dt;
+        if (!box_.contains(particles_.position[i]))
+          found.escaped[static_cast<std::size_t>(particles_.eye[i])].push_back(static_cast<int>(i));
+      }
+    });
     double lost[2] = {0, 0};
-    in.massLoss.apply(particles_, params_.restDensity, lost);
+    for (std::size_t c = 0; c < chunks; ++c)
+      for (const TrailMassLoss::Loss& loss : in.chunkLeavings[c].lost)
+        lost[static_cast<std::size_t>(loss.eye)] += loss.volume;
     trailVolume_[0] += lost[0];
     trailVolume_[1] += lost[1];
-    for (auto& age : particles_.age) age += dt;
     recycleEscaped(sites);
     times_.collision += millisecondsSince(start);
 

@@ -5,7 +5,29 @@
 #include <cstdlib>
 #include <string>
 
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
 namespace lacrima::tears {
+
+namespace {
+
+// Polls ready() for up to ThreadPool::kSpin; whether it became true. The pause tells the core
+// (and a hypervisor) that this is a spin loop; the clock is read once every 64 polls.
+template <class Ready>
+bool spinUntil(Ready ready) {
+  const auto until = std::chrono::steady_clock::now() + ThreadPool::kSpin;
+  for (unsigned k = 1;; ++k) {
+    if (ready()) return true;
+#if defined(__x86_64__) || defined(__i386__)
+    _mm_pause();
+#endif
+    if (k % 64 == 0 && std::chrono::steady_clock::now() > until) return false;
+  }
+}
+
+}  // namespace
 
 ThreadPool::ThreadPool(int threads) : threads_(std::max(1, threads)) {}
 
@@ -45,18 +67,22 @@ void ThreadPool::drain(int thread) {
     lock.unlock();
     job(c);
     lock.lock();
-    if (++done_ == chunks_) finished_.notify_one();
+    if (++done_ == chunks_) {
+      completed_.store(generation_.load(std::memory_order_relaxed), std::memory_order_release);
+      finished_.notify_one();
+    }
   }
 }
 
 void ThreadPool::work(const std::stop_token& stop, int thread) {
   std::uint64_t seen = 0;
+  const auto started = [&] { return generation_.load(std::memory_order_acquire) != seen; };
   for (;;) {
-    {
+    if (!spinUntil(started)) {
       std::unique_lock lock(mutex_);
-      if (!wake_.wait(lock, stop, [&] { return generation_ != seen; })) return;
-      seen = generation_;
+      if (!wake_.wait(lock, stop, started)) return;
     }
+    seen = generation_.load(std::memory_order_acquire);
     drain(thread);
   }
 }
@@ -68,6 +94,7 @@ void ThreadPool::run(int chunks, const std::function<void(int)>& job) {
     return;
   }
   if (workers_.empty()) start();
+  std::uint64_t generation = 0;
   {
     std::lock_guard lock(mutex_);
     job_ = &job;
@@ -80,12 +107,15 @@ void ThreadPool::run(int chunks, const std::function<void(int)>& job) {
       front_[k] = static_cast<int>(k * static_cast<std::size_t>(chunks) / t);
       back_[k] = static_cast<int>((k + 1) * static_cast<std::size_t>(chunks) / t);
     }
-    ++generation_;
+    generation = generation_.load(std::memory_order_relaxed) + 1;
+    generation_.store(generation, std::memory_order_release);
   }
   wake_.notify_all();
   drain(0);
+  const auto finished = [&] { return completed_.load(std::memory_order_acquire) == generation; };
+  if (spinUntil(finished)) return;
   std::unique_lock lock(mutex_);
-  finished_.wait(lock, [&] { return done_ == chunks_; });
+  finished_.wait(lock, finished);
   // Every chunk is handed out before done_ reaches chunks_, so a worker that wakes late finds
   // no chunk left and goes back to sleep without touching job_.
 }

@@ -14,6 +14,13 @@
 // must write only outputs that belong to its chunk. The workers are started on the first run that
 // has more than one chunk, so a simulation that never has enough particles to share never starts
 // one.
+//
+// Between runs a worker spins for kSpin before it sleeps, and the caller spins as long for the
+// last chunk of its run: a sub-step shares about ten loops with a little serial work between
+// them, and on this project's VM a sleeping thread takes tens of microseconds to wake, where a
+// spinning one sees the next run at once (docs/performance.md, Threads).
+#include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -25,6 +32,10 @@ namespace lacrima::tears {
 
 class ThreadPool {
  public:
+  // Measured with lacrima-bench tears at 10,000 particles on two threads: 50 µs won about half
+  // of what 1 ms won, 200 and 500 µs a little less than 1 ms, 3 ms no more.
+  static constexpr std::chrono::microseconds kSpin{1000};
+
   // `threads` counts the calling thread: 1 runs everything on the caller, no worker ever.
   explicit ThreadPool(int threads);
   ~ThreadPool();  // stops and joins the workers (a run must not be in progress)
@@ -47,7 +58,9 @@ class ThreadPool {
   std::mutex mutex_;
   std::condition_variable_any wake_;  // a new run, or stop
   std::condition_variable finished_;  // the last chunk of a run is done
-  std::uint64_t generation_ = 0;      // runs started; guarded by mutex_
+  // Runs started, and the last run whose chunks are all done. Written under mutex_, read
+  // without it by spinning threads.
+  std::atomic<std::uint64_t> generation_ = 0, completed_ = 0;
   // The current run, all guarded by mutex_.
   const std::function<void(int)>* job_ = nullptr;
   int chunks_ = 0;

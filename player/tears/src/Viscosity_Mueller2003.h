@@ -24,12 +24,14 @@ class Viscosity_Mueller2003 {
  public:
   explicit Viscosity_Mueller2003(double kinematicViscosity) : nu_(kinematicViscosity) {}
   double nu() const { return nu_; }
-  // Relaxes velocities over dt, Jacobi-style (every particle sees the velocities before the
-  // update, so the result does not depend on particle order), from what FluidForcePass summed:
-  // particles.viscosityRate, weightSum_i = sum_j m_j / rho_j lap W and
-  // weighted_i = sum_j m_j / rho_j lap W v_j (so vbar_i = weighted_i / weightSum_i).
+  // Relaxes the velocities of particles [begin, end) over dt, Jacobi-style (every particle sees
+  // the velocities before the update, so the result does not depend on particle order or on
+  // how the range is cut), from what FluidForcePass summed: particles.viscosityRate,
+  // weightSum_i = sum_j m_j / rho_j lap W and weighted_i = sum_j m_j / rho_j lap W v_j (so
+  // vbar_i = weighted_i / weightSum_i).
   void apply(ParticleSet& particles, std::span<const Eigen::Vector3d> weighted,
-             std::span<const double> weightSum, double dt) const;
+             std::span<const double> weightSum, double dt, std::size_t begin,
+             std::size_t end) const;
 
  private:
   double nu_;
