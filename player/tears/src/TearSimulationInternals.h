@@ -56,11 +56,11 @@ struct TearSimulation::Internals {
   std::vector<Eigen::Vector3d> previous;    // positions before the sub-step's move (scratch)
   std::array<std::vector<int>, 2> escaped;  // per eye, this sub-step (scratch)
   // Per particle chunk (scratch): what the sub-step's last shared loop found, in particle order.
-  struct ChunkLeavings {
+  struct ChunkFindings {
     std::vector<TrailMassLoss::Loss> lost;    // water left in the trail
     std::array<std::vector<int>, 2> escaped;  // per eye, particles out of the box
   };
-  std::vector<ChunkLeavings> chunkLeavings;
+  std::vector<ChunkFindings> chunkFindings;
   // Per particle chunk (scratch): the largest |a|^2 and viscosity rate, and the speed clamps of
   // a capped sub-step.
   std::vector<std::pair<double, double>> chunkMaxima;

@@ -17,7 +17,7 @@ void TearSimulation::recycleEscaped(EmissionSites& sites) {
   const std::size_t chunks = ParallelChunks::chunkCount(particles_.position.size(), kParticleChunk);
   for (std::size_t c = 0; c < chunks; ++c)
     for (std::size_t e = 0; e < 2; ++e) {
-      const std::vector<int>& found = internals_->chunkLeavings[c].escaped[e];
+      const std::vector<int>& found = internals_->chunkFindings[c].escaped[e];
       escaped[e].insert(escaped[e].end(), found.begin(), found.end());
     }
   for (int e = 0; e < 2; ++e) {
@@ -177,9 +177,9 @@ void TearSimulation::simulate(double frameDt) {
 
     start = SteadyClock::now();
     in.collider->resolve(particles_, in.previous, collision, in.parallel);
-    if (in.chunkLeavings.size() < chunks) in.chunkLeavings.resize(chunks);
+    if (in.chunkFindings.size() < chunks) in.chunkFindings.resize(chunks);
     in.parallel.forEachChunk(n, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
-      Internals::ChunkLeavings& found = in.chunkLeavings[static_cast<std::size_t>(c)];
+      Internals::ChunkFindings& found = in.chunkFindings[static_cast<std::size_t>(c)];
       found.lost.clear();
       for (auto& slots : found.escaped) slots.clear();
       in.massLoss.apply(particles_, params_.restDensity, begin, end, found.lost);
@@ -191,7 +191,7 @@ void TearSimulation::simulate(double frameDt) {
     });
     double lost[2] = {0, 0};
     for (std::size_t c = 0; c < chunks; ++c)
-      for (const TrailMassLoss::Loss& loss : in.chunkLeavings[c].lost)
+      for (const TrailMassLoss::Loss& loss : in.chunkFindings[c].lost)
         lost[static_cast<std::size_t>(loss.eye)] += loss.volume;
     trailVolume_[0] += lost[0];
     trailVolume_[1] += lost[1];

@@ -14,7 +14,10 @@ namespace lacrima::tears {
 namespace {
 
 // Polls ready() for up to ThreadPool::kSpin; whether it became true. The pause tells the core
-// (and a hypervisor) that this is a spin loop; the clock is read once every 64 polls.
+// (and a hypervisor) that this is a spin loop. Every 64 polls the clock is read and the core
+// offered to any other runnable thread: with two two-thread simulations on two cores a pure
+// spin took the cores from the threads with work (114-126 ms a frame at 10,000 particles
+// against 69-75 with a sleeping pool); yielding gives 69-77, and costs nothing on idle cores.
 template <class Ready>
 bool spinUntil(Ready ready) {
   const auto until = std::chrono::steady_clock::now() + ThreadPool::kSpin;
@@ -23,7 +26,10 @@ bool spinUntil(Ready ready) {
 #if defined(__x86_64__) || defined(__i386__)
     _mm_pause();
 #endif
-    if (k % 64 == 0 && std::chrono::steady_clock::now() > until) return false;
+    if (k % 64 == 0) {
+      if (std::chrono::steady_clock::now() > until) return false;
+      std::this_thread::yield();
+    }
   }
 }
 

@@ -18,7 +18,8 @@
 // Between runs a worker spins for kSpin before it sleeps, and the caller spins as long for the
 // last chunk of its run: a sub-step shares about ten loops with a little serial work between
 // them, and on this project's VM a sleeping thread takes tens of microseconds to wake, where a
-// spinning one sees the next run at once (docs/performance.md, Threads).
+// spinning one sees the next run at once. The spin yields the core every few microseconds, so
+// on busy cores it does not hold up threads that have work (docs/performance.md, Threads).
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
