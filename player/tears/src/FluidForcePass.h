@@ -73,15 +73,12 @@ class FluidForcePass {
  private:
   // A chunk's shares for partners beyond it: the partner's index and its 12 floats
   // (acceleration, weighted velocity, colour gradient; lane 3 as in acc_ and weighted4_).
-  // Sized by what spilled before (a tenth of a chunk's pairs or so on the sheet, where sizing
-  // for every pair held 10 MB at 10,000 particles), grown by doubling in the loop's rare spill
-  // branch; never zeroed, since every entry in use is written first.
+  // Never zeroed: every entry in use is written first.
   struct Spill {
     UninitialisedVector<std::uint32_t> partner;
     UninitialisedVector<float> share;
     std::size_t count = 0;                  // entries in use
     std::uint32_t lowest = 0, highest = 0;  // of the partners in use, when count > 0
-    void grow();                            // doubles the room (resize keeps what is there)
   };
   // The pair loop over the particles [begin, end).
   template <bool Colour, bool Pressure>
