@@ -5,7 +5,9 @@
 //     its particles) whose bounds depend on the item count only, never on the number of threads;
 //   * each chunk writes only its own outputs (the particles or pairs of its range) or a partial
 //     result of its own (partials[c]);
-//   * partial results are combined by the caller in chunk order, on one thread.
+//   * partial results are combined in chunk order: by the caller on one thread, or, where
+//     each output belongs to one chunk (the density windows, the force pass's spills), by the
+//     job of that output's chunk, taking the earlier chunks' partials in chunk order.
 // Any thread may run any chunk, in any order, and the floating-point operations performed are
 // the same, in the same order, for every output. With one thread, or fewer particles than
 // kParallelParticles (sharing costs a wake-up per loop, more than a small loop takes), the
