@@ -11,7 +11,7 @@
 namespace lacrima::inline common {
 namespace {
 
-using namespace curve_detail;
+using namespace detail;
 
 // The channel's knots around keys()[keyIndex]: up to two of its keys on either side, which is
 // all slopeAt looks at (two at an end: see CurveSlopes.h). `at` is the key's place in it.

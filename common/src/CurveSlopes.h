@@ -10,7 +10,7 @@
 #include <cstddef>
 #include <span>
 
-namespace lacrima::inline common::curve_detail {
+namespace lacrima::inline common::detail {
 
 // One point of one channel's curve: a key that sets the channel.
 struct Knot {
@@ -81,4 +81,4 @@ inline Handle inHandle(const Knot& knot, double slope, double h) {
   return {-h / 3.0, -slope * h / 3.0};
 }
 
-}  // namespace lacrima::inline common::curve_detail
+}  // namespace lacrima::inline common::detail

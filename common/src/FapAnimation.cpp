@@ -35,7 +35,7 @@ FapValues FapAnimation::sample(double seconds) const {
   const double whole = std::floor(position);
   const auto i = static_cast<std::size_t>(whole);
   FapValues out;
-  fapio::blendFrames(frames[i], frames[i + 1], position - whole, out);
+  detail::blendFrames(frames[i], frames[i + 1], position - whole, out);
   return out;
 }
 

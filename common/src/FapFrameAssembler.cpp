@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-namespace lacrima::inline common::fapio {
+namespace lacrima::inline common::detail {
 
 namespace {
 
@@ -177,4 +177,4 @@ void FrameAssembler::fillGaps(FapAnimation& animation, const std::vector<int>& s
   }
 }
 
-}  // namespace lacrima::inline common::fapio
+}  // namespace lacrima::inline common::detail

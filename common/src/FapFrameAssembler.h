@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace lacrima::inline common::fapio {
+namespace lacrima::inline common::detail {
 
 class FrameAssembler {
  public:
@@ -54,4 +54,4 @@ class FrameAssembler {
   int firstBeyondHeader_ = -1;        // index in origins_ of the first number >= nframes
 };
 
-}  // namespace lacrima::inline common::fapio
+}  // namespace lacrima::inline common::detail

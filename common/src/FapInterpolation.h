@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-namespace lacrima::inline common::fapio {
+namespace lacrima::inline common::detail {
 
 // out = a + (b - a) * t per channel, t in [0, 1]. `out` may alias neither a nor b.
 inline void blendFrames(const FapValues& a, const FapValues& b, double t, FapValues& out) {
@@ -20,4 +20,4 @@ inline void blendFrames(const FapValues& a, const FapValues& b, double t, FapVal
   }
 }
 
-}  // namespace lacrima::inline common::fapio
+}  // namespace lacrima::inline common::detail

@@ -6,7 +6,7 @@
 #include <cerrno>
 #include <cstring>
 
-namespace lacrima::inline common::fapio {
+namespace lacrima::inline common::detail {
 
 LineSource::LineSource(std::string_view text, const std::string& displayName,
                        std::size_t maxLineLength)
@@ -72,4 +72,4 @@ bool LineSource::refill() {
   return true;
 }
 
-}  // namespace lacrima::inline common::fapio
+}  // namespace lacrima::inline common::detail

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-namespace lacrima::inline common::fapio {
+namespace lacrima::inline common::detail {
 
 class LineSource {
  public:
@@ -42,4 +42,4 @@ class LineSource {
   int lineNumber_ = 0;
 };
 
-}  // namespace lacrima::inline common::fapio
+}  // namespace lacrima::inline common::detail

@@ -17,11 +17,11 @@ namespace lacrima::inline common {
 
 namespace {
 
-using fapio::FrameAssembler;
-using fapio::LineSource;
-using fapio::NumberStatus;
-using fapio::quoteToken;
-using fapio::WholeStatus;
+using detail::FrameAssembler;
+using detail::LineSource;
+using detail::NumberStatus;
+using detail::quoteToken;
+using detail::WholeStatus;
 
 // More frames than this, in the header or as a frame number, is not an animation anyone made:
 // 10 million frames is 5 days at 22 fps.
@@ -49,7 +49,7 @@ struct FrameMask {
 };
 
 bool readFrameNumber(std::string_view token, std::int64_t& number) {
-  return fapio::parseDigits(token, kMaxFrameCount, number) == WholeStatus::Ok &&
+  return detail::parseDigits(token, kMaxFrameCount, number) == WholeStatus::Ok &&
          number <= kMaxFrameCount;
 }
 
@@ -145,7 +145,7 @@ bool Parser::nextLine() {
     text_ = line_;
     // Windows editors may start UTF-8 text with a byte order mark.
     if (lines_.lineNumber() == 1 && text_.starts_with("\xEF\xBB\xBF")) text_.remove_prefix(3);
-    fapio::TokenCursor cursor(text_);
+    detail::TokenCursor cursor(text_);
     if (!cursor.next().empty()) return true;
     if (cursor.controlByteInRest() >= 0) tokenizeOrFail();  // reports the byte
   }
@@ -153,7 +153,7 @@ bool Parser::nextLine() {
 }
 
 void Parser::tokenizeOrFail() {
-  const long bad = fapio::tokenizeLine(text_, tokens_);
+  const long bad = detail::tokenizeLine(text_, tokens_);
   if (bad < 0) return;
   char byte[8];
   std::snprintf(byte, sizeof byte, "0x%02X",
@@ -195,7 +195,7 @@ void Parser::readHeader(FapReadResult& result) {
 
   const std::string_view countToken = tokens_[n - 1];
   std::int64_t frames = 0;
-  switch (fapio::parseDigits(countToken, kMaxFrameCount, frames)) {
+  switch (detail::parseDigits(countToken, kMaxFrameCount, frames)) {
     case WholeStatus::NotWhole:
       fail(columnOf(countToken),
            "expected the number of frames (a whole number), found " + quoteToken(countToken));
@@ -225,7 +225,7 @@ void Parser::readHeader(FapReadResult& result) {
 
 double Parser::headerNumber(std::size_t index, const char* expected) {
   double value = 0;
-  const NumberStatus status = fapio::parseNumber(tokens_[index], value);
+  const NumberStatus status = detail::parseNumber(tokens_[index], value);
   if (status != NumberStatus::Ok) failNumber(tokens_[index], status, expected);
   return value;
 }
@@ -288,7 +288,7 @@ void Parser::readValues() {
   for (const int channel : mask_.lowChannels) {
     const std::string_view token = tokens_[t++];
     double value = 0;
-    const NumberStatus status = fapio::parseNumber(token, value);
+    const NumberStatus status = detail::parseNumber(token, value);
     if (status != NumberStatus::Ok)
       failNumber(token, status, "a number for FAP " + std::to_string(fapNumber(channel)));
     if (!acceptableValue(value, channel)) failTearCount(token, channel);
@@ -299,7 +299,7 @@ void Parser::readValues() {
 // The value line of a frame without FAP 1/2, in one pass and without allocating. False when
 // anything is off; the caller then reports it precisely.
 bool Parser::scanPlainValues(FapValues& values, std::int64_t& number, int& numberColumn) const {
-  fapio::TokenCursor cursor(text_);
+  detail::TokenCursor cursor(text_);
   const std::string_view first = cursor.next();
   if (!readFrameNumber(first, number)) return false;
   numberColumn = columnOf(first);
@@ -343,7 +343,7 @@ void Parser::readHighLevel(std::size_t& t, bool grouped, FapValues& values) {
 
 void Parser::failFrameNumber(std::string_view token) const {
   std::int64_t number = 0;
-  switch (fapio::parseDigits(token, kMaxFrameCount, number)) {
+  switch (detail::parseDigits(token, kMaxFrameCount, number)) {
     case WholeStatus::NotWhole:
       fail(columnOf(token),
            "expected a frame number (a whole number from 0), found " + quoteToken(token));
@@ -365,7 +365,7 @@ void Parser::failTearCount(std::string_view token, int channel) const {
 int Parser::wholeAt(std::size_t t, int fap, const char* field) const {
   const std::string_view token = tokens_[t];
   double value = 0;
-  const NumberStatus status = fapio::parseNumber(token, value);
+  const NumberStatus status = detail::parseNumber(token, value);
   const std::string what = "FAP " + std::to_string(fap) + " " + field;
   if (status != NumberStatus::Ok) failNumber(token, status, "a number for " + what);
   if (!(value >= 0 && value <= kMaxHighLevelValue && value == std::floor(value)))

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-namespace lacrima::inline common::fapio {
+namespace lacrima::inline common::detail {
 
 namespace {
 
@@ -135,4 +135,4 @@ std::string quoteToken(std::string_view token) {
   return quoted;
 }
 
-}  // namespace lacrima::inline common::fapio
+}  // namespace lacrima::inline common::detail

@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-namespace lacrima::inline common::fapio {
+namespace lacrima::inline common::detail {
 
 enum class NumberStatus { Ok, NotANumber, NotFinite, OutOfRange };
 
@@ -53,4 +53,4 @@ WholeStatus parseDigits(std::string_view token, std::int64_t cap, std::int64_t& 
 // The token for a message: quoted, cut to about 20 characters.
 std::string quoteToken(std::string_view token);
 
-}  // namespace lacrima::inline common::fapio
+}  // namespace lacrima::inline common::detail

@@ -175,7 +175,7 @@ bool JsonValue::boolean() const {
   return value_.toBool();
 }
 
-std::size_t JsonValue::oneOf(std::initializer_list<std::string_view> choices) const {
+std::size_t JsonValue::oneOf(std::span<const std::string_view> choices) const {
   if (isString()) {
     const std::string text = value_.toString().toStdString();
     const auto found = std::find(choices.begin(), choices.end(), text);
@@ -184,7 +184,7 @@ std::size_t JsonValue::oneOf(std::initializer_list<std::string_view> choices) co
   std::string list;
   for (std::size_t i = 0; i < choices.size(); ++i) {
     if (i > 0) list += i + 1 == choices.size() ? " or " : ", ";
-    list += '"' + std::string(choices.begin()[i]) + '"';
+    list += '"' + std::string(choices[i]) + '"';
   }
   expected(list);
 }

@@ -16,7 +16,7 @@
 namespace lacrima::inline common {
 namespace {
 
-using namespace curve_detail;
+using namespace detail;
 
 // Keys closer than this are the same key: far below a frame at any sane rate, far above
 // the rounding error of times computed as frame / fps.

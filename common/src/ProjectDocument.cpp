@@ -79,15 +79,15 @@ void writeScene(JsonWriter& out, const SceneSettings& scene) {
   }
   if (quality.solver) {
     out.key("solver");
-    out.string(toString(*quality.solver));
+    out.string(*quality.solver);
   }
   if (quality.tension) {
     out.key("tension");
-    out.string(toString(*quality.tension));
+    out.string(*quality.tension);
   }
   if (quality.neighbours) {
     out.key("neighbours");
-    out.string(toString(*quality.neighbours));
+    out.string(*quality.neighbours);
   }
   out.endObject();
 }
@@ -183,36 +183,47 @@ TearSources readTearSources(const JsonValue& value) {
   return sources;
 }
 
-// One of `names` (the enum's, in order), as the enum.
-template <typename Enum, std::size_t N>
-Enum readChoice(const JsonValue& value, const std::array<std::string_view, N>& names) {
-  if (value.isString())
-    for (std::size_t i = 0; i < N; ++i)
-      if (value.string() == names[i]) return static_cast<Enum>(i);
-  std::string expected;
-  for (std::size_t i = 0; i < N; ++i)
-    expected += (i == 0 ? "\"" : i + 1 == N ? " or \"" : ", \"") + std::string(names[i]) + '"';
-  value.fail("expected " + expected + ", got " + value.describe());
+bool isWellFormedMethodKey(const std::string& key) {
+  constexpr std::size_t kMaxKeyLength = 64;
+  if (key.empty() || key.size() > kMaxKeyLength) return false;
+  return std::all_of(key.begin(), key.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '_';
+  });
+}
+
+// A method's registry key: one of `known` when the reader was given the registry's keys, else
+// any well-formed key.
+std::string readMethodKey(const JsonValue& value, const std::vector<std::string>* known) {
+  if (known) {
+    const std::vector<std::string_view> keys(known->begin(), known->end());
+    return (*known)[value.oneOf(keys)];
+  }
+  if (!value.isString() || !isWellFormedMethodKey(value.string()))
+    value.fail("expected a method's key (lower-case letters, digits, - and _), got " +
+               value.describe());
+  return value.string();
 }
 
 // The quality level and the advanced choices (version 2).
-TearQualitySettings readQuality(const JsonValue& scene, int version) {
+TearQualitySettings readQuality(const JsonValue& scene, int version,
+                                const TearMethodKeys* methods) {
   TearQualitySettings quality;
   for (const char* name : {"quality", "solver", "tension", "neighbours"})
     if (scene.has(name) && version < 2)
       scene[name].fail(std::string(name) + " needs a project of version 2 or later");
   if (scene.has("quality"))
-    quality.level = readChoice<TearQuality>(scene["quality"], kTearQualityNames);
+    quality.level = static_cast<TearQuality>(scene["quality"].oneOf(kTearQualityNames));
   if (scene.has("solver"))
-    quality.solver = readChoice<TearSolver>(scene["solver"], kTearSolverNames);
+    quality.solver = readMethodKey(scene["solver"], methods ? &methods->solvers : nullptr);
   if (scene.has("tension"))
-    quality.tension = readChoice<TearTension>(scene["tension"], kTearTensionNames);
+    quality.tension = readMethodKey(scene["tension"], methods ? &methods->tensions : nullptr);
   if (scene.has("neighbours"))
-    quality.neighbours = readChoice<TearNeighbours>(scene["neighbours"], kTearNeighbourNames);
+    quality.neighbours =
+        readMethodKey(scene["neighbours"], methods ? &methods->neighbours : nullptr);
   return quality;
 }
 
-SceneSettings readScene(const JsonValue& value, int version) {
+SceneSettings readScene(const JsonValue& value, int version, const TearMethodKeys* methods) {
   value.rejectUnknownMembers({"particles", "surface", "trails", "textureBlending", "redness",
                               "blush", "simulation", "quality", "solver", "tension", "neighbours"});
   SceneSettings scene;
@@ -230,7 +241,7 @@ SceneSettings readScene(const JsonValue& value, int version) {
                         : SceneSettings::Redness::Tears;
   }
   if (value.has("simulation")) scene.simulation = readTearParameters(value["simulation"]);
-  scene.quality = readQuality(value, version);
+  scene.quality = readQuality(value, version, methods);
   return scene;
 }
 
@@ -310,7 +321,7 @@ std::string ProjectDocument::toJson() const {
   out.key("interpolation");
   out.string(toString(defaultInterpolation));
   out.key("keys");
-  projectjson::writeKeys(out, keys);
+  detail::writeKeys(out, keys);
   out.key("tearSources");
   out.beginObject();
   writeSource(out, "left", tearSources.left);
@@ -324,7 +335,7 @@ std::string ProjectDocument::toJson() const {
   }
   if (!layers.empty()) {
     out.key("layers");
-    projectjson::writeLayers(out, layers);
+    detail::writeLayers(out, layers);
   }
   out.endObject();
   return std::move(out).finish();
@@ -354,7 +365,8 @@ void requireBakeable(const JsonValue& root, const ProjectDocument& document) {
 
 }  // namespace
 
-ProjectDocument ProjectDocument::read(const JsonValue& root, Use use) {
+ProjectDocument ProjectDocument::read(const JsonValue& root, Use use,
+                                      const TearMethodKeys* methods) {
   const int version = checkFormatAndVersion(root);
   root.rejectUnknownMembers({"format", "version", "name", "fps", "interpolation", "keys",
                              "tearSources", "scene", "head", "layers"});
@@ -362,29 +374,30 @@ ProjectDocument ProjectDocument::read(const JsonValue& root, Use use) {
   if (root.has("name")) document.name = root["name"].string();
   if (root.has("fps")) document.fps = readFps(root["fps"]);
   if (root.has("interpolation"))
-    document.defaultInterpolation = projectjson::readInterpolation(root["interpolation"], version);
+    document.defaultInterpolation = detail::readInterpolation(root["interpolation"], version);
   const JsonValue keys = root["keys"];
   if (keys.missing()) keys.fail("missing; every project lists its keys");
-  document.keys = projectjson::readKeys(keys, document.defaultInterpolation, version);
+  document.keys = detail::readKeys(keys, document.defaultInterpolation, version);
   if (root.has("tearSources")) document.tearSources = readTearSources(root["tearSources"]);
-  if (root.has("scene")) document.scene = readScene(root["scene"], version);
+  if (root.has("scene")) document.scene = readScene(root["scene"], version, methods);
   if (root.has("head")) document.head = readHead(root["head"]);
   if (root.has("layers")) {
     if (version < 2) root["layers"].fail("layers need a project of version 2 or later");
-    document.layers = projectjson::readLayers(root["layers"], version);
+    document.layers = detail::readLayers(root["layers"], version);
   }
   if (use == Use::Bake) requireBakeable(root, document);
   return document;
 }
 
 ProjectDocument ProjectDocument::fromJson(std::string_view json, const std::string& displayName,
-                                          Use use) {
-  return read(JsonInput::parse(json, displayName).root(), use);
+                                          Use use, const TearMethodKeys* methods) {
+  return read(JsonInput::parse(json, displayName).root(), use, methods);
 }
 
-ProjectDocument ProjectDocument::load(const std::string& path, Use use) {
+ProjectDocument ProjectDocument::load(const std::string& path, Use use,
+                                      const TearMethodKeys* methods) {
   ProjectDocument document =
-      read(JsonInput::load(path, {"project file", kMaxFileBytes}).root(), use);
+      read(JsonInput::load(path, {"project file", kMaxFileBytes}).root(), use, methods);
   document.resolveHeadPaths(fs::path(path).parent_path().string());
   return document;
 }

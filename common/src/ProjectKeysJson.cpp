@@ -9,7 +9,7 @@
 #include <numeric>
 #include <vector>
 
-namespace lacrima::inline common::projectjson {
+namespace lacrima::inline common::detail {
 namespace {
 
 // A key's time: seconds from 0 to kMaxKeyTime (a day).
@@ -319,4 +319,4 @@ std::vector<PoseLayer> readLayers(const JsonValue& value, int version) {
   return layers;
 }
 
-}  // namespace lacrima::inline common::projectjson
+}  // namespace lacrima::inline common::detail

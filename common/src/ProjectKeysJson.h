@@ -18,7 +18,7 @@
 #include <string_view>
 #include <vector>
 
-namespace lacrima::inline common::projectjson {
+namespace lacrima::inline common::detail {
 
 // The shortest decimal that reads back as `value` (see the definition).
 double doubleForFloat(float value);
@@ -41,4 +41,4 @@ KeyframeSequence readKeys(const JsonValue& value, Interpolation defaultMode, int
 void writeLayers(JsonWriter& out, const std::vector<PoseLayer>& layers);
 std::vector<PoseLayer> readLayers(const JsonValue& value, int version);
 
-}  // namespace lacrima::inline common::projectjson
+}  // namespace lacrima::inline common::detail

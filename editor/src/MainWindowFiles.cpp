@@ -8,6 +8,7 @@
 #include <lacrima/editing/RecoveryStore.h>
 #include <lacrima/editor/PresetPanel.h>
 #include <lacrima/editor/RecoveryBanner.h>
+#include <lacrima/playback/TearQualityOptions.h>
 
 #include <QCheckBox>
 #include <QCloseEvent>
@@ -89,7 +90,9 @@ bool MainWindow::openFile(const QString& path) {
     return importFap(path, reduce ? std::optional<double>(tolerance) : std::nullopt);
   }
   try {
-    ProjectDocument document = ProjectDocument::load(path.toStdString());
+    const TearMethodKeys methods = playback::tearMethodKeys();
+    ProjectDocument document =
+        ProjectDocument::load(path.toStdString(), ProjectDocument::Use::Edit, &methods);
     clock_->pause();
     filePath_ = QFileInfo(path).absoluteFilePath();
     model_->resetDocument(std::move(document), true);
@@ -412,7 +415,9 @@ bool MainWindow::restoreRecovery() {
   bool restored = false;
   try {
     QString source;
-    ProjectDocument document = editing::RecoveryStore::read(pendingRecovery_, &source);
+    const TearMethodKeys methods = playback::tearMethodKeys();
+    ProjectDocument document =
+        editing::RecoveryStore::read(pendingRecovery_, &source, nullptr, &methods);
     clock_->pause();
     model_->resetDocument(std::move(document), false);
     filePath_ = source;

@@ -5,18 +5,20 @@
 // down the slope. No solver is tuned to it: the published law for sliding drops (Podgorski,
 // Flesselles & Limat 2001; Kim, Lee & Kang 2002) says Ca = mu U / gamma grows linearly with
 // Bo sin(alpha) = rho g V^(2/3) sin(alpha) / gamma above a threshold angle.
-#include <lacrima/tears/Parameters.h>
+#include <lacrima/tears/TearSettings.h>
 #include <lacrima/tears/SimulationOptions.h>
+
+#include <string>
 
 namespace lacrima::bench {
 
 struct SlideSetup {
   double angleDegrees = 45;  // of the plate from the horizontal, (0, 90]
-  int particles = 100;       // the drop: 100 particles make a tear (Parameters.h)
+  int particles = 100;       // the drop: 100 particles make a tear (TearSettings.h)
   int settleFrames = 22;     // let the drop form and reach its steady speed (1 s at 22 fps)
   int measureFrames = 44;    // then measure over this many frames
   double fps = 22;
-  tears::PressureMethod solver = tears::PressureMethod::Wcsph;
+  std::string solver = tears::SimulationOptions{}.pressureSolver.key;  // a registry key
   double lambdaScale = 1;  // the sub-step safety factors, scaled as tears-sweep scales them
   int threads = 0;
   // The model leaves water in a drop's trail (SimulationOptions::trailDecayMetres), and a lighter
@@ -45,7 +47,7 @@ SlideRun runSlide(const SlideSetup& setup);
 struct SlidePhysics {
   double density = 1000;  // kg/m^3
   double viscosity = 0;   // dynamic, Pa s: rest density x the kinematic viscosity
-  double tension = 0;     // N/m: the Müller sigma (Parameters.h)
+  double tension = 0;     // N/m: the Müller sigma (TearSettings.h)
   double gravity = 0;     // m/s^2
   double volume = 0;      // m^3: particles x spacing^3
   double adhesion = 0;    // m/s^2 into the skin

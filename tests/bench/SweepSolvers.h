@@ -1,31 +1,32 @@
 #pragma once
 // The pressure solvers the accuracy benchmarks compare (lacrima-bench tears-sweep and
-// tears-slide). Each listed solver gets its own rows, its own converged reference, a thread-axis
-// check and its own sliding-drop fit; a further solver is one line in kSolvers.
+// tears-slide): every registered one (tears/TearMethods.h), the default first, since every
+// sweep row is also measured against the default solver's reference. Each gets its own rows,
+// its own converged reference, a thread-axis check and its own sliding-drop fit, so a solver
+// registered in the simulation is swept without a change here.
 #include <lacrima/tears/SimulationOptions.h>
+#include <lacrima/tears/TearMethods.h>
 
-#include <iterator>
+#include <algorithm>
+#include <string>
+#include <vector>
 
 namespace lacrima::bench {
 
 struct SolverEntry {
-  const char* name;  // as tables and legends show it
-  const char* key;   // as CSV and JSON write it
-  tears::PressureMethod method;
+  std::string name;  // as tables and legends show it (the registry's label)
+  std::string key;   // as CSV and JSON write it
 };
 
-inline constexpr SolverEntry kSolvers[] = {
-    {"WCSPH", "wcsph", tears::PressureMethod::Wcsph},
-    {"DFSPH", "dfsph", tears::PressureMethod::Dfsph},
-    {"PBF", "pbf", tears::PressureMethod::Pbf},
-};
-// The solver of the common reference every sweep row is measured against: the default.
-inline constexpr const SolverEntry& kReferenceSolver = kSolvers[0];
-
-inline const SolverEntry& solverOf(tears::PressureMethod method) {
-  for (const SolverEntry& s : kSolvers)
-    if (s.method == method) return s;
-  return kReferenceSolver;  // only listed solvers are run
+inline std::vector<SolverEntry> sweepSolvers() {
+  const std::string reference = tears::SimulationOptions{}.pressureSolver.key;
+  std::vector<SolverEntry> solvers;
+  for (const tears::MethodInfo& method :
+       tears::registeredMethods(tears::MethodFamily::PressureSolver))
+    solvers.push_back({method.label, method.key});
+  std::stable_partition(solvers.begin(), solvers.end(),
+                        [&reference](const SolverEntry& s) { return s.key == reference; });
+  return solvers;
 }
 
 }  // namespace lacrima::bench

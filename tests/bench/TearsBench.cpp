@@ -6,6 +6,7 @@
 #include "BenchCommandLine.h"
 #include "BenchSupport.h"
 #include "Octree.h"  // internal to lacrima_tears: the 2009 octree, measured against the grid
+#include "TearMethodOptions.h"
 #include "TearsPipeline.h"
 
 #include <lacrima/common/JsonWriter.h>
@@ -53,12 +54,8 @@ struct Options {
   bool sway = false;
   bool head = false;  // the rigged default head instead of the cheek sheet
   double skin = SimulationOptions{}.neighbourSkin;
-  NeighbourMethod neighbours = NeighbourMethod::Grid;
   SkinQueryMethod skinQueries = SimulationOptions{}.skinQueries;
-  SurfaceTensionModel tension = SurfaceTensionModel::Mueller;
-  PressureMethod solver = SimulationOptions{}.pressureSolver;
-  int pbfIterations = SimulationOptions{}.pbfIterations;
-  double pbfRelaxation = SimulationOptions{}.pbfRelaxation;
+  SimulationOptions methods;  // only the method choices are read (TearMethodOptions.h)
   double maxStepMs = 0;
   double substepFactor = 1;                     // scales the CFL and acceleration safety factors
   TearQuality quality = TearQuality::Balanced;  // the apps' level (Balanced: the defaults)
@@ -94,28 +91,11 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
                 }
                 return std::string();
               });
-  line.choice("neighbours", "Neighbour structure (default grid).",
-              {{"grid", NeighbourMethod::Grid}, {"octree", NeighbourMethod::Octree}}, o.neighbours);
   line.choice("skin-queries",
               "Who answers the skin-collision queries: grid (default; shared between threads) or "
               "ode (the reference, one thread at a time).",
               {{"grid", SkinQueryMethod::Grid}, {"ode", SkinQueryMethod::Ode}}, o.skinQueries);
-  line.choice("tension", "Surface tension model (default mueller).",
-              {{"mueller", SurfaceTensionModel::Mueller}, {"akinci", SurfaceTensionModel::Akinci}},
-              o.tension);
-  line.choice("solver",
-              "Pressure solver: wcsph (equation of state), dfsph (divergence-free) or pbf "
-              "(position-based).",
-              {{"wcsph", PressureMethod::Wcsph},
-               {"dfsph", PressureMethod::Dfsph},
-               {"pbf", PressureMethod::Pbf}},
-              o.solver);
-  line.wholeNumber("pbf-iterations", "K", "PBF constraint iterations per sub-step (default 4).", 1,
-                   100, o.pbfIterations);
-  line.number("pbf-relaxation", "E",
-              "PBF constraint force mixing epsilon in 1/h^2 (default " +
-                  QString::number(SimulationOptions{}.pbfRelaxation) + ").",
-              0, 100, o.pbfRelaxation);
+  addTearMethodOptions(line, o.methods);
   line.number("max-step", "MS", "Longest sub-step in milliseconds (default: no cap).", 0, 1000,
               o.maxStepMs);
   line.number("substep-factor", "F", "Scales the CFL and acceleration safety factors (default 1).",
@@ -220,13 +200,11 @@ int runTears(int argc, char** argv) {
   TearQualitySettings quality;
   quality.level = o.quality;
   SimulationOptions simOptions = playback::simulationOptions(quality);
-  simOptions.neighbours = o.neighbours;
+  simOptions.neighbours = o.methods.neighbours;
   simOptions.skinQueries = o.skinQueries;
-  simOptions.surfaceTension = o.tension;
+  simOptions.surfaceTension = o.methods.surfaceTension;
   simOptions.neighbourSkin = o.skin;
-  simOptions.pressureSolver = o.solver;
-  simOptions.pbfIterations = o.pbfIterations;
-  simOptions.pbfRelaxation = o.pbfRelaxation;
+  simOptions.pressureSolver = o.methods.pressureSolver;
   simOptions.maxSubstepSeconds = o.maxStepMs / 1000;
   simOptions.lambdaCfl *= o.substepFactor;
   simOptions.lambdaAcceleration *= o.substepFactor;
@@ -322,14 +300,19 @@ int runTears(int argc, char** argv) {
     json.field("particles_alive", p.size());
     json.field("frames", o.frames);
     json.field("fps", o.fps);
-    json.field("neighbours", o.neighbours == NeighbourMethod::Grid ? "grid" : "octree");
+    json.field("neighbours", o.methods.neighbours.key);
     json.field("skin_queries", o.skinQueries == SkinQueryMethod::Grid ? "grid" : "ode");
-    json.field("tension_model", o.tension == SurfaceTensionModel::Mueller ? "mueller" : "akinci");
-    json.field("solver", pressureMethodName(o.solver));
-    if (o.solver == PressureMethod::Pbf) {
-      json.field("pbf_iterations", o.pbfIterations);
-      json.field("pbf_relaxation", o.pbfRelaxation);
-    }
+    json.field("tension_model", o.methods.surfaceTension.key);
+    json.field("solver", o.methods.pressureSolver.key);
+    // The values the solver ran with, its defaults included: {"iterations": 4, ...}.
+    const MethodInfo solver =
+        *findMethod(MethodFamily::PressureSolver, o.methods.pressureSolver.key);
+    const MethodValues solverValues(solver, o.methods.pressureSolver);
+    json.key("solver_parameters");
+    json.beginObject();
+    for (const MethodParameter& parameter : solver.parameters)
+      json.field(parameter.key, solverValues.number(parameter.key));
+    json.endObject();
     json.field("max_substep_ms", o.maxStepMs);
     json.field("substep_factor", o.substepFactor);
     json.field("quality", toString(o.quality));
@@ -421,12 +404,10 @@ int runTears(int argc, char** argv) {
       "tears on the %s: %d particles requested, %d alive, %d frames at %g fps, %s, %s neighbours, "
       "%s tension%s, %d thread%s\n",
       scene->name.c_str(), o.particles, p.size(), o.frames, o.fps,
-      o.solver == PressureMethod::Wcsph   ? "WCSPH"
-      : o.solver == PressureMethod::Dfsph ? "DFSPH"
-                                          : "PBF",
-      o.neighbours == NeighbourMethod::Grid ? "grid" : "octree",
-      o.tension == SurfaceTensionModel::Mueller ? "Mueller" : "Akinci", o.sway ? ", swaying" : "",
-      sim.threads(), sim.threads() == 1 ? "" : "s");
+      describeMethod(MethodFamily::PressureSolver, o.methods.pressureSolver).c_str(),
+      describeMethod(MethodFamily::NeighbourStructure, o.methods.neighbours).c_str(),
+      describeMethod(MethodFamily::SurfaceTension, o.methods.surfaceTension).c_str(),
+      o.sway ? ", swaying" : "", sim.threads(), sim.threads() == 1 ? "" : "s");
   std::printf("  frame time     median %8.3f ms  (mean %.3f, max %.3f; simulation alone %.3f)",
               median, mean, sorted.back(), simulationMedian);
   if (target > 0) std::printf("   target <= %.3g ms  %s", target, mark(median <= target));
@@ -449,14 +430,13 @@ int runTears(int argc, char** argv) {
       c.cflLimited, c.accelerationLimited, c.viscosityLimited,
       c.substeps - c.cflLimited - c.accelerationLimited - c.viscosityLimited, c.neighbourSearches,
       c.neighbourSearches / n);
-  if (o.solver == PressureMethod::Dfsph)
+  // The iterative solvers' sweeps (DFSPH's two solves; PBF counts its constraint sweeps as
+  // density sweeps).
+  if (c.divergenceIterations > 0 || c.densityIterations > 0)
     std::printf(
-        "  DFSPH: %.2f divergence and %.2f density sweeps per sub-step, %lld solves capped\n",
+        "  solver: %.2f divergence and %.2f density sweeps per sub-step, %lld solves capped\n",
         c.substeps ? static_cast<double>(c.divergenceIterations) / c.substeps : 0.0,
         c.substeps ? static_cast<double>(c.densityIterations) / c.substeps : 0.0, c.solverCapped);
-  if (o.solver == PressureMethod::Pbf)
-    std::printf("  PBF: %d constraint iterations per sub-step, epsilon %g / h^2\n", o.pbfIterations,
-                o.pbfRelaxation);
   std::printf(
       "  where the particles are (frame: on the face / in the air / off the face, "
       "recycled since the previous line):\n");

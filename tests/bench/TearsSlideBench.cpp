@@ -113,7 +113,7 @@ struct Setting {
   // slide is steady over the measuring window.
   double unsteadiness = 0;
   std::string name() const {
-    return std::string(solver->name) + " sub-step x" + QString::number(lambdaScale).toStdString();
+    return solver->name + " sub-step x" + QString::number(lambdaScale).toStdString();
   }
 };
 
@@ -287,7 +287,8 @@ int runTearsSlide(int argc, char** argv) {
     std::fflush(stdout);
   }
   std::vector<Setting> settings;
-  for (const SolverEntry& solver : kSolvers)
+  const std::vector<SolverEntry> solvers = sweepSolvers();  // outlives the settings' pointers
+  for (const SolverEntry& solver : solvers)
     for (double lambda : o.substeps) {
       Setting s;
       s.solver = &solver;
@@ -298,7 +299,7 @@ int runTearsSlide(int argc, char** argv) {
         setup.particles = o.particles;
         setup.settleFrames = o.settleFrames;
         setup.measureFrames = o.measureFrames;
-        setup.solver = solver.method;
+        setup.solver = solver.key;
         setup.lambdaScale = lambda;
         setup.threads = o.threads;
         setup.trailLoss = o.trailLoss;

@@ -73,7 +73,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
       "tears-sweep",
       "Error beside ms per frame of the full tear pipeline (simulation + surface + trails) on\n"
       "the cheek sheet or the default head, against a fine WCSPH reference and against each\n"
-      "solver's own fine run, sweeping the sub-step safety factor per solver (WCSPH, DFSPH, PBF),\n"
+      "solver's own fine run, sweeping the sub-step safety factor per registered solver,\n"
       "the kernel size, the cube size and the neighbour structure; then each solver's default\n"
       "row at each thread count of the thread axis (the error must not change).");
   line.wholeNumber("particles", "N", "Particles in all (default 200).", 1, 2 * kMaxTearParticles,
@@ -105,8 +105,8 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
 struct Variant {
   std::string series, label;
   double lambdaScale = 1, kernelScale = 1, cubeScale = 1;
-  NeighbourMethod neighbours = NeighbourMethod::Grid;
-  PressureMethod solver = PressureMethod::Wcsph;
+  std::string neighbours = SimulationOptions{}.neighbours.key;  // registry keys
+  std::string solver = SimulationOptions{}.pressureSolver.key;
   int threads = 0;  // 0: the sweep's --threads
 };
 
@@ -237,9 +237,9 @@ class Comparison {
     row.vsOwn = errorsBetween(r, own(v.solver).fine, radius_, 2 * radius_);
     return row;
   }
-  const SolverReference& own(PressureMethod solver) const {
+  const SolverReference& own(const std::string& solver) const {
     for (const SolverReference& ref : refs_)
-      if (ref.solver->method == solver) return ref;
+      if (ref.solver->key == solver) return ref;
     return refs_.front();
   }
 
@@ -289,7 +289,7 @@ void printTable(const SweepReport& s) {
     std::printf(
         "  %s reference (x%g, %.3f ms/frame): x%g (%.3f ms/frame) ends %.3g radii (centroid), "
         "%.3g (particle RMS) from it; its closest sweep row %.3g: %s\n",
-        ref.solver->name, kFineLambda, ref.fine.msPerFrame, kFinerLambda, ref.finerMs,
+        ref.solver->name.c_str(), kFineLambda, ref.fine.msPerFrame, kFinerLambda, ref.finerMs,
         ref.check.centroid, ref.check.particleRms, ref.closestRow,
         ref.converged ? "converged" : "NOT converged (the rows are within its noise)");
   std::printf("  %-26s %-9s %9s %8s %7s %9s %9s %9s %8s %9s %9s\n", "swept", "value", "ms/frame",
@@ -303,13 +303,9 @@ void printTable(const SweepReport& s) {
   for (const Row& r : s.rows) print(r);
   for (const ThreadAxis& axis : s.threadAxes) {
     for (const Row& r : axis.rows) print(r);
-    std::printf("  %s thread axis: state hash %s, error identical: %s\n", axis.solver->name,
+    std::printf("  %s thread axis: state hash %s, error identical: %s\n", axis.solver->name.c_str(),
                 hashText(axis.rows.front().stateHash).c_str(), axis.identical ? "yes" : "NO");
   }
-}
-
-const char* neighbourKey(NeighbourMethod m) {
-  return m == NeighbourMethod::Grid ? "grid" : "octree";
 }
 
 bool writeCsv(const SweepReport& s, const Options& o) {
@@ -321,13 +317,12 @@ bool writeCsv(const SweepReport& s, const Options& o) {
   auto line = [&](const Row& r) {
     const Variant& v = r.variant;
     csv << (o.head ? "default_head" : "cheek_sheet") << ',' << v.series << ',' << v.label << ','
-        << solverOf(v.solver).key << ',' << v.lambdaScale << ',' << v.kernelScale << ','
-        << v.cubeScale << ',' << neighbourKey(v.neighbours) << ',' << r.threads << ','
-        << r.msPerFrame << ',' << r.substepsPerFrame << ',' << hashText(r.stateHash) << ','
-        << r.vsReference.particleRms << ',' << r.vsReference.centroid << ','
-        << r.vsReference.surface << ',' << r.vsReference.areaDifference << ','
-        << r.vsReference.matched << ',' << r.vsOwn.particleRms << ',' << r.vsOwn.centroid << ','
-        << r.vsOwn.surface << '\n';
+        << v.solver << ',' << v.lambdaScale << ',' << v.kernelScale << ',' << v.cubeScale << ','
+        << v.neighbours << ',' << r.threads << ',' << r.msPerFrame << ',' << r.substepsPerFrame
+        << ',' << hashText(r.stateHash) << ',' << r.vsReference.particleRms << ','
+        << r.vsReference.centroid << ',' << r.vsReference.surface << ','
+        << r.vsReference.areaDifference << ',' << r.vsReference.matched << ','
+        << r.vsOwn.particleRms << ',' << r.vsOwn.centroid << ',' << r.vsOwn.surface << '\n';
   };
   for (const Row& r : s.rows) line(r);
   for (const ThreadAxis& axis : s.threadAxes)
@@ -355,11 +350,11 @@ void writeRow(JsonWriter& json, const Row& r) {
   json.beginObject();
   json.field("series", v.series);
   json.field("value", v.label);
-  json.field("solver", solverOf(v.solver).key);
+  json.field("solver", v.solver);
   json.field("lambda_scale", v.lambdaScale);
   json.field("kernel_scale", v.kernelScale);
   json.field("cube_scale", v.cubeScale);
-  json.field("neighbours", neighbourKey(v.neighbours));
+  json.field("neighbours", v.neighbours);
   json.field("threads", r.threads);
   json.field("ms_per_frame", r.msPerFrame);
   json.field("substeps_per_frame", r.substepsPerFrame);
@@ -421,11 +416,12 @@ void printJson(const SweepReport& s, const Options& o) {
 // check as one point; then the kernel, cube and neighbour series against the WCSPH reference.
 bool drawPlot(const SweepReport& s, const Options& o) {
   std::vector<PlotSeries> series;
-  const int solverCount = int(std::size(kSolvers));
+  const int solverCount = int(s.refs.size());
   for (int k = 0; k < solverCount; ++k) {
-    const SolverEntry& solver = kSolvers[k];
+    const SolverEntry& solver = *s.refs[std::size_t(k)].solver;
     const std::string prefix = std::string(solver.name) + " sub-step";
-    PlotSeries vsRef{prefix + ": centroid vs WCSPH ref", {}, k, false, true};
+    PlotSeries vsRef{
+        prefix + ": centroid vs " + s.refs.front().solver->name + " ref", {}, k, false, true};
     PlotSeries vsOwn{prefix + ": centroid vs own " + solver.name + " ref", {}, k, true, true};
     for (const Row& r : s.rows)
       if (r.variant.series == prefix + " factor") {
@@ -433,7 +429,7 @@ bool drawPlot(const SweepReport& s, const Options& o) {
         vsOwn.points.push_back({r.msPerFrame, r.vsOwn.centroid, r.variant.label});
       }
     series.push_back(std::move(vsRef));
-    if (&solver != &kReferenceSolver) series.push_back(std::move(vsOwn));
+    if (k > 0) series.push_back(std::move(vsOwn));  // the first is the common reference
   }
   for (int k = 0; k < solverCount; ++k) {
     const SolverReference& ref = s.refs[std::size_t(k)];
@@ -492,19 +488,19 @@ int runTearsSweep(int argc, char** argv) {
   }
   SweepReport s;
   s.scene = &scene;
+  const std::vector<SolverEntry> solvers = sweepSolvers();  // outlives the report's pointers
 
   // The references, the WCSPH one first; its extra meshers are the cube-size series.
   const std::vector<double> cubeScales = {0.5, 1, 2};
   std::vector<RunResult> cubeRuns;
-  for (const SolverEntry& solver : kSolvers) {
-    const Variant fine{"reference",           "fine",       kFineLambda, 1, kFineCube,
-                       NeighbourMethod::Grid, solver.method};
+  for (const SolverEntry& solver : solvers) {
+    Variant fine{"reference", "fine", kFineLambda, 1, kFineCube};
+    fine.solver = solver.key;
     Variant finer = fine;
     finer.lambdaScale = kFinerLambda;
     SolverReference ref;
     ref.solver = &solver;
-    ref.fine = &solver == &kReferenceSolver ? run(scene, fine, o, cubeScales, &cubeRuns)
-                                            : run(scene, fine, o);
+    ref.fine = s.refs.empty() ? run(scene, fine, o, cubeScales, &cubeRuns) : run(scene, fine, o);
     if (s.refs.empty())
       s.radius = scene.simulate(settingsFor(fine), optionsFor(fine))->particleRadius();
     const RunResult check = run(scene, finer, o);
@@ -514,14 +510,13 @@ int runTearsSweep(int argc, char** argv) {
   }
   const Comparison compare(s.refs, s.radius);
 
-  s.rows.push_back(compare.row(
-      {"reference", "fine", kFineLambda, 1, kFineCube, NeighbourMethod::Grid}, s.refs[0].fine));
+  s.rows.push_back(compare.row({"reference", "fine", kFineLambda, 1, kFineCube}, s.refs[0].fine));
   for (SolverReference& ref : s.refs) {
     const std::string series = std::string(ref.solver->name) + " sub-step factor";
     double closest = std::numeric_limits<double>::infinity();
     for (double lambda : {0.5, 1.0, 1.5, 2.0}) {
-      const Variant v{
-          series, scaleLabel(lambda), lambda, 1, 1, NeighbourMethod::Grid, ref.solver->method};
+      Variant v{series, scaleLabel(lambda), lambda};
+      v.solver = ref.solver->key;
       s.rows.push_back(compare.row(v, run(scene, v, o)));
       closest = std::min(closest, s.rows.back().vsOwn.centroid);
     }
@@ -529,33 +524,29 @@ int runTearsSweep(int argc, char** argv) {
     ref.converged = ref.check.centroid < closest;
   }
   for (double k : {0.5, 0.75, 1.0, 1.5}) {
-    const Variant v{"kernel size", scaleLabel(k), 1, k, 1, NeighbourMethod::Grid};
+    const Variant v{"kernel size", scaleLabel(k), 1, k};
     s.rows.push_back(compare.row(v, run(scene, v, o)));
   }
   for (std::size_t k = 0; k < cubeScales.size(); ++k) {
     const Variant v{"cube size (surface)", scaleLabel(cubeScales[k]), kFineLambda, 1,
-                    cubeScales[k],         NeighbourMethod::Grid};
+                    cubeScales[k]};
     Row row = compare.row(v, cubeRuns[k]);
     row.surfaceSeries = true;
     s.rows.push_back(row);
   }
-  for (NeighbourMethod m : {NeighbourMethod::Grid, NeighbourMethod::Octree}) {
-    const Variant v{"neighbour structure", neighbourKey(m), 1, 1, 1, m};
+  for (const std::string& key : registeredKeys(MethodFamily::NeighbourStructure)) {
+    Variant v{"neighbour structure", key};
+    v.neighbours = key;
     s.rows.push_back(compare.row(v, run(scene, v, o)));
   }
-  for (const SolverEntry& solver : kSolvers) {
+  for (const SolverEntry& solver : solvers) {
     ThreadAxis axis;
     axis.solver = &solver;
     for (double t : o.threadAxis) {
       const int threads = int(t);
-      Variant v{std::string(solver.name) + " threads",
-                std::to_string(threads) + " thr",
-                1,
-                1,
-                1,
-                NeighbourMethod::Grid,
-                solver.method,
-                threads};
+      Variant v{solver.name + " threads", std::to_string(threads) + " thr"};
+      v.solver = solver.key;
+      v.threads = threads;
       axis.rows.push_back(compare.row(v, run(scene, v, o)));
       const Row& first = axis.rows.front();
       const Row& last = axis.rows.back();

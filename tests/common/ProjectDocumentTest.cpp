@@ -11,6 +11,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -105,11 +106,10 @@ ProjectDocument randomDocument(unsigned seed) {
   scene.redness = coin(random) ? SceneSettings::Redness::Tears : SceneSettings::Redness::Animation;
   scene.simulation = randomSimulation(random);
   scene.quality.level = static_cast<TearQuality>(random() % 3);
-  if (coin(random)) scene.quality.solver = static_cast<TearSolver>(random() % 3);
-  if (coin(random))
-    scene.quality.tension = coin(random) ? TearTension::Akinci : TearTension::Mueller;
-  if (coin(random))
-    scene.quality.neighbours = coin(random) ? TearNeighbours::Octree : TearNeighbours::Grid;
+  const std::array<const char*, 3> solvers{"wcsph", "dfsph", "pbf"};
+  if (coin(random)) scene.quality.solver = solvers[random() % solvers.size()];
+  if (coin(random)) scene.quality.tension = coin(random) ? "akinci" : "mueller";
+  if (coin(random)) scene.quality.neighbours = coin(random) ? "octree" : "grid";
   // Absolute paths outside any temporary folder: they survive a save anywhere unchanged.
   if (coin(random)) document.head = HeadFiles{"/opt/faces/head.obj", "/opt/faces/head.fdp.json"};
   return document;
@@ -263,9 +263,9 @@ class ProjectDocumentTest : public QObject {
     ProjectDocument document;
     QVERIFY(!QString::fromStdString(document.toJson()).contains("quality"));
     document.scene.quality.level = TearQuality::Reference;
-    document.scene.quality.solver = TearSolver::Dfsph;
-    document.scene.quality.tension = TearTension::Akinci;
-    document.scene.quality.neighbours = TearNeighbours::Octree;
+    document.scene.quality.solver = "dfsph";
+    document.scene.quality.tension = "akinci";
+    document.scene.quality.neighbours = "octree";
     const std::string json = document.toJson();
     for (const char* field : {"\"quality\": \"reference\"", "\"solver\": \"dfsph\"",
                               "\"tension\": \"akinci\"", "\"neighbours\": \"octree\""})
@@ -276,19 +276,51 @@ class ProjectDocumentTest : public QObject {
         withScene2(R"("quality": "preview", "neighbours": "grid")"), kDisplayName);
     QVERIFY(read.scene.quality.level == TearQuality::Preview);
     QVERIFY(!read.scene.quality.solver && !read.scene.quality.tension);
-    QVERIFY(read.scene.quality.neighbours == TearNeighbours::Grid);
+    QVERIFY(read.scene.quality.neighbours == "grid");
     // An explicit choice equal to the level's own stays explicit: it is what the user chose.
     QVERIFY(QString::fromStdString(read.toJson()).contains("\"neighbours\": \"grid\""));
     QVERIFY(ProjectDocument::fromJson(withTopLevel(""), kDisplayName).scene.quality ==
             TearQualitySettings{});
 
     // Position-based fluids: written as "pbf", read back as written.
-    document.scene.quality.solver = TearSolver::Pbf;
+    document.scene.quality.solver = "pbf";
     const std::string pbf = document.toJson();
     QVERIFY(QString::fromStdString(pbf).contains("\"solver\": \"pbf\""));
     QVERIFY(ProjectDocument::fromJson(pbf, kDisplayName) == document);
     QVERIFY(ProjectDocument::fromJson(withScene2(R"("solver": "pbf")"), kDisplayName)
-                .scene.quality.solver == TearSolver::Pbf);
+                .scene.quality.solver == "pbf");
+  }
+
+  // The keys are the simulation's registries' (TearMethodKeys): an app that simulates passes
+  // them and a key outside them is an error naming the known ones, at its line; a reader given
+  // none (lacrima-fap) keeps any well-formed key as written.
+  void methodKeysAreCheckedAgainstTheRegistries() {
+    const TearMethodKeys keys{{"wcsph", "dfsph", "pbf"}, {"mueller", "akinci"}, {"grid", "octree"}};
+    const auto error = [&keys](const std::string& scene, const TearMethodKeys* known) {
+      try {
+        ProjectDocument::fromJson(withScene2(scene), kDisplayName, ProjectDocument::Use::Edit,
+                                  known);
+      } catch (const FileError& e) {
+        return QString::fromUtf8(e.what());
+      }
+      return QString("no error");
+    };
+    QCOMPARE(error(R"("solver": "pcisph")", &keys),
+             QString(R"(doc.json:1:67: scene.solver: expected "wcsph", "dfsph" or "pbf", )"
+                     R"(got "pcisph")"));
+    QCOMPARE(error(R"("quality": "preview", "tension": "becker")", &keys),
+             QString(R"(doc.json:1:89: scene.tension: expected "mueller" or "akinci", )"
+                     R"(got "becker")"));
+    QCOMPARE(error(R"("neighbours": "kd-tree")", &keys),
+             QString(R"(doc.json:1:67: scene.neighbours: expected "grid" or "octree", )"
+                     R"(got "kd-tree")"));
+    QCOMPARE(error(R"("solver": "dfsph", "neighbours": "octree")", &keys), QString("no error"));
+    // Without the registries' keys a well-formed one is kept, to be written back unchanged.
+    const ProjectDocument kept = ProjectDocument::fromJson(
+        withScene2(R"("solver": "pcisph", "tension": "becker_2007")"), kDisplayName);
+    QCOMPARE(*kept.scene.quality.solver, std::string("pcisph"));
+    QCOMPARE(*kept.scene.quality.tension, std::string("becker_2007"));
+    QVERIFY(ProjectDocument::fromJson(kept.toJson(), kDisplayName) == kept);
   }
 
   void minimalDocumentGetsDefaults() {
@@ -450,16 +482,18 @@ class ProjectDocumentTest : public QObject {
     QTest::newRow("quality level not a string")
         << QString::fromStdString(withScene2(R"("quality": 2)")) << "doc.json:1:67"
         << "scene.quality: expected \"preview\", \"balanced\" or \"reference\", got 2";
-    QTest::newRow("unknown solver")
-        << QString::fromStdString(withScene2(R"("solver": "pcisph")")) << "doc.json:1:67"
-        << "scene.solver: expected \"wcsph\", \"dfsph\" or \"pbf\", got \"pcisph\"";
-    QTest::newRow("unknown tension model")
-        << QString::fromStdString(withScene2(R"("quality": "preview", "tension": "Akinci")"))
+    QTest::newRow("solver not a key")
+        << QString::fromStdString(withScene2(R"("solver": "PCISPH")")) << "doc.json:1:67"
+        << "scene.solver: expected a method's key (lower-case letters, digits, - and _), got "
+           "\"PCISPH\"";
+    QTest::newRow("tension model not a key")
+        << QString::fromStdString(withScene2(R"("quality": "preview", "tension": 2)"))
         << "doc.json:1:89"
-        << "scene.tension: expected \"mueller\" or \"akinci\", got \"Akinci\"";
-    QTest::newRow("unknown neighbour structure")
-        << QString::fromStdString(withScene2(R"("neighbours": "kd-tree")")) << "doc.json:1:67"
-        << "scene.neighbours: expected \"grid\" or \"octree\", got \"kd-tree\"";
+        << "scene.tension: expected a method's key (lower-case letters, digits, - and _), got 2";
+    QTest::newRow("neighbour structure not a key")
+        << QString::fromStdString(withScene2(R"("neighbours": "")")) << "doc.json:1:67"
+        << "scene.neighbours: expected a method's key (lower-case letters, digits, - and _), got "
+           "\"\"";
     QTest::newRow("quality in a version 1 file")
         << QString::fromStdString(withTopLevel(R"("scene": {"quality": "reference"})"))
         << "doc.json:1:67"

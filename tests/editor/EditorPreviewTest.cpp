@@ -112,7 +112,7 @@ class EditorPreviewTest : public QObject {
     const int undoSteps = window.model().undoStack()->count();
     ProjectDocument settings = window.model().document();
     settings.scene.quality.level = TearQuality::Reference;
-    settings.scene.quality.tension = TearTension::Akinci;
+    settings.scene.quality.tension = "akinci";
     window.model().setSettings(settings, QStringLiteral("Project settings"));
     QCOMPARE(window.model().undoStack()->count(), undoSteps + 1);
     QVERIFY(window.model().document().scene.quality == settings.scene.quality);

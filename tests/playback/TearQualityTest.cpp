@@ -11,6 +11,10 @@
 
 #include <QtTest>
 
+#include <stdexcept>
+#include <string>
+#include <vector>
+
 using namespace lacrima;
 using namespace lacrima::playback;
 using namespace lacrima::playback::test;
@@ -67,14 +71,15 @@ class TearQualityTest : public QObject {
       QCOMPARE(o.lambdaAcceleration, defaults.lambdaAcceleration * info.substepFactor);
       QCOMPARE(o.lambdaViscosity,
                std::min(defaults.lambdaViscosity, defaults.lambdaViscosity * info.substepFactor));
-      QVERIFY(o.pressureSolver == info.solver && o.pressureSolver == tears::PressureMethod::Wcsph);
-      QVERIFY(o.surfaceTension == info.tension &&
-              o.surfaceTension == tears::SurfaceTensionModel::Mueller);
-      QVERIFY(o.neighbours == info.neighbours && o.neighbours == tears::NeighbourMethod::Grid);
+      QVERIFY(o.pressureSolver.key == info.solver && info.solver == "wcsph");
+      QVERIFY(o.surfaceTension.key == info.tension && info.tension == "mueller");
+      QVERIFY(o.neighbours.key == info.neighbours && info.neighbours == "grid");
+      QVERIFY(o.pressureSolver == defaults.pressureSolver);
+      QVERIFY(o.surfaceTension == defaults.surfaceTension);
+      QVERIFY(o.neighbours == defaults.neighbours);
       // Nothing else moves.
       QCOMPARE(o.neighbourSkin, defaults.neighbourSkin);
       QCOMPARE(o.maxSubsteps, defaults.maxSubsteps);
-      QCOMPARE(o.dfsphTolerance, defaults.dfsphTolerance);
       QCOMPARE(o.maxSubstepSeconds, defaults.maxSubstepSeconds);
     }
     QCOMPARE(tearQualityLevel(TearQuality::Balanced).substepFactor, 1.0);
@@ -87,24 +92,47 @@ class TearQualityTest : public QObject {
   }
 
   void advancedChoicesReplaceTheLevels() {
-    TearQualitySettings quality{TearQuality::Preview, TearSolver::Dfsph, TearTension::Akinci,
-                                TearNeighbours::Octree};
+    TearQualitySettings quality{TearQuality::Preview, "dfsph", "akinci", "octree"};
     tears::SimulationOptions o = simulationOptions(quality);
-    QVERIFY(o.pressureSolver == tears::PressureMethod::Dfsph);
-    QVERIFY(o.surfaceTension == tears::SurfaceTensionModel::Akinci);
-    QVERIFY(o.neighbours == tears::NeighbourMethod::Octree);
+    QCOMPARE(o.pressureSolver.key, std::string("dfsph"));
+    QCOMPARE(o.surfaceTension.key, std::string("akinci"));
+    QCOMPARE(o.neighbours.key, std::string("octree"));
     QCOMPARE(o.lambdaCfl, simulationOptions({TearQuality::Preview, {}, {}, {}}).lambdaCfl);
-    quality = {TearQuality::Reference, TearSolver::Wcsph, TearTension::Mueller,
-               TearNeighbours::Grid};
+    quality = {TearQuality::Reference, "wcsph", "mueller", "grid"};
     o = simulationOptions(quality);
-    QVERIFY(o.pressureSolver == tears::PressureMethod::Wcsph);
-    QVERIFY(o.surfaceTension == tears::SurfaceTensionModel::Mueller);
-    QVERIFY(o.neighbours == tears::NeighbourMethod::Grid);
+    QCOMPARE(o.pressureSolver.key, std::string("wcsph"));
+    QCOMPARE(o.surfaceTension.key, std::string("mueller"));
+    QCOMPARE(o.neighbours.key, std::string("grid"));
     // Position-based fluids replace the level's solver only.
-    o = simulationOptions({TearQuality::Balanced, TearSolver::Pbf, {}, {}});
-    QVERIFY(o.pressureSolver == tears::PressureMethod::Pbf);
+    o = simulationOptions({TearQuality::Balanced, "pbf", {}, {}});
+    QCOMPARE(o.pressureSolver.key, std::string("pbf"));
     QCOMPARE(o.lambdaCfl, simulationOptions({}).lambdaCfl);
-    QVERIFY(o.surfaceTension == tears::SurfaceTensionModel::Mueller);
+    QCOMPARE(o.surfaceTension.key, std::string("mueller"));
+  }
+
+  // A key no registry holds is refused, naming the known ones, never replaced by a default.
+  void unknownChoicesAreErrorsNamingTheKnownKeys() {
+    const auto message = [](const TearQualitySettings& quality) {
+      try {
+        simulationOptions(quality);
+      } catch (const std::invalid_argument& e) {
+        return std::string(e.what());
+      }
+      return std::string("no error");
+    };
+    QCOMPARE(message({TearQuality::Balanced, "pcisph", {}, {}}),
+             std::string("unknown pressure solver \"pcisph\"; expected \"wcsph\", \"dfsph\" or "
+                         "\"pbf\""));
+    QCOMPARE(message({TearQuality::Balanced, {}, "becker", {}}),
+             std::string("unknown surface tension \"becker\"; expected \"mueller\" or "
+                         "\"akinci\""));
+    QCOMPARE(message({TearQuality::Balanced, {}, {}, "kd-tree"}),
+             std::string("unknown neighbour structure \"kd-tree\"; expected \"grid\" or "
+                         "\"octree\""));
+    const TearMethodKeys keys = tearMethodKeys();
+    QCOMPARE(keys.solvers, (std::vector<std::string>{"wcsph", "dfsph", "pbf"}));
+    QCOMPARE(keys.tensions, (std::vector<std::string>{"mueller", "akinci"}));
+    QCOMPARE(keys.neighbours, (std::vector<std::string>{"grid", "octree"}));
   }
 
   void producerRunsEveryLevelFinite_data() {
@@ -125,11 +153,11 @@ class TearQualityTest : public QObject {
     QFETCH(int, advanced);
     if (!loadRig()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     TearQualitySettings quality{static_cast<TearQuality>(level), {}, {}, {}};
-    if (advanced == 2) quality.solver = TearSolver::Pbf;
+    if (advanced == 2) quality.solver = "pbf";
     if (advanced == 1) {
-      quality.solver = TearSolver::Dfsph;
-      quality.tension = TearTension::Akinci;
-      quality.neighbours = TearNeighbours::Octree;
+      quality.solver = "dfsph";
+      quality.tension = "akinci";
+      quality.neighbours = "octree";
     }
     SceneSettings scene;
     scene.quality = quality;
@@ -178,10 +206,10 @@ class TearQualityTest : public QObject {
 
     producer.produce(animation.frames.back(), 1.0 / kFps, 0);
     QVERIFY(producer.particleCount() > 0);
-    scene.quality.neighbours = TearNeighbours::Octree;  // an advanced choice restarts them too
+    scene.quality.neighbours = "octree";  // an advanced choice restarts them too
     producer.setScene(scene);
     QCOMPARE(producer.particleCount(), 0);
-    QVERIFY(producer.simulationOptions().neighbours == tears::NeighbourMethod::Octree);
+    QCOMPARE(producer.simulationOptions().neighbours.key, std::string("octree"));
   }
 
  private:

@@ -14,10 +14,13 @@ using namespace lacrima::tears::testing;
 
 namespace {
 
-SimulationOptions pbfOptions(int iterations = SimulationOptions{}.pbfIterations) {
+// The registry's default: 4 constraint iterations per sub-step.
+constexpr int kDefaultIterations = 4;
+
+SimulationOptions pbfOptions(int iterations = kDefaultIterations) {
   SimulationOptions o;
-  o.pressureSolver = PressureMethod::Pbf;
-  o.pbfIterations = iterations;
+  o.pressureSolver = "pbf";
+  o.pressureSolver.parameters["iterations"] = iterations;
   return o;
 }
 
@@ -74,9 +77,8 @@ class TearPbfTest : public QObject {
     auto sim = makeSheetSimulation(sheet, {}, pbfOptions());
     runAndCheck(*sim, sheet, 100, 100, 88);
     QCOMPARE(sim->counters().clamped, 0LL);
-    // The solver ran: its sweeps are counted as density sweeps, pbfIterations per sub-step.
-    QCOMPARE(sim->counters().densityIterations,
-             sim->counters().substeps * SimulationOptions{}.pbfIterations);
+    // The solver ran: its sweeps are counted as density sweeps, "iterations" per sub-step.
+    QCOMPARE(sim->counters().densityIterations, sim->counters().substeps * kDefaultIterations);
   }
 
   void compressionStaysInItsBand() {
@@ -90,7 +92,7 @@ class TearPbfTest : public QObject {
     auto wcsph = makeSheetSimulation(sheet);
     const Compression w = settledCompression(*wcsph, sheet, 150, 150, 22, 66);
     qInfo("rho/rho0: PBF (%d iterations) max %.4f, interior mean %.4f; WCSPH max %.4f, %.4f",
-          SimulationOptions{}.pbfIterations, c.max, c.mean, w.max, w.mean);
+          kDefaultIterations, c.max, c.mean, w.max, w.mean);
     QVERIFY2(c.max <= 1.08, qPrintable(QString("max rho/rho0 %1").arg(c.max)));
     QVERIFY2(c.mean <= 1.03, qPrintable(QString("mean rho/rho0 %1").arg(c.mean)));
     QVERIFY(c.mean >= 0.9);  // not blown apart either
@@ -103,7 +105,7 @@ class TearPbfTest : public QObject {
     // pulls the pairs back, so it spreads them: why it is off by default).
     const SyntheticSkin sheet = makeCheekSheet();
     SimulationOptions o = pbfOptions();
-    o.pbfArtificialPressure = true;
+    o.pressureSolver.parameters["artificial-pressure"] = 1;
     auto with = makeSheetSimulation(sheet, {}, o);
     runAndCheck(*with, sheet, 100, 100, 44);
     QCOMPARE(with->counters().clamped, 0LL);

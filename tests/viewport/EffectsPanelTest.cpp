@@ -7,6 +7,7 @@
 #include <lacrima/playback/FrameProducer.h>
 #include <lacrima/playback/TearQualityOptions.h>
 #include <lacrima/rigging/DefaultHead.h>
+#include <lacrima/tears/TearMethods.h>
 #include <lacrima/viewport/EffectsPanel.h>
 
 #include <QCheckBox>
@@ -88,23 +89,26 @@ class EffectsPanelTest : public QObject {
     // Advanced: shown on demand; an explicit solver replaces the level's.
     panel.advanced()->click();
     QVERIFY(panel.solver()->isVisibleTo(&panel));
-    panel.solver()->setCurrentIndex(1 + static_cast<int>(TearSolver::Dfsph));
-    QVERIFY(producer.scene().quality.solver == TearSolver::Dfsph);
-    QVERIFY(producer.simulationOptions().pressureSolver == tears::PressureMethod::Dfsph);
+    panel.solver()->setCurrentIndex(panel.solver()->findData(QStringLiteral("dfsph")));
+    QVERIFY(producer.scene().quality.solver == "dfsph");
+    QCOMPARE(producer.simulationOptions().pressureSolver.key, std::string("dfsph"));
     QCOMPARE(producer.particleCount(), 0);
     play(producer, panel, 3);
     QVERIFY(producer.particleCount() > 0);
-    QCOMPARE(panel.solver()->count(), 1 + static_cast<int>(kTearSolverNames.size()));
-    panel.solver()->setCurrentIndex(1 + static_cast<int>(TearSolver::Pbf));
-    QVERIFY(producer.scene().quality.solver == TearSolver::Pbf);
-    QVERIFY(producer.simulationOptions().pressureSolver == tears::PressureMethod::Pbf);
+    // "as the level", then every registered solver.
+    QCOMPARE(
+        panel.solver()->count(),
+        1 + static_cast<int>(tears::registeredKeys(tears::MethodFamily::PressureSolver).size()));
+    panel.solver()->setCurrentIndex(panel.solver()->findData(QStringLiteral("pbf")));
+    QVERIFY(producer.scene().quality.solver == "pbf");
+    QCOMPARE(producer.simulationOptions().pressureSolver.key, std::string("pbf"));
     QCOMPARE(panel.solver()->currentText(), QStringLiteral("PBF"));
     QCOMPARE(producer.particleCount(), 0);  // restarted with the new solver
     play(producer, panel, 3);
     QVERIFY(producer.particleCount() > 0);
     panel.solver()->setCurrentIndex(0);  // back to the level's own
     QVERIFY(!producer.scene().quality.solver);
-    QVERIFY(producer.simulationOptions().pressureSolver == tears::PressureMethod::Wcsph);
+    QCOMPARE(producer.simulationOptions().pressureSolver.key, std::string("wcsph"));
 
     // An effect toggle does not restart the tears.
     play(producer, panel, 3);
@@ -118,8 +122,7 @@ class EffectsPanelTest : public QObject {
     EffectsPanel panel;
     QSignalSpy edited(&panel, &EffectsPanel::edited);
     SceneSettings scene;
-    scene.quality = {TearQuality::Preview, std::nullopt, TearTension::Akinci,
-                     TearNeighbours::Octree};
+    scene.quality = {TearQuality::Preview, std::nullopt, "akinci", "octree"};
     scene.simulation["adhesion"] = 40;
     panel.display(scene);
     QCOMPARE(edited.count(), 0);

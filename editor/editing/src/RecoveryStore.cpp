@@ -108,7 +108,8 @@ std::vector<RecoveryStore::Orphan> RecoveryStore::orphans() const {
   return found;
 }
 
-ProjectDocument RecoveryStore::read(const QString& file, QString* sourcePath, QDateTime* savedAt) {
+ProjectDocument RecoveryStore::read(const QString& file, QString* sourcePath, QDateTime* savedAt,
+                                    const TearMethodKeys* methods) {
   const JsonValue root =
       JsonInput::load(file.toStdString(), {"recovery file", kMaxRecoveryBytes}).root();
   const JsonValue format = root["format"];
@@ -117,7 +118,8 @@ ProjectDocument RecoveryStore::read(const QString& file, QString* sourcePath, QD
   const JsonValue version = root["version"];
   if (!version.isNumber() || version.number() != 1)
     version.fail("expected 1, got " + version.describe());
-  ProjectDocument document = ProjectDocument::read(root["project"]);
+  ProjectDocument document =
+      ProjectDocument::read(root["project"], ProjectDocument::Use::Edit, methods);
   if (sourcePath) *sourcePath = QString::fromStdString(root["sourcePath"].string());
   if (savedAt)
     *savedAt =

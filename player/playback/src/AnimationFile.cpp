@@ -2,6 +2,7 @@
 #include <lacrima/common/FapReader.h>
 #include <lacrima/common/ProjectPath.h>
 #include <lacrima/playback/AnimationFile.h>
+#include <lacrima/playback/TearQualityOptions.h>
 
 #include <exception>
 #include <new>
@@ -11,7 +12,9 @@ namespace lacrima::playback {
 AnimationFile readAnimationFile(const std::string& path) try {
   AnimationFile file;
   if (isProjectPath(path)) {
-    const ProjectDocument document = ProjectDocument::load(path, ProjectDocument::Use::Bake);
+    const TearMethodKeys methods = tearMethodKeys();
+    const ProjectDocument document =
+        ProjectDocument::load(path, ProjectDocument::Use::Bake, &methods);
     file.project = true;
     file.animation = document.bake();
     file.scene = document.scene;

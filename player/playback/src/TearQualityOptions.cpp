@@ -11,24 +11,17 @@ namespace lacrima::playback {
 
 namespace {
 
-using tears::NeighbourMethod;
-using tears::PressureMethod;
-using tears::SurfaceTensionModel;
-
 // Only the sub-step factor changes between levels. DFSPH is not a more accurate WCSPH (its
 // drops run 40-75 radii from the WCSPH reference, decision 0009) and the octree finds the same
 // pairs more slowly, so those stay advanced choices rather than levels.
 constexpr std::array<TearQualityLevel, 3> kLevels{{
-    {TearQuality::Preview, 1.5, PressureMethod::Wcsph, SurfaceTensionModel::Mueller,
-     NeighbourMethod::Grid, "Preview",
+    {TearQuality::Preview, 1.5, "wcsph", "mueller", "grid", "Preview",
      "Longer sub-steps (x1.5): about two thirds of Balanced's sub-steps and time; drops end 2.6 "
      "particle radii from a fine reference instead of 1.6"},
-    {TearQuality::Balanced, 1.0, PressureMethod::Wcsph, SurfaceTensionModel::Mueller,
-     NeighbourMethod::Grid, "Balanced",
+    {TearQuality::Balanced, 1.0, "wcsph", "mueller", "grid", "Balanced",
      "The defaults (WCSPH, sub-step factor x1): drops end 1.6 particle radii from a fine "
      "reference"},
-    {TearQuality::Reference, 0.5, PressureMethod::Wcsph, SurfaceTensionModel::Mueller,
-     NeighbourMethod::Grid, "Reference",
+    {TearQuality::Reference, 0.5, "wcsph", "mueller", "grid", "Reference",
      "Shorter sub-steps (x0.5): about twice Balanced's sub-steps, 1.8 times its time; drops end "
      "0.86 particle radii from a fine reference"},
 }};
@@ -43,20 +36,19 @@ tears::SimulationOptions simulationOptions(const TearQualitySettings& quality) {
   const TearQualityLevel& level = tearQualityLevel(quality.level);
   tears::SimulationOptions options;
   options.scaleSubsteps(level.substepFactor);  // as the sweep scales them
-  options.pressureSolver = level.solver;
-  options.surfaceTension = level.tension;
-  options.neighbours = level.neighbours;
-  if (quality.solver)
-    options.pressureSolver = *quality.solver == TearSolver::Dfsph ? PressureMethod::Dfsph
-                             : *quality.solver == TearSolver::Pbf ? PressureMethod::Pbf
-                                                                  : PressureMethod::Wcsph;
-  if (quality.tension)
-    options.surfaceTension = *quality.tension == TearTension::Akinci ? SurfaceTensionModel::Akinci
-                                                                     : SurfaceTensionModel::Mueller;
-  if (quality.neighbours)
-    options.neighbours = *quality.neighbours == TearNeighbours::Octree ? NeighbourMethod::Octree
-                                                                       : NeighbourMethod::Grid;
+  options.pressureSolver = quality.solver.value_or(std::string(level.solver));
+  options.surfaceTension = quality.tension.value_or(std::string(level.tension));
+  options.neighbours = quality.neighbours.value_or(std::string(level.neighbours));
+  tears::checkMethodChoice(tears::MethodFamily::PressureSolver, options.pressureSolver);
+  tears::checkMethodChoice(tears::MethodFamily::SurfaceTension, options.surfaceTension);
+  tears::checkMethodChoice(tears::MethodFamily::NeighbourStructure, options.neighbours);
   return options;
+}
+
+TearMethodKeys tearMethodKeys() {
+  return {tears::registeredKeys(tears::MethodFamily::PressureSolver),
+          tears::registeredKeys(tears::MethodFamily::SurfaceTension),
+          tears::registeredKeys(tears::MethodFamily::NeighbourStructure)};
 }
 
 }  // namespace lacrima::playback

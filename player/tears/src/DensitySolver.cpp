@@ -36,7 +36,7 @@ Float4 positivePart(Float4 q) {
 // The candidate loop, four candidates of particle i at a time. Every candidate is written out
 // (partner, r^2) and the write position advances only for a kept pair within h, so the
 // output is compact without a branch: about half the candidates lie beyond h, unpredictably.
-// Beyond h the weight is exactly 0 (adding 0 changes no sum). With strays (PairList.h), listed
+// Beyond h the weight is exactly 0 (adding 0 changes no sum). With strays (VerletPairs.h), listed
 // pairs that involve one are weighted by 0 and not kept, and each particle's stray pairs follow
 // its listed ones, so the pair order stays a pure function of the list. rho_i sums its
 // candidates in four lanes, then the lanes, the tail and the strays, in that fixed order, onto

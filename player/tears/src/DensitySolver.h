@@ -3,7 +3,7 @@
 // of a sub-step (FluidForcePass.h has the second):
 //   rho_i = sum_j m_j W_poly6(x_i - x_j), the particle itself included,
 // with density normalised (rho0 = 1). It also turns the Verlet candidates into the sub-step's
-// pairs within h (ActivePairs, PairList.h) with their r^2 and the float positions they were
+// pairs within h (ActivePairs.h) with their r^2 and the float positions they were
 // measured with, from which every later pass recomputes the same offsets.
 //
 // Single precision on copies of the particle state (positions relative to the first particle,
@@ -19,7 +19,8 @@
 // density is its own chunk's sum plus the earlier chunks' sums for it, in chunk order: the same sum
 // in the same order for any number of threads.
 #include "Kernels.h"
-#include "PairList.h"
+#include "ActivePairs.h"
+#include "VerletPairs.h"
 #include "ParallelChunks.h"
 
 #include <lacrima/tears/ParticleSet.h>
@@ -31,7 +32,7 @@ namespace lacrima::tears {
 class DensitySolver {
  public:
   explicit DensitySolver(double h) : h_(h), w_(h) {}
-  // Filters the candidates (with this sub-step's strays, PairList.h) to the pairs closer than h,
+  // Filters the candidates (with this sub-step's strays, VerletPairs.h) to the pairs closer than h,
   // into `active` with their r^2 (the force pass takes square roots for kept pairs only) and
   // the positions, and sums the density over them. Without `parallel` the chunks run in order
   // on the calling thread (the same results).

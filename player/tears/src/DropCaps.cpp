@@ -8,9 +8,7 @@
 #include <stdexcept>
 
 namespace lacrima::tears {
-namespace {
-constexpr std::size_t kMaxSeeds = 32;  // contact triangles of a drop used to start skin walks
-}  // namespace
+namespace {}  // namespace
 
 DropCaps::DropCaps(std::vector<Eigen::Vector3i> skinTriangles, const DropCapSettings& settings)
     : skin_(std::move(skinTriangles)), settings_(settings) {
@@ -101,13 +99,9 @@ void DropCaps::binDrops(double h) {
   std::sort(bins_.begin(), bins_.end());
 }
 
-// The skin triangles a drop's particles touch (at most kMaxSeeds), into seeds_; false when none.
+// The skin triangles a drop's particles touch, into seeds_; false when none.
 bool DropCaps::gatherSeeds(const ParticleSet& particles, const FoundDrop& drop) {
-  seeds_.clear();
-  for (int i : finder_.particlesOf(drop)) {
-    const int t = particles.contact[static_cast<std::size_t>(i)].triangle;
-    if (t >= 0 && t < skin_.triangleCount() && seeds_.size() < kMaxSeeds) seeds_.push_back(t);
-  }
+  skin_.contactSeeds(particles.contact, finder_.particlesOf(drop), seeds_);
   return !seeds_.empty();
 }
 

@@ -34,14 +34,14 @@
 // the drop fell hangs again when its own weight is under its capacity (the residue of a real
 // pendant drop).
 //
-// gamma is an effective holding tension (Parameters.h): the SPH film under the chin is one or
+// gamma is an effective holding tension (TearSettings.h): the SPH film under the chin is one or
 // two particles thick, so its contact patch is several times wider than the neck a real drop
 // hangs from, and gamma is scaled so drops let go at the 20-30 uL water drops on skin hold
 // (docs/tears.md, "Drops that fall").
 //
 // Deterministic: components are joined towards the lower particle index, and every sum runs in
 // particle order.
-#include "PairList.h"
+#include "ActivePairs.h"
 #include "SkinContact.h"
 
 #include <lacrima/tears/ParticleSet.h>

@@ -36,7 +36,7 @@ class Emitter {
   void spawn(ParticleSet& particles, Eye eye, int count, const EmissionSite& site);
   // Re-emits the particles in `slots` (escaped ones) as new particles of `eye` at `site`, in
   // place: no other particle changes index, so the solver's pair list stays usable (the moved
-  // ones become strays, PairList.h).
+  // ones become strays, VerletPairs.h).
   void respawn(ParticleSet& particles, Eye eye, std::span<const int> slots,
                const EmissionSite& site);
 

@@ -12,7 +12,7 @@
 // All terms are accelerations (force density over the particle's density); density is
 // normalised (rho0 = 1).
 //
-// Every term is evaluated over the half pair list (ActivePairs, PairList.h): each pair i < j
+// Every term is evaluated over the half pair list (ActivePairs.h): each pair i < j
 // once, its contribution added to both particles (antisymmetric terms with opposite signs). The
 // iteration order is fixed (particle order, then partner order), so sums are reproducible.
 //
@@ -31,7 +31,7 @@
 // bitwise identical on every x86-64 machine. Per-particle results are converted back to the
 // double ParticleSet.
 #include "Kernels.h"
-#include "PairList.h"
+#include "ActivePairs.h"
 #include "ParallelChunks.h"
 #include "UninitialisedAllocator.h"
 #include "Viscosity_Mueller2003.h"

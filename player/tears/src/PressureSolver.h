@@ -1,6 +1,7 @@
 #pragma once
 // Pressure: what keeps the fluid from compressing, chosen by SimulationOptions::pressureSolver
-// (PressureMethod). Three methods, each in its own class named after its method:
+// (a key of the registry below, TearMethods.h). Each method is its own class named after it,
+// listed once in PressureSolverRegistration.cpp:
 //   PressureSolver_WCSPH.h  a stiff equation of state (weakly compressible SPH, the default);
 //   PressureSolver_DFSPH.h  divergence-free SPH, two iterative velocity solves;
 //   PressureSolver_PBF.h    position-based fluids, density constraints on the predicted positions.
@@ -12,10 +13,11 @@
 //      skin contact constraint (DFSPH's density solve, PBF's position solve).
 // Between them the sub-step's length is chosen (AdaptiveTimeStep.h) with the solver's speed of
 // sound and the acceleration it says bounds the step.
-#include "PairList.h"
+#include "MethodRegistry.h"
+#include "ActivePairs.h"
 #include "SkinContact.h"
 
-#include <lacrima/tears/Parameters.h>
+#include <lacrima/tears/TearSettings.h>
 #include <lacrima/tears/ParticleSet.h>
 #include <lacrima/tears/SimulationOptions.h>
 #include <lacrima/tears/TearCounters.h>
@@ -34,11 +36,6 @@ struct PressureHistory {
 class PressureSolver {
  public:
   virtual ~PressureSolver() = default;
-  // The method the options name, tuned by the tear parameters.
-  static std::unique_ptr<PressureSolver> create(PressureMethod method,
-                                                const ScaledParameters& parameters,
-                                                const TearSettings& settings,
-                                                const SimulationOptions& options);
 
   // The speed of sound of the CFL condition (0: the method has no equation of state).
   virtual double soundSpeed() const = 0;
@@ -54,6 +51,11 @@ class PressureSolver {
   virtual PressureHistory history() const { return {}; }
   virtual void restoreHistory(const PressureHistory&) {}
 };
+
+// Every pressure solver, made from its values, the scaled parameters and the tear settings.
+using PressureSolverRegistry =
+    MethodRegistry<PressureSolver, const ScaledParameters&, const TearSettings&>;
+PressureSolverRegistry& pressureSolverRegistry();
 
 // The skin normal under each touching particle, zero under a free one: the incompressible
 // solvers (DFSPH, PBF) drop the part of a correction that would push a particle into the skin.

@@ -7,6 +7,32 @@
 
 namespace lacrima::tears {
 
+MethodInfo PressureSolver_DFSPH::info() {
+  const DivergenceFreeSettings defaults;
+  return {"dfsph",
+          "DFSPH",
+          "Divergence-free SPH: two iterative velocity solves per sub-step; drops cling harder, "
+          "about twice the cost per sub-step",
+          {{"tolerance",
+            "Mean compression left after a step at the default pressure (the pressure "
+            "parameter scales it inversely)",
+            defaults.densityTolerance, 1e-4, 0.1, false},
+           {"max-iterations", "Iterations per solve before it stops (counted as capped)",
+            static_cast<double>(defaults.maxIterations), 2, 1000, true}}};
+}
+
+std::unique_ptr<PressureSolver> PressureSolver_DFSPH::create(const MethodValues& values,
+                                                             const ScaledParameters& p,
+                                                             const TearSettings& settings) {
+  const double stiffness =
+      settings.pressure > 0 ? TearSettings{}.pressure / settings.pressure : 1e3;
+  DivergenceFreeSettings dfsph;
+  dfsph.densityTolerance = std::clamp(values.number("tolerance") * stiffness, 1e-4, 0.1);
+  dfsph.divergenceTolerance = dfsph.densityTolerance;
+  dfsph.maxIterations = values.wholeNumber("max-iterations");
+  return std::make_unique<PressureSolver_DFSPH>(p.h, dfsph);
+}
+
 PressureSolver_DFSPH::PressureSolver_DFSPH(double h, const DivergenceFreeSettings& settings)
     : w_(h), settings_(settings) {}
 

@@ -22,8 +22,8 @@
 // tear) the density deficit is not an error, and cohesion is surface tension's job, as with the
 // clamped pressure of the weakly compressible solver.
 //
-// The stiffness parameter of the 2009 table has no meaning here; PressureSolver::create maps it
-// to the tolerance instead (stiffer = tighter), see SimulationOptions.
+// The stiffness parameter of the 2009 table has no meaning here; create() maps it
+// to the tolerance instead (stiffer = tighter), see create().
 //
 // Passes run in single precision over Float4 copies (as FluidForcePass.h); the velocity changes
 // are summed in float and added to the double velocities once, in particle order, so results are
@@ -56,6 +56,12 @@ struct DivergenceFreeStats {
 class PressureSolver_DFSPH final : public PressureSolver {
  public:
   PressureSolver_DFSPH(double h, const DivergenceFreeSettings& settings);
+  static MethodInfo info();
+  // The pressure parameter sets how tight the solves are: ten times the default pressure, ten
+  // times tighter than the "tolerance" parameter, within [1e-4, 0.1].
+  static std::unique_ptr<PressureSolver> create(const MethodValues& values,
+                                                const ScaledParameters& parameters,
+                                                const TearSettings& settings);
 
   // No equation of state: no sound speed in the CFL condition.
   double soundSpeed() const override { return 0; }

@@ -7,6 +7,32 @@
 
 namespace lacrima::tears {
 
+MethodInfo PressureSolver_PBF::info() {
+  const PositionBasedSettings defaults;
+  return {"pbf",
+          "PBF",
+          "Position-based fluids: density constraints on the predicted positions, a fixed number "
+          "of iterations per sub-step",
+          {{"iterations", "Constraint iterations per sub-step",
+            static_cast<double>(defaults.iterations), 1, 100, true},
+           {"relaxation", "Constraint force mixing epsilon, in 1/h^2", defaults.relaxation, 0, 100,
+            false},
+           {"artificial-pressure",
+            "The paper's s_corr term against the tensile instability (1) "
+            "or none (0)",
+            defaults.artificialPressure ? 1.0 : 0.0, 0, 1, true}}};
+}
+
+std::unique_ptr<PressureSolver> PressureSolver_PBF::create(const MethodValues& values,
+                                                           const ScaledParameters& p,
+                                                           const TearSettings&) {
+  PositionBasedSettings pbf;
+  pbf.iterations = values.wholeNumber("iterations");
+  pbf.relaxation = values.number("relaxation");
+  pbf.artificialPressure = values.flag("artificial-pressure");
+  return std::make_unique<PressureSolver_PBF>(p.h, pbf);
+}
+
 namespace {
 
 // The paper's artificial pressure: k = 0.1 (times h^2, lambda's scale), n = 4, at dq = 0.2 h.

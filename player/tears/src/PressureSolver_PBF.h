@@ -33,7 +33,7 @@
 // the clumping it fights does not show, and nothing pulls the pairs it pushes back (the
 // constraint never acts on a stretched particle), so it spreads the drops (max rho/rho0 0.62 on
 // the sheet, test_tears_pbf): optional and off by default
-// (SimulationOptions::pbfArtificialPressure).
+// (the "artificial-pressure" parameter).
 //
 // Skin contacts: a touching particle's correction loses its part into the skin (along the
 // normal of the triangle it touches), as DFSPH's density solve does with its acceleration, so
@@ -77,6 +77,10 @@ struct PositionBasedStats {
 class PressureSolver_PBF final : public PressureSolver {
  public:
   PressureSolver_PBF(double h, const PositionBasedSettings& settings);
+  static MethodInfo info();
+  static std::unique_ptr<PressureSolver> create(const MethodValues& values,
+                                                const ScaledParameters& parameters,
+                                                const TearSettings& settings);
 
   double soundSpeed() const override { return 0; }
   // Zero pressures: the constraint replaces the pressure force.

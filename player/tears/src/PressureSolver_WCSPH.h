@@ -6,12 +6,13 @@
 // in the regime Monaghan 1994 ("Simulating free surface flows with SPH") set out: c about ten
 // times the fastest flow, so density varies by about a per cent and the fluid passes for
 // incompressible. (Becker & Teschner 2007 use Tait's stiffer equation instead; the tears do not
-// need it.) The price is the CFL limit h / c on the sub-step (Parameters.h picks c).
+// need it.) The price is the CFL limit h / c on the sub-step (TearSettings.h picks c).
 // The force pass applies the symmetric pressure force (FluidForcePass.h).
 //
-// Negative pressures are clamped to 0 by default: with tens of particles nearly all of them sit
-// at the free surface, where the density deficit would otherwise pull them into clumps (tensile
-// instability); cohesion is the surface-tension term's job.
+// Negative pressures are clamped to 0 by default (the "clamp-negative" parameter): with tens of
+// particles nearly all of them sit at the free surface, where the density deficit would
+// otherwise pull them into clumps (tensile instability); cohesion is the surface-tension term's
+// job.
 #include "PressureSolver.h"
 
 namespace lacrima::tears {
@@ -20,6 +21,10 @@ class PressureSolver_WCSPH final : public PressureSolver {
  public:
   PressureSolver_WCSPH(double stiffness, double restDensity, double soundSpeed, bool clampNegative)
       : k_(stiffness), rho0_(restDensity), c_(soundSpeed), clampNegative_(clampNegative) {}
+  static MethodInfo info();
+  static std::unique_ptr<PressureSolver> create(const MethodValues& values,
+                                                const ScaledParameters& parameters,
+                                                const TearSettings& settings);
 
   double soundSpeed() const override { return c_; }
   void computePressures(ParticleSet& particles, const ActivePairs& pairs, double remaining,

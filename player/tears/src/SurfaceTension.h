@@ -1,7 +1,8 @@
 #pragma once
-// Surface tension, chosen by SimulationOptions::surfaceTension (SurfaceTensionModel): a force
-// that pulls the fluid's surface together, so drops stay round and trails thin instead of
-// spreading into a film. Two models, each in its own class named after its paper:
+// Surface tension, chosen by SimulationOptions::surfaceTension (a key of the registry below,
+// TearMethods.h): a force that pulls the fluid's surface together, so drops stay round and
+// trails thin instead of spreading into a film. Each model is its own class named after its
+// paper, listed once in SurfaceTensionRegistration.cpp:
 //   SurfaceTension_Mueller2003.h  the colour-field curvature force (the default);
 //   SurfaceTension_Akinci2013.h   cohesion plus curvature minimisation.
 // A sub-step calls prepare() before the force pass (FluidForcePass.h), which sums the colour
@@ -9,11 +10,11 @@
 // addAccelerations() on each chunk of particles as the force pass finishes it, in the pass's
 // last shared loop.
 #include "FluidForcePass.h"
-#include "PairList.h"
+#include "MethodRegistry.h"
+#include "ActivePairs.h"
 
-#include <lacrima/tears/Parameters.h>
+#include <lacrima/tears/TearSettings.h>
 #include <lacrima/tears/ParticleSet.h>
-#include <lacrima/tears/SimulationOptions.h>
 
 #include <memory>
 
@@ -22,9 +23,6 @@ namespace lacrima::tears {
 class SurfaceTension {
  public:
   virtual ~SurfaceTension() = default;
-  // The model the options name, with the strength the tear parameters give it.
-  static std::unique_ptr<SurfaceTension> create(SurfaceTensionModel model,
-                                                const ScaledParameters& parameters);
 
   // Whether the force pass is to sum the colour field's gradient and Laplacian.
   virtual bool needsColourField() const = 0;
@@ -36,5 +34,10 @@ class SurfaceTension {
   virtual void addAccelerations(ParticleSet& particles, const FluidForcePass& pass,
                                 std::size_t begin, std::size_t end) = 0;
 };
+
+// Every surface tension model, made from its values and the scaled parameters (which carry its
+// strength).
+using SurfaceTensionRegistry = MethodRegistry<SurfaceTension, const ScaledParameters&>;
+SurfaceTensionRegistry& surfaceTensionRegistry();
 
 }  // namespace lacrima::tears

@@ -2,6 +2,19 @@
 
 namespace lacrima::tears {
 
+MethodInfo SurfaceTension_Akinci2013::info() {
+  return {"akinci",
+          "Akinci",
+          "Cohesion and curvature minimisation of Akinci et al. 2013: rounder drops, two more "
+          "passes over the pairs",
+          {}};
+}
+
+std::unique_ptr<SurfaceTension> SurfaceTension_Akinci2013::create(const MethodValues&,
+                                                                  const ScaledParameters& p) {
+  return std::make_unique<SurfaceTension_Akinci2013>(p.h, p.tensionGamma, p.restDensity);
+}
+
 void SurfaceTension_Akinci2013::prepare(const ParticleSet& p, const ActivePairs& pairs) {
   if (gamma_ <= 0) return;
   const auto n = static_cast<std::size_t>(p.size());

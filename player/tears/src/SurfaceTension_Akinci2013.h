@@ -17,6 +17,9 @@ class SurfaceTension_Akinci2013 final : public SurfaceTension {
  public:
   SurfaceTension_Akinci2013(double h, double gamma, double restDensity)
       : h_(h), w_(h), c_(h), gamma_(gamma), rho0_(restDensity) {}
+  static MethodInfo info();
+  static std::unique_ptr<SurfaceTension> create(const MethodValues& values,
+                                                const ScaledParameters& parameters);
 
   bool needsColourField() const override { return false; }
   // The normals and the pair forces (two passes over the pairs, on one thread).

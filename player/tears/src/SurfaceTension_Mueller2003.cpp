@@ -2,6 +2,18 @@
 
 namespace lacrima::tears {
 
+MethodInfo SurfaceTension_Mueller2003::info() {
+  return {"mueller",
+          "Müller",
+          "The colour-field curvature force of Müller et al. 2003 (2009's model)",
+          {}};
+}
+
+std::unique_ptr<SurfaceTension> SurfaceTension_Mueller2003::create(const MethodValues&,
+                                                                   const ScaledParameters& p) {
+  return std::make_unique<SurfaceTension_Mueller2003>(p.h, p.tensionSigma);
+}
+
 void SurfaceTension_Mueller2003::addAccelerations(ParticleSet& p, const FluidForcePass& pass,
                                                   std::size_t begin, std::size_t end) {
   if (sigma_ <= 0) return;

@@ -14,6 +14,9 @@ namespace lacrima::tears {
 class SurfaceTension_Mueller2003 final : public SurfaceTension {
  public:
   SurfaceTension_Mueller2003(double h, double sigma) : h_(h), sigma_(sigma) {}
+  static MethodInfo info();
+  static std::unique_ptr<SurfaceTension> create(const MethodValues& values,
+                                                const ScaledParameters& parameters);
 
   bool needsColourField() const override { return sigma_ > 0; }
   void addAccelerations(ParticleSet& particles, const FluidForcePass& pass, std::size_t begin,

@@ -40,7 +40,6 @@ std::uint64_t nextInstance() {
 TearSimulation::Internals::Internals(const ScaledParameters& p, const TearSettings& settings,
                                      const SimulationOptions& options, const UnitScale& scale)
     : parallel(resolveThreadCount(options.threads)),
-      octree(p.nodeSize),
       density(p.h),
       viscosity(p.kinematicViscosity),
       forcePass(p.h),
@@ -59,8 +58,10 @@ ParallelChunks& TearSimulation::parallelChunks() { return internals_->parallel; 
 void TearSimulation::Internals::chooseMethods(const ScaledParameters& p,
                                               const TearSettings& settings,
                                               const SimulationOptions& options) {
-  pressure = PressureSolver::create(options.pressureSolver, p, settings, options);
-  tension = SurfaceTension::create(options.surfaceTension, p);
+  neighbours = neighbourStructureRegistry().create(options.neighbours, p,
+                                                   std::max(0.0, options.neighbourSkin) * p.h);
+  pressure = pressureSolverRegistry().create(options.pressureSolver, p, settings);
+  tension = surfaceTensionRegistry().create(options.surfaceTension, p);
 }
 
 TearSimulation::TearSimulation(const Eigen::Matrix3Xf& rest,

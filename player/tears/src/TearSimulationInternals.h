@@ -8,8 +8,9 @@
 #include "DropDetachment_Tate1864.h"
 #include "Emitter.h"
 #include "FluidForcePass.h"
-#include "Octree.h"
-#include "PairList.h"
+#include "NeighbourStructure.h"
+#include "ActivePairs.h"
+#include "VerletPairs.h"
 #include "ParallelChunks.h"
 #include "PressureSolver.h"
 #include "SkinCollider.h"
@@ -30,7 +31,8 @@ namespace lacrima::tears {
 struct TearSimulation::Internals {
   Internals(const ScaledParameters& parameters, const TearSettings& settings,
             const SimulationOptions& options, const UnitScale& scale);
-  // (Re)creates the pressure solver and the surface tension the options name.
+  // Makes the neighbour structure, the pressure solver and the surface tension the options name
+  // (their registries throw std::invalid_argument for an unknown key).
   void chooseMethods(const ScaledParameters& parameters, const TearSettings& settings,
                      const SimulationOptions& options);
 
@@ -39,8 +41,7 @@ struct TearSimulation::Internals {
   CellIndex cellIndex;                     // cell edge h (1 + skin), orders the particles
   VerletPairs candidates;
   ActivePairs pairs;
-  NeighbourList fullList;  // octree comparison path only
-  Octree octree;
+  std::unique_ptr<NeighbourStructure> neighbours;
 
   DensitySolver density;
   std::unique_ptr<PressureSolver> pressure;

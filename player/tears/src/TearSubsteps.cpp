@@ -33,35 +33,6 @@ void TearSimulation::recycleEscaped(EmissionSites& sites) {
   }
 }
 
-void TearSimulation::updatePairs() {
-  Internals& in = *internals_;
-  const double h = params_.h;
-  const double skin = std::max(0.0, options_.neighbourSkin) * h;
-  if (options_.neighbours == NeighbourMethod::Octree) {
-    // Comparison path: a fresh full search every sub-step, halved. The particles are still
-    // sorted by the same cells as the grid path, so both methods keep the same particle order.
-    if (!in.candidates.valid()) {
-      in.cellIndex.build(particles_.position, h + skin);
-      particles_.permute(in.cellIndex.order());
-    }
-    in.octree.find(particles_.position, h, in.fullList);
-    in.candidates.fromFull(in.fullList, particles_.position);
-    ++counters_.neighbourSearches;
-    return;
-  }
-  if (in.candidates.refresh(in.cellIndex, particles_.position)) {
-    if (in.candidates.hasStrays()) {
-      ++counters_.straySubsteps;
-      counters_.strays += in.candidates.strayCount();
-    }
-    return;
-  }
-  in.cellIndex.build(particles_.position, h + skin);
-  particles_.permute(in.cellIndex.order());  // now sorted position == particle index
-  in.candidates.build(in.cellIndex, h, skin, in.parallel);
-  ++counters_.neighbourSearches;
-}
-
 void TearSimulation::simulate(double frameDt) {
   Internals& in = *internals_;
   PressureSolver& pressure = *in.pressure;
@@ -76,7 +47,7 @@ void TearSimulation::simulate(double frameDt) {
     // The count is fixed for the whole sub-step (recycling re-emits in place).
     in.parallel.setParticleCount(particles_.size());
     auto start = SteadyClock::now();
-    updatePairs();
+    in.neighbours->update(particles_, in.cellIndex, in.candidates, in.parallel, counters_);
     times_.neighbours += millisecondsSince(start);
 
     start = SteadyClock::now();

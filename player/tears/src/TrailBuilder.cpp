@@ -13,7 +13,6 @@
 
 namespace lacrima::tears {
 namespace {
-constexpr std::size_t kMaxSeeds = 32;  // contact triangles of a drop used to start skin walks
 constexpr double kRadian = std::numbers::pi / 180;
 }  // namespace
 
@@ -159,14 +158,7 @@ void TrailBuilder::findPreviousTracks(const ParticleSet& particles) {
 void TrailBuilder::continueTrack(Track& track, const ParticleSet& particles, const FoundDrop& drop,
                                  double h, double particleRadius, bool reshaped) {
   Buffers& w = *work_;
-  w.seeds.clear();
-  for (int i : w.finder.particlesOf(drop)) {
-    const int t = particles.contact[static_cast<std::size_t>(i)].triangle;
-    // Contacts past the skin's triangles are on other collision surfaces (the eyes): not skin.
-    if (t >= 0 && t < skin_.triangleCount() && w.seeds.size() < kMaxSeeds &&
-        std::find(w.seeds.begin(), w.seeds.end(), t) == w.seeds.end())
-      w.seeds.push_back(t);
-  }
+  skin_.contactSeeds(particles.contact, w.finder.particlesOf(drop), w.seeds);
   if (w.seeds.empty()) {
     // In the air (a drop that fell off the chin): it wets nothing, and its track ends, so where
     // it lands a new trail starts instead of a strip bridging the gap.

@@ -47,6 +47,18 @@ Eigen::Vector3d TrailSkin::point(const SkinAnchor& anchor) const {
          anchor.height * normal(anchor.triangle);
 }
 
+void TrailSkin::contactSeeds(std::span<const SkinContact> contacts, std::span<const int> members,
+                             std::vector<int>& seeds) const {
+  seeds.clear();
+  for (int i : members) {
+    const int t = contacts[static_cast<std::size_t>(i)].triangle;
+    if (t >= 0 && t < triangleCount() && std::find(seeds.begin(), seeds.end(), t) == seeds.end()) {
+      seeds.push_back(t);
+      if (seeds.size() == kMaxSeeds) return;
+    }
+  }
+}
+
 SkinAnchor TrailSkin::closest(const Eigen::Vector3d& x, std::span<const int> seeds) const {
   SkinAnchor best;
   double bestDistance = std::numeric_limits<double>::infinity();

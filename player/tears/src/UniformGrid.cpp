@@ -25,7 +25,6 @@ UniformGrid& UniformGrid::operator=(const UniformGrid& other) {
 
 void UniformGrid::build(std::span<const Eigen::Vector3d> x, double h) { index_->build(x, h); }
 
-double UniformGrid::cellSize() const { return index_->edge(); }
 Eigen::Vector3i UniformGrid::cellOf(const Eigen::Vector3d& x) const { return index_->cellOf(x); }
 
 void UniformGrid::find(std::span<const Eigen::Vector3d> x, double h, NeighbourList& out) {

@@ -1,4 +1,5 @@
 #include <lacrima/playback/TearQualityOptions.h>
+#include <lacrima/tears/TearMethods.h>
 #include <lacrima/viewport/EffectsPanel.h>
 
 #include <QCheckBox>
@@ -11,6 +12,7 @@
 #include <QVBoxLayout>
 
 #include <optional>
+#include <string>
 
 namespace lacrima::viewport {
 
@@ -32,16 +34,37 @@ QComboBox* combo(const QStringList& items, const QString& tip, QWidget* parent) 
   return box;
 }
 
-// An advanced choice: item 0 is the level's own, then the enum's values in order.
-template <typename Enum>
-void showChoice(QComboBox* box, const std::optional<Enum>& choice) {
-  box->setCurrentIndex(choice ? static_cast<int>(*choice) + 1 : 0);
+QString fromUtf8(const std::string& text) {
+  return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
 }
 
-template <typename Enum>
-std::optional<Enum> choiceOf(const QComboBox* box) {
+// An advanced choice: item 0 is the level's own, then the family's registered methods, each
+// with its key as the item's data and its summary as the item's tooltip.
+QComboBox* methodCombo(tears::MethodFamily family, const QString& tip, QWidget* parent) {
+  QComboBox* box = combo({EffectsPanel::tr("as the level")}, tip, parent);
+  for (const tears::MethodInfo& method : tears::registeredMethods(family)) {
+    box->addItem(fromUtf8(method.label), fromUtf8(method.key));
+    box->setItemData(box->count() - 1, fromUtf8(method.summary), Qt::ToolTipRole);
+  }
+  return box;
+}
+
+void showChoice(QComboBox* box, const std::optional<std::string>& key) {
+  if (!key) {
+    box->setCurrentIndex(0);
+    return;
+  }
+  int index = box->findData(fromUtf8(*key));
+  if (index < 0) {  // not registered in this build: shown and kept as written
+    box->addItem(fromUtf8(*key), fromUtf8(*key));
+    index = box->count() - 1;
+  }
+  box->setCurrentIndex(index);
+}
+
+std::optional<std::string> choiceOf(const QComboBox* box) {
   if (box->currentIndex() <= 0) return std::nullopt;
-  return static_cast<Enum>(box->currentIndex() - 1);
+  return box->currentData().toString().toStdString();
 }
 
 }  // namespace
@@ -115,21 +138,14 @@ void EffectsPanel::buildQuality() {
   advanced_->setCheckable(true);
   advanced_->setToolTip(tr("Choose the solver, surface tension and neighbour search yourself"));
   advanced_->setFocusPolicy(Qt::TabFocus);
-  const QString level = tr("as the level");
-  solver_ = combo({level, tr("WCSPH"), tr("DFSPH"), tr("PBF")},
-                  tr("Pressure: weakly compressible SPH (2009, the levels' own), "
-                     "divergence-free SPH (drops cling harder; about twice the cost per "
-                     "sub-step) or position-based fluids (density constraints, a fixed number "
-                     "of iterations per sub-step)"),
-                  this);
-  tension_ = combo({level, tr("Müller"), tr("Akinci")},
-                   tr("Surface tension: the colour-field curvature of Müller et al. 2003 (the "
-                      "levels' own) or the cohesion and curvature of Akinci et al. 2013"),
-                   this);
-  neighbours_ = combo({level, tr("grid"), tr("octree")},
-                      tr("Neighbour search: Verlet lists on a grid (the levels' own, faster) or "
-                         "the 2009 octree (same pairs, slower; for comparison)"),
-                      this);
+  solver_ = methodCombo(tears::MethodFamily::PressureSolver,
+                        tr("What keeps the tears from compressing; each method's tooltip says "
+                           "what it trades"),
+                        this);
+  tension_ = methodCombo(tears::MethodFamily::SurfaceTension,
+                         tr("What keeps drops round and trails thin"), this);
+  neighbours_ = methodCombo(tears::MethodFamily::NeighbourStructure,
+                            tr("Where the pairs of neighbouring particles come from"), this);
   advancedBox_ = new QWidget(this);
   auto* advancedForm = new QFormLayout(advancedBox_);
   advancedForm->setContentsMargins(0, 0, 0, 0);
@@ -175,9 +191,9 @@ void EffectsPanel::applyTo(SceneSettings& scene) const {
   scene.redness = redness_->currentIndex() == 0 ? SceneSettings::Redness::Animation
                                                 : SceneSettings::Redness::Tears;
   scene.quality.level = static_cast<TearQuality>(quality_->currentIndex());
-  scene.quality.solver = choiceOf<TearSolver>(solver_);
-  scene.quality.tension = choiceOf<TearTension>(tension_);
-  scene.quality.neighbours = choiceOf<TearNeighbours>(neighbours_);
+  scene.quality.solver = choiceOf(solver_);
+  scene.quality.tension = choiceOf(tension_);
+  scene.quality.neighbours = choiceOf(neighbours_);
 }
 
 void EffectsPanel::addFrameCost(double milliseconds, long long substeps) {

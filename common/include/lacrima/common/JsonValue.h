@@ -22,6 +22,7 @@
 #include <cstddef>
 #include <initializer_list>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -81,7 +82,10 @@ class JsonValue {
   std::string string() const;
   bool boolean() const;
   // The index in `choices` of this string: fails `expected "a", "b" or "c", got ...`.
-  std::size_t oneOf(std::initializer_list<std::string_view> choices) const;
+  std::size_t oneOf(std::initializer_list<std::string_view> choices) const {
+    return oneOf(std::span<const std::string_view>(choices.begin(), choices.size()));
+  }
+  std::size_t oneOf(std::span<const std::string_view> choices) const;
 
   // For messages: null, true, 2.5, "text", an array of 3 values, an object, nothing.
   std::string describe() const;

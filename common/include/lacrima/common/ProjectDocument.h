@@ -14,9 +14,10 @@
 //              "redness": "animation" | "tears", "blush": false,
 //              "simulation": { "adhesion": 20, ... },            (overrides of TearParameters)
 //              "quality": "preview" | "balanced" | "reference",     (version 2; optional, each;
-//              "solver": "wcsph" | "dfsph" | "pbf",                  absent = balanced and the
-//              "tension": "mueller" | "akinci",                      level's own choices;
-//              "neighbours": "grid" | "octree" },                    TearQuality.h)
+//              "solver": "wcsph" | "dfsph" | "pbf" | ...,            absent = balanced and the
+//              "tension": "mueller" | "akinci" | ...,                level's own choices; keys
+//              "neighbours": "grid" | "octree" | ... },              of the method registries,
+//                                                                    TearQuality.h)
 //   "head": { "mesh": "heads/ict.obj", "fdp": "heads/ict.fdp.json" }, (optional; absent = the
 //                                                                     default head)
 //   "layers": [ { "name": "sob", "muted": false, "pose": { "open_jaw": 80, ... },
@@ -97,15 +98,19 @@ struct ProjectDocument {
   // would exceed kMaxBakedFrames at its own rate is refused as it is read, at the key that
   // sets its length; to Edit, it opens, so that the editor can shorten it.
   enum class Use { Edit, Bake };
+  // `methods`: the tear method keys a simulating app accepts (TearMethodKeys); without them any
+  // well-formed key is kept as written.
   // Throws FileError with `displayName` and the line/column or JSON path of the problem.
   static ProjectDocument fromJson(std::string_view json, const std::string& displayName,
-                                  Use use = Use::Edit);
+                                  Use use = Use::Edit, const TearMethodKeys* methods = nullptr);
   // A project stored as a value of a larger document (a recovery file holds one). Throws
   // FileError naming the line, column and JSON path of the problem.
-  static ProjectDocument read(const JsonValue& value, Use use = Use::Edit);
+  static ProjectDocument read(const JsonValue& value, Use use = Use::Edit,
+                              const TearMethodKeys* methods = nullptr);
 
   // Reads `path` and resolves the head's relative paths against its folder.
-  static ProjectDocument load(const std::string& path, Use use = Use::Edit);
+  static ProjectDocument load(const std::string& path, Use use = Use::Edit,
+                              const TearMethodKeys* methods = nullptr);
   // Atomic (temporary file, then rename). The head's paths are written relative to the folder
   // of `path` when the two share more than the filesystem root, absolute otherwise, so a
   // "Save As" elsewhere still names the same files and a project folder can be moved whole.

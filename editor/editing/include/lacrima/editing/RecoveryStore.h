@@ -53,9 +53,11 @@ class RecoveryStore {
   // are skipped (and left alone).
   std::vector<Orphan> orphans() const;
 
-  // Throws FileError naming the file and what was expected.
+  // Throws FileError naming the file and what was expected; `methods` as in
+  // ProjectDocument::read.
   static ProjectDocument read(const QString& file, QString* sourcePath = nullptr,
-                              QDateTime* savedAt = nullptr);
+                              QDateTime* savedAt = nullptr,
+                              const TearMethodKeys* methods = nullptr);
   // Removes an orphan (restored or declined).
   static void remove(const QString& file);
 

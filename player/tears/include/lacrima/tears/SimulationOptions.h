@@ -1,30 +1,14 @@
 #pragma once
-#include <algorithm>
 // How a TearSimulation computes, as opposed to what it simulates (the tear parameters,
-// Parameters.h): the neighbour structure, the pressure and surface-tension methods, the
-// sub-step limits and the bookkeeping scales. The defaults are the measured best
-// (lacrima-bench tears and tears-sweep).
+// TearSettings.h): the neighbour structure, the pressure and surface-tension methods (keys of
+// their registries, with the methods' own parameters: TearMethods.h), the sub-step limits and
+// the bookkeeping scales. The defaults are the measured best (lacrima-bench tears and
+// tears-sweep).
+#include <lacrima/tears/TearMethods.h>
+
+#include <algorithm>
 
 namespace lacrima::tears {
-
-// Where pair candidates come from: the cell-sorted Verlet list (UniformGrid.h's cells), or the
-// 2009 thesis's octree, kept for comparison (a full search every sub-step).
-enum class NeighbourMethod { Grid, Octree };
-
-// How pressure keeps the fluid from compressing: a stiff equation of state (weakly compressible
-// SPH, WCSPH: Müller et al. 2003's p = k (rho - rho0) in Monaghan's 1994 regime; sub-steps
-// bound by the speed of sound), or divergence-free
-// SPH (DFSPH, Bender & Koschier 2015/2017: two iterative solves per sub-step, sub-steps bound
-// by relative motion and by the net fluid acceleration of the previous sub-step), or position-based
-// fluids (PBF, Macklin & Müller 2013: a fixed number of density-constraint iterations on the
-// predicted positions, sub-steps bound as DFSPH's).
-enum class PressureMethod { Wcsph, Dfsph, Pbf };
-// "wcsph", "dfsph", "pbf": the names of the command lines and of tears-sweep's CSV.
-inline const char* pressureMethodName(PressureMethod method) {
-  return method == PressureMethod::Wcsph   ? "wcsph"
-         : method == PressureMethod::Dfsph ? "dfsph"
-                                           : "pbf";
-}
 
 // Who answers the collider's skin queries (which triangle a particle touches, which one its path
 // crosses): a uniform grid over the skin's triangles, which every thread may ask at once, or
@@ -32,20 +16,19 @@ inline const char* pressureMethodName(PressureMethod method) {
 // only one thread ask at a time (docs/decisions/0017).
 enum class SkinQueryMethod { Grid, Ode };
 
-// Surface tension: the colour-field curvature force of Müller et al. 2003, or the cohesion and
-// curvature forces of Akinci et al. 2013.
-enum class SurfaceTensionModel { Mueller, Akinci };
-
 struct SimulationOptions {
-  // Height of the head in its own units, which fixes the unit scale (Parameters.h); 0 = the
+  // Height of the head in its own units, which fixes the unit scale (TearSettings.h); 0 = the
   // height of the skin mesh. Set it when the skin is not a whole head (test sheets).
   double headHeight = 0;
-  NeighbourMethod neighbours = NeighbourMethod::Grid;  // measured faster (lacrima-bench tears)
+  // Where pair candidates come from: "grid" (Verlet lists over the cell sort) was measured
+  // faster than "octree", the 2009 thesis's (lacrima-bench tears).
+  MethodChoice neighbours{"grid"};
   // Verlet skin in kernel radii: pair candidates are listed within h (1 + skin) and reused
   // until the two largest displacements sum to skin h. 0 = search every sub-step.
   double neighbourSkin = 0.3;
-  SurfaceTensionModel surfaceTension = SurfaceTensionModel::Mueller;
-  bool clampNegativePressure = true;
+  // "mueller", the colour-field curvature force of Müller et al. 2003, or "akinci", the
+  // cohesion and curvature forces of Akinci et al. 2013.
+  MethodChoice surfaceTension{"mueller"};
   double lambdaCfl = 0.4, lambdaAcceleration = 0.4, lambdaViscosity = 1.0;
   // Scales the sub-step safety factors from their defaults: the accuracy lever of the quality
   // levels, tears-sweep and tears-slide. lambda_c and lambda_a scale with `factor`; lambda_v
@@ -57,18 +40,10 @@ struct SimulationOptions {
     lambdaAcceleration = defaults.lambdaAcceleration * factor;
     lambdaViscosity = std::min(defaults.lambdaViscosity, defaults.lambdaViscosity * factor);
   }
-  PressureMethod pressureSolver = PressureMethod::Wcsph;
-  // DFSPH: mean compression left after a step at the table's default pressure (0.004); the
-  // pressure parameter scales it inversely (pressure x10 = ten times tighter), within
-  // [1e-4, 0.1]. The divergence solve uses the same tolerance per step.
-  double dfsphTolerance = 0.01;
-  int dfsphMaxIterations = 50;
-  // PBF: constraint iterations per sub-step, the constraint force mixing epsilon h^2, and the
-  // artificial pressure s_corr against the tensile instability (PressureSolver_PBF.h). The
-  // pressure parameter has no meaning for PBF: the constraint is as stiff as the iterations.
-  int pbfIterations = 4;
-  double pbfRelaxation = 1.0;
-  bool pbfArtificialPressure = false;
+  // "wcsph", a stiff equation of state (Müller et al. 2003's p = k (rho - rho0) in Monaghan's
+  // 1994 regime; sub-steps bound by the speed of sound), "dfsph", divergence-free SPH (Bender &
+  // Koschier 2015/2017), or "pbf", position-based fluids (Macklin & Müller 2013): decision 0009.
+  MethodChoice pressureSolver{"wcsph"};
   // Longest sub-step allowed, seconds (0 = only the stability limits bound it). DFSPH has no
   // sound-speed limit, so this caps how far the fluid moves between collision passes.
   double maxSubstepSeconds = 0;

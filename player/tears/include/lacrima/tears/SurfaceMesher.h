@@ -121,7 +121,7 @@ class SurfaceMesher {
   SurfaceMesher& operator=(const SurfaceMesher&) = delete;
 
   // Meshes the simulation's particles with its kernel radius, cube size and iso value (already
-  // in head units, Parameters.h). Does nothing (and leaves an empty surface) when there are no
+  // in head units, TearSettings.h). Does nothing (and leaves an empty surface) when there are no
   // particles; otherwise counts a surface run on the simulation. `maxCubes` bounds the work.
   // `skip`: empty, or one flag per particle; a non-zero flag leaves that particle out.
   const TearSurface& update(TearSimulation& simulation,

@@ -27,7 +27,7 @@
 // them only through a pointer, so its users compile against the public headers alone.
 #include <lacrima/common/FapChannels.h>
 #include <lacrima/common/HeadMesh.h>
-#include <lacrima/tears/Parameters.h>
+#include <lacrima/tears/TearSettings.h>
 #include <lacrima/tears/ParticleSet.h>
 #include <lacrima/tears/SimulationOptions.h>
 #include <lacrima/tears/TearCheckpoint.h>
@@ -119,9 +119,6 @@ class TearSimulation {
   const SimulationOptions& options() const { return options_; }
   // Threads the sub-steps share: options().threads resolved (SimulationOptions.h).
   int threads() const;
-  // Those threads, lent between frames to the surface mesher (ParallelChunks.h, internal to
-  // the library); only on the thread that steps this simulation, never during step().
-  ParallelChunks& parallelChunks();
   const UnitScale& scale() const { return scale_; }
   Eigen::Vector3d gravity() const { return {0, -params_.gravity, 0}; }
   // Particles leaving this box are recycled.
@@ -141,9 +138,14 @@ class TearSimulation {
 
   const TearCounters& counters() const { return counters_; }
   const StageTimes& lastFrameTimes() const { return times_; }
-  void countSurfaceRun() { ++counters_.surfaceRuns; }
 
  private:
+  // The surface mesher borrows the sub-steps' threads between frames (only on the thread that
+  // steps this simulation, never during step()) and counts its runs in counters().
+  friend class SurfaceMesher;
+  ParallelChunks& parallelChunks();
+  void countSurfaceRun() { ++counters_.surfaceRuns; }
+
   struct Internals;      // the solver's parts (TearSimulationInternals.h)
   struct EmissionSites;  // where each eye emits in this frame, found on first need
 
@@ -151,7 +153,6 @@ class TearSimulation {
   void updateSkin(const Eigen::Matrix3Xf& positions);
   EmissionSite siteFor(Eye eye);
   void recycleEscaped(EmissionSites& sites);
-  void updatePairs();
 
   std::uint64_t instance_;  // tells this simulation's checkpoints from others'
   TearSettings settings_;

@@ -6,6 +6,8 @@
 // deforms). Closest-point queries walk the skin from seed triangles (those the drop's particles
 // touch) to vertex-sharing neighbours while the distance falls, so a query costs a few dozen
 // triangles however large the head is.
+#include <lacrima/tears/ParticleSet.h>
+
 #include <Eigen/Core>
 
 #include <memory>
@@ -41,6 +43,12 @@ class TrailSkin {
 
   // The closest skin point to x found from the seeds (height 0); triangle -1 if no seed is valid.
   SkinAnchor closest(const Eigen::Vector3d& x, std::span<const int> seeds) const;
+  // Seeds for closest(): the distinct skin triangles that `members` (particle indices) touch, in
+  // particle order, at most kMaxSeeds. Contacts on other collision surfaces (the eyes, numbered
+  // past the skin's triangles) are not skin.
+  static constexpr std::size_t kMaxSeeds = 32;
+  void contactSeeds(std::span<const SkinContact> contacts, std::span<const int> members,
+                    std::vector<int>& seeds) const;
 
  private:
   // Never change after construction, so copies (a trail builder kept with every player

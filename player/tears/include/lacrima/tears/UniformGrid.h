@@ -28,7 +28,6 @@ class UniformGrid final : public NeighbourSearch {
   // Sorts `positions` into the grid only (no neighbour lists).
   void build(std::span<const Eigen::Vector3d> positions, double h);
 
-  double cellSize() const;
   Eigen::Vector3i cellOf(const Eigen::Vector3d& x) const;
   // Distinct occupied cells, sorted (x, then y, then z) so consumers iterate deterministically.
   std::vector<Eigen::Vector3i> occupiedCells() const;

@@ -1,7 +1,7 @@
 #include "Kernels.h"
 
 #include <lacrima/common/JsonInput.h>
-#include <lacrima/tears/Parameters.h>
+#include <lacrima/tears/TearSettings.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -10,7 +10,7 @@
 namespace lacrima::tears {
 namespace {
 
-// Physical anchors of the mapping described in Parameters.h.
+// Physical anchors of the mapping described in TearSettings.h.
 constexpr double kRealHeadHeightMetres = 0.27;
 constexpr double k2009UnitMetres = 0.0032;
 constexpr double kDefaultPressure = 0.004;

@@ -1,4 +1,4 @@
-#include "PairList.h"
+#include "VerletPairs.h"
 #include "Float4.h"
 
 #include <algorithm>
@@ -202,7 +202,7 @@ bool VerletPairs::refresh(const CellIndex& index, std::span<const Eigen::Vector3
   clearStrays();
   if (!valid_ || x.size() != anchor_.size() || index.particleCount() != x.size()) return false;
   // The two largest displacements: no pair can have closed by more than their sum. Measured
-  // as they are first (one pass, the common case), then less the drift v (PairList.h), the
+  // as they are first (one pass, the common case), then less the drift v (VerletPairs.h), the
   // middle of the displacements' bounding box: either passing proves the list.
   const std::size_t n = x.size();
   LargestTwo still;
