@@ -169,7 +169,8 @@ void DensitySolver::compute(ParticleSet& p, const VerletPairs& candidates, Activ
   // Relative to one particle: the float copies then resolve differences within a drop far
   // better than absolute head coordinates would.
   const Eigen::Vector3d origin = p.position[0];
-  forEachChunkOn(parallel, un, kParticleChunk, [&](int, std::size_t begin, std::size_t end) {
+  const std::size_t chunk = parallel ? parallel->particleChunk() : kParticleChunk;
+  forEachChunkOn(parallel, un, chunk, [&](int, std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
       store4(&active.position[4 * i], toFloat4(Eigen::Vector3d(p.position[i] - origin)));
       m_[i] = static_cast<float>(p.mass[i]);
@@ -177,9 +178,9 @@ void DensitySolver::compute(ParticleSet& p, const VerletPairs& candidates, Activ
   });
 
   // A chunk's pairs start where its candidates do, after the stray pairs of earlier particles.
-  const std::size_t chunks = ParallelChunks::chunkCount(un, kParticleChunk);
+  const std::size_t chunks = ParallelChunks::chunkCount(un, chunk);
   if (windows_.size() < chunks) windows_.resize(chunks);
-  forEachChunkOn(parallel, un, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
+  forEachChunkOn(parallel, un, chunk, [&](int c, std::size_t begin, std::size_t end) {
     const auto b = static_cast<std::uint32_t>(begin), e = static_cast<std::uint32_t>(end);
     const std::size_t stray = static_cast<std::size_t>(
         std::lower_bound(strayPairs.begin(), strayPairs.end(), VerletPairs::Pair{b, 0}) -
@@ -192,10 +193,10 @@ void DensitySolver::compute(ParticleSet& p, const VerletPairs& candidates, Activ
       accumulate<false>(candidates, active, b, e, slot, stray, window);
   });
   // A chunk's kept pairs lie together from its first particle's first pair.
-  for (std::size_t begin = 0; begin < un; begin += kParticleChunk)
-    active.kept += active.last[std::min(un, begin + kParticleChunk) - 1] - active.first[begin];
+  for (std::size_t begin = 0; begin < un; begin += chunk)
+    active.kept += active.last[std::min(un, begin + chunk) - 1] - active.first[begin];
   // Each density: its own chunk's sum, then the earlier chunks' sums for it, in chunk order.
-  forEachChunkOn(parallel, un, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
+  forEachChunkOn(parallel, un, chunk, [&](int c, std::size_t begin, std::size_t end) {
     const Window& own = windows_[static_cast<std::size_t>(c)];
     for (std::size_t i = begin; i < end; ++i) rho_[i] = own.sum[i - begin];
     for (std::size_t earlier = 0; earlier < static_cast<std::size_t>(c); ++earlier) {

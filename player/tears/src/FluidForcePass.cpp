@@ -225,9 +225,10 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs,
   parallel.setParticleCount(n);
   // No pressure anywhere (DFSPH, whose solves replace it, or a fluid nowhere compressed): the
   // pressure terms are left out of the loop rather than added as zeros.
-  const std::size_t particleChunks = ParallelChunks::chunkCount(un, kParticleChunk);
+  const std::size_t chunk = parallel.particleChunk();
+  const std::size_t particleChunks = ParallelChunks::chunkCount(un, chunk);
   anyPressureChunk_.assign(particleChunks, 0);
-  parallel.forEachChunk(un, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
+  parallel.forEachChunk(un, chunk, [&](int c, std::size_t begin, std::size_t end) {
     bool any = false;
     for (auto* v : {&acc_, &weighted4_, &gradient4_})
       std::fill(v->begin() + static_cast<std::ptrdiff_t>(4 * begin),
@@ -253,7 +254,7 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs,
   // cross to another core, which on a virtual machine costs more than the arithmetic.
   if (spills_.size() < particleChunks) spills_.resize(particleChunks);
   closing_.assign(particleChunks, 0.0f);
-  parallel.forEachChunk(un, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
+  parallel.forEachChunk(un, chunk, [&](int c, std::size_t begin, std::size_t end) {
     const std::size_t first = pairs.begin(begin), count = pairs.end(end - 1) - first;
     pairFactors(pairs.r2.data() + first, count, h_, h2_, spiky_, visc_, poly6_,
                 radial_.data() + first, lapVisc_.data() + first, gradColour_.data() + first,
@@ -280,7 +281,7 @@ double FluidForcePass::run(ParticleSet& p, ActivePairs& pairs,
   gradient_.resize(colour ? un : 0);
   laplacian_.resize(colour ? un : 0);
   const double nu = viscosity.nu();
-  parallel.forEachChunk(un, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
+  parallel.forEachChunk(un, chunk, [&](int c, std::size_t begin, std::size_t end) {
     addSpills(static_cast<std::size_t>(c), begin, end, colour);
     for (std::size_t i = begin; i < end; ++i) {
       const float* a = &acc_[4 * i];

@@ -12,28 +12,37 @@
 // the same, in the same order, for every output. With one thread, or fewer particles than
 // kParallelParticles (sharing costs a wake-up per loop, more than a small loop takes), the
 // chunks run one after the other on the calling thread and no worker is ever started.
+// The chunk size may change the bits (the partial sums are grouped by chunk), the thread count
+// never does; tests cut small scenes into small chunks shared from the first particle
+// (SimulationOptions::chunkParticles, shareFromParticles) to run the shared paths.
 #include "ThreadPool.h"
+
+#include <lacrima/tears/SimulationOptions.h>
 
 #include <algorithm>
 #include <cstddef>
 
 namespace lacrima::tears {
 
-inline constexpr std::size_t kParticleChunk = 1024;
+inline constexpr auto kParticleChunk = static_cast<std::size_t>(kDefaultChunkParticles);
 // Measured with lacrima-bench tears --threads 1 and 2 on the cheek sheet of an idle 2-core
 // machine (docs/performance.md, Threads): at 1,000 and 2,000 particles two threads were slower
 // (the wake-ups cost more than the second thread saves), at 3,000 even, from 4,000 faster.
-inline constexpr int kParallelParticles = 2500;
+inline constexpr int kParallelParticles = kDefaultShareFromParticles;
 
 class ParallelChunks {
  public:
-  explicit ParallelChunks(int threads) : pool_(threads) {}
+  explicit ParallelChunks(int threads, std::size_t particleChunk = kParticleChunk,
+                          int shareFrom = kParallelParticles)
+      : pool_(threads),
+        particleChunk_(std::max<std::size_t>(1, particleChunk)),
+        shareFrom_(shareFrom) {}
 
   int threads() const { return pool_.threads(); }
+  // The fixed chunk of the per-particle loops.
+  std::size_t particleChunk() const { return particleChunk_; }
   // Shares the following loops only when the sub-step has enough particles.
-  void setParticleCount(int particles) {
-    shared_ = pool_.threads() > 1 && particles >= kParallelParticles;
-  }
+  void setParticleCount(int particles) { shared_ = pool_.threads() > 1 && particles >= shareFrom_; }
 
   // Whether the loops are shared now (else they run on the calling thread).
   bool shared() const { return shared_; }
@@ -58,6 +67,8 @@ class ParallelChunks {
 
  private:
   ThreadPool pool_;
+  std::size_t particleChunk_;
+  int shareFrom_;
   bool shared_ = false;
 };
 

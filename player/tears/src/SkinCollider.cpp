@@ -302,7 +302,7 @@ double SkinCollider::moveSurface(const Eigen::Matrix3Xd& next, ParticleSet& p,
   // particle order whatever the threads.
   const bool sweeping = maxDisplacement > 0.25 * radius_;
   chunkAnchors_.resize(
-      ParallelChunks::chunkCount(static_cast<std::size_t>(p.size()), kParticleChunk));
+      ParallelChunks::chunkCount(static_cast<std::size_t>(p.size()), parallel.particleChunk()));
   for (auto& anchors : chunkAnchors_) anchors.clear();
   const auto carry = [&](int chunk, std::size_t begin, std::size_t end) {
     std::vector<Anchor>& anchors = chunkAnchors_[static_cast<std::size_t>(chunk)];

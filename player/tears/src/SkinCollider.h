@@ -143,10 +143,11 @@ class SkinCollider {
                             CollisionCounters& counters) {
     if (count == 0) return;
     const bool shared = shareQueries(parallel);
-    const std::size_t chunks = shared ? ParallelChunks::chunkCount(count, kParticleChunk) : 1;
+    const std::size_t chunks =
+        shared ? ParallelChunks::chunkCount(count, parallel.particleChunk()) : 1;
     chunkCounters_.assign(chunks, {});
     if (shared)
-      parallel.forEachChunk(count, kParticleChunk, body);
+      parallel.forEachChunk(count, parallel.particleChunk(), body);
     else
       body(0, 0, count);
     for (const CollisionCounters& c : chunkCounters_) counters += c;

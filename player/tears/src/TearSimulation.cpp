@@ -39,7 +39,9 @@ std::uint64_t nextInstance() {
 
 TearSimulation::Internals::Internals(const ScaledParameters& p, const TearSettings& settings,
                                      const SimulationOptions& options, const UnitScale& scale)
-    : parallel(resolveThreadCount(options.threads)),
+    : parallel(resolveThreadCount(options.threads),
+               static_cast<std::size_t>(std::max(1, options.chunkParticles)),
+               options.shareFromParticles),
       density(p.h),
       viscosity(p.kinematicViscosity),
       forcePass(p.h),

@@ -14,7 +14,8 @@ void TearSimulation::recycleEscaped(EmissionSites& sites) {
   // eye's list is in particle order.
   auto& escaped = internals_->escaped;
   for (auto& slots : escaped) slots.clear();
-  const std::size_t chunks = ParallelChunks::chunkCount(particles_.position.size(), kParticleChunk);
+  const std::size_t chunks =
+      ParallelChunks::chunkCount(particles_.position.size(), internals_->parallel.particleChunk());
   for (std::size_t c = 0; c < chunks; ++c)
     for (std::size_t e = 0; e < 2; ++e) {
       const std::vector<int>& found = internals_->chunkFindings[c].escaped[e];
@@ -39,6 +40,7 @@ void TearSimulation::simulate(double frameDt) {
   const double h = params_.h;
   const Eigen::Vector3d g = gravity();
   const double minimumStep = frameDt / options_.maxSubsteps;
+  const std::size_t chunk = in.parallel.particleChunk();
   EmissionSites sites;
   double remaining = frameDt;
   CollisionCounters collision;
@@ -59,8 +61,7 @@ void TearSimulation::simulate(double frameDt) {
     in.tension->prepare(particles_, in.pairs);
     // Tension and the step limits' maxima per chunk, in the force pass's last loop; a maximum
     // is exact, so combining the chunks' in any order gives the one-thread value.
-    const std::size_t chunks =
-        ParallelChunks::chunkCount(particles_.position.size(), kParticleChunk);
+    const std::size_t chunks = ParallelChunks::chunkCount(particles_.position.size(), chunk);
     in.chunkMaxima.assign(chunks, {0.0, 0.0});
     const auto finishChunk = [&](int c, std::size_t begin, std::size_t end) {
       in.tension->addAccelerations(particles_, in.forcePass, begin, end);
@@ -114,7 +115,7 @@ void TearSimulation::simulate(double frameDt) {
     // More per-particle work shares a loop wherever nothing between needs other particles: every
     // shared loop costs a hand-over between threads, and the operations on each particle are
     // the same, in the same order, as in separate loops (so the same bits).
-    in.parallel.forEachChunk(n, kParticleChunk, [&](int, std::size_t begin, std::size_t end) {
+    in.parallel.forEachChunk(n, chunk, [&](int, std::size_t begin, std::size_t end) {
       in.viscosity.apply(particles_, in.forcePass.weightedVelocity(), in.forcePass.weightSum(), dt,
                          begin, end);
       in.contact.applyExternal(particles_, g, dt, begin, end);
@@ -127,7 +128,7 @@ void TearSimulation::simulate(double frameDt) {
     const double vLimit = capped ? in.stepper.lambdaCfl() * h / dt : 0.0;
     in.previous.resize(n);
     in.clampedPerChunk.assign(chunks, 0);
-    in.parallel.forEachChunk(n, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
+    in.parallel.forEachChunk(n, chunk, [&](int c, std::size_t begin, std::size_t end) {
       in.contact.constrain(particles_, in.collider->view(), g, dt, in.detachment.spare(), begin,
                            end);
       for (std::size_t i = begin; i < end; ++i) {
@@ -149,7 +150,7 @@ void TearSimulation::simulate(double frameDt) {
     start = SteadyClock::now();
     in.collider->resolve(particles_, in.previous, collision, in.parallel);
     if (in.chunkFindings.size() < chunks) in.chunkFindings.resize(chunks);
-    in.parallel.forEachChunk(n, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
+    in.parallel.forEachChunk(n, chunk, [&](int c, std::size_t begin, std::size_t end) {
       Internals::ChunkFindings& found = in.chunkFindings[static_cast<std::size_t>(c)];
       found.lost.clear();
       for (auto& slots : found.escaped) slots.clear();

@@ -106,6 +106,7 @@ void VerletPairs::build(const CellIndex& index, double h, double skin) {
 void VerletPairs::build(const CellIndex& index, double h, double skin, ParallelChunks& parallel) {
   Buffers& work = *buffers_;
   const std::size_t n = index.particleCount();
+  const std::size_t chunk = parallel.particleChunk();
   const double radius = h + skin;
   // The test runs in single precision on positions relative to the first particle; the bound
   // is widened by 1e-5 so float rounding can only add candidates, never drop one within R.
@@ -128,7 +129,7 @@ void VerletPairs::build(const CellIndex& index, double h, double skin, ParallelC
   work.fy.resize(n);
   work.fz.resize(n);
   anchor_.resize(n);
-  parallel.forEachChunk(n, kParticleChunk, [&](int, std::size_t begin, std::size_t end) {
+  parallel.forEachChunk(n, chunk, [&](int, std::size_t begin, std::size_t end) {
     for (std::size_t s = begin; s < end; ++s) {
       work.fx[s] = static_cast<float>(sx[s] - sx[0]);
       work.fy[s] = static_cast<float>(sy[s] - sy[0]);
@@ -138,13 +139,13 @@ void VerletPairs::build(const CellIndex& index, double h, double skin, ParallelC
   });
 
   std::size_t written = 0;
-  const std::size_t chunks = ParallelChunks::chunkCount(n, kParticleChunk);
+  const std::size_t chunks = ParallelChunks::chunkCount(n, chunk);
   if (!parallel.shared() || chunks < 2) {
     written = scan(index, 0, static_cast<std::uint32_t>(n), r2max, partner_, 0);
   } else {
     if (work.chunkPartner.size() < chunks) work.chunkPartner.resize(chunks);
     work.chunkCount.resize(chunks);
-    parallel.forEachChunk(n, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
+    parallel.forEachChunk(n, chunk, [&](int c, std::size_t begin, std::size_t end) {
       UninitialisedVector<std::uint32_t>& out = work.chunkPartner[static_cast<std::size_t>(c)];
       if (out.size() < 64) out.resize(64);
       work.chunkCount[static_cast<std::size_t>(c)] = scan(
@@ -156,7 +157,7 @@ void VerletPairs::build(const CellIndex& index, double h, double skin, ParallelC
       written += work.chunkCount[c];
     }
     if (partner_.size() < written) partner_.resize(written);
-    parallel.forEachChunk(n, kParticleChunk, [&](int c, std::size_t begin, std::size_t end) {
+    parallel.forEachChunk(n, chunk, [&](int c, std::size_t begin, std::size_t end) {
       const auto cs = static_cast<std::size_t>(c);
       const auto offset = static_cast<std::uint32_t>(work.chunkOffset[cs]);
       std::copy_n(work.chunkPartner[cs].begin(), work.chunkCount[cs],
