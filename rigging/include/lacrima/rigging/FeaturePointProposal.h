@@ -1,5 +1,5 @@
 #pragma once
-// Proposing feature points for a new head from a few placed by hand (issue 13): the default
+// Proposing feature points for a new head from a few placed by hand: the default
 // head's points carried onto the new head.
 //
 // Given n >= 8 anchors placed on both heads (source a_i on the default head, target b_i on the
@@ -40,14 +40,12 @@
 // way its quads were split. A feature point is a vertex of the new head, as a hand-made file
 // names it.
 //
-// Why not more: a non-rigid registration of the default skin onto the new one (closest-point
-// pairs on 800 skin samples fed back into a smoothing spline over 5 to 8 rounds, non-rigid ICP
-// after Amberg et al. 2007) was tried on the ICT head and gave no gain (mean 0.115 against
-// 0.114 ES0 at the time) for 150 to 400 ms: closest points pull the skin together along its
-// normals, which the snap already does, and what is left is along the surface, where the two
-// heads' files differ in convention (the default head's long brows end on the temple, its chin
-// point is under the chin) rather than in shape. Step 3 costs well under a millisecond, step 4
-// about 20 ms on the ICT head (two shortest-path searches over its skin).
+// Why not more: a non-rigid registration of the default skin onto the new one gives no gain
+// (docs/rig.md, "Why this and not a registration"): closest points pull the skin together along
+// its normals, which the snap already does, and what is left is along the surface, where two
+// heads' files differ in convention (where the brows end, where the chin point sits) rather
+// than in shape. Step 3 costs well under a millisecond, step 4 about 20 ms on the ICT head (two
+// shortest-path searches over its skin).
 #include <lacrima/common/Diagnostics.h>
 #include <lacrima/common/HeadMesh.h>
 #include <lacrima/rigging/FeaturePointFile.h>
