@@ -162,8 +162,6 @@ PreviewPanel::~PreviewPanel() {
 
 bool PreviewPanel::hasHead() const { return state_->producer != nullptr; }
 
-bool PreviewPanel::headLoading() const { return state_->job.running(); }
-
 int PreviewPanel::headVertexCount() const {
   return hasHead() ? state_->rig->head.vertexCount() : 0;
 }

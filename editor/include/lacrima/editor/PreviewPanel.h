@@ -61,7 +61,6 @@ class PreviewPanel : public QWidget {
   // failed: for tests and batch screenshots. Returns whether a head is shown.
   bool loadHead();
   bool hasHead() const;
-  bool headLoading() const;
   // Vertices of the head shown (0 when none): which head the preview animates.
   int headVertexCount() const;
   // The rig's warnings for the head shown ("file: message").

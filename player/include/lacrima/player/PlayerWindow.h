@@ -75,9 +75,6 @@ class PlayerWindow : public QMainWindow {
   QSlider& timeline() { return *timeline_; }
   viewport::EffectsPanel& effects() { return *effects_; }
   TearParametersPanel& parameters() { return *parameters_; }
-  QAction* openAction() const { return open_; }
-  QAction* playAction() const { return play_; }
-  QAction* resetAction() const { return reset_; }
   QAction* loopAction() const { return loop_; }  // checkable: play again from the start
 
   // Error dialogs are window-modal and do not block; tests and scripts may turn them off
