@@ -18,7 +18,6 @@
 #include <lacrima/editor/TransportBar.h>
 #include <lacrima/editor/head/HeadWorkspace.h>
 #include <lacrima/viewport/EffectsPanel.h>
-#include <lacrima/viewport/FaceViewport.h>
 
 #include <QApplication>
 #include <QClipboard>
@@ -32,7 +31,6 @@
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QPainter>
 #include <QSettings>
 #include <QStackedWidget>
 #include <QStatusBar>
@@ -159,6 +157,7 @@ void MainWindow::createDocks() {
   banner_ = new RecoveryBanner(centre);
   banner_->hide();
   preview_ = new PreviewPanel(*model_, *clock_, centre);
+  preview_->setSimulationThreads(options_.simulationThreads);
   centreLayout->addWidget(banner_);
   centreLayout->addWidget(preview_, 1);
   // Over the centre: Animate (the preview) | Head (import and rig your own head, issue 13).
@@ -486,22 +485,6 @@ void MainWindow::onDocumentChanged() {
   updateTitle();
   autosaveDirty_ = true;
   autosaveSoon_->start();
-}
-
-QImage MainWindow::screenshot() {
-  QImage image = grab().toImage();
-  // grab() cannot read OpenGL windows: paint every visible 3-D view's own picture over its
-  // place (the preview in Animate, the Head workspace's view in Head).
-  QPainter p(&image);
-  for (viewport::FaceViewport* viewport : findChildren<viewport::FaceViewport*>()) {
-    if (!viewport->isVisible()) continue;
-    const QImage frame = viewport->grabFrame();
-    if (frame.isNull()) continue;
-    const QPoint at = viewport->mapTo(this, QPoint(0, 0)) * image.devicePixelRatio();
-    p.drawImage(QRect(at, viewport->size() * image.devicePixelRatio()), frame);
-  }
-  p.end();
-  return image;
 }
 
 void MainWindow::copyKeys() {

@@ -57,6 +57,7 @@ struct EditorOptions {
   QString presetsPath;         // empty: the built-in presets
   int autosaveDelayMs = 2000;  // after a change
   int autosaveIntervalMs = 30000;
+  int simulationThreads = 0;  // the preview's tears (PreviewPanel::setSimulationThreads)
 };
 
 class MainWindow : public QMainWindow {
@@ -108,10 +109,6 @@ class MainWindow : public QMainWindow {
   void checkForRecovery();  // shows the banner when a crashed session left work
   bool restoreRecovery();   // the newest orphan
   void discardRecovery();
-
-  // The whole window as a picture, the 3D preview included (QWidget::grab cannot read the
-  // viewport's native OpenGL surface, so its own render is painted in).
-  QImage screenshot();
 
   // --- clipboard --------------------------------------------------------------------------
   void copyKeys();
