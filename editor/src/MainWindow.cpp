@@ -38,6 +38,7 @@
 #include <QTabWidget>
 #include <QTimer>
 #include <QToolBar>
+#include <QUndoGroup>
 #include <QUndoView>
 #include <QVBoxLayout>
 
@@ -55,6 +56,11 @@ MainWindow::MainWindow(EditorOptions options, QWidget* parent)
   setAcceptDrops(true);
   setDockNestingEnabled(true);
   createDocks();
+  // One history per workspace, the one shown active (setWorkspace).
+  undoGroup_ = new QUndoGroup(this);
+  undoGroup_->addStack(model_->undoStack());
+  undoGroup_->addStack(headWorkspace_->setup().undoStack());
+  undoGroup_->setActiveStack(model_->undoStack());
   createMenus();
 
   figures_ = new QLabel(this);
@@ -111,13 +117,9 @@ void MainWindow::setWorkspace(Workspace workspace) {
   workspaceStack_->setCurrentIndex(static_cast<int>(workspace));
   const QSignalBlocker block(workspaces_);
   workspaces_->setCurrentIndex(static_cast<int>(workspace));
-  // Ctrl+Z undoes head edits while the Head workspace is shown (its own undo actions).
-  const bool head = workspace == Workspace::Head;
-  action(QStringLiteral("edit.undo"))->setShortcut(head ? QKeySequence() : QKeySequence::Undo);
-  action(QStringLiteral("edit.redo"))
-      ->setShortcuts(head ? QList<QKeySequence>()
-                          : QList<QKeySequence>{QKeySequence(QStringLiteral("Ctrl+Shift+Z")),
-                                                QKeySequence(QStringLiteral("Ctrl+Y"))});
+  // Edit ▸ Undo and Redo (and their shortcuts) act on the history of the workspace shown.
+  undoGroup_->setActiveStack(workspace == Workspace::Head ? headWorkspace_->setup().undoStack()
+                                                          : model_->undoStack());
 }
 
 MainWindow::Workspace MainWindow::workspace() const {
@@ -319,10 +321,10 @@ void MainWindow::createMenus() {
   rebuildRecentMenu();
 
   QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-  QAction* undo = m.undoStack()->createUndoAction(this, tr("&Undo"));
+  QAction* undo = undoGroup_->createUndoAction(this, tr("&Undo"));
   undo->setObjectName(QStringLiteral("edit.undo"));
   undo->setShortcut(QKeySequence::Undo);
-  QAction* redo = m.undoStack()->createRedoAction(this, tr("&Redo"));
+  QAction* redo = undoGroup_->createRedoAction(this, tr("&Redo"));
   redo->setObjectName(QStringLiteral("edit.redo"));
   redo->setShortcuts(
       {QKeySequence(QStringLiteral("Ctrl+Shift+Z")), QKeySequence(QStringLiteral("Ctrl+Y"))});

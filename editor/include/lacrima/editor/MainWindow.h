@@ -25,6 +25,7 @@ class QStackedWidget;
 class QTabBar;
 class QTabWidget;
 class QTimer;
+class QUndoGroup;
 class QUndoView;
 
 namespace lacrima::editing {
@@ -158,6 +159,7 @@ class MainWindow : public QMainWindow {
   head::HeadWorkspace* headWorkspace_ = nullptr;
   QTabBar* workspaces_ = nullptr;
   QStackedWidget* workspaceStack_ = nullptr;
+  QUndoGroup* undoGroup_ = nullptr;  // the animation's and the head's undo stacks
   QUndoView* history_ = nullptr;
   QMenu* recentMenu_ = nullptr;
   QMenu* viewMenu_ = nullptr;
