@@ -3,6 +3,7 @@
 #include "MainWindowPrivate.h"
 
 #include <lacrima/common/FapTable.h>
+#include <lacrima/editing/HeadSetup.h>
 #include <lacrima/editing/KeyClipboard.h>
 #include <lacrima/editor/DopeSheet.h>
 #include <lacrima/editor/GraphEditor.h>
@@ -160,8 +161,8 @@ void MainWindow::createDocks() {
       presetsSource = d_->options.presetsPath;
     }
   } catch (const FileError& e) {
-    d_->lastError =
-        QString::fromUtf8(e.what());  // reported by the caller; the built-in set is used
+    // Reported by the caller (lastError()); the built-in set is used.
+    d_->lastError = QString::fromUtf8(e.what());
   }
   if (presetsSource.startsWith(QLatin1Char(':'))) library = editing::PresetLibrary::builtIn();
 
@@ -176,7 +177,7 @@ void MainWindow::createDocks() {
   d_->preview->setSimulationThreads(d_->options.simulationThreads);
   centreLayout->addWidget(d_->banner);
   centreLayout->addWidget(d_->preview, 1);
-  // Over the centre: Animate (the preview) | Head (import and rig your own head, issue 13).
+  // Over the centre: Animate (the preview) | Head (import and rig your own head).
   auto* workspaces = new QWidget(this);
   auto* workspacesLayout = new QVBoxLayout(workspaces);
   workspacesLayout->setContentsMargins(0, 0, 0, 0);

@@ -1,6 +1,6 @@
 #include <lacrima/editing/ChannelKeySelection.h>
 
-#include <lacrima/common/FapTable.h>
+#include <lacrima/common/FapChannels.h>
 #include <lacrima/editing/KeyChange.h>
 
 #include <algorithm>
