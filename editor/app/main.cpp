@@ -6,6 +6,8 @@
 //                                         the Head workspace on MESH (bring your own head)
 // Exit status: 0 on success, 1 when FILE or the screenshot cannot be read or written, 2 on
 // wrong usage.
+#include <lacrima/appsupport/ThreadsOption.h>
+#include <lacrima/appsupport/WindowShot.h>
 #include <lacrima/common/ImageSize.h>
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editor/EditorTheme.h>
@@ -25,8 +27,10 @@
 #include <QTreeWidget>
 
 #include <cstdio>
+#include <optional>
 
 using namespace lacrima::editor;
+namespace appsupport = lacrima::appsupport;
 
 namespace {
 
@@ -132,27 +136,13 @@ int main(int argc, char** argv) {
       QStringLiteral("view"),
       QStringLiteral("Show this animation view under the transport: keys, dope or graph."),
       QStringLiteral("name"), QStringLiteral("keys"));
-  const QCommandLineOption threads(
-      QStringLiteral("threads"),
-      QStringLiteral("Threads the preview's tear simulation shares, 1 to 256 (default: "
-                     "LACRIMA_THREADS, else all); the tears are the same for any count."),
-      QStringLiteral("N"));
+  const QCommandLineOption threads =
+      appsupport::threadsOption(QStringLiteral("the preview's tear simulation"));
   parser.addOptions({screenshot, size, time, filter, focus, presets, noPreview, warm, headMesh,
                      headPoints, propose, view, threads});
   parser.process(app);
-  if (parser.isSet(threads)) {
-    // The simulation reads LACRIMA_THREADS when its own option is 0 (SimulationOptions.h), so
-    // this reaches the preview worker's simulation.
-    bool ok = false;
-    const int count = parser.value(threads).toInt(&ok);
-    if (!ok || count < 1 || count > 256) {
-      std::fprintf(stderr,
-                   "lacrima-editor: --threads expects a whole number from 1 to 256, not %s\n",
-                   qPrintable(parser.value(threads)));
-      return 2;
-    }
-    qputenv("LACRIMA_THREADS", QByteArray::number(count));
-  }
+  const std::optional<int> threadCount = appsupport::threadsFrom(parser, "lacrima-editor");
+  if (!threadCount) return 2;
 
   const bool batch = parser.isSet(screenshot);
   theme::apply(app);  // screenshots show the editor as people see it
@@ -168,6 +158,7 @@ int main(int argc, char** argv) {
   options.interactive = !batch;
   options.offerRecovery = !batch;
   options.presetsPath = parser.value(presets);
+  options.simulationThreads = *threadCount;
   MainWindow window(options);
   if (!window.lastError().isEmpty())
     std::fprintf(stderr, "lacrima-editor: %s\n", qPrintable(window.lastError()));
@@ -227,7 +218,7 @@ int main(int argc, char** argv) {
   }
   settle.restart();
   while (settle.elapsed() < 300) app.processEvents(QEventLoop::AllEvents, 50);
-  const QImage image = window.screenshot();
+  const QImage image = appsupport::grabWindowWithViewports(window);
   // Quality 0 is zlib level 9 for PNG: the smallest file, same pixels.
   if (image.isNull() || !image.save(parser.value(screenshot), "PNG", 0)) {
     std::fprintf(stderr, "lacrima-editor: cannot write %s\n", qPrintable(parser.value(screenshot)));

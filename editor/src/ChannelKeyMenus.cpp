@@ -42,7 +42,7 @@ QString plain(QString text) { return text.remove(QLatin1Char('&')); }
 
 template <typename Shape>
 void setShapes(editing::EditorModel& model, Shape shape, const QString& text) {
-  const std::vector<editing::ChannelKey> selection = model.selectedChannelKeys();
+  const std::vector<editing::ChannelKey> selection = model.channelKeySelection().keys();
   const editing::KeyChange change =
       editing::setChannelKeyShapes(model.document().keys, selection, shape);
   if (change.isNoOp()) return;
@@ -59,7 +59,7 @@ void ChannelKeyMenus::fillInterpolationMenu(QMenu& menu, editing::EditorModel& m
           setShapes(model, mode, tr("Interpolation: %1").arg(plain(interpolationName(mode))));
         });
   }
-  menu.setEnabled(!model.selectedChannelKeys().empty());
+  menu.setEnabled(!model.channelKeySelection().empty());
 }
 
 void ChannelKeyMenus::fillHandleTypeMenu(QMenu& menu, editing::EditorModel& model) {
@@ -69,11 +69,11 @@ void ChannelKeyMenus::fillHandleTypeMenu(QMenu& menu, editing::EditorModel& mode
                        setShapes(model, type, tr("Handles: %1").arg(plain(handleTypeName(type))));
                      });
   }
-  menu.setEnabled(!model.selectedChannelKeys().empty());
+  menu.setEnabled(!model.channelKeySelection().empty());
 }
 
 void ChannelKeyMenus::deleteSelected(editing::EditorModel& model) {
-  const std::vector<editing::ChannelKey> selected = model.selectedChannelKeys();
+  const std::vector<editing::ChannelKey> selected = model.channelKeySelection().keys();
   if (selected.empty()) {
     emit model.message(tr("Select channel keys to delete first"));
     return;

@@ -48,7 +48,7 @@ DopeSheetView::DopeSheetView(editing::EditorModel& model, QWidget* parent)
     else
       rowsValid_ = false;
   });
-  connect(&model_, &editing::EditorModel::channelKeySelectionChanged, this, [this] {
+  connect(&model_.channelKeySelection(), &editing::ChannelKeySelection::changed, this, [this] {
     selectedByTimeValid_ = false;
     update();
   });
@@ -227,7 +227,8 @@ std::vector<ChannelKey> DopeSheetView::markKeys(int row, int key) const {
 
 const std::vector<std::pair<double, ChannelMask>>& DopeSheetView::selectedByTime() const {
   if (selectedByTimeValid_) return selectedByTime_;
-  std::vector<ChannelKey> keys = model_.selectedChannelKeys();  // sorted by channel, then time
+  std::vector<ChannelKey> keys =
+      model_.channelKeySelection().keys();  // sorted by channel, then time
   std::sort(keys.begin(), keys.end(),
             [](const ChannelKey& a, const ChannelKey& b) { return a.time < b.time; });
   selectedByTime_.clear();
@@ -254,12 +255,12 @@ bool DopeSheetView::isMarkSelected(int row, int key) const {
 void DopeSheetView::selectRow(int row, bool additive) {
   const DopeSheetRow& r = rows_[static_cast<std::size_t>(row)];
   std::vector<ChannelKey> keys =
-      additive ? model_.selectedChannelKeys() : std::vector<ChannelKey>{};
+      additive ? model_.channelKeySelection().keys() : std::vector<ChannelKey>{};
   for (int k : r.keys) {
     const std::vector<ChannelKey> mark = markKeys(row, k);
     keys.insert(keys.end(), mark.begin(), mark.end());
   }
-  model_.setSelectedChannelKeys(std::move(keys));
+  model_.channelKeySelection().select(std::move(keys));
   model_.setSelectedChannels(additive ? (model_.selectedChannels() | r.channels) : r.channels);
   if (r.kind == DopeSheetRow::Kind::Channel) model_.setFocusChannel(r.fap);
 }
@@ -289,7 +290,7 @@ void DopeSheetView::selectAll() {
   if (!rows().empty()) selectRow(0, false);
 }
 
-void DopeSheetView::clearSelection() { model_.setSelectedChannelKeys({}); }
+void DopeSheetView::clearSelection() { model_.channelKeySelection().clear(); }
 
 // --- edits --------------------------------------------------------------------------------
 
@@ -302,7 +303,7 @@ void DopeSheetView::deleteSelected() { ChannelKeyMenus::deleteSelected(model_); 
 
 void DopeSheetView::copySelected() {
   editing::ChannelKeyClip clip =
-      editing::copyChannelKeys(model_.document().keys, model_.selectedChannelKeys());
+      editing::copyChannelKeys(model_.document().keys, model_.channelKeySelection().keys());
   if (clip.empty()) {
     emit model_.message(tr("Select channel keys to copy (click marks in the dope sheet)"));
     return;
@@ -325,7 +326,7 @@ void DopeSheetView::pasteAtPlayhead() {
 
 void DopeSheetView::duplicateToPlayhead() {
   const editing::ChannelKeyClip copy =
-      editing::copyChannelKeys(model_.document().keys, model_.selectedChannelKeys());
+      editing::copyChannelKeys(model_.document().keys, model_.channelKeySelection().keys());
   if (copy.empty()) {
     emit model_.message(tr("Select channel keys to duplicate (click marks in the dope sheet)"));
     return;
@@ -376,9 +377,10 @@ void DopeSheetView::mousePressEvent(QMouseEvent* event) {
     std::vector<ChannelKey> mark = markKeys(hit.row, hit.key);
     const bool selected = isMarkSelected(hit.row, hit.key);
     if (additive) {
-      std::vector<ChannelKey> keys = model_.selectedChannelKeys();
-      const bool all = std::all_of(mark.begin(), mark.end(),
-                                   [&](const ChannelKey& k) { return model_.isSelected(k); });
+      std::vector<ChannelKey> keys = model_.channelKeySelection().keys();
+      const bool all = std::all_of(mark.begin(), mark.end(), [&](const ChannelKey& k) {
+        return model_.channelKeySelection().contains(k);
+      });
       if (all) {
         std::erase_if(keys, [&](const ChannelKey& k) {
           return std::binary_search(mark.begin(), mark.end(), k);
@@ -386,9 +388,9 @@ void DopeSheetView::mousePressEvent(QMouseEvent* event) {
       } else {
         keys.insert(keys.end(), mark.begin(), mark.end());
       }
-      model_.setSelectedChannelKeys(std::move(keys));
+      model_.channelKeySelection().select(std::move(keys));
     } else if (!selected) {
-      model_.setSelectedChannelKeys(std::move(mark));
+      model_.channelKeySelection().select(std::move(mark));
     }
     // A plain click on a mark already selected among others keeps them for a drag, and
     // narrows the selection to the mark when released without one.
@@ -396,7 +398,7 @@ void DopeSheetView::mousePressEvent(QMouseEvent* event) {
     drag_ = isMarkSelected(hit.row, hit.key) ? Drag::PendingMove : Drag::None;
     return;
   }
-  bandBase_ = additive ? model_.selectedChannelKeys() : std::vector<ChannelKey>{};
+  bandBase_ = additive ? model_.channelKeySelection().keys() : std::vector<ChannelKey>{};
   if (!additive) clearSelection();
   drag_ = Drag::PendingBand;
 }
@@ -430,7 +432,7 @@ void DopeSheetView::mouseMoveEvent(QMouseEvent* event) {
       std::vector<ChannelKey> keys = bandBase_;
       const std::vector<ChannelKey> spanned = keysInBand(band_);
       keys.insert(keys.end(), spanned.begin(), spanned.end());
-      model_.setSelectedChannelKeys(std::move(keys));
+      model_.channelKeySelection().select(std::move(keys));
       update();
       break;
     }
@@ -442,12 +444,13 @@ void DopeSheetView::mouseMoveEvent(QMouseEvent* event) {
 void DopeSheetView::mouseReleaseEvent(QMouseEvent* event) {
   const Drag drag = drag_;
   drag_ = Drag::None;
-  if (drag == Drag::PendingMove && !narrowTo_.empty()) model_.setSelectedChannelKeys(narrowTo_);
+  if (drag == Drag::PendingMove && !narrowTo_.empty())
+    model_.channelKeySelection().select(narrowTo_);
   narrowTo_.clear();
   if (drag == Drag::Move) {
     const int frames = dragFrames(event->position().x());
     ghostFrames_ = 0;
-    const auto& selected = model_.selectedChannelKeys();
+    const auto& selected = model_.channelKeySelection().keys();
     if (frames != 0) {
       const QString text = selected.size() == 1 ? tr("Move channel key")
                                                 : tr("Move %1 channel keys").arg(selected.size());
@@ -476,9 +479,9 @@ void DopeSheetView::wheelEvent(QWheelEvent* event) {
 void DopeSheetView::contextMenuEvent(QContextMenuEvent* event) {
   const Hit hit = hitAt(event->pos());
   if (hit.key >= 0 && !isMarkSelected(hit.row, hit.key))
-    model_.setSelectedChannelKeys(markKeys(hit.row, hit.key));
+    model_.channelKeySelection().select(markKeys(hit.row, hit.key));
   QMenu menu(this);
-  const bool any = !model_.selectedChannelKeys().empty();
+  const bool any = !model_.channelKeySelection().empty();
   QAction* copy = menu.addAction(tr("Copy"), this, &DopeSheetView::copySelected);
   QAction* paste = menu.addAction(tr("Paste at playhead"), this, &DopeSheetView::pasteAtPlayhead);
   QAction* duplicate =

@@ -55,7 +55,7 @@ GraphEditor::GraphEditor(editing::EditorModel& model, QWidget* parent)
   connect(&model_, &editing::EditorModel::focusChannelChanged, this, [this] {
     if (model_.selectedChannels().none()) shownChannelsChanged();
   });
-  connect(&model_, &editing::EditorModel::channelKeySelectionChanged, this,
+  connect(&model_.channelKeySelection(), &editing::ChannelKeySelection::changed, this,
           qOverload<>(&QWidget::update));
   connect(&model_, &editing::EditorModel::timeChanged, this, qOverload<>(&QWidget::update));
 }
@@ -276,7 +276,7 @@ void GraphEditor::frameSelected() {
   const std::vector<int> faps = shownChannels();
   double t0 = 0, t1 = 0, v0 = 0, v1 = 0;
   bool any = false;
-  for (const ChannelKey& key : model_.selectedChannelKeys()) {
+  for (const ChannelKey& key : model_.channelKeySelection().keys()) {
     if (std::find(faps.begin(), faps.end(), key.fap) == faps.end()) continue;
     const int index = editing::findKey(shownKeys(), key.time);
     if (index < 0) continue;

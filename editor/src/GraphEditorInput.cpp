@@ -43,7 +43,7 @@ bool GraphEditor::isShownSelected(int fap, double time) const {
     return std::any_of(previewSelection_.begin(), previewSelection_.end(),
                        [&](const ChannelKey& k) { return k.fap == fap && sameTime(k.time, time); });
   }
-  return model_.isSelected(ChannelKey{fap, time});
+  return model_.channelKeySelection().contains(ChannelKey{fap, time});
 }
 
 bool GraphEditor::showsHandles(const GraphCurve& curve, std::size_t position) const {
@@ -99,8 +99,8 @@ GraphEditor::Hit GraphEditor::hitAt(QPointF position) const {
 
 void GraphEditor::selectFromHit(const Hit& hit, bool additive) {
   const ChannelKey key{hit.fap, shownKeys().keys()[static_cast<std::size_t>(hit.keyIndex)].time};
-  std::vector<ChannelKey> selection = model_.selectedChannelKeys();
-  const bool selected = model_.isSelected(key);
+  std::vector<ChannelKey> selection = model_.channelKeySelection().keys();
+  const bool selected = model_.channelKeySelection().contains(key);
   if (additive && hit.kind == HitKind::Key) {
     if (selected) {
       std::erase(selection, key);
@@ -112,7 +112,7 @@ void GraphEditor::selectFromHit(const Hit& hit, bool additive) {
   } else if (!selected) {
     selection = {key};
   }
-  model_.setSelectedChannelKeys(std::move(selection));
+  model_.channelKeySelection().select(std::move(selection));
 }
 
 // --- mouse ----------------------------------------------------------------------------------
@@ -133,12 +133,12 @@ void GraphEditor::mousePressEvent(QMouseEvent* event) {
   }
   const bool additive = event->modifiers() & Qt::ShiftModifier;
   pressed_ = hitAt(pressPos_);
-  selectionAtPress_ = model_.selectedChannelKeys();
+  selectionAtPress_ = model_.channelKeySelection().keys();
   switch (pressed_.kind) {
     case HitKind::Key:
       selectFromHit(pressed_, additive);
       drag_ =
-          model_.isSelected(ChannelKey{
+          model_.channelKeySelection().contains(ChannelKey{
               pressed_.fap, shownKeys().keys()[static_cast<std::size_t>(pressed_.keyIndex)].time})
               ? Drag::PendingKey
               : Drag::None;
@@ -192,7 +192,7 @@ void GraphEditor::mouseMoveEvent(QMouseEvent* event) {
 void GraphEditor::mouseReleaseEvent(QMouseEvent* event) {
   if (event->button() != Qt::LeftButton && event->button() != Qt::MiddleButton) return;
   if (drag_ == Drag::PendingBand && !(event->modifiers() & Qt::ShiftModifier))
-    model_.setSelectedChannelKeys({});
+    model_.channelKeySelection().clear();
   finishDrag();
 }
 
@@ -204,7 +204,7 @@ void GraphEditor::updateKeyDrag(QPointF position, Qt::KeyboardModifiers modifier
   const double displayShift = (pressPos_.y() - position.y()) / vScale_;
   std::vector<editing::ChannelKeyMove> moves;
   ChannelMask channels;
-  for (const ChannelKey& key : model_.selectedChannelKeys()) {
+  for (const ChannelKey& key : model_.channelKeySelection().keys()) {
     const int index = editing::findKey(keys, key.time);
     if (index < 0) continue;
     const double value = keys.keys()[static_cast<std::size_t>(index)].value(key.fap);
@@ -255,7 +255,7 @@ void GraphEditor::updateBand(QPointF position) {
       if (band_.contains(keyPosition(curve.fap, *k))) selection.push_back({curve.fap, key.time});
     }
   }
-  model_.setSelectedChannelKeys(std::move(selection));
+  model_.channelKeySelection().select(std::move(selection));
   update();
 }
 

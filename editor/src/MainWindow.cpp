@@ -1,10 +1,10 @@
-#include <lacrima/editor/MainWindow.h>
+// MainWindow: its layout, workspaces, status figures, clipboard and project settings.
+#include "MainMenus.h"
+#include "MainWindowPrivate.h"
 
 #include <lacrima/common/FapTable.h>
-#include <lacrima/editing/EditorModel.h>
-#include <lacrima/editing/FrameStepClock.h>
+#include <lacrima/editing/HeadSetup.h>
 #include <lacrima/editing/KeyClipboard.h>
-#include <lacrima/editing/RecoveryStore.h>
 #include <lacrima/editor/DopeSheet.h>
 #include <lacrima/editor/GraphEditor.h>
 #include <lacrima/editor/KeyListPanel.h>
@@ -18,7 +18,6 @@
 #include <lacrima/editor/TransportBar.h>
 #include <lacrima/editor/head/HeadWorkspace.h>
 #include <lacrima/viewport/EffectsPanel.h>
-#include <lacrima/viewport/FaceViewport.h>
 
 #include <QApplication>
 #include <QClipboard>
@@ -30,59 +29,59 @@
 #include <QFormLayout>
 #include <QLabel>
 #include <QLineEdit>
-#include <QMenuBar>
 #include <QMessageBox>
-#include <QPainter>
 #include <QSettings>
 #include <QStackedWidget>
 #include <QStatusBar>
 #include <QTabBar>
 #include <QTabWidget>
 #include <QTimer>
-#include <QToolBar>
+#include <QUndoGroup>
 #include <QUndoView>
 #include <QVBoxLayout>
 
 namespace lacrima::editor {
 
 MainWindow::MainWindow(EditorOptions options, QWidget* parent)
-    : QMainWindow(parent),
-      options_(std::move(options)),
-      model_(std::make_unique<editing::EditorModel>()),
-      clock_(std::make_unique<editing::FrameStepClock>(*model_)),
-      recovery_(std::make_unique<editing::RecoveryStore>(
-          options_.recoveryDirectory.isEmpty() ? editing::RecoveryStore::defaultDirectory()
-                                               : options_.recoveryDirectory)) {
+    : QMainWindow(parent), d_(std::make_unique<Private>(std::move(options))) {
   setObjectName(QStringLiteral("lacrimaEditor"));
   setAcceptDrops(true);
   setDockNestingEnabled(true);
   createDocks();
-  createMenus();
+  // One history per workspace, the one shown active (setWorkspace).
+  d_->undoGroup = new QUndoGroup(this);
+  d_->undoGroup->addStack(d_->model->undoStack());
+  d_->undoGroup->addStack(d_->headWorkspace->setup().undoStack());
+  d_->undoGroup->setActiveStack(d_->model->undoStack());
+  createActions();
+  d_->recentMenu = buildMainMenus(*this, [this](const QString& name) { return action(name); });
+  rebuildRecentMenu();
 
-  figures_ = new QLabel(this);
-  statusBar()->addPermanentWidget(figures_);
+  d_->figures = new QLabel(this);
+  statusBar()->addPermanentWidget(d_->figures);
 
-  autosaveSoon_ = new QTimer(this);
-  autosaveSoon_->setSingleShot(true);
-  autosaveSoon_->setInterval(options_.autosaveDelayMs);
-  connect(autosaveSoon_, &QTimer::timeout, this, &MainWindow::autosaveNow);
-  autosavePeriodic_ = new QTimer(this);
-  autosavePeriodic_->setInterval(options_.autosaveIntervalMs);
-  connect(autosavePeriodic_, &QTimer::timeout, this, [this] {
-    if (autosaveDirty_) autosaveNow();
+  d_->autosaveSoon = new QTimer(this);
+  d_->autosaveSoon->setSingleShot(true);
+  d_->autosaveSoon->setInterval(d_->options.autosaveDelayMs);
+  connect(d_->autosaveSoon, &QTimer::timeout, this, &MainWindow::autosaveNow);
+  d_->autosavePeriodic = new QTimer(this);
+  d_->autosavePeriodic->setInterval(d_->options.autosaveIntervalMs);
+  connect(d_->autosavePeriodic, &QTimer::timeout, this, [this] {
+    if (d_->autosaveDirty) autosaveNow();
   });
-  autosavePeriodic_->start();
+  d_->autosavePeriodic->start();
 
-  connect(model_->undoStack(), &QUndoStack::indexChanged, this, &MainWindow::onDocumentChanged);
-  connect(model_->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
-  connect(model_.get(), &editing::EditorModel::documentReset, this, &MainWindow::updateTitle);
-  connect(model_.get(), &editing::EditorModel::settingsChanged, this, &MainWindow::updateTitle);
-  connect(model_.get(), &editing::EditorModel::keysChanged, this, &MainWindow::updateStatusFigures);
-  connect(model_.get(), &editing::EditorModel::settingsChanged, this,
+  connect(d_->model->undoStack(), &QUndoStack::indexChanged, this, &MainWindow::onDocumentChanged);
+  connect(d_->model->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+  connect(d_->model.get(), &editing::EditorModel::documentReset, this, &MainWindow::updateTitle);
+  connect(d_->model.get(), &editing::EditorModel::settingsChanged, this, &MainWindow::updateTitle);
+  connect(d_->model.get(), &editing::EditorModel::keysChanged, this,
           &MainWindow::updateStatusFigures);
-  connect(model_.get(), &editing::EditorModel::message, this,
+  connect(d_->model.get(), &editing::EditorModel::settingsChanged, this,
+          &MainWindow::updateStatusFigures);
+  connect(d_->model.get(), &editing::EditorModel::message, this,
           [this](const QString& text) { statusBar()->showMessage(text, 5000); });
-  connect(clock_.get(), &editing::FrameStepClock::playingChanged, this,
+  connect(d_->clock.get(), &editing::FrameStepClock::playingChanged, this,
           &MainWindow::updateStatusFigures);
 
   QSettings settings;
@@ -91,8 +90,8 @@ MainWindow::MainWindow(EditorOptions options, QWidget* parent)
   restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
 
   newDocument();
-  if (options_.offerRecovery) checkForRecovery();
-  if (options_.preview) QTimer::singleShot(0, preview_, &PreviewPanel::followDocumentHead);
+  if (d_->options.offerRecovery) checkForRecovery();
+  if (d_->options.preview) QTimer::singleShot(0, d_->preview, &PreviewPanel::followDocumentHead);
   statusBar()->showMessage(
       tr("Move a slider to key it at the playhead · K keys the whole pose · Space plays"), 8000);
 }
@@ -100,41 +99,56 @@ MainWindow::MainWindow(EditorOptions options, QWidget* parent)
 MainWindow::~MainWindow() {
   // The widgets and this window's slots refer to the model and the clock, which are members
   // and so die before the widgets would: cut the window's connections, then let the widgets go.
-  clock_->pause();
-  disconnect(model_.get(), nullptr, this, nullptr);
-  disconnect(model_->undoStack(), nullptr, this, nullptr);
-  disconnect(clock_.get(), nullptr, this, nullptr);
+  d_->clock->pause();
+  disconnect(d_->model.get(), nullptr, this, nullptr);
+  disconnect(d_->model->undoStack(), nullptr, this, nullptr);
+  disconnect(d_->clock.get(), nullptr, this, nullptr);
   delete takeCentralWidget();
   const auto docks = findChildren<QDockWidget*>();
   for (QDockWidget* dock : docks) delete dock;
 }
 
 void MainWindow::setWorkspace(Workspace workspace) {
-  workspaceStack_->setCurrentIndex(static_cast<int>(workspace));
-  const QSignalBlocker block(workspaces_);
-  workspaces_->setCurrentIndex(static_cast<int>(workspace));
-  // Ctrl+Z undoes head edits while the Head workspace is shown (its own undo actions).
-  const bool head = workspace == Workspace::Head;
-  action(QStringLiteral("edit.undo"))->setShortcut(head ? QKeySequence() : QKeySequence::Undo);
-  action(QStringLiteral("edit.redo"))
-      ->setShortcuts(head ? QList<QKeySequence>()
-                          : QList<QKeySequence>{QKeySequence(QStringLiteral("Ctrl+Shift+Z")),
-                                                QKeySequence(QStringLiteral("Ctrl+Y"))});
+  d_->workspaceStack->setCurrentIndex(static_cast<int>(workspace));
+  const QSignalBlocker block(d_->workspaces);
+  d_->workspaces->setCurrentIndex(static_cast<int>(workspace));
+  // Edit ▸ Undo and Redo (and their shortcuts) act on the history of the workspace shown.
+  d_->undoGroup->setActiveStack(workspace == Workspace::Head
+                                    ? d_->headWorkspace->setup().undoStack()
+                                    : d_->model->undoStack());
 }
 
 MainWindow::Workspace MainWindow::workspace() const {
-  return static_cast<Workspace>(workspaceStack_->currentIndex());
+  return static_cast<Workspace>(d_->workspaceStack->currentIndex());
 }
 
 QAction* MainWindow::action(const QString& name) const { return findChild<QAction*>(name); }
 
+editing::EditorModel& MainWindow::model() { return *d_->model; }
+editing::FrameStepClock& MainWindow::clock() { return *d_->clock; }
+editing::RecoveryStore& MainWindow::recovery() { return *d_->recovery; }
+SliderPanel* MainWindow::sliders() const { return d_->sliders; }
+TimelineWidget* MainWindow::timeline() const { return d_->timeline; }
+LayerPanel* MainWindow::layers() const { return d_->layers; }
+GraphEditor* MainWindow::graphEditor() const { return d_->graphEditor; }
+QTabWidget* MainWindow::animationViews() const { return d_->animationViews; }
+DopeSheet* MainWindow::dopeSheet() const { return d_->dopeSheet; }
+TransportBar* MainWindow::transport() const { return d_->transport; }
+PresetPanel* MainWindow::presets() const { return d_->presets; }
+PreviewPanel* MainWindow::preview() const { return d_->preview; }
+KeyListPanel* MainWindow::keyList() const { return d_->keyList; }
+RecoveryBanner* MainWindow::recoveryBanner() const { return d_->banner; }
+head::HeadWorkspace* MainWindow::headWorkspace() const { return d_->headWorkspace; }
+QString MainWindow::filePath() const { return d_->filePath; }
+QString MainWindow::lastError() const { return d_->lastError; }
+
 bool MainWindow::showAnimationView(const QString& name) {
-  QWidget* view = name == QLatin1String("keys")    ? static_cast<QWidget*>(timeline_)
-                  : name == QLatin1String("dope")  ? static_cast<QWidget*>(dopeSheet_)
-                  : name == QLatin1String("graph") ? static_cast<QWidget*>(graphEditor_)
+  QWidget* view = name == QLatin1String("keys")    ? static_cast<QWidget*>(d_->timeline)
+                  : name == QLatin1String("dope")  ? static_cast<QWidget*>(d_->dopeSheet)
+                  : name == QLatin1String("graph") ? static_cast<QWidget*>(d_->graphEditor)
                                                    : nullptr;
   if (!view) return false;
-  animationViews_->setCurrentWidget(view);
+  d_->animationViews->setCurrentWidget(view);
   return true;
 }
 
@@ -142,12 +156,13 @@ void MainWindow::createDocks() {
   editing::PresetLibrary library;
   QString presetsSource = QString::fromUtf8(editing::PresetLibrary::kBuiltInPath.data());
   try {
-    if (!options_.presetsPath.isEmpty()) {
-      library = editing::PresetLibrary::load(options_.presetsPath.toStdString());
-      presetsSource = options_.presetsPath;
+    if (!d_->options.presetsPath.isEmpty()) {
+      library = editing::PresetLibrary::load(d_->options.presetsPath.toStdString());
+      presetsSource = d_->options.presetsPath;
     }
   } catch (const FileError& e) {
-    lastError_ = QString::fromUtf8(e.what());  // reported by the caller; the built-in set is used
+    // Reported by the caller (lastError()); the built-in set is used.
+    d_->lastError = QString::fromUtf8(e.what());
   }
   if (presetsSource.startsWith(QLatin1Char(':'))) library = editing::PresetLibrary::builtIn();
 
@@ -156,39 +171,40 @@ void MainWindow::createDocks() {
   auto* centreLayout = new QVBoxLayout(centre);
   centreLayout->setContentsMargins(0, 0, 0, 0);
   centreLayout->setSpacing(0);
-  banner_ = new RecoveryBanner(centre);
-  banner_->hide();
-  preview_ = new PreviewPanel(*model_, *clock_, centre);
-  centreLayout->addWidget(banner_);
-  centreLayout->addWidget(preview_, 1);
-  // Over the centre: Animate (the preview) | Head (import and rig your own head, issue 13).
+  d_->banner = new RecoveryBanner(centre);
+  d_->banner->hide();
+  d_->preview = new PreviewPanel(*d_->model, *d_->clock, centre);
+  d_->preview->setSimulationThreads(d_->options.simulationThreads);
+  centreLayout->addWidget(d_->banner);
+  centreLayout->addWidget(d_->preview, 1);
+  // Over the centre: Animate (the preview) | Head (import and rig your own head).
   auto* workspaces = new QWidget(this);
   auto* workspacesLayout = new QVBoxLayout(workspaces);
   workspacesLayout->setContentsMargins(0, 0, 0, 0);
   workspacesLayout->setSpacing(0);
-  workspaces_ = new QTabBar(workspaces);
-  workspaces_->setObjectName(QStringLiteral("workspaces"));
-  workspaces_->addTab(tr("Animate"));
-  workspaces_->addTab(tr("Head"));
-  workspaceStack_ = new QStackedWidget(workspaces);
-  workspaceStack_->addWidget(centre);
-  headWorkspace_ = new head::HeadWorkspace(*model_, workspaceStack_);
-  headWorkspace_->setInteractive(options_.interactive);
-  workspaceStack_->addWidget(headWorkspace_);
-  workspacesLayout->addWidget(workspaces_);
-  workspacesLayout->addWidget(workspaceStack_, 1);
+  d_->workspaces = new QTabBar(workspaces);
+  d_->workspaces->setObjectName(QStringLiteral("workspaces"));
+  d_->workspaces->addTab(tr("Animate"));
+  d_->workspaces->addTab(tr("Head"));
+  d_->workspaceStack = new QStackedWidget(workspaces);
+  d_->workspaceStack->addWidget(centre);
+  d_->headWorkspace = new head::HeadWorkspace(*d_->model, d_->workspaceStack);
+  d_->headWorkspace->setInteractive(d_->options.interactive);
+  d_->workspaceStack->addWidget(d_->headWorkspace);
+  workspacesLayout->addWidget(d_->workspaces);
+  workspacesLayout->addWidget(d_->workspaceStack, 1);
   setCentralWidget(workspaces);
-  connect(workspaces_, &QTabBar::currentChanged, this,
+  connect(d_->workspaces, &QTabBar::currentChanged, this,
           [this](int index) { setWorkspace(static_cast<Workspace>(index)); });
-  connect(headWorkspace_, &head::HeadWorkspace::useInProjectRequested, this,
+  connect(d_->headWorkspace, &head::HeadWorkspace::useInProjectRequested, this,
           [this](const QString& mesh, const QString& fdp) {
             if (!setHead(mesh, fdp)) return;
             setWorkspace(Workspace::Animate);
             statusBar()->showMessage(tr("The project now uses %1").arg(QFileInfo(mesh).fileName()),
                                      5000);
           });
-  connect(banner_, &RecoveryBanner::restoreRequested, this, &MainWindow::restoreRecovery);
-  connect(banner_, &RecoveryBanner::discardRequested, this, &MainWindow::discardRecovery);
+  connect(d_->banner, &RecoveryBanner::restoreRequested, this, &MainWindow::restoreRecovery);
+  connect(d_->banner, &RecoveryBanner::discardRequested, this, &MainWindow::discardRecovery);
 
   const auto dock = [this](const QString& title, const QString& name, QWidget* content,
                            Qt::DockWidgetArea area) {
@@ -201,25 +217,25 @@ void MainWindow::createDocks() {
     return d;
   };
 
-  sliders_ = new SliderPanel(*model_, this);
+  d_->sliders = new SliderPanel(*d_->model, this);
   QDockWidget* channels =
-      dock(tr("Channels"), QStringLiteral("dock.channels"), sliders_, Qt::LeftDockWidgetArea);
-  sliders_->setMinimumWidth(430);
+      dock(tr("Channels"), QStringLiteral("dock.channels"), d_->sliders, Qt::LeftDockWidgetArea);
+  d_->sliders->setMinimumWidth(430);
 
-  presets_ = new PresetPanel(*model_, std::move(library), this);
-  presets_->setLibrary(presets_->library(), presetsSource);
+  d_->presets = new PresetPanel(*d_->model, std::move(library), this);
+  d_->presets->setLibrary(d_->presets->library(), presetsSource);
   QDockWidget* presetDock =
-      dock(tr("Presets"), QStringLiteral("dock.presets"), presets_, Qt::RightDockWidgetArea);
-  keyList_ = new KeyListPanel(*model_, this);
+      dock(tr("Presets"), QStringLiteral("dock.presets"), d_->presets, Qt::RightDockWidgetArea);
+  d_->keyList = new KeyListPanel(*d_->model, this);
   QDockWidget* keysDock =
-      dock(tr("Keys"), QStringLiteral("dock.keys"), keyList_, Qt::RightDockWidgetArea);
-  layers_ = new LayerPanel(*model_, this);
+      dock(tr("Keys"), QStringLiteral("dock.keys"), d_->keyList, Qt::RightDockWidgetArea);
+  d_->layers = new LayerPanel(*d_->model, this);
   QDockWidget* layersDock =
-      dock(tr("Layers"), QStringLiteral("dock.layers"), layers_, Qt::RightDockWidgetArea);
-  history_ = new QUndoView(model_->undoStack(), this);
-  history_->setEmptyLabel(tr("<opened>"));
+      dock(tr("Layers"), QStringLiteral("dock.layers"), d_->layers, Qt::RightDockWidgetArea);
+  d_->history = new QUndoView(d_->model->undoStack(), this);
+  d_->history->setEmptyLabel(tr("<opened>"));
   QDockWidget* historyDock =
-      dock(tr("History"), QStringLiteral("dock.history"), history_, Qt::RightDockWidgetArea);
+      dock(tr("History"), QStringLiteral("dock.history"), d_->history, Qt::RightDockWidgetArea);
   // Presets above, the key table and the history tabbed below them.
   splitDockWidget(presetDock, keysDock, Qt::Vertical);
   tabifyDockWidget(keysDock, layersDock);
@@ -232,19 +248,19 @@ void MainWindow::createDocks() {
   auto* timelineLayout = new QVBoxLayout(timelineBox);
   timelineLayout->setContentsMargins(0, 0, 0, 0);
   timelineLayout->setSpacing(0);
-  transport_ = new TransportBar(*model_, *clock_, timelineBox);
+  d_->transport = new TransportBar(*d_->model, *d_->clock, timelineBox);
   // The animation views share the space under the transport: the key rows (the timeline), and
   // per-channel views beside it.
-  animationViews_ = new QTabWidget(timelineBox);
-  animationViews_->setDocumentMode(true);
-  timeline_ = new TimelineWidget(*model_, animationViews_);
-  animationViews_->addTab(timeline_, tr("Keys"));
-  dopeSheet_ = new DopeSheet(*model_, animationViews_);
-  animationViews_->addTab(dopeSheet_, tr("Dope sheet"));
-  graphEditor_ = new GraphEditor(*model_, animationViews_);
-  animationViews_->addTab(graphEditor_, tr("Graph"));
-  timelineLayout->addWidget(transport_);
-  timelineLayout->addWidget(animationViews_, 1);
+  d_->animationViews = new QTabWidget(timelineBox);
+  d_->animationViews->setDocumentMode(true);
+  d_->timeline = new TimelineWidget(*d_->model, d_->animationViews);
+  d_->animationViews->addTab(d_->timeline, tr("Keys"));
+  d_->dopeSheet = new DopeSheet(*d_->model, d_->animationViews);
+  d_->animationViews->addTab(d_->dopeSheet, tr("Dope sheet"));
+  d_->graphEditor = new GraphEditor(*d_->model, d_->animationViews);
+  d_->animationViews->addTab(d_->graphEditor, tr("Graph"));
+  timelineLayout->addWidget(d_->transport);
+  timelineLayout->addWidget(d_->animationViews, 1);
   QDockWidget* timelineDock =
       dock(tr("Timeline"), QStringLiteral("dock.timeline"), timelineBox, Qt::BottomDockWidgetArea);
   // The timeline spans the whole width, under the channel list too.
@@ -253,266 +269,56 @@ void MainWindow::createDocks() {
   resizeDocks({timelineDock}, {300}, Qt::Vertical);  // room for the dope sheet and graph
   resizeDocks({channels, presetDock}, {470, 330}, Qt::Horizontal);
 
-  connect(timeline_, &TimelineWidget::copyRequested, this, &MainWindow::copyKeys);
-  connect(timeline_, &TimelineWidget::pasteRequested, this, [this](double at) { pasteKeys(at); });
-  connect(timeline_, &TimelineWidget::mirrorRequested, model_.get(), &editing::EditorModel::mirror);
-  connect(presets_, &PresetPanel::loadRequested, this, &MainWindow::loadPresetsDialog);
-  connect(sliders_, &SliderPanel::expressionPresetRequested, this, [this](int code) {
-    if (const editing::Preset* preset = presets_->library().forExpression(code)) {
-      model_->applyPreset(*preset, presets_->intensity(), presets_->replacesPose());
+  connect(d_->timeline, &TimelineWidget::copyRequested, this, &MainWindow::copyKeys);
+  connect(d_->timeline, &TimelineWidget::pasteRequested, this,
+          [this](double at) { pasteKeys(at); });
+  connect(d_->timeline, &TimelineWidget::mirrorRequested, d_->model.get(),
+          &editing::EditorModel::mirror);
+  connect(d_->presets, &PresetPanel::loadRequested, this, &MainWindow::loadPresetsDialog);
+  connect(d_->sliders, &SliderPanel::expressionPresetRequested, this, [this](int code) {
+    if (const editing::Preset* preset = d_->presets->library().forExpression(code)) {
+      d_->model->applyPreset(*preset, d_->presets->intensity(), d_->presets->replacesPose());
     } else {
       statusBar()->showMessage(tr("The presets file has no pose for expression %1").arg(code),
                                5000);
     }
   });
-  connect(preview_, &PreviewPanel::statusChanged, this, &MainWindow::updateStatusFigures);
-}
-
-QAction* MainWindow::addAction(QMenu* menu, const QString& name, const QString& text,
-                               const QKeySequence& shortcut, const QString& tip) {
-  auto* a = new QAction(text, this);
-  a->setObjectName(name);
-  if (!shortcut.isEmpty()) a->setShortcut(shortcut);
-  a->setShortcutContext(Qt::WindowShortcut);
-  if (!tip.isEmpty()) a->setStatusTip(tip);
-  if (menu) menu->addAction(a);
-  QMainWindow::addAction(a);  // shortcuts work even when the menu bar is hidden
-  return a;
-}
-
-void MainWindow::createMenus() {
-  editing::EditorModel& m = *model_;
-  QMenu* file = menuBar()->addMenu(tr("&File"));
-  connect(addAction(file, QStringLiteral("file.new"), tr("&New"), QKeySequence::New),
-          &QAction::triggered, this, [this] {
-            if (maybeSave()) newDocument();
-          });
-  connect(addAction(file, QStringLiteral("file.open"), tr("&Open…"), QKeySequence::Open),
-          &QAction::triggered, this, &MainWindow::openDialog);
-  recentMenu_ = file->addMenu(tr("Open &Recent"));
-  file->addSeparator();
-  connect(addAction(file, QStringLiteral("file.save"), tr("&Save"), QKeySequence::Save),
-          &QAction::triggered, this, [this] {
-            if (filePath_.isEmpty())
-              saveDialog();
-            else
-              saveTo(filePath_);
-          });
-  connect(addAction(file, QStringLiteral("file.saveAs"), tr("Save &As…"),
-                    QKeySequence(QStringLiteral("Ctrl+Shift+S"))),
-          &QAction::triggered, this, &MainWindow::saveDialog);
-  file->addSeparator();
-  connect(addAction(file, QStringLiteral("file.import"), tr("&Import FAP…"),
-                    QKeySequence(QStringLiteral("Ctrl+I")),
-                    tr("Read a .fap file: its frames become keys, optionally reduced")),
-          &QAction::triggered, this, &MainWindow::importDialog);
-  connect(
-      addAction(file, QStringLiteral("file.export"), tr("&Export FAP…"),
-                QKeySequence(QStringLiteral("Ctrl+E")),
-                tr("Bake the keys to a .fap file (22 fps; with tear channels, or strict 68 FAPs)")),
-      &QAction::triggered, this, &MainWindow::exportDialog);
-  connect(addAction(file, QStringLiteral("file.chooseHead"), tr("Choose &head…"), {},
-                    tr("The mesh and feature-point file this project is animated on")),
-          &QAction::triggered, this, &MainWindow::chooseHeadDialog);
-  file->addSeparator();
-  connect(addAction(file, QStringLiteral("file.quit"), tr("&Quit"), QKeySequence::Quit),
-          &QAction::triggered, this, &QWidget::close);
-  rebuildRecentMenu();
-
-  QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-  QAction* undo = m.undoStack()->createUndoAction(this, tr("&Undo"));
-  undo->setObjectName(QStringLiteral("edit.undo"));
-  undo->setShortcut(QKeySequence::Undo);
-  QAction* redo = m.undoStack()->createRedoAction(this, tr("&Redo"));
-  redo->setObjectName(QStringLiteral("edit.redo"));
-  redo->setShortcuts(
-      {QKeySequence(QStringLiteral("Ctrl+Shift+Z")), QKeySequence(QStringLiteral("Ctrl+Y"))});
-  edit->addAction(undo);
-  edit->addAction(redo);
-  QMainWindow::addAction(undo);
-  QMainWindow::addAction(redo);
-  edit->addSeparator();
-  connect(addAction(edit, QStringLiteral("edit.copy"), tr("&Copy keys"), QKeySequence::Copy),
-          &QAction::triggered, this, &MainWindow::copyKeys);
-  connect(addAction(edit, QStringLiteral("edit.paste"), tr("&Paste keys at playhead"),
-                    QKeySequence::Paste),
-          &QAction::triggered, this, [this] { pasteKeys(); });
-  QAction* del =
-      addAction(edit, QStringLiteral("edit.delete"), tr("&Delete keys"), QKeySequence::Delete);
-  del->setShortcuts({QKeySequence::Delete, QKeySequence(Qt::Key_Backspace)});
-  connect(del, &QAction::triggered, this, [this] {
-    if (!model_->selectedTimes().empty())
-      model_->deleteSelectedKeys();
-    else if (model_->currentKeyIndex() >= 0)
-      model_->deleteKeys({model_->currentTime()});
-  });
-  connect(addAction(edit, QStringLiteral("edit.selectAll"), tr("Select &all keys"),
-                    QKeySequence::SelectAll),
-          &QAction::triggered, &m, &editing::EditorModel::selectAll);
-  edit->addSeparator();
-  connect(addAction(edit, QStringLiteral("edit.mirror"), tr("&Mirror left ↔ right"),
-                    QKeySequence(QStringLiteral("Ctrl+M")),
-                    tr("Mirror the selected keys, or the pose at the playhead")),
-          &QAction::triggered, &m, &editing::EditorModel::mirror);
-  QAction* symmetric = addAction(edit, QStringLiteral("edit.symmetric"), tr("S&ymmetric editing"),
-                                 QKeySequence(QStringLiteral("Ctrl+Shift+M")),
-                                 tr("Moving a left or right channel moves its mirror channel too"));
-  symmetric->setCheckable(true);
-  connect(symmetric, &QAction::toggled, &m, &editing::EditorModel::setSymmetricEdit);
-  connect(&m, &editing::EditorModel::symmetricEditChanged, symmetric, &QAction::setChecked);
-  edit->addSeparator();
-  connect(addAction(edit, QStringLiteral("edit.settings"), tr("Project &settings…"),
-                    QKeySequence(QStringLiteral("Ctrl+,"))),
-          &QAction::triggered, this, &MainWindow::settingsDialog);
-
-  QMenu* key = menuBar()->addMenu(tr("&Key"));
-  connect(addAction(key, QStringLiteral("key.add"), tr("&Add key (whole pose)"),
-                    QKeySequence(Qt::Key_K), tr("Key every animated channel at the playhead")),
-          &QAction::triggered, &m, &editing::EditorModel::addKey);
-  const auto targets = [this] {
-    std::vector<double> t = model_->selectedTimes();
-    if (t.empty() && model_->currentKeyIndex() >= 0) t.push_back(model_->currentTime());
-    return t;
-  };
-  connect(addAction(key, QStringLiteral("key.linear"), tr("Make &linear"), QKeySequence(Qt::Key_L)),
-          &QAction::triggered, this,
-          [this, targets] { model_->setInterpolation(targets(), Interpolation::Linear); });
-  connect(addAction(key, QStringLiteral("key.smooth"), tr("Make s&mooth"), QKeySequence(Qt::Key_S)),
-          &QAction::triggered, this,
-          [this, targets] { model_->setInterpolation(targets(), Interpolation::Smooth); });
-  key->addSeparator();
-  connect(addAction(key, QStringLiteral("key.previous"), tr("&Previous key"),
-                    QKeySequence(Qt::Key_Comma)),
-          &QAction::triggered, this, [this] { model_->setCurrentTime(previousKeyTime(*model_)); });
-  connect(addAction(key, QStringLiteral("key.next"), tr("&Next key"), QKeySequence(Qt::Key_Period)),
-          &QAction::triggered, this, [this] { model_->setCurrentTime(nextKeyTime(*model_)); });
-
-  QMenu* play = menuBar()->addMenu(tr("&Playback"));
-  connect(addAction(play, QStringLiteral("play.toggle"), tr("&Play / pause"),
-                    QKeySequence(Qt::Key_Space)),
-          &QAction::triggered, clock_.get(), &editing::FrameStepClock::toggle);
-  connect(
-      addAction(play, QStringLiteral("play.start"), tr("Go to &start"), QKeySequence(Qt::Key_Home)),
-      &QAction::triggered, this,
-      [this] { model_->setCurrentTime(model_->document().keys.startTime()); });
-  connect(addAction(play, QStringLiteral("play.end"), tr("Go to &end"), QKeySequence(Qt::Key_End)),
-          &QAction::triggered, this, [this] { model_->setCurrentTime(model_->endTime()); });
-  connect(addAction(play, QStringLiteral("play.previousFrame"), tr("Previous &frame"),
-                    QKeySequence(Qt::Key_Left)),
-          &QAction::triggered, this,
-          [this] { model_->setCurrentTime(model_->currentTime() - model_->frameDuration()); });
-  connect(addAction(play, QStringLiteral("play.nextFrame"), tr("&Next frame"),
-                    QKeySequence(Qt::Key_Right)),
-          &QAction::triggered, this,
-          [this] { model_->setCurrentTime(model_->currentTime() + model_->frameDuration()); });
-  // Blender's and Maya's "go to frame": type a time or frame into the transport's time field.
-  connect(addAction(play, QStringLiteral("play.goToTime"), tr("&Go to time…"),
-                    QKeySequence(QStringLiteral("Ctrl+G"))),
-          &QAction::triggered, transport_, &TransportBar::editTime);
-
-  viewMenu_ = menuBar()->addMenu(tr("&View"));
-  QAction* tears = addAction(viewMenu_, QStringLiteral("view.tearPreview"), tr("&Tear preview"),
-                             QKeySequence(Qt::Key_T), tr("Simulate the tears while paused"));
-  tears->setCheckable(true);
-  tears->setChecked(preview_->tearPreview());
-  connect(tears, &QAction::toggled, preview_, &PreviewPanel::setTearPreview);
-  connect(addAction(viewMenu_, QStringLiteral("view.frameAll"), tr("&Frame all keys"),
-                    QKeySequence(Qt::Key_F)),
-          &QAction::triggered, timeline_, &TimelineWidget::fitAll);
-  connect(
-      addAction(viewMenu_, QStringLiteral("view.filter"), tr("Find &channel"), QKeySequence::Find),
-      &QAction::triggered, this, [this] {
-        sliders_->filterBox()->setFocus();
-        sliders_->filterBox()->selectAll();
-      });
-  viewMenu_->addSeparator();
-  connect(addAction(viewMenu_, QStringLiteral("view.animate"), tr("&Animate workspace"),
-                    QKeySequence(QStringLiteral("Ctrl+1"))),
-          &QAction::triggered, this, [this] { setWorkspace(Workspace::Animate); });
-  connect(addAction(viewMenu_, QStringLiteral("view.head"), tr("&Head workspace"),
-                    QKeySequence(QStringLiteral("Ctrl+2")),
-                    tr("Import your own head, place its feature points and rig it")),
-          &QAction::triggered, this, [this] { setWorkspace(Workspace::Head); });
-  viewMenu_->addSeparator();
-  for (QDockWidget* d : findChildren<QDockWidget*>()) viewMenu_->addAction(d->toggleViewAction());
-
-  QMenu* help = menuBar()->addMenu(tr("&Help"));
-  connect(addAction(help, QStringLiteral("help.shortcuts"), tr("&Keyboard shortcuts"),
-                    QKeySequence::HelpContents),
-          &QAction::triggered, this, &MainWindow::showShortcuts);
-
-  auto* bar = addToolBar(tr("Main"));
-  bar->setObjectName(QStringLiteral("toolbar.main"));
-  bar->setMovable(false);
-  bar->setToolButtonStyle(Qt::ToolButtonTextOnly);
-  for (const char* name :
-       {"file.new", "file.open", "file.save", "", "edit.undo", "edit.redo", "", "key.add",
-        "edit.delete", "edit.mirror", "edit.symmetric", "", "file.import", "file.export"}) {
-    if (!*name) {
-      bar->addSeparator();
-      continue;
-    }
-    bar->addAction(action(QString::fromLatin1(name)));
-  }
-  action(QStringLiteral("key.add"))->setIconText(tr("Key"));
-  action(QStringLiteral("edit.delete"))->setIconText(tr("Delete"));
-  action(QStringLiteral("edit.mirror"))->setIconText(tr("Mirror"));
-  action(QStringLiteral("edit.symmetric"))->setIconText(tr("Symmetric"));
-  action(QStringLiteral("file.import"))->setIconText(tr("Import FAP"));
-  action(QStringLiteral("file.export"))->setIconText(tr("Export FAP"));
-  undo->setIconText(tr("Undo"));
-  redo->setIconText(tr("Redo"));
+  connect(d_->preview, &PreviewPanel::statusChanged, this, &MainWindow::updateStatusFigures);
 }
 
 void MainWindow::updateTitle() {
-  const QString name = filePath_.isEmpty() ? QString::fromStdString(model_->document().name)
-                                           : QFileInfo(filePath_).fileName();
+  const QString name = d_->filePath.isEmpty() ? QString::fromStdString(d_->model->document().name)
+                                              : QFileInfo(d_->filePath).fileName();
   setWindowTitle(QStringLiteral("%1[*] — Lacrima Editor").arg(name));
-  setWindowModified(model_->isModified());
+  setWindowModified(d_->model->isModified());
 }
 
 void MainWindow::updateStatusFigures() {
-  const ProjectDocument& doc = model_->document();
+  const ProjectDocument& doc = d_->model->document();
   QString text = tr("%1 fps · %n keys · %2 s", nullptr, static_cast<int>(doc.keys.keys().size()))
                      .arg(doc.fps)
                      .arg(doc.keys.endTime(), 0, 'f', 2);
-  if (clock_->isPlaying()) text += tr(" · playing at %1 fps").arg(clock_->rate());
-  if (preview_ && !preview_->statusText().isEmpty())
-    text += QStringLiteral(" · ") + preview_->statusText();
-  figures_->setText(text);
+  if (d_->clock->isPlaying()) text += tr(" · playing at %1 fps").arg(d_->clock->rate());
+  if (d_->preview && !d_->preview->statusText().isEmpty())
+    text += QStringLiteral(" · ") + d_->preview->statusText();
+  d_->figures->setText(text);
 }
 
 void MainWindow::onDocumentChanged() {
   updateTitle();
-  autosaveDirty_ = true;
-  autosaveSoon_->start();
-}
-
-QImage MainWindow::screenshot() {
-  QImage image = grab().toImage();
-  // grab() cannot read OpenGL windows: paint every visible 3-D view's own picture over its
-  // place (the preview in Animate, the Head workspace's view in Head).
-  QPainter p(&image);
-  for (viewport::FaceViewport* viewport : findChildren<viewport::FaceViewport*>()) {
-    if (!viewport->isVisible()) continue;
-    const QImage frame = viewport->grabFrame();
-    if (frame.isNull()) continue;
-    const QPoint at = viewport->mapTo(this, QPoint(0, 0)) * image.devicePixelRatio();
-    p.drawImage(QRect(at, viewport->size() * image.devicePixelRatio()), frame);
-  }
-  p.end();
-  return image;
+  d_->autosaveDirty = true;
+  d_->autosaveSoon->start();
 }
 
 void MainWindow::copyKeys() {
-  std::vector<double> times = model_->selectedTimes();
-  if (times.empty() && model_->currentKeyIndex() >= 0) times.push_back(model_->currentTime());
+  std::vector<double> times = d_->model->selectedTimes();
+  if (times.empty() && d_->model->currentKeyIndex() >= 0) times.push_back(d_->model->currentTime());
   if (times.empty()) {
     statusBar()->showMessage(tr("Select keys to copy (click them in the timeline)"), 4000);
     return;
   }
   QApplication::clipboard()->setMimeData(
-      editing::keysToMimeData(editing::copyKeys(model_->document().keys, times)));
+      editing::keysToMimeData(editing::copyKeys(d_->model->document().keys, times)));
   statusBar()->showMessage(tr("Copied %n key(s)", nullptr, static_cast<int>(times.size())), 3000);
 }
 
@@ -522,12 +328,12 @@ void MainWindow::pasteKeys(std::optional<double> at) {
     statusBar()->showMessage(tr("The clipboard holds no keys"), 4000);
     return;
   }
-  model_->pasteKeys(*clip, at.value_or(model_->currentTime()));
+  d_->model->pasteKeys(*clip, at.value_or(d_->model->currentTime()));
 }
 
 void MainWindow::settingsDialog() {
-  if (!options_.interactive) return;
-  const ProjectDocument& doc = model_->document();
+  if (!d_->options.interactive) return;
+  const ProjectDocument& doc = d_->model->document();
   QDialog dialog(this);
   dialog.setWindowTitle(tr("Project settings"));
   auto* form = new QFormLayout(&dialog);
@@ -544,8 +350,9 @@ void MainWindow::settingsDialog() {
   auto* effects = new viewport::EffectsPanel(&dialog);
   effects->display(doc.scene);
   // The preview keeps running behind the dialog: its cost shows beside the quality it has now.
-  if (preview_)
-    connect(preview_, &PreviewPanel::tearsStepped, effects, &viewport::EffectsPanel::addFrameCost);
+  if (d_->preview)
+    connect(d_->preview, &PreviewPanel::tearsStepped, effects,
+            &viewport::EffectsPanel::addFrameCost);
   form->addRow(tr("Name"), name);
   form->addRow(tr("Frame rate (export)"), fps);
   form->addRow(tr("New keys"), mode);
@@ -564,7 +371,7 @@ void MainWindow::settingsDialog() {
   settings.defaultInterpolation =
       mode->currentIndex() == 1 ? Interpolation::Smooth : Interpolation::Linear;
   effects->applyTo(settings.scene);
-  model_->setSettings(settings, tr("Project settings"));
+  d_->model->setSettings(settings, tr("Project settings"));
 }
 
 void MainWindow::showShortcuts() {
@@ -585,7 +392,7 @@ void MainWindow::showShortcuts() {
       "keys or unkeys the channel.<br>Number fields: Enter takes the typed number or refuses "
       "it (red, with the range in the status bar), Esc puts the value back, Up/Down step; "
       "Space plays unless you are typing in one.</p>");
-  if (!options_.interactive) return;
+  if (!d_->options.interactive) return;
   QMessageBox box(this);
   box.setWindowTitle(tr("Keyboard shortcuts"));
   box.setTextFormat(Qt::RichText);

@@ -1,11 +1,8 @@
 // MainWindow: files, recent files, autosave and recovery, closing.
-#include <lacrima/common/ProjectPath.h>
-#include <lacrima/editor/MainWindow.h>
-#include <lacrima/editor/NumberField.h>
+#include "MainWindowPrivate.h"
 
-#include <lacrima/editing/EditorModel.h>
-#include <lacrima/editing/FrameStepClock.h>
-#include <lacrima/editing/RecoveryStore.h>
+#include <lacrima/common/ProjectPath.h>
+#include <lacrima/editor/NumberField.h>
 #include <lacrima/editor/PresetPanel.h>
 #include <lacrima/editor/RecoveryBanner.h>
 #include <lacrima/playback/TearQualityOptions.h>
@@ -53,31 +50,32 @@ QString joinWarnings(const Warnings& warnings) {
 }  // namespace
 
 void MainWindow::reportError(const QString& title, const QString& message) {
-  lastError_ = message;
+  d_->lastError = message;
   statusBar()->showMessage(message, 10000);
-  if (options_.interactive) QMessageBox::warning(this, title, message);
+  if (d_->options.interactive) QMessageBox::warning(this, title, message);
 }
 
 bool MainWindow::maybeSave() {
-  if (!model_->isModified() || !options_.interactive) return true;
+  if (!d_->model->isModified() || !d_->options.interactive) return true;
   const auto answer = QMessageBox::warning(
       this, tr("Unsaved changes"),
       tr("“%1” has unsaved changes. Save them first?")
-          .arg(QString::fromStdString(model_->document().name)),
+          .arg(QString::fromStdString(d_->model->document().name)),
       QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
   if (answer == QMessageBox::Cancel) return false;
-  if (answer == QMessageBox::Save) return filePath_.isEmpty() ? saveDialog() : saveTo(filePath_);
+  if (answer == QMessageBox::Save)
+    return d_->filePath.isEmpty() ? saveDialog() : saveTo(d_->filePath);
   return true;
 }
 
 void MainWindow::newDocument() {
-  clock_->pause();
+  d_->clock->pause();
   ProjectDocument document;
   document.name = "untitled";
-  filePath_.clear();
-  model_->resetDocument(std::move(document), true);
-  recovery_->discard();
-  autosaveDirty_ = false;
+  d_->filePath.clear();
+  d_->model->resetDocument(std::move(document), true);
+  d_->recovery->discard();
+  d_->autosaveDirty = false;
   updateTitle();
   updateStatusFigures();
 }
@@ -93,17 +91,17 @@ bool MainWindow::openFile(const QString& path) {
     const TearMethodKeys methods = playback::tearMethodKeys();
     ProjectDocument document =
         ProjectDocument::load(path.toStdString(), ProjectDocument::Use::Edit, &methods);
-    clock_->pause();
-    filePath_ = QFileInfo(path).absoluteFilePath();
-    model_->resetDocument(std::move(document), true);
-    recovery_->discard();
-    autosaveDirty_ = false;
-    addRecentFile(filePath_);
+    d_->clock->pause();
+    d_->filePath = QFileInfo(path).absoluteFilePath();
+    d_->model->resetDocument(std::move(document), true);
+    d_->recovery->discard();
+    d_->autosaveDirty = false;
+    addRecentFile(d_->filePath);
     updateTitle();
     updateStatusFigures();
     // A head that moved does not stop the project from opening: the preview explains, and the
     // reference stays as it is so saving loses nothing.
-    if (auto missing = model_->document().missingHeadFile(path.toStdString()))
+    if (auto missing = d_->model->document().missingHeadFile(path.toStdString()))
       statusBar()->showMessage(QString::fromStdString(missing->toString()), 15000);
     else
       statusBar()->showMessage(tr("Opened %1").arg(path), 4000);
@@ -117,17 +115,17 @@ bool MainWindow::openFile(const QString& path) {
 bool MainWindow::saveTo(const QString& path) {
   try {
     // A first save names an untitled project after its file (one undo step, before saving).
-    if (model_->document().name == "untitled") {
-      ProjectDocument named = model_->document();
+    if (d_->model->document().name == "untitled") {
+      ProjectDocument named = d_->model->document();
       named.name = QFileInfo(path).completeBaseName().toStdString();
-      if (!named.name.empty()) model_->setSettings(named, tr("Name project"));
+      if (!named.name.empty()) d_->model->setSettings(named, tr("Name project"));
     }
-    model_->document().save(path.toStdString());
-    filePath_ = QFileInfo(path).absoluteFilePath();
-    model_->markSaved();
-    recovery_->discard();
-    autosaveDirty_ = false;
-    addRecentFile(filePath_);
+    d_->model->document().save(path.toStdString());
+    d_->filePath = QFileInfo(path).absoluteFilePath();
+    d_->model->markSaved();
+    d_->recovery->discard();
+    d_->autosaveDirty = false;
+    addRecentFile(d_->filePath);
     updateTitle();
     statusBar()->showMessage(tr("Saved %1").arg(path), 4000);
     return true;
@@ -144,10 +142,10 @@ bool MainWindow::setHead(const QString& meshPath, const QString& fdpPath) {
       return false;
     }
   }
-  ProjectDocument changed = model_->document();
+  ProjectDocument changed = d_->model->document();
   changed.head = HeadFiles{QFileInfo(meshPath).absoluteFilePath().toStdString(),
                            QFileInfo(fdpPath).absoluteFilePath().toStdString()};
-  model_->setSettings(changed, tr("Choose head %1").arg(QFileInfo(meshPath).fileName()));
+  d_->model->setSettings(changed, tr("Choose head %1").arg(QFileInfo(meshPath).fileName()));
   return true;
 }
 
@@ -155,9 +153,9 @@ bool MainWindow::importFap(const QString& path, std::optional<double> reductionT
   try {
     editing::FapImportResult result =
         editing::importFap(path.toStdString(), editing::FapImportOptions{reductionTolerance});
-    clock_->pause();
-    filePath_.clear();
-    model_->resetDocument(std::move(result.document), false);
+    d_->clock->pause();
+    d_->filePath.clear();
+    d_->model->resetDocument(std::move(result.document), false);
     addRecentFile(QFileInfo(path).absoluteFilePath());
     updateTitle();
     updateStatusFigures();
@@ -186,7 +184,7 @@ bool MainWindow::importFap(const QString& path, std::optional<double> reductionT
 bool MainWindow::exportFap(const QString& path, const editing::FapExportOptions& options) {
   try {
     const editing::FapExportResult result =
-        editing::exportFap(model_->document(), path.toStdString(), options);
+        editing::exportFap(d_->model->document(), path.toStdString(), options);
     QString message = tr("Exported %1 frames at %2 fps to %3 (%4)")
                           .arg(result.frames)
                           .arg(options.fps)
@@ -206,19 +204,19 @@ bool MainWindow::exportFap(const QString& path, const editing::FapExportOptions&
 // --- dialogs --------------------------------------------------------------------------------
 
 void MainWindow::openDialog() {
-  if (!options_.interactive || !maybeSave()) return;
+  if (!d_->options.interactive || !maybeSave()) return;
   const QString path = QFileDialog::getOpenFileName(
-      this, tr("Open project or FAP file"), QFileInfo(filePath_).path(),
+      this, tr("Open project or FAP file"), QFileInfo(d_->filePath).path(),
       tr("Projects and FAP files (*.lacrima *.json *.fap);;Projects (*.lacrima *.json);;FAP files "
          "(*.fap)"));
   if (!path.isEmpty()) openFile(path);
 }
 
 bool MainWindow::saveDialog() {
-  if (!options_.interactive) return false;
-  QString suggestion = filePath_;
+  if (!d_->options.interactive) return false;
+  QString suggestion = d_->filePath;
   if (suggestion.isEmpty())
-    suggestion = QString::fromStdString(model_->document().name) + kProjectSuffix;
+    suggestion = QString::fromStdString(d_->model->document().name) + kProjectSuffix;
   QString path = QFileDialog::getSaveFileName(this, tr("Save project"), suggestion,
                                               tr("Projects (*.lacrima *.json)"));
   if (path.isEmpty()) return false;
@@ -228,7 +226,7 @@ bool MainWindow::saveDialog() {
 }
 
 void MainWindow::importDialog() {
-  if (!options_.interactive || !maybeSave()) return;
+  if (!d_->options.interactive || !maybeSave()) return;
   const QString path = QFileDialog::getOpenFileName(this, tr("Import FAP file"), QString(),
                                                     tr("FAP files (*.fap);;All files (*)"));
   if (path.isEmpty()) return;
@@ -269,14 +267,14 @@ void MainWindow::importDialog() {
 }
 
 void MainWindow::exportDialog() {
-  if (!options_.interactive) return;
+  if (!d_->options.interactive) return;
   QDialog dialog(this);
   dialog.setWindowTitle(tr("Export FAP"));
   auto* form = new QFormLayout(&dialog);
   auto* fps = new NumberField(&dialog);
   fps->setRange({1, 240, true, tr("fps")});
   fps->setSubject(tr("the frame rate"));
-  fps->setValue(std::clamp(std::round(model_->document().fps), 1.0, 240.0));
+  fps->setValue(std::clamp(std::round(d_->model->document().fps), 1.0, 240.0));
   fps->setKeepsRefusedText(true);
   auto* profile = new QComboBox(&dialog);
   profile->addItem(tr("Extended: 68 FAPs + tear channels 69-70 (Lacrima player)"));
@@ -294,9 +292,10 @@ void MainWindow::exportDialog() {
   connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
   if (dialog.exec() != QDialog::Accepted) return;
   QString suggestion =
-      filePath_.isEmpty() ? QString::fromStdString(model_->document().name) + QStringLiteral(".fap")
-                          : QFileInfo(filePath_).path() + '/' +
-                                QFileInfo(filePath_).completeBaseName() + QStringLiteral(".fap");
+      d_->filePath.isEmpty()
+          ? QString::fromStdString(d_->model->document().name) + QStringLiteral(".fap")
+          : QFileInfo(d_->filePath).path() + '/' + QFileInfo(d_->filePath).completeBaseName() +
+                QStringLiteral(".fap");
   QString path =
       QFileDialog::getSaveFileName(this, tr("Export FAP"), suggestion, tr("FAP files (*.fap)"));
   if (path.isEmpty()) return;
@@ -305,10 +304,10 @@ void MainWindow::exportDialog() {
 }
 
 void MainWindow::chooseHeadDialog() {
-  if (!options_.interactive) return;
-  const std::optional<HeadFiles>& current = model_->document().head;
+  if (!d_->options.interactive) return;
+  const std::optional<HeadFiles>& current = d_->model->document().head;
   const QString start = current ? QFileInfo(QString::fromStdString(current->mesh)).path()
-                                : QFileInfo(filePath_).path();
+                                : QFileInfo(d_->filePath).path();
   const QString mesh = QFileDialog::getOpenFileName(
       this, tr("Choose head: the mesh"), start,
       tr("Meshes (*.obj *.glb *.gltf *.fbx *.dae *.ply);;All files (*)"));
@@ -325,14 +324,14 @@ void MainWindow::chooseHeadDialog() {
 }
 
 void MainWindow::loadPresetsDialog() {
-  if (!options_.interactive) return;
+  if (!d_->options.interactive) return;
   const QString path =
       QFileDialog::getOpenFileName(this, tr("Load presets"), QString(), tr("Presets (*.json)"));
   if (path.isEmpty()) return;
   try {
-    presets_->setLibrary(editing::PresetLibrary::load(path.toStdString()), path);
+    d_->presets->setLibrary(editing::PresetLibrary::load(path.toStdString()), path);
     statusBar()->showMessage(tr("Loaded %n preset(s) from %1", nullptr,
-                                static_cast<int>(presets_->library().presets().size()))
+                                static_cast<int>(d_->presets->library().presets().size()))
                                  .arg(path),
                              5000);
   } catch (const FileError& e) {
@@ -353,12 +352,12 @@ void MainWindow::addRecentFile(const QString& path) {
 }
 
 void MainWindow::rebuildRecentMenu() {
-  if (!recentMenu_) return;
-  recentMenu_->clear();
+  if (!d_->recentMenu) return;
+  d_->recentMenu->clear();
   const QStringList recent = QSettings().value(kRecentKey).toStringList();
   int number = 1;
   for (const QString& path : recent) {
-    QAction* a = recentMenu_->addAction(
+    QAction* a = d_->recentMenu->addAction(
         QStringLiteral("&%1  %2").arg(number++).arg(QFileInfo(path).fileName()));
     a->setStatusTip(path);
     a->setEnabled(QFileInfo::exists(path));
@@ -366,9 +365,9 @@ void MainWindow::rebuildRecentMenu() {
       if (maybeSave()) openFile(path);
     });
   }
-  if (recent.isEmpty()) recentMenu_->addAction(tr("(none yet)"))->setEnabled(false);
-  recentMenu_->addSeparator();
-  connect(recentMenu_->addAction(tr("Clear list")), &QAction::triggered, this, [this] {
+  if (recent.isEmpty()) d_->recentMenu->addAction(tr("(none yet)"))->setEnabled(false);
+  d_->recentMenu->addSeparator();
+  connect(d_->recentMenu->addAction(tr("Clear list")), &QAction::triggered, this, [this] {
     QSettings().remove(kRecentKey);
     rebuildRecentMenu();
   });
@@ -377,27 +376,27 @@ void MainWindow::rebuildRecentMenu() {
 // --- autosave and recovery ------------------------------------------------------------------
 
 void MainWindow::autosaveNow() {
-  autosaveSoon_->stop();
-  autosaveDirty_ = false;
+  d_->autosaveSoon->stop();
+  d_->autosaveDirty = false;
   try {
-    if (model_->isModified())
-      recovery_->save(model_->document(), filePath_);
+    if (d_->model->isModified())
+      d_->recovery->save(d_->model->document(), d_->filePath);
     else
-      recovery_->discard();
+      d_->recovery->discard();
   } catch (const FileError& e) {
     statusBar()->showMessage(tr("Autosave failed: %1").arg(QString::fromUtf8(e.what())), 8000);
   }
 }
 
 void MainWindow::checkForRecovery() {
-  const auto orphans = recovery_->orphans();
+  const auto orphans = d_->recovery->orphans();
   if (orphans.empty()) {
-    banner_->hide();
-    pendingRecovery_.clear();
+    d_->banner->hide();
+    d_->pendingRecovery.clear();
     return;
   }
   const editing::RecoveryStore::Orphan& newest = orphans.front();
-  pendingRecovery_ = newest.file;
+  d_->pendingRecovery = newest.file;
   QString where = newest.sourcePath.isEmpty() ? tr("never saved") : newest.sourcePath;
   QString text = tr("<b>Unsaved work was found</b> from an editor that did not close cleanly: “%1” "
                     "(%n key(s), %2, autosaved %3).",
@@ -406,22 +405,22 @@ void MainWindow::checkForRecovery() {
                           QLocale().toString(newest.savedAt.toLocalTime(), QLocale::ShortFormat));
   if (orphans.size() > 1)
     text += tr(" %n older one(s) too.", nullptr, static_cast<int>(orphans.size() - 1));
-  banner_->setText(text);
-  banner_->show();
+  d_->banner->setText(text);
+  d_->banner->show();
 }
 
 bool MainWindow::restoreRecovery() {
-  if (pendingRecovery_.isEmpty()) return false;
+  if (d_->pendingRecovery.isEmpty()) return false;
   bool restored = false;
   try {
     QString source;
     const TearMethodKeys methods = playback::tearMethodKeys();
     ProjectDocument document =
-        editing::RecoveryStore::read(pendingRecovery_, &source, nullptr, &methods);
-    clock_->pause();
-    model_->resetDocument(std::move(document), false);
-    filePath_ = source;
-    editing::RecoveryStore::remove(pendingRecovery_);
+        editing::RecoveryStore::read(d_->pendingRecovery, &source, nullptr, &methods);
+    d_->clock->pause();
+    d_->model->resetDocument(std::move(document), false);
+    d_->filePath = source;
+    editing::RecoveryStore::remove(d_->pendingRecovery);
     autosaveNow();  // the restored work is this session's to protect now
     updateTitle();
     updateStatusFigures();
@@ -435,7 +434,7 @@ bool MainWindow::restoreRecovery() {
 }
 
 void MainWindow::discardRecovery() {
-  if (!pendingRecovery_.isEmpty()) editing::RecoveryStore::remove(pendingRecovery_);
+  if (!d_->pendingRecovery.isEmpty()) editing::RecoveryStore::remove(d_->pendingRecovery);
   checkForRecovery();
 }
 
@@ -446,8 +445,8 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     event->ignore();
     return;
   }
-  clock_->pause();
-  recovery_->discard();  // a clean exit leaves nothing to recover
+  d_->clock->pause();
+  d_->recovery->discard();  // a clean exit leaves nothing to recover
   QSettings settings;
   settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
   settings.setValue(QStringLiteral("window/state"), saveState());

@@ -162,8 +162,6 @@ PreviewPanel::~PreviewPanel() {
 
 bool PreviewPanel::hasHead() const { return state_->producer != nullptr; }
 
-bool PreviewPanel::headLoading() const { return state_->job.running(); }
-
 int PreviewPanel::headVertexCount() const {
   return hasHead() ? state_->rig->head.vertexCount() : 0;
 }
@@ -260,8 +258,8 @@ void PreviewPanel::installRig(std::shared_ptr<playback::HeadRig> rig) {
   }
   state_->producer =
       std::make_unique<playback::FrameProducer>(*state_->rig, model_.document().scene);
-  state_->worker = std::make_unique<playback::PreviewWorker>(state_->rig, model_.document().scene,
-                                                             model_.document().tearSources);
+  state_->worker = std::make_unique<playback::PreviewWorker>(
+      state_->rig, model_.document().scene, model_.document().tearSources, simulationThreads_);
   // On the worker thread: only post. A post to a panel being destroyed is dropped with it,
   // and the destructor ends the workers before that anyway.
   state_->worker->setFrameReady([this] {

@@ -1,6 +1,8 @@
 // lacrima-player: plays MPEG-4 facial animation (FAP files and Lacrima projects) on a rigged
 // head with real-time tears, or renders it to images (--render). Exit codes as the other
 // tools: 0 success, 1 bad input or a failed write, 2 wrong usage.
+#include <lacrima/appsupport/ThreadsOption.h>
+#include <lacrima/appsupport/WindowShot.h>
 #include <lacrima/player/BatchRender.h>
 #include <lacrima/player/ErrorReport.h>
 #include <lacrima/player/PlayerWindow.h>
@@ -85,8 +87,13 @@ std::optional<scene::CameraPreset> cameraPreset(const QCommandLineParser& parser
   return view;
 }
 
-int renderMode(const QCommandLineParser& parser, const QSize& size,
-               std::optional<TearQuality> quality) {
+// What the options other than the file and the head ask of either mode.
+struct ModeOptions {
+  std::optional<TearQuality> quality;  // --quality
+  int threads = 0;                     // --threads
+};
+
+int renderMode(const QCommandLineParser& parser, const QSize& size, const ModeOptions& mode) {
   const QStringList files = parser.positionalArguments();
   if (files.size() != 1) {
     std::fprintf(stderr, "lacrima-player: --render needs exactly one FILE to render\n");
@@ -102,7 +109,8 @@ int renderMode(const QCommandLineParser& parser, const QSize& size,
   options.size = size;
   options.view = *view;
   options.progress = showProgress;
-  options.quality = quality;
+  options.quality = mode.quality;
+  options.threads = mode.threads;
   const player::BatchRenderResult result = player::renderAnimation(*rig, options);
   std::fprintf(stderr, "lacrima-player: %d frames in %.1f s\n", result.frames, result.seconds);
   std::printf("%s/frame_0000.png ... frame_%04d.png and %s\n",
@@ -112,7 +120,7 @@ int renderMode(const QCommandLineParser& parser, const QSize& size,
 }
 
 int windowMode(QApplication& app, const QCommandLineParser& parser, const QSize* size,
-               std::optional<TearQuality> quality) {
+               const ModeOptions& mode) {
   const QStringList files = parser.positionalArguments();
   if (files.size() > 1) {
     std::fprintf(stderr, "lacrima-player: give at most one FILE to open\n");
@@ -129,7 +137,8 @@ int windowMode(QApplication& app, const QCommandLineParser& parser, const QSize*
   }
   player::PlayerWindow window(loadRig(parser, head));
   window.setHeadSource(head.files, head.fixed);
-  if (quality) window.setTearQuality(*quality);
+  window.setSimulationThreads(mode.threads);
+  if (mode.quality) window.setTearQuality(*mode.quality);
   for (const std::string& w : window.rig().warnings)
     std::fprintf(stderr, "warning: %s\n", w.c_str());
   window.resize(size ? *size : QSize(1360, 820));
@@ -156,7 +165,7 @@ int windowMode(QApplication& app, const QCommandLineParser& parser, const QSize*
     window.seek(at);
     QTimer::singleShot(300, &window, [&] {
       const QString path = parser.value("screenshot");
-      if (!window.screenshot().save(path)) {
+      if (!appsupport::grabWindowWithViewports(window).save(path)) {
         std::fprintf(stderr, "lacrima-player: cannot write %s\n", path.toLocal8Bit().constData());
         status = kExitBadInput;
       }
@@ -241,35 +250,22 @@ int main(int argc, char** argv) {
        "Tear quality, in place of the file's: preview (longer sub-steps, faster), balanced (the "
        "default) or reference (shorter sub-steps, closest to a fine reference).",
        "LEVEL"},
-      {"threads",
-       "Threads the tear simulation shares, 1 to 256 (default: LACRIMA_THREADS, else all); "
-       "the tears are the same for any count.",
-       "N"},
+      appsupport::threadsOption(QStringLiteral("the tear simulation")),
   });
   parser.process(app);
-  if (parser.isSet("threads")) {
-    // The simulation reads LACRIMA_THREADS when its own option is 0 (SimulationOptions.h), so
-    // this reaches every simulation the player makes.
-    bool ok = false;
-    const int threads = parser.value("threads").toInt(&ok);
-    if (!ok || threads < 1 || threads > 256) {
-      std::fprintf(stderr,
-                   "lacrima-player: --threads expects a whole number from 1 to 256, not %s\n",
-                   qPrintable(parser.value("threads")));
-      return kExitUsage;
-    }
-    qputenv("LACRIMA_THREADS", QByteArray::number(threads));
-  }
+  const std::optional<int> threads = appsupport::threadsFrom(parser, "lacrima-player");
+  if (!threads) return kExitUsage;
+  ModeOptions mode;
+  mode.threads = *threads;
   if (parser.isSet("mesh") != parser.isSet("fdp")) {
     std::fprintf(stderr,
                  "lacrima-player: --mesh and --fdp go together (a head and its feature points)\n");
     return kExitUsage;
   }
-  std::optional<TearQuality> quality;
   if (parser.isSet("quality")) {
     const std::string name = parser.value("quality").toStdString();
-    quality = parseTearQuality(name);
-    if (!quality) {
+    mode.quality = parseTearQuality(name);
+    if (!mode.quality) {
       std::fprintf(stderr,
                    "lacrima-player: --quality: expected preview, balanced or reference, not "
                    "'%s'\n",
@@ -287,8 +283,8 @@ int main(int argc, char** argv) {
     size = parsed.size;
   }
   try {
-    if (parser.isSet("render")) return renderMode(parser, size, quality);
-    return windowMode(app, parser, parser.isSet("size") ? &size : nullptr, quality);
+    if (parser.isSet("render")) return renderMode(parser, size, mode);
+    return windowMode(app, parser, parser.isSet("size") ? &size : nullptr, mode);
   } catch (const std::exception& e) {
     const QString input = parser.positionalArguments().value(0);
     std::fprintf(stderr, "lacrima-player: %s\n",

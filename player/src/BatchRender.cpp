@@ -21,6 +21,7 @@ BatchRenderResult renderAnimation(const playback::HeadRig& rig, const BatchRende
   QElapsedTimer wall;
   wall.start();
   playback::Playback playback(rig);
+  playback.setSimulationThreads(options.threads);
   playback.open(options.input.toStdString());
   if (options.quality) {
     SceneSettings scene = playback.scene();

@@ -24,7 +24,6 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
-#include <QPainter>
 #include <QScrollArea>
 #include <QSignalBlocker>
 #include <QSlider>
@@ -244,6 +243,7 @@ bool PlayerWindow::openFile(const QString& path) {
       if (newHead != head_) {
         newRig = loadHeadFor(newHead, file);
         newPlayback = std::make_unique<playback::Playback>(*newRig, kCheckpointInterval);
+        newPlayback->setSimulationThreads(simulationThreads_);
         newPlayback->open(file);
       }
     }
@@ -404,6 +404,11 @@ void PlayerWindow::setTearQuality(TearQuality level) {
   updateTransport();
 }
 
+void PlayerWindow::setSimulationThreads(int threads) {
+  simulationThreads_ = threads;
+  playback_->setSimulationThreads(threads);
+}
+
 void PlayerWindow::applyTearQuality() {
   if (!tearQuality_ || playback_->scene().quality.level == *tearQuality_) return;
   SceneSettings scene = playback_->scene();
@@ -479,16 +484,6 @@ void PlayerWindow::countRender() {
 void PlayerWindow::setCameraPreset(scene::CameraPreset preset) {
   cameraPreset_ = preset;
   viewport_->setView(presetView(*rig_, preset));
-}
-
-QImage PlayerWindow::screenshot() {
-  QImage face = viewport_->grabFrame();
-  QImage shot = grab().toImage().convertToFormat(QImage::Format_RGB32);
-  QPainter painter(&shot);
-  painter.drawImage(QRectF(viewport_->mapTo(this, QPoint(0, 0)), viewport_->size()), face,
-                    QRectF(QPointF(0, 0), QSizeF(face.size())));
-  painter.end();
-  return shot;
 }
 
 void PlayerWindow::dragEnterEvent(QDragEnterEvent* event) {

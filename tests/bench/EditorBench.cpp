@@ -170,10 +170,11 @@ int runEditor(int argc, char** argv) {
     dopeSheet.clearSelection();
     dopeSheet.selectAll();
   });
-  const int dopeChannelKeys = static_cast<int>(longModel.selectedChannelKeys().size());
+  const int dopeChannelKeys = static_cast<int>(longModel.channelKeySelection().keys().size());
   const Timing dopeMoveAll = timeRuns(3, [&] {
-    const editing::ChannelKeyEdit edit = editing::moveChannelKeys(
-        longModel.document().keys, longModel.selectedChannelKeys(), 1, longModel.document().fps);
+    const editing::ChannelKeyEdit edit =
+        editing::moveChannelKeys(longModel.document().keys, longModel.channelKeySelection().keys(),
+                                 1, longModel.document().fps);
     longModel.editKeys(edit.change, QStringLiteral("bench move"));
     dopeSheet.repaint();
     longModel.undoStack()->undo();

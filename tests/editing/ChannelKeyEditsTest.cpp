@@ -233,13 +233,14 @@ class ChannelKeyEditsTest : public QObject {
 
     const ChannelKeyEdit move = moveChannelKeys(model.document().keys, moving, 5, kFps);
     model.editKeys(move.change, QStringLiteral("Move channel keys"));
-    model.setSelectedChannelKeys(move.selection);
+    model.channelKeySelection().select(move.selection);
     QCOMPARE(model.undoStack()->count(), 1);
-    QCOMPARE(model.selectedChannelKeys(), move.selection);
+    QCOMPARE(model.channelKeySelection().keys(), move.selection);
     const ProjectDocument moved = model.document();
     QVERIFY(!(moved == original));
 
-    const ChannelKeyClip clip = copyChannelKeys(model.document().keys, model.selectedChannelKeys());
+    const ChannelKeyClip clip =
+        copyChannelKeys(model.document().keys, model.channelKeySelection().keys());
     const ChannelKeyEdit paste = pasteChannelKeys(model.document().keys, clip, 3.0, kFps);
     model.editKeys(paste.change, QStringLiteral("Paste channel keys"));
     const ProjectDocument pasted = model.document();

@@ -142,28 +142,28 @@ class DopeSheetTest : public QObject {
 
   void clicksSelectChannelKeys() {
     QTest::mouseClick(view(), Qt::LeftButton, {}, pt(mark(3, 1.0)));
-    QCOMPARE(model().selectedChannelKeys(), (std::vector<ChannelKey>{{3, 1.0}}));
+    QCOMPARE(model().channelKeySelection().keys(), (std::vector<ChannelKey>{{3, 1.0}}));
     QTest::mouseClick(view(), Qt::LeftButton, Qt::ControlModifier, pt(mark(4, 1.0)));
-    QCOMPARE(model().selectedChannelKeys(), (std::vector<ChannelKey>{{3, 1.0}, {4, 1.0}}));
+    QCOMPARE(model().channelKeySelection().keys(), (std::vector<ChannelKey>{{3, 1.0}, {4, 1.0}}));
     QTest::mouseClick(view(), Qt::LeftButton, Qt::ShiftModifier, pt(mark(3, 1.0)));  // toggles
-    QCOMPARE(model().selectedChannelKeys(), (std::vector<ChannelKey>{{4, 1.0}}));
+    QCOMPARE(model().channelKeySelection().keys(), (std::vector<ChannelKey>{{4, 1.0}}));
 
     // A group's mark selects its channels' keys there; the summary's every channel's.
     const int jaw = view()->groupRow(FapGroup::JawChinInnerLips);
     QTest::mouseClick(view(), Qt::LeftButton, {}, pt(view()->markPosition(jaw, 1.0)));
-    QCOMPARE(model().selectedChannelKeys(), (std::vector<ChannelKey>{{3, 1.0}, {4, 1.0}}));
+    QCOMPARE(model().channelKeySelection().keys(), (std::vector<ChannelKey>{{3, 1.0}, {4, 1.0}}));
     QTest::mouseClick(view(), Qt::LeftButton, {}, pt(view()->markPosition(0, 1.0)));
-    QCOMPARE(model().selectedChannelKeys(),
+    QCOMPARE(model().channelKeySelection().keys(),
              (std::vector<ChannelKey>{{3, 1.0}, {4, 1.0}, {69, 1.0}}));
 
     // A click on empty space clears.
     QTest::mouseClick(view(), Qt::LeftButton, {}, pt(mark(3, 0.5)));
-    QVERIFY(model().selectedChannelKeys().empty());
+    QVERIFY(model().channelKeySelection().empty());
   }
 
   void clickingANameSelectsTheRowAndItsChannels() {
     QTest::mouseClick(view(), Qt::LeftButton, {}, pt(view()->namePosition(view()->channelRow(3))));
-    QCOMPARE(model().selectedChannelKeys(),
+    QCOMPARE(model().channelKeySelection().keys(),
              (std::vector<ChannelKey>{{3, 0.0}, {3, 1.0}, {3, 2.0}}));
     ChannelMask expected;
     expected.set(channelIndex(3));
@@ -174,7 +174,7 @@ class DopeSheetTest : public QObject {
                       pt(view()->namePosition(view()->channelRow(69))));
     expected.set(channelIndex(69));
     QCOMPARE(model().selectedChannels(), expected);
-    QCOMPARE(model().selectedChannelKeys().size(), std::size_t(4));
+    QCOMPARE(model().channelKeySelection().keys().size(), std::size_t(4));
   }
 
   void boxSelectsTheMarksItSpans() {
@@ -182,10 +182,10 @@ class DopeSheetTest : public QObject {
     const QPointF from = mark(3, 0.8) + QPointF(0, -4);
     const QPointF to = mark(4, 1.2) + QPointF(0, 4);
     drag(view(), from, to);
-    QCOMPARE(model().selectedChannelKeys(), (std::vector<ChannelKey>{{3, 1.0}, {4, 1.0}}));
+    QCOMPARE(model().channelKeySelection().keys(), (std::vector<ChannelKey>{{3, 1.0}, {4, 1.0}}));
     // Ctrl adds a second box.
     drag(view(), mark(3, 1.8) + QPointF(0, -4), mark(3, 2.2) + QPointF(0, 4), Qt::ControlModifier);
-    QCOMPARE(model().selectedChannelKeys(),
+    QCOMPARE(model().channelKeySelection().keys(),
              (std::vector<ChannelKey>{{3, 1.0}, {3, 2.0}, {4, 1.0}}));
   }
 
@@ -200,14 +200,14 @@ class DopeSheetTest : public QObject {
     QVERIFY(keyAtTime(model(), 1.0)->has(4) && keyAtTime(model(), 1.0)->has(69));
     QVERIFY(keyAtTime(model(), moved));
     QCOMPARE(keyAtTime(model(), moved)->value(3), 300.0f);
-    QCOMPARE(model().selectedChannelKeys(), (std::vector<ChannelKey>{{3, moved}}));
+    QCOMPARE(model().channelKeySelection().keys(), (std::vector<ChannelKey>{{3, moved}}));
     QCOMPARE(model().undoStack()->count(), 1);
     model().undoStack()->undo();
     QCOMPARE(model().document(), before);
     // Undo and redo carry the selection with the key, as they do for whole keys.
-    QCOMPARE(model().selectedChannelKeys(), (std::vector<ChannelKey>{{3, 1.0}}));
+    QCOMPARE(model().channelKeySelection().keys(), (std::vector<ChannelKey>{{3, 1.0}}));
     model().undoStack()->redo();
-    QCOMPARE(model().selectedChannelKeys(), (std::vector<ChannelKey>{{3, moved}}));
+    QCOMPARE(model().channelKeySelection().keys(), (std::vector<ChannelKey>{{3, moved}}));
     model().undoStack()->undo();
 
     // Dropped on a time where its channel is keyed, it replaces that channel key.
@@ -228,7 +228,8 @@ class DopeSheetTest : public QObject {
     QCOMPARE(keyAtTime(model(), 1.0)->channels.count(), std::size_t(1));
     QVERIFY(keyAtTime(model(), 1.0)->has(69));
     QVERIFY(keyAtTime(model(), moved)->has(3) && keyAtTime(model(), moved)->has(4));
-    QCOMPARE(model().selectedChannelKeys(), (std::vector<ChannelKey>{{3, moved}, {4, moved}}));
+    QCOMPARE(model().channelKeySelection().keys(),
+             (std::vector<ChannelKey>{{3, moved}, {4, moved}}));
 
     // The summary's mark at 2 s dragged a second to the left, onto 1 s: open_jaw's 0 there
     // joins the tear count's key.
@@ -243,9 +244,9 @@ class DopeSheetTest : public QObject {
   void keysSelectCopyPasteDuplicateAndDelete() {
     view()->setFocus();
     QTest::keyClick(view(), Qt::Key_A);
-    QCOMPARE(model().selectedChannelKeys().size(), std::size_t(5));
+    QCOMPARE(model().channelKeySelection().keys().size(), std::size_t(5));
     QTest::keyClick(view(), Qt::Key_A, Qt::AltModifier);
-    QVERIFY(model().selectedChannelKeys().empty());
+    QVERIFY(model().channelKeySelection().empty());
 
     QTest::mouseClick(view(), Qt::LeftButton, {}, pt(mark(69, 1.0)));
     QTest::keyClick(view(), Qt::Key_C, Qt::ControlModifier);
@@ -254,7 +255,7 @@ class DopeSheetTest : public QObject {
     QTest::keyClick(view(), Qt::Key_V, Qt::ControlModifier);
     QCOMPARE(keyAtTime(model(), 2.0)->value(69), 60.0f);
     QCOMPARE(keyAtTime(model(), 2.0)->value(3), 0.0f);  // pasted into the key there
-    QCOMPARE(model().selectedChannelKeys(), (std::vector<ChannelKey>{{69, 2.0}}));
+    QCOMPARE(model().channelKeySelection().keys(), (std::vector<ChannelKey>{{69, 2.0}}));
 
     QTest::keyClick(view(), Qt::Key_Delete);
     QVERIFY(!keyAtTime(model(), 2.0)->has(69));
@@ -382,7 +383,7 @@ class DopeSheetTest : public QObject {
     QVERIFY(!window.showAnimationView(QStringLiteral("curves")));  // --view's names only
     QVERIFY(window.showAnimationView(QStringLiteral("graph")));
     QCOMPARE(tabs->currentWidget(), window.graphEditor());
-    window.model().setSelectedChannelKeys({{3, 1.0}});
+    window.model().channelKeySelection().select({{3, 1.0}});
     window.graphEditor()->setFocus();
     QVERIFY(window.graphEditor()->hasFocus());
     QTest::keyClick(window.graphEditor(), Qt::Key_Delete);
@@ -390,7 +391,7 @@ class DopeSheetTest : public QObject {
     QVERIFY(keyAtTime(window.model(), 1.0)->has(69));
     QVERIFY(keyAtTime(window.model(), 0.0)->has(3));
     window.model().undoStack()->undo();
-    QCOMPARE(window.model().selectedChannelKeys(), (std::vector<ChannelKey>{{3, 1.0}}));
+    QCOMPARE(window.model().channelKeySelection().keys(), (std::vector<ChannelKey>{{3, 1.0}}));
     window.model().markSaved();
   }
 };

@@ -5,6 +5,7 @@
 #include <lacrima/common/FapWriter.h>
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editing/FrameStepClock.h>
+#include <lacrima/editing/HeadSetup.h>
 #include <lacrima/editing/RecoveryStore.h>
 #include <lacrima/editor/ChannelRow.h>
 #include <lacrima/editor/KeyListPanel.h>
@@ -15,6 +16,7 @@
 #include <lacrima/editor/SliderPanel.h>
 #include <lacrima/editor/TimelineWidget.h>
 #include <lacrima/editor/ZeroSlider.h>
+#include <lacrima/editor/head/HeadWorkspace.h>
 
 #include <QAction>
 #include <QComboBox>
@@ -23,9 +25,12 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
+#include <QTabBar>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QToolButton>
+#include <QUndoCommand>
+#include <QUndoStack>
 #include <QtTest>
 
 #include <memory>
@@ -61,6 +66,17 @@ void dragSlider(ZeroSlider* slider, double fraction) {
   }
   QTest::mouseRelease(slider, Qt::LeftButton, {}, QPoint(target, y));
 }
+
+// A head edit that needs no head: counts how many times it is done.
+class CountedEdit : public QUndoCommand {
+ public:
+  explicit CountedEdit(int& done) : QUndoCommand(QStringLiteral("Place point")), done_(done) {}
+  void redo() override { ++done_; }
+  void undo() override { --done_; }
+
+ private:
+  int& done_;
+};
 
 void setSpin(NumberField* spin, int value) {
   spin->setFocus();
@@ -436,6 +452,39 @@ class EditorWindowTest : public QObject {
     QVERIFY(editor.model().document().keys.empty());
     QVERIFY(QDir(dir.path()).entryList({QStringLiteral("*.json")}, QDir::Files).isEmpty());
     editor.close();
+  }
+
+  // Ctrl+Z undoes the history of the workspace shown: the head's in Head, the animation's in
+  // Animate, switched through the workspace tabs as a user does.
+  void ctrlZFollowsTheWorkspaceShown() {
+    setSpin(window().sliders()->row(3)->valueField(), 10);
+    QUndoStack* animation = model().undoStack();
+    QUndoStack* head = window().headWorkspace()->setup().undoStack();
+    int headEdits = 0;
+    head->push(new CountedEdit(headEdits));  // the stack owns its commands
+    QCOMPARE(animation->index(), 1);
+    QCOMPARE(headEdits, 1);
+    auto* tabs = window().findChild<QTabBar*>(QStringLiteral("workspaces"));
+    QVERIFY(tabs);
+
+    tabs->setCurrentIndex(static_cast<int>(MainWindow::Workspace::Head));
+    QCOMPARE(window().workspace(), MainWindow::Workspace::Head);
+    QTest::keySequence(&window(), QKeySequence::Undo);
+    QCOMPARE(headEdits, 0);
+    QCOMPARE(animation->index(), 1);
+
+    tabs->setCurrentIndex(static_cast<int>(MainWindow::Workspace::Animate));
+    QTest::keySequence(&window(), QKeySequence::Undo);
+    QCOMPARE(animation->index(), 0);
+    QCOMPARE(headEdits, 0);
+    QTest::keySequence(&window(), QKeySequence(QStringLiteral("Ctrl+Shift+Z")));
+    QCOMPARE(animation->index(), 1);
+    QCOMPARE(headEdits, 0);
+
+    tabs->setCurrentIndex(static_cast<int>(MainWindow::Workspace::Head));
+    QTest::keySequence(&window(), QKeySequence(QStringLiteral("Ctrl+Shift+Z")));
+    QCOMPARE(headEdits, 1);
+    QCOMPARE(animation->index(), 1);
   }
 
   void spaceTogglesPlayback() {

@@ -192,7 +192,7 @@ class GraphEditorTest : public QObject {
     QTest::mouseClick(editor_.get(), Qt::LeftButton, Qt::ShiftModifier,
                       editor_->keyPosition(kTearLeftFap, 1).toPoint());
     const std::vector<ChannelKey> both{{kJaw, 0.4}, {kTearLeftFap, 0.4}};
-    QCOMPARE(model_->selectedChannelKeys(), both);
+    QCOMPARE(model_->channelKeySelection().keys(), both);
 
     // Three frames to the right (plus a little: snapping), up by 37 px, Ctrl held.
     const QPointF from = editor_->keyPosition(kJaw, 1);
@@ -212,7 +212,7 @@ class GraphEditorTest : public QObject {
     QVERIFY(landed.value(kTearLeftFap) > 40.0f);
     // The selection followed the keys, and the whole drag is one undo step.
     const std::vector<ChannelKey> movedKeys{{kJaw, 0.52}, {kTearLeftFap, 0.52}};
-    QCOMPARE(model_->selectedChannelKeys().size(), movedKeys.size());
+    QCOMPARE(model_->channelKeySelection().keys().size(), movedKeys.size());
     model_->undoStack()->undo();
     QCOMPARE(model_->document().keys.keys()[1].value(kJaw), 300.0f);
   }
@@ -252,10 +252,10 @@ class GraphEditorTest : public QObject {
     const QPointF k = editor_->keyPosition(kJaw, 1);
     drag(editor_.get(), k + QPointF(-15, -15), k + QPointF(15, 15));
     const std::vector<ChannelKey> one{{kJaw, 0.5}};
-    QCOMPARE(model_->selectedChannelKeys(), one);
+    QCOMPARE(model_->channelKeySelection().keys(), one);
     // Clicking empty space clears it.
     QTest::mouseClick(editor_.get(), Qt::LeftButton, {}, QPoint(editor_->width() - 20, 300));
-    QVERIFY(model_->selectedChannelKeys().empty());
+    QVERIFY(model_->channelKeySelection().empty());
   }
 
   void tAndVMenusShapeTheSelectedChannelKeys() {
@@ -263,7 +263,7 @@ class GraphEditorTest : public QObject {
                        key(0.5, Interpolation::Linear, {{kJaw, 100.0f}, {kLip, 20.0f}}),
                        key(1.0, Interpolation::Linear, {{kJaw, 50.0f}, {kLip, 10.0f}})}),
          channels({kJaw, kLip}));
-    model_->setSelectedChannelKeys({{kJaw, 0.0}, {kJaw, 0.5}});
+    model_->channelKeySelection().select({{kJaw, 0.0}, {kJaw, 0.5}});
     editor_->setFocus();
     pickFromNextMenu(QStringLiteral("Bézier"));
     QTest::keyClick(editor_.get(), Qt::Key_T);
@@ -303,7 +303,7 @@ class GraphEditorTest : public QObject {
     QVERIFY(editor_->keyPosition(kLip, 0).y() - editor_->keyPosition(kLip, 1).y() > 200);
     // Dragging in the normalised view moves each channel in its own units: a quarter of the
     // height moves the lip by a quarter of its range.
-    model_->setSelectedChannelKeys({{kLip, 3.0}});
+    model_->channelKeySelection().select({{kLip, 3.0}});
     const QPointF from = editor_->keyPosition(kLip, 1);
     const double quarter = (editor_->keyPosition(kLip, 0).y() - from.y()) / 4.0;
     drag(editor_.get(), from, from + QPointF(0, quarter));
@@ -311,7 +311,7 @@ class GraphEditorTest : public QObject {
     editor_->setNormalized(false);
 
     // Frame selected (F) zooms to the selected key; Home gives everything back.
-    model_->setSelectedChannelKeys({{kJaw, 1.0}});
+    model_->channelKeySelection().select({{kJaw, 1.0}});
     editor_->setFocus();
     QTest::keyClick(editor_.get(), Qt::Key_F);
     const QPointF selected = editor_->keyPosition(kJaw, 0);

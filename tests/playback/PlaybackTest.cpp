@@ -442,6 +442,29 @@ class PlaybackTest : public QObject {
     QCOMPARE(changed.scene().simulation.at("adhesion"), 60.0);
   }
 
+  // --threads reaches the simulation as SimulationOptions::threads, through a new animation and
+  // a quality change (which rebuild the options); the same tears with one thread or three.
+  void simulationThreadsReachTheOptions() {
+    const FapAnimation animation = cryingAnimation(20, 30);
+    SceneSettings scene;
+    scene.particles = true;
+    Playback three(*rig_, 10);
+    QCOMPARE(three.producer().simulationOptions().threads, 0);  // the simulation's own choice
+    three.setSimulationThreads(3);
+    three.setAnimation(animation, scene);
+    QCOMPARE(three.producer().simulationOptions().threads, 3);
+    scene.quality.level = TearQuality::Reference;
+    three.setScene(scene);
+    QCOMPARE(three.producer().simulationOptions().threads, 3);
+    three.seek(seconds(15));
+
+    Playback one(*rig_, 10);
+    one.setSimulationThreads(1);
+    one.setAnimation(animation, scene);
+    one.seek(seconds(15));
+    QVERIFY(sameParticles(*three.view().particles, *one.view().particles));
+  }
+
   // Bringing your own head: a missing mesh is an error naming it.
   void missingHeadFileIsNamed() {
     try {

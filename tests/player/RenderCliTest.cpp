@@ -144,6 +144,14 @@ class RenderCliTest : public QObject {
     QVERIFY2(r.err.contains("xvfb-run"), qPrintable(r.err));
   }
 
+  void threadsOutsideOneTo256IsAUsageError() {
+    for (const char* text : {"0", "x"}) {
+      const Run r = run({"--render", dir_.filePath("x"), "--threads", text, animation_});
+      QCOMPARE(r.exitCode, 2);
+      QVERIFY2(r.err.contains("--threads expects a whole number"), qPrintable(r.err));
+    }
+  }
+
   void wrongUsage() {
     QCOMPARE(run({"--render", dir_.filePath("x"), "--size", "big", animation_}).exitCode, 2);
     QCOMPARE(run({"--render", dir_.filePath("x")}).exitCode, 2);

@@ -24,13 +24,13 @@ void KeyEditCommand::setChannelKeySelections(std::vector<ChannelKey> before,
 void KeyEditCommand::redo() {
   model_.applyKeyChange(change_, true);
   if (selectionAfter_) model_.setSelectedTimes(*selectionAfter_);
-  if (channelKeysAfter_) model_.setSelectedChannelKeys(*channelKeysAfter_);
+  if (channelKeysAfter_) model_.channelKeySelection().select(*channelKeysAfter_);
 }
 
 void KeyEditCommand::undo() {
   model_.applyKeyChange(change_, false);
   if (selectionBefore_) model_.setSelectedTimes(*selectionBefore_);
-  if (channelKeysBefore_) model_.setSelectedChannelKeys(*channelKeysBefore_);
+  if (channelKeysBefore_) model_.channelKeySelection().select(*channelKeysBefore_);
 }
 
 SetChannelsCommand::SetChannelsCommand(EditorModel& model, KeyChange change, const QString& text,

@@ -57,7 +57,7 @@ void EditorModel::resetDocument(ProjectDocument document, bool clean) {
   undo_.clear();
   document_ = std::move(document);
   selection_.clear();
-  channelKeySelection_.clear();
+  channelKeys_.clear();
   animated_.reset();
   for (const Keyframe& key : document_.keys.keys()) animated_ |= key.channels;
   time_ = document_.keys.empty() ? 0.0 : document_.keys.startTime();
@@ -146,34 +146,6 @@ void EditorModel::setSelectedTimes(std::vector<double> times) {
   emit selectionChanged();
 }
 
-std::vector<ChannelKey> EditorModel::existingChannelKeys(std::vector<ChannelKey> keys) const {
-  std::vector<ChannelKey> valid;
-  for (const ChannelKey& key : keys) {
-    if (!isValidFap(key.fap)) continue;
-    const int index = findKey(document_.keys, key.time);
-    if (index < 0) continue;
-    const Keyframe& found = document_.keys.keys()[static_cast<std::size_t>(index)];
-    if (found.has(key.fap)) valid.push_back({key.fap, found.time});
-  }
-  std::sort(valid.begin(), valid.end());
-  valid.erase(std::unique(valid.begin(), valid.end()), valid.end());
-  return valid;
-}
-
-void EditorModel::setSelectedChannelKeys(std::vector<ChannelKey> keys) {
-  std::vector<ChannelKey> valid = existingChannelKeys(std::move(keys));
-  if (valid == channelKeySelection_) return;
-  channelKeySelection_ = std::move(valid);
-  emit channelKeySelectionChanged();
-}
-
-bool EditorModel::isSelected(const ChannelKey& key) const {
-  const int index = findKey(document_.keys, key.time);
-  if (index < 0) return false;
-  const ChannelKey exact{key.fap, document_.keys.keys()[static_cast<std::size_t>(index)].time};
-  return std::binary_search(channelKeySelection_.begin(), channelKeySelection_.end(), exact);
-}
-
 void EditorModel::setSelectedChannels(ChannelMask channels) {
   if (channels == selectedChannels_) return;
   selectedChannels_ = channels;
@@ -239,7 +211,7 @@ void EditorModel::editKeys(const KeyChange& change, const QString& text,
   if (selectionAfter) before = selection_;
   auto command = std::make_unique<KeyEditCommand>(*this, change, text, std::move(before),
                                                   std::move(selectionAfter));
-  command->setChannelKeySelections(channelKeySelection_, std::move(*channelKeysAfter));
+  command->setChannelKeySelections(channelKeys_.keys(), std::move(*channelKeysAfter));
   undo_.push(command.release());  // the stack owns its commands
 }
 
@@ -488,11 +460,7 @@ void EditorModel::applyKeyChange(const KeyChange& change, bool redo) {
     selection_ = std::move(kept);
     emit selectionChanged();
   }
-  std::vector<ChannelKey> keptChannelKeys = existingChannelKeys(channelKeySelection_);
-  if (keptChannelKeys != channelKeySelection_) {
-    channelKeySelection_ = std::move(keptChannelKeys);
-    emit channelKeySelectionChanged();
-  }
+  channelKeys_.prune();
   refreshValues();
   emit keysChanged();
   emit valuesChanged();

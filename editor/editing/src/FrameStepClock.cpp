@@ -24,8 +24,6 @@ void FrameStepClock::play() {
   // Playing from the end starts over.
   if (model_.currentTime() >= keys.endTime() - 1e-9) model_.setCurrentTimeExact(keys.startTime());
   timer_.start(static_cast<int>(std::lround(1000.0 / rate_)));
-  measure_.start();
-  framesSinceMeasure_ = 0;
   emit playingChanged(true);
 }
 
@@ -45,7 +43,6 @@ void FrameStepClock::setRate(double framesPerSecond) {
   if (framesPerSecond == rate_) return;
   rate_ = framesPerSecond;
   if (isPlaying()) timer_.setInterval(static_cast<int>(std::lround(1000.0 / rate_)));
-  emit rateChanged(rate_);
 }
 
 void FrameStepClock::setLoop(bool on) { loop_ = on; }
@@ -64,11 +61,6 @@ void FrameStepClock::advance() {
   }
   model_.setCurrentTimeExact(next);
   emit ticked(dt);
-  ++framesSinceMeasure_;
-  if (measure_.isValid() && measure_.elapsed() >= 1000) {
-    achieved_ = framesSinceMeasure_ * 1000.0 / static_cast<double>(measure_.restart());
-    framesSinceMeasure_ = 0;
-  }
 }
 
 }  // namespace lacrima::editing

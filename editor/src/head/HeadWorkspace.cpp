@@ -138,15 +138,12 @@ QWidget* HeadWorkspace::createToolBar() {
                       QStringLiteral("head.use"));
   connect(useButton_, &QToolButton::clicked, this, &HeadWorkspace::useInProject);
 
-  // Undo and redo of head edits. Their shortcuts work while the workspace is shown (the main
-  // window gives Ctrl+Z to the workspace then: MainWindow::setWorkspace).
+  // Undo and redo of head edits as buttons. Their shortcuts are the main window's Edit ▸ Undo
+  // and Redo, which act on this history while the workspace is shown (MainWindow's QUndoGroup).
   QAction* undo = setup_->undoStack()->createUndoAction(this, tr("Undo"));
   undo->setObjectName(QStringLiteral("head.undo"));
-  undo->setShortcut(QKeySequence::Undo);
   QAction* redo = setup_->undoStack()->createRedoAction(this, tr("Redo"));
   redo->setObjectName(QStringLiteral("head.redo"));
-  redo->setShortcuts(
-      {QKeySequence(QStringLiteral("Ctrl+Shift+Z")), QKeySequence(QStringLiteral("Ctrl+Y"))});
   for (const auto& [action, label] : {std::pair{undo, tr("Undo")}, std::pair{redo, tr("Redo")}}) {
     QAction* a = action;  // a variable, not a binding, so that clang 14 can capture it
     addAction(a);

@@ -215,7 +215,9 @@ void FrameProducer::setScene(const SceneSettings& scene) {
   s.scene = scene;
   if (restart) {
     s.settings = settings;
+    const int threads = s.options.threads;  // the caller's, not the quality's
     s.options = playback::simulationOptions(scene.quality);
+    s.options.threads = threads;
     s.clearTears(true);
   }
   if (!s.surfaceCurrent) s.meshSurface();
@@ -225,6 +227,8 @@ void FrameProducer::setScene(const SceneSettings& scene) {
 const SceneSettings& FrameProducer::scene() const { return state_->scene; }
 
 const tears::SimulationOptions& FrameProducer::simulationOptions() const { return state_->options; }
+
+void FrameProducer::setSimulationThreads(int threads) { state_->options.threads = threads; }
 
 void FrameProducer::setTearSources(const TearSources& sources) {
   if (sources == state_->sources) return;

@@ -164,6 +164,8 @@ void Playback::setScene(const SceneSettings& scene) {
   }
 }
 
+void Playback::setSimulationThreads(int threads) { state_->producer.setSimulationThreads(threads); }
+
 const SceneSettings& Playback::scene() const { return state_->scene; }
 
 const FrameView& Playback::seek(double seconds) {

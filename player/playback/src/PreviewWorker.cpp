@@ -47,13 +47,14 @@ FrameView PreviewFrame::over(const FrameView& face) const {
 }
 
 PreviewWorker::PreviewWorker(std::shared_ptr<const HeadRig> rig, const SceneSettings& scene,
-                             const TearSources& sources)
+                             const TearSources& sources, int simulationThreads)
     : rig_(rig ? std::move(rig)
                : throw std::invalid_argument("PreviewWorker: no head rig to preview")),
       producer_(*rig_, scene),
       scene_(scene),
       sources_(sources) {
   producer_.setTearSources(sources);
+  producer_.setSimulationThreads(simulationThreads);
   thread_ = std::thread([this] { run(); });
 }
 

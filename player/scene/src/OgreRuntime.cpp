@@ -105,7 +105,6 @@ OgreRuntime::OgreRuntime() : parts_(std::make_unique<Parts>()) {
 OgreRuntime::~OgreRuntime() = default;
 
 Ogre::Root& OgreRuntime::root() const { return *parts_->root; }
-Ogre::RenderWindow& OgreRuntime::primaryWindow() const { return *parts_->primary; }
 const std::string& OgreRuntime::resourceGroup() const { return parts_->group; }
 const std::string& OgreRuntime::logPath() const { return parts_->logPath; }
 

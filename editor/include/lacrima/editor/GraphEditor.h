@@ -47,7 +47,6 @@ class GraphEditor : public QWidget {
   // The channels drawn, ascending.
   std::vector<int> shownChannels() const;
 
-  bool isNormalized() const { return normalized_; }
   void setNormalized(bool on);
 
   // The view: time at the left edge of the plot, pixels per second; value at the top edge of

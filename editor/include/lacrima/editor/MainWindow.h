@@ -19,13 +19,7 @@
 #include <memory>
 #include <optional>
 
-class QLabel;
-class QMenu;
-class QStackedWidget;
-class QTabBar;
 class QTabWidget;
-class QTimer;
-class QUndoView;
 
 namespace lacrima::editing {
 class EditorModel;
@@ -39,6 +33,7 @@ namespace head {
 class HeadWorkspace;
 }
 class DopeSheet;
+class GraphEditor;
 class KeyListPanel;
 class LayerPanel;
 class PresetPanel;
@@ -46,7 +41,6 @@ class PreviewPanel;
 class RecoveryBanner;
 class SliderPanel;
 class TimelineWidget;
-class GraphEditor;
 class TransportBar;
 
 struct EditorOptions {
@@ -57,6 +51,7 @@ struct EditorOptions {
   QString presetsPath;         // empty: the built-in presets
   int autosaveDelayMs = 2000;  // after a change
   int autosaveIntervalMs = 30000;
+  int simulationThreads = 0;  // the preview's tears (PreviewPanel::setSimulationThreads)
 };
 
 class MainWindow : public QMainWindow {
@@ -65,28 +60,29 @@ class MainWindow : public QMainWindow {
   explicit MainWindow(EditorOptions options = {}, QWidget* parent = nullptr);
   ~MainWindow() override;
 
-  editing::EditorModel& model() { return *model_; }
-  editing::FrameStepClock& clock() { return *clock_; }
-  SliderPanel* sliders() const { return sliders_; }
-  TimelineWidget* timeline() const { return timeline_; }
-  LayerPanel* layers() const { return layers_; }
-  GraphEditor* graphEditor() const { return graphEditor_; }
+  editing::EditorModel& model();
+  editing::FrameStepClock& clock();
+  SliderPanel* sliders() const;
+  TimelineWidget* timeline() const;
+  LayerPanel* layers() const;
+  GraphEditor* graphEditor() const;
   // The tabs under the transport: Keys (the timeline) and the per-channel views.
-  QTabWidget* animationViews() const { return animationViews_; }
+  QTabWidget* animationViews() const;
   // Brings the view named "keys", "dope" or "graph" to the front; false for any other name.
   bool showAnimationView(const QString& name);
-  DopeSheet* dopeSheet() const { return dopeSheet_; }  // the Dope sheet tab
-  TransportBar* transport() const { return transport_; }
-  PresetPanel* presets() const { return presets_; }
-  PreviewPanel* preview() const { return preview_; }
-  KeyListPanel* keyList() const { return keyList_; }
-  RecoveryBanner* recoveryBanner() const { return banner_; }
+  DopeSheet* dopeSheet() const;  // the Dope sheet tab
+  TransportBar* transport() const;
+  PresetPanel* presets() const;
+  PreviewPanel* preview() const;
+  KeyListPanel* keyList() const;
+  RecoveryBanner* recoveryBanner() const;
   // The workspaces over the central area: Animate (the preview) and Head (bring your own head).
+  // Each has its own undo history; Edit ▸ Undo and Redo act on the one shown.
   enum class Workspace { Animate, Head };
-  head::HeadWorkspace* headWorkspace() const { return headWorkspace_; }
+  head::HeadWorkspace* headWorkspace() const;
   void setWorkspace(Workspace workspace);
   Workspace workspace() const;
-  editing::RecoveryStore& recovery() { return *recovery_; }
+  editing::RecoveryStore& recovery();
   // Actions by object name ("file.save", "key.add", ...), for tests and the shortcut list.
   QAction* action(const QString& name) const;
 
@@ -96,22 +92,18 @@ class MainWindow : public QMainWindow {
   bool saveTo(const QString& path);
   bool importFap(const QString& path, std::optional<double> reductionTolerance);
   bool exportFap(const QString& path, const editing::FapExportOptions& options);
-  QString filePath() const { return filePath_; }
+  QString filePath() const;
   // The project's head: a mesh and its feature-point file (File > Choose head…), as one undoable
   // edit; the preview rigs it in the background. False (reason in lastError()) when either file
   // does not exist.
   bool setHead(const QString& meshPath, const QString& fdpPath);
-  QString lastError() const { return lastError_; }
+  QString lastError() const;
 
   // --- autosave and recovery --------------------------------------------------------------
   void autosaveNow();
   void checkForRecovery();  // shows the banner when a crashed session left work
   bool restoreRecovery();   // the newest orphan
   void discardRecovery();
-
-  // The whole window as a picture, the 3D preview included (QWidget::grab cannot read the
-  // viewport's native OpenGL surface, so its own render is painted in).
-  QImage screenshot();
 
   // --- clipboard --------------------------------------------------------------------------
   void copyKeys();
@@ -123,10 +115,14 @@ class MainWindow : public QMainWindow {
   void dropEvent(QDropEvent* event) override;
 
  private:
+  // The widgets, models and timers the window owns (MainWindowPrivate.h), so that this header
+  // names no widget it does not hand out.
+  struct Private;
+
   void createDocks();
-  void createMenus();
-  QAction* addAction(QMenu* menu, const QString& name, const QString& text,
-                     const QKeySequence& shortcut, const QString& tip = {});
+  void createActions();  // every action and what it does; MainMenus.h lays them out
+  QAction* makeAction(const QString& name, const QString& text, const QKeySequence& shortcut,
+                      const QString& tip = {});
   bool maybeSave();
   void updateTitle();
   void updateStatusFigures();
@@ -143,34 +139,7 @@ class MainWindow : public QMainWindow {
   void loadPresetsDialog();
   void showShortcuts();
 
-  EditorOptions options_;
-  std::unique_ptr<editing::EditorModel> model_;
-  std::unique_ptr<editing::FrameStepClock> clock_;
-  std::unique_ptr<editing::RecoveryStore> recovery_;
-  SliderPanel* sliders_ = nullptr;
-  QTabWidget* animationViews_ = nullptr;
-  LayerPanel* layers_ = nullptr;
-  TimelineWidget* timeline_ = nullptr;
-  DopeSheet* dopeSheet_ = nullptr;
-  GraphEditor* graphEditor_ = nullptr;
-  TransportBar* transport_ = nullptr;
-  PresetPanel* presets_ = nullptr;
-  PreviewPanel* preview_ = nullptr;
-  KeyListPanel* keyList_ = nullptr;
-  RecoveryBanner* banner_ = nullptr;
-  head::HeadWorkspace* headWorkspace_ = nullptr;
-  QTabBar* workspaces_ = nullptr;
-  QStackedWidget* workspaceStack_ = nullptr;
-  QUndoView* history_ = nullptr;
-  QMenu* recentMenu_ = nullptr;
-  QMenu* viewMenu_ = nullptr;
-  QLabel* figures_ = nullptr;
-  QTimer* autosaveSoon_ = nullptr;
-  QTimer* autosavePeriodic_ = nullptr;
-  bool autosaveDirty_ = false;
-  QString filePath_;
-  QString lastError_;
-  QString pendingRecovery_;
+  std::unique_ptr<Private> d_;
 };
 
 }  // namespace lacrima::editor

@@ -61,7 +61,6 @@ class PreviewPanel : public QWidget {
   // failed: for tests and batch screenshots. Returns whether a head is shown.
   bool loadHead();
   bool hasHead() const;
-  bool headLoading() const;
   // Vertices of the head shown (0 when none): which head the preview animates.
   int headVertexCount() const;
   // The rig's warnings for the head shown ("file: message").
@@ -73,6 +72,9 @@ class PreviewPanel : public QWidget {
 
   bool tearPreview() const { return tearPreview_; }
   void setTearPreview(bool on);
+  // Threads the preview's tear simulation shares (--threads; FrameProducer::
+  // setSimulationThreads), for the worker of each head shown from now on.
+  void setSimulationThreads(int threads) { simulationThreads_ = threads; }
 
   // Poses the face for the current values now and asks the worker to advance the tears by `dt`
   // seconds (the playback tick and the idle tear timer call this; so does the benchmark). The
@@ -123,6 +125,7 @@ class PreviewPanel : public QWidget {
   QToolButton* tearToggle_;
   QTimer* idle_;
   bool tearPreview_ = true;
+  int simulationThreads_ = 0;
   bool figuresShown_ = false;     // the status line shows the tear figures (not the head's)
   long long steppedRequest_ = 0;  // the worker frame tearsStepped() last reported
   QString statusText_;

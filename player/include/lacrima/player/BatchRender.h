@@ -21,6 +21,7 @@ struct BatchRenderOptions {
   scene::CameraPreset view = scene::CameraPreset::Framing;  // --view
   int sheetFrames = 12;
   std::optional<TearQuality> quality;  // --quality: replaces the file's level
+  int threads = 0;                     // --threads: SimulationOptions::threads (0: its default)
   // Called after each frame with (frames done, frames in all).
   std::function<void(int, int)> progress;
 };

@@ -20,7 +20,6 @@
 #include <lacrima/playback/Playback.h>
 #include <lacrima/scene/CameraPreset.h>
 
-#include <QImage>
 #include <QMainWindow>
 
 #include <deque>
@@ -66,6 +65,9 @@ class PlayerWindow : public QMainWindow {
   // The tear quality (--quality): applied now and to every file opened later, in place of the
   // file's own level (the Scene panel can still change it until the next file).
   void setTearQuality(TearQuality level);
+  // Threads the tear simulation shares (--threads; Playback::setSimulationThreads), for this
+  // animation's next tears and every file opened later.
+  void setSimulationThreads(int threads);
 
   bool playing() const { return clock_.running(); }
   double renderedFramesPerSecond() const { return fps_; }
@@ -75,17 +77,11 @@ class PlayerWindow : public QMainWindow {
   QSlider& timeline() { return *timeline_; }
   viewport::EffectsPanel& effects() { return *effects_; }
   TearParametersPanel& parameters() { return *parameters_; }
-  QAction* openAction() const { return open_; }
-  QAction* playAction() const { return play_; }
-  QAction* resetAction() const { return reset_; }
   QAction* loopAction() const { return loop_; }  // checkable: play again from the start
 
   // Error dialogs are window-modal and do not block; tests and scripts may turn them off
   // (the error still goes to stderr and the status bar).
   void setErrorDialogsEnabled(bool on) { errorDialogs_ = on; }
-
-  // The window as it looks, the OGRE viewport included (a plain widget grab shows it black).
-  QImage screenshot();
 
  signals:
   void fileOpened(const QString& path);
@@ -117,6 +113,7 @@ class PlayerWindow : public QMainWindow {
   std::optional<HeadFiles> head_;  // setHeadSource()
   bool headFixed_ = false;
   std::optional<TearQuality> tearQuality_;  // setTearQuality()
+  int simulationThreads_ = 0;               // setSimulationThreads()
   RealTimeClock clock_;
   QTimer* ticker_;
   viewport::FaceViewport* viewport_;

@@ -1,6 +1,8 @@
 #pragma once
 // The editor's document model: the project, the current time, the key selection and the undo
-// history. Widgets read from it and edit through it; every edit is one QUndoCommand.
+// history. Widgets read from it and edit through it: every edit is one QUndoCommand
+// (EditCommands.h) pushed on undoStack(), and only those commands change the document (the
+// functions they apply it with are private to them).
 //
 // Editing follows the animator's "auto key" habit: the sliders always show the animation at
 // the current time, and moving one writes that channel into the key at the current time,
@@ -14,13 +16,13 @@
 // Selection is by key time (times identify keys: at most one key per time). Commands that
 // move keys carry the selection with them, so undo and redo also restore what was selected.
 #include <lacrima/common/ProjectDocument.h>
+#include <lacrima/editing/ChannelKeySelection.h>
 #include <lacrima/editing/KeyChange.h>
 
 #include <QObject>
 #include <QString>
 #include <QUndoStack>
 
-#include <compare>
 #include <optional>
 #include <span>
 #include <utility>
@@ -33,13 +35,9 @@ struct Preset;
 // A channel and the value to write.
 using ChannelValue = std::pair<int, float>;
 
-// One channel's key: the key at `time` as far as channel `fap` is concerned. The dope sheet
-// and the graph editor select these; the key rows (selectedTimes) select whole keys.
-struct ChannelKey {
-  int fap = 0;
-  double time = 0.0;
-  auto operator<=>(const ChannelKey&) const = default;
-};
+class KeyEditCommand;
+class LayersCommand;
+class SettingsCommand;
 
 class EditorModel : public QObject {
   Q_OBJECT
@@ -83,11 +81,10 @@ class EditorModel : public QObject {
   void selectAll();
   void clearSelection() { setSelectedTimes({}); }
 
-  // Channel keys selected in the dope sheet or the graph editor: sorted, unique, each naming a
-  // key that sets its channel (others are dropped, also when an edit removes them).
-  const std::vector<ChannelKey>& selectedChannelKeys() const { return channelKeySelection_; }
-  void setSelectedChannelKeys(std::vector<ChannelKey> keys);
-  bool isSelected(const ChannelKey& key) const;
+  // Channel keys selected in the dope sheet or the graph editor (ChannelKeySelection.h); the
+  // model drops those an edit removes and clears it with the document.
+  ChannelKeySelection& channelKeySelection() { return channelKeys_; }
+  const ChannelKeySelection& channelKeySelection() const { return channelKeys_; }
   // The channels the graph editor draws (chosen in the dope sheet or the channel list).
   const ChannelMask& selectedChannels() const { return selectedChannels_; }
   void setSelectedChannels(ChannelMask channels);
@@ -144,11 +141,6 @@ class EditorModel : public QObject {
                 std::optional<std::vector<double>> selectionAfter = std::nullopt,
                 std::optional<std::vector<ChannelKey>> channelKeysAfter = std::nullopt);
 
-  // --- for the commands only ----------------------------------------------------------
-  void applyKeyChange(const KeyChange& change, bool redo);
-  void applySettings(const ProjectDocument& settings);
-  void applyLayers(const std::vector<PoseLayer>& layers);
-
  signals:
   void documentReset();
   void keysChanged();
@@ -157,7 +149,6 @@ class EditorModel : public QObject {
   void timeChanged(double seconds);
   void valuesChanged();  // currentValues() changed (time or keys)
   void selectionChanged();
-  void channelKeySelectionChanged();
   void selectedChannelsChanged();
   void symmetricEditChanged(bool on);
   void focusChannelChanged(int fap);
@@ -165,8 +156,15 @@ class EditorModel : public QObject {
   void message(const QString& text);
 
  private:
+  // What the commands do and undo: the one way the document changes after resetDocument().
+  friend class KeyEditCommand;
+  friend class LayersCommand;
+  friend class SettingsCommand;
+  void applyKeyChange(const KeyChange& change, bool redo);
+  void applySettings(const ProjectDocument& settings);
+  void applyLayers(const std::vector<PoseLayer>& layers);
+
   void refreshValues();
-  std::vector<ChannelKey> existingChannelKeys(std::vector<ChannelKey> keys) const;
   void pushKeyEdit(const KeyChange& change, const QString& text,
                    std::optional<std::vector<double>> selectionAfter);
   Keyframe keyOrNewAt(double seconds) const;
@@ -182,7 +180,7 @@ class EditorModel : public QObject {
   FapValues keyedValues_{};
   ChannelMask animated_;
   std::vector<double> selection_;
-  std::vector<ChannelKey> channelKeySelection_;
+  ChannelKeySelection channelKeys_{document_.keys};  // after document_, whose keys it reads
   ChannelMask selectedChannels_;
   bool symmetric_ = false;
   int focus_ = 3;

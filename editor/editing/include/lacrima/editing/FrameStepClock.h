@@ -4,7 +4,6 @@
 // tear simulation steps by the same dt as the player's and a slow frame slows playback rather
 // than skipping simulation steps. Plays from the current time to the last key, then stops or
 // loops back to the first key.
-#include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
 
@@ -20,8 +19,6 @@ class FrameStepClock : public QObject {
   bool isPlaying() const { return timer_.isActive(); }
   double rate() const { return rate_; }  // frames per second
   bool loops() const { return loop_; }
-  // Frames per second actually reached over the last second of playback.
-  double achievedRate() const { return achieved_; }
 
  public slots:
   void play();
@@ -33,7 +30,6 @@ class FrameStepClock : public QObject {
 
  signals:
   void playingChanged(bool playing);
-  void rateChanged(double framesPerSecond);
   // Emitted after each advance with the step in seconds (the preview simulates by it).
   void ticked(double dt);
 
@@ -42,9 +38,6 @@ class FrameStepClock : public QObject {
   QTimer timer_;
   double rate_ = 22.0;
   bool loop_ = true;
-  double achieved_ = 0.0;
-  int framesSinceMeasure_ = 0;
-  QElapsedTimer measure_;
 };
 
 }  // namespace lacrima::editing

@@ -79,7 +79,6 @@ class HeadWorkspace : public QWidget {
   editing::HeadSetup& setup() { return *setup_; }
   viewport::FaceViewport* viewport() const { return viewport_; }
   QTableView* partsView() const { return partsView_; }
-  QTableView* pointsView() const { return pointsView_; }
   QListWidget* checksView() const { return checksView_; }
 
   // --- actions (no dialogs) ---------------------------------------------------------------

@@ -47,8 +47,13 @@ class FrameProducer {
   // quality restarts the tears (restartsTears).
   void setScene(const SceneSettings& scene);
   const SceneSettings& scene() const;
-  // What the next tears are simulated with: simulationOptions(scene().quality).
+  // What the next tears are simulated with: simulationOptions(scene().quality) with the threads
+  // set here.
   const tears::SimulationOptions& simulationOptions() const;
+  // Threads the tear simulation shares (SimulationOptions::threads; 0, the default, lets the
+  // simulation choose: LACRIMA_THREADS, else every hardware thread). The tears are the same for
+  // any count, so nothing restarts: tears already under way keep theirs, the next ones use it.
+  void setSimulationThreads(int threads);
   // Tear sources in the head frame; nullopt entries keep the rig's default under each eye.
   void setTearSources(const TearSources& sources);
 

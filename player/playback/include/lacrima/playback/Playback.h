@@ -48,6 +48,8 @@ class Playback {
 
   void setScene(const SceneSettings& scene);  // effects; simulation changes restart the tears
   const SceneSettings& scene() const;
+  // FrameProducer::setSimulationThreads; kept for every animation opened later.
+  void setSimulationThreads(int threads);
 
   // Shows time t (clamped to the animation): the tears at the last whole frame <= t, the face
   // interpolated at t.

@@ -79,8 +79,9 @@ struct PreviewWorkerCounters {
 
 class PreviewWorker {
  public:
+  // `simulationThreads`: FrameProducer::setSimulationThreads, before the thread starts.
   PreviewWorker(std::shared_ptr<const HeadRig> rig, const SceneSettings& scene,
-                const TearSources& sources);
+                const TearSources& sources, int simulationThreads = 0);
   ~PreviewWorker();
   PreviewWorker(const PreviewWorker&) = delete;
   PreviewWorker& operator=(const PreviewWorker&) = delete;

@@ -22,7 +22,6 @@
 #include <string>
 
 namespace Ogre {
-class RenderWindow;
 class Root;
 }  // namespace Ogre
 
@@ -39,8 +38,6 @@ class OgreRuntime {
   OgreRuntime& operator=(const OgreRuntime&) = delete;
 
   Ogre::Root& root() const;
-  // The hidden window that owns the shared GL context.
-  Ogre::RenderWindow& primaryWindow() const;
   // The resource group holding Lacrima's programs, materials and every scene's resources.
   const std::string& resourceGroup() const;
   // A process-unique resource name starting with `stem`.

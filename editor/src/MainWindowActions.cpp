@@ -1,0 +1,171 @@
+// MainWindow: its actions, each with its name ("file.save"), text, shortcut and what it does.
+// Where they are offered (menus, toolbar) is MainMenus.cpp's business.
+#include "MainWindowPrivate.h"
+
+#include <lacrima/editor/PreviewPanel.h>
+#include <lacrima/editor/SliderPanel.h>
+#include <lacrima/editor/TimelineWidget.h>
+#include <lacrima/editor/TransportBar.h>
+
+#include <QAction>
+#include <QLineEdit>
+#include <QUndoGroup>
+
+namespace lacrima::editor {
+
+QAction* MainWindow::makeAction(const QString& name, const QString& text,
+                                const QKeySequence& shortcut, const QString& tip) {
+  auto* a = new QAction(text, this);
+  a->setObjectName(name);
+  if (!shortcut.isEmpty()) a->setShortcut(shortcut);
+  a->setShortcutContext(Qt::WindowShortcut);
+  if (!tip.isEmpty()) a->setStatusTip(tip);
+  addAction(a);  // shortcuts work even when the menu bar is hidden
+  return a;
+}
+
+void MainWindow::createActions() {
+  editing::EditorModel& m = *d_->model;
+  connect(makeAction(QStringLiteral("file.new"), tr("&New"), QKeySequence::New),
+          &QAction::triggered, this, [this] {
+            if (maybeSave()) newDocument();
+          });
+  connect(makeAction(QStringLiteral("file.open"), tr("&Open…"), QKeySequence::Open),
+          &QAction::triggered, this, &MainWindow::openDialog);
+  connect(makeAction(QStringLiteral("file.save"), tr("&Save"), QKeySequence::Save),
+          &QAction::triggered, this, [this] {
+            if (d_->filePath.isEmpty())
+              saveDialog();
+            else
+              saveTo(d_->filePath);
+          });
+  connect(makeAction(QStringLiteral("file.saveAs"), tr("Save &As…"),
+                     QKeySequence(QStringLiteral("Ctrl+Shift+S"))),
+          &QAction::triggered, this, &MainWindow::saveDialog);
+  connect(makeAction(QStringLiteral("file.import"), tr("&Import FAP…"),
+                     QKeySequence(QStringLiteral("Ctrl+I")),
+                     tr("Read a .fap file: its frames become keys, optionally reduced")),
+          &QAction::triggered, this, &MainWindow::importDialog);
+  connect(
+      makeAction(
+          QStringLiteral("file.export"), tr("&Export FAP…"), QKeySequence(QStringLiteral("Ctrl+E")),
+          tr("Bake the keys to a .fap file (22 fps; with tear channels, or strict 68 FAPs)")),
+      &QAction::triggered, this, &MainWindow::exportDialog);
+  connect(makeAction(QStringLiteral("file.chooseHead"), tr("Choose &head…"), {},
+                     tr("The mesh and feature-point file this project is animated on")),
+          &QAction::triggered, this, &MainWindow::chooseHeadDialog);
+  connect(makeAction(QStringLiteral("file.quit"), tr("&Quit"), QKeySequence::Quit),
+          &QAction::triggered, this, &QWidget::close);
+
+  QAction* undo = d_->undoGroup->createUndoAction(this, tr("&Undo"));
+  undo->setObjectName(QStringLiteral("edit.undo"));
+  undo->setShortcut(QKeySequence::Undo);
+  QAction* redo = d_->undoGroup->createRedoAction(this, tr("&Redo"));
+  redo->setObjectName(QStringLiteral("edit.redo"));
+  redo->setShortcuts(
+      {QKeySequence(QStringLiteral("Ctrl+Shift+Z")), QKeySequence(QStringLiteral("Ctrl+Y"))});
+  addAction(undo);
+  addAction(redo);
+  connect(makeAction(QStringLiteral("edit.copy"), tr("&Copy keys"), QKeySequence::Copy),
+          &QAction::triggered, this, &MainWindow::copyKeys);
+  connect(
+      makeAction(QStringLiteral("edit.paste"), tr("&Paste keys at playhead"), QKeySequence::Paste),
+      &QAction::triggered, this, [this] { pasteKeys(); });
+  QAction* del =
+      makeAction(QStringLiteral("edit.delete"), tr("&Delete keys"), QKeySequence::Delete);
+  del->setShortcuts({QKeySequence::Delete, QKeySequence(Qt::Key_Backspace)});
+  connect(del, &QAction::triggered, this, [this] {
+    if (!d_->model->selectedTimes().empty())
+      d_->model->deleteSelectedKeys();
+    else if (d_->model->currentKeyIndex() >= 0)
+      d_->model->deleteKeys({d_->model->currentTime()});
+  });
+  connect(
+      makeAction(QStringLiteral("edit.selectAll"), tr("Select &all keys"), QKeySequence::SelectAll),
+      &QAction::triggered, &m, &editing::EditorModel::selectAll);
+  connect(makeAction(QStringLiteral("edit.mirror"), tr("&Mirror left ↔ right"),
+                     QKeySequence(QStringLiteral("Ctrl+M")),
+                     tr("Mirror the selected keys, or the pose at the playhead")),
+          &QAction::triggered, &m, &editing::EditorModel::mirror);
+  QAction* symmetric =
+      makeAction(QStringLiteral("edit.symmetric"), tr("S&ymmetric editing"),
+                 QKeySequence(QStringLiteral("Ctrl+Shift+M")),
+                 tr("Moving a left or right channel moves its mirror channel too"));
+  symmetric->setCheckable(true);
+  connect(symmetric, &QAction::toggled, &m, &editing::EditorModel::setSymmetricEdit);
+  connect(&m, &editing::EditorModel::symmetricEditChanged, symmetric, &QAction::setChecked);
+  connect(makeAction(QStringLiteral("edit.settings"), tr("Project &settings…"),
+                     QKeySequence(QStringLiteral("Ctrl+,"))),
+          &QAction::triggered, this, &MainWindow::settingsDialog);
+
+  connect(makeAction(QStringLiteral("key.add"), tr("&Add key (whole pose)"),
+                     QKeySequence(Qt::Key_K), tr("Key every animated channel at the playhead")),
+          &QAction::triggered, &m, &editing::EditorModel::addKey);
+  const auto targets = [this] {
+    std::vector<double> t = d_->model->selectedTimes();
+    if (t.empty() && d_->model->currentKeyIndex() >= 0) t.push_back(d_->model->currentTime());
+    return t;
+  };
+  connect(makeAction(QStringLiteral("key.linear"), tr("Make &linear"), QKeySequence(Qt::Key_L)),
+          &QAction::triggered, this,
+          [this, targets] { d_->model->setInterpolation(targets(), Interpolation::Linear); });
+  connect(makeAction(QStringLiteral("key.smooth"), tr("Make s&mooth"), QKeySequence(Qt::Key_S)),
+          &QAction::triggered, this,
+          [this, targets] { d_->model->setInterpolation(targets(), Interpolation::Smooth); });
+  connect(
+      makeAction(QStringLiteral("key.previous"), tr("&Previous key"), QKeySequence(Qt::Key_Comma)),
+      &QAction::triggered, this,
+      [this] { d_->model->setCurrentTime(previousKeyTime(*d_->model)); });
+  connect(makeAction(QStringLiteral("key.next"), tr("&Next key"), QKeySequence(Qt::Key_Period)),
+          &QAction::triggered, this,
+          [this] { d_->model->setCurrentTime(nextKeyTime(*d_->model)); });
+
+  connect(
+      makeAction(QStringLiteral("play.toggle"), tr("&Play / pause"), QKeySequence(Qt::Key_Space)),
+      &QAction::triggered, d_->clock.get(), &editing::FrameStepClock::toggle);
+  connect(makeAction(QStringLiteral("play.start"), tr("Go to &start"), QKeySequence(Qt::Key_Home)),
+          &QAction::triggered, this,
+          [this] { d_->model->setCurrentTime(d_->model->document().keys.startTime()); });
+  connect(makeAction(QStringLiteral("play.end"), tr("Go to &end"), QKeySequence(Qt::Key_End)),
+          &QAction::triggered, this, [this] { d_->model->setCurrentTime(d_->model->endTime()); });
+  connect(makeAction(QStringLiteral("play.previousFrame"), tr("Previous &frame"),
+                     QKeySequence(Qt::Key_Left)),
+          &QAction::triggered, this, [this] {
+            d_->model->setCurrentTime(d_->model->currentTime() - d_->model->frameDuration());
+          });
+  connect(
+      makeAction(QStringLiteral("play.nextFrame"), tr("&Next frame"), QKeySequence(Qt::Key_Right)),
+      &QAction::triggered, this,
+      [this] { d_->model->setCurrentTime(d_->model->currentTime() + d_->model->frameDuration()); });
+  // Blender's and Maya's "go to frame": type a time or frame into the transport's time field.
+  connect(makeAction(QStringLiteral("play.goToTime"), tr("&Go to time…"),
+                     QKeySequence(QStringLiteral("Ctrl+G"))),
+          &QAction::triggered, d_->transport, &TransportBar::editTime);
+
+  QAction* tears = makeAction(QStringLiteral("view.tearPreview"), tr("&Tear preview"),
+                              QKeySequence(Qt::Key_T), tr("Simulate the tears while paused"));
+  tears->setCheckable(true);
+  tears->setChecked(d_->preview->tearPreview());
+  connect(tears, &QAction::toggled, d_->preview, &PreviewPanel::setTearPreview);
+  connect(
+      makeAction(QStringLiteral("view.frameAll"), tr("&Frame all keys"), QKeySequence(Qt::Key_F)),
+      &QAction::triggered, d_->timeline, &TimelineWidget::fitAll);
+  connect(makeAction(QStringLiteral("view.filter"), tr("Find &channel"), QKeySequence::Find),
+          &QAction::triggered, this, [this] {
+            d_->sliders->filterBox()->setFocus();
+            d_->sliders->filterBox()->selectAll();
+          });
+  connect(makeAction(QStringLiteral("view.animate"), tr("&Animate workspace"),
+                     QKeySequence(QStringLiteral("Ctrl+1"))),
+          &QAction::triggered, this, [this] { setWorkspace(Workspace::Animate); });
+  connect(makeAction(QStringLiteral("view.head"), tr("&Head workspace"),
+                     QKeySequence(QStringLiteral("Ctrl+2")),
+                     tr("Import your own head, place its feature points and rig it")),
+          &QAction::triggered, this, [this] { setWorkspace(Workspace::Head); });
+
+  connect(makeAction(QStringLiteral("help.shortcuts"), tr("&Keyboard shortcuts"),
+                     QKeySequence::HelpContents),
+          &QAction::triggered, this, &MainWindow::showShortcuts);
+}
+
+}  // namespace lacrima::editor
