@@ -1,5 +1,7 @@
 // FapReader: the public samples, every tolerated variation, every rejected one, and inputs that
 // try to make the reader crash, hang or allocate.
+#include "../support/MissingData.h"
+
 #include <lacrima/common/FapReader.h>
 #include <lacrima/common/FapWriter.h>
 
@@ -101,7 +103,7 @@ class AddressSpaceCap {
 class FapReaderTest : public QObject {
   Q_OBJECT
 
-  QString samples_ = QStringLiteral(LACRIMA_SHARED_DIR "/mpeg4/samples");
+  QString samples_ = testsupport::sharedPath(QStringLiteral("mpeg4/samples"));
   QTemporaryDir tmp_;
 
   FapReadResult readSample(const char* relative) {
@@ -126,7 +128,7 @@ class FapReaderTest : public QObject {
   // ---- the public samples (facts from samples/SOURCES.md, values read from the files) ----
 
   void fearSample() {
-    if (!QDir(samples_).exists()) QSKIP("reference samples not present");
+    LACRIMA_REQUIRE_SHARED(samples_);
     const FapReadResult r = readSample("vreng/fear.fap");
     const FapAnimation& a = r.animation;
     QVERIFY2(r.warnings.empty(), qPrintable(describe(r.warnings)));
@@ -150,7 +152,7 @@ class FapReaderTest : public QObject {
   }
 
   void eyesSampleIsOneBased() {
-    if (!QDir(samples_).exists()) QSKIP("reference samples not present");
+    LACRIMA_REQUIRE_SHARED(samples_);
     const FapReadResult r = readSample("vreng/eyes.fap");
     const FapAnimation& a = r.animation;
     QCOMPARE(a.version, std::string("2.0"));
@@ -174,7 +176,7 @@ class FapReaderTest : public QObject {
   }
 
   void joySampleHasCrlfAndAPathAsName() {
-    if (!QDir(samples_).exists()) QSKIP("reference samples not present");
+    LACRIMA_REQUIRE_SHARED(samples_);
     QFile raw(QDir(samples_).filePath("xface/joy.fap"));
     QVERIFY(raw.open(QIODevice::ReadOnly));
     QCOMPARE(raw.readAll().count("\r\n"), 217);  // header + 108 mask/value pairs, all CRLF

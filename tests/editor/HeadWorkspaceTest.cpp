@@ -6,7 +6,7 @@
 // rigged head (printed; a figure, not an assertion).
 #include "../rigging/TestHeadFiles.h"
 #include "../support/ChangedPixels.h"
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
 
 #include <lacrima/common/AtomicSave.h>
 #include <lacrima/common/FdpTable.h>
@@ -110,7 +110,7 @@ class HeadWorkspaceTest : public QObject {
   }
 
   void importPlaceProposeDragUndoSave() {
-    if (!QFileInfo::exists(kIctMesh)) QSKIP("ICT-FaceKit head not in ../shared");
+    LACRIMA_REQUIRE_SHARED(kIctMesh);
     if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     MainWindow window(options());
     window.resize(1280, 860);
@@ -301,7 +301,7 @@ class HeadWorkspaceTest : public QObject {
   // A head exported Z-up (x, y, z) -> (x, -z, y): once the eye corners and the chin are placed,
   // the view turns to the face's frame (the face's up is the mesh's +z), before any rig.
   void zUpHeadStandsUpOnceTheAnchorsArePlaced() {
-    if (!QFileInfo::exists(kIctMesh)) QSKIP("ICT-FaceKit head not in ../shared");
+    LACRIMA_REQUIRE_SHARED(kIctMesh);
     MainWindow window(options());
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
@@ -343,7 +343,7 @@ class HeadWorkspaceTest : public QObject {
   // the Head workspace with the head imported, proposed and rigged; wrong usage and a missing
   // mesh are refused with their exit codes.
   void commandLineOpensTheHeadWorkspace() {
-    if (!QFileInfo::exists(kIctMesh)) QSKIP("ICT-FaceKit head not in ../shared");
+    LACRIMA_REQUIRE_SHARED(kIctMesh);
     if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     // The 8 anchors of the hand-made file, as a user's partial file.
     QFile hand(kIctFdp);

@@ -4,6 +4,7 @@
 // window plays a project on its head too. Runs under xvfb-run; skips without ../shared (the
 // ICT-FaceKit head).
 #include "../support/ChangedPixels.h"
+#include "../support/MissingData.h"
 
 #include <lacrima/player/PlayerWindow.h>
 #include <lacrima/player/ProjectHead.h>
@@ -64,7 +65,7 @@ class PlayerProjectHeadTest : public QObject {
 
  private slots:
   void initTestCase() {
-    if (!rigtest::ictHeadAvailable()) QSKIP("../shared (the ICT-FaceKit head) is absent");
+    LACRIMA_REQUIRE_SHARED(rigtest::kIctMesh);
     QVERIFY(dir_.isValid());
   }
 
@@ -136,7 +137,7 @@ class PlayerProjectHeadTest : public QObject {
     QCOMPARE(window.playback().path(), project.toStdString());
 
     // A project without a head plays on the default head.
-    if (!rigging::defaultHeadAvailable()) return;
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     const QString plain = dir_.filePath("plain.json");
     QFile file(plain);
     QVERIFY(file.open(QIODevice::WriteOnly));

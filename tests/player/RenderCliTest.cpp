@@ -1,7 +1,7 @@
 // lacrima-player --render run as a process (under xvfb-run): a short animation gives one PNG
 // per frame and a contact sheet, progress on stderr; a bad file and a missing display fail
 // with a clear message.
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
 
 #include <lacrima/common/FapTable.h>
 #include <lacrima/common/FapWriter.h>

@@ -6,7 +6,7 @@
 // without /work/shared).
 #include "../rigging/TestHeadFiles.h"
 #include "../scene/ImageCompare.h"
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
 
 #include <lacrima/common/Milliseconds.h>
 #include <lacrima/rigging/DefaultHead.h>
@@ -348,7 +348,7 @@ class ViewportPickingTest : public QObject {
   }
 
   void aZUpHeadInMillimetresIsFramedWhole() {
-    if (!QFileInfo::exists(rigtest::kIctMesh)) QSKIP("ICT-FaceKit head not in /work/shared");
+    LACRIMA_REQUIRE_SHARED(rigtest::kIctMesh);
     HeadMesh ict = rigging::importHeadMesh(rigtest::kIctMesh.toStdString());
     // Centimetres to millimetres, +y up to +z up (a quarter turn about x: y -> z, z -> -y).
     const Eigen::Matrix3f toZUp =
