@@ -1,30 +1,19 @@
 // lacrima-editor's command line run as a process (offscreen): a number that is not one, or out
 // of its range, is a usage error (exit status 2) whose message names the option and what it
 // expects, as lacrima-player's are; valid numbers are taken.
-#include <QProcess>
+#include "../support/RunProcess.h"
+
 #include <QTemporaryDir>
 #include <QtTest>
+
+using namespace lacrima;
 
 namespace {
 
 const QString kEditor = QStringLiteral(LACRIMA_BIN_DIR "/lacrima-editor");
 
-struct Run {
-  int exitCode = -1;
-  QString err;
-};
-
-Run run(const QStringList& arguments) {
-  QProcess process;
-  process.start(kEditor, arguments);
-  Run r;
-  if (!process.waitForFinished(120000)) {
-    process.kill();
-    return r;
-  }
-  r.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-  r.err = QString::fromLocal8Bit(process.readAllStandardError());
-  return r;
+testsupport::ProcessRun run(const QStringList& arguments) {
+  return testsupport::runProcess(kEditor, arguments, 120000);
 }
 
 }  // namespace
@@ -66,7 +55,8 @@ class EditorCliTest : public QObject {
     QFETCH(QStringList, arguments);
     QFETCH(QString, message);
     const QString png = dir_.filePath(QStringLiteral("never.png"));
-    const Run r = run(arguments + QStringList{"--no-preview", "--screenshot", png});
+    const testsupport::ProcessRun r =
+        run(arguments + QStringList{"--no-preview", "--screenshot", png});
     QCOMPARE(r.exitCode, 2);
     QVERIFY2(r.err.contains(message), qPrintable(r.err));
     QVERIFY(!QFile::exists(png));
@@ -75,8 +65,9 @@ class EditorCliTest : public QObject {
   // The bounds themselves are valid: the window comes up and is saved.
   void validNumbersAreTaken() {
     const QString png = dir_.filePath(QStringLiteral("valid.png"));
-    const Run r = run({"--time", "86400", "--focus", "70", "--warm-up", "0", "--no-preview",
-                       "--size", "640x480", "--screenshot", png});
+    const testsupport::ProcessRun r =
+        run({"--time", "86400", "--focus", "70", "--warm-up", "0", "--no-preview", "--size",
+             "640x480", "--screenshot", png});
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     QVERIFY(QFile::exists(png));
   }

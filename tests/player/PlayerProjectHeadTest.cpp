@@ -5,6 +5,7 @@
 // ICT-FaceKit head).
 #include "../support/ChangedPixels.h"
 #include "../support/MissingData.h"
+#include "../support/RunProcess.h"
 
 #include <lacrima/player/PlayerWindow.h>
 #include <lacrima/player/ProjectHead.h>
@@ -14,7 +15,6 @@
 #include "../editor/IctProject.h"
 
 #include <QImage>
-#include <QProcess>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -36,22 +36,10 @@ QByteArray keysWithTears(int tears) {
       .toUtf8();
 }
 
-struct Run {
-  int exitCode = -1;
-  QString err;
-};
+using Run = testsupport::ProcessRun;
 
 Run run(const QStringList& arguments) {
-  QProcess process;
-  process.start(kPlayer, arguments);
-  Run r;
-  if (!process.waitForFinished(120000)) {
-    process.kill();
-    return r;
-  }
-  r.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-  r.err = QString::fromLocal8Bit(process.readAllStandardError());
-  return r;
+  return testsupport::runProcess(kPlayer, arguments, 120000);
 }
 
 const QString kLastFrame = QStringLiteral("/frame_0013.png");
