@@ -8,7 +8,10 @@
 // wrong usage.
 #include <lacrima/appsupport/ThreadsOption.h>
 #include <lacrima/appsupport/WindowShot.h>
+#include <lacrima/common/CommandLineNumbers.h>
+#include <lacrima/common/FapChannels.h>
 #include <lacrima/common/ImageSize.h>
+#include <lacrima/common/Keyframes.h>
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editor/EditorTheme.h>
 #include <lacrima/editor/MainWindow.h>
@@ -28,11 +31,15 @@
 
 #include <cstdio>
 #include <optional>
+#include <string>
 
 using namespace lacrima::editor;
 namespace appsupport = lacrima::appsupport;
 
 namespace {
+
+// --warm-up: ten minutes of frames at 22 fps is far more than any picture needs.
+constexpr int kMaxWarmUpFrames = 13200;
 
 // Runs the event loop until `signal` of `sender` fires (its first argument, when a bool, is
 // the outcome) or `timeoutMs` passes; false on timeout or a false outcome.
@@ -144,6 +151,27 @@ int main(int argc, char** argv) {
   const std::optional<int> threadCount = appsupport::threadsFrom(parser, "lacrima-editor");
   if (!threadCount) return 2;
 
+  // Numbers are checked before any window exists: a wrong one is a usage error, not a value
+  // quietly read as 0.
+  std::string error;
+  const auto usage = [&error] {
+    std::fprintf(stderr, "lacrima-editor: %s\n", error.c_str());
+    return 2;
+  };
+  std::optional<double> startTime;
+  if (parser.isSet(time) &&
+      !(startTime = lacrima::readNumberOption("--time", "seconds", parser.value(time).toStdString(),
+                                              0, lacrima::kMaxKeyTime, error)))
+    return usage();
+  std::optional<int> focusFap;
+  if (parser.isSet(focus) && !(focusFap = lacrima::readWholeNumberOption(
+                                   "--focus", "a FAP number", parser.value(focus).toStdString(), 1,
+                                   lacrima::kChannelCount, error)))
+    return usage();
+  const std::optional<int> warmUpFrames = lacrima::readWholeNumberOption(
+      "--warm-up", "frames", parser.value(warm).toStdString(), 0, kMaxWarmUpFrames, error);
+  if (!warmUpFrames) return usage();
+
   const bool batch = parser.isSet(screenshot);
   theme::apply(app);  // screenshots show the editor as people see it
 
@@ -171,9 +199,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "lacrima-editor: --points and --propose need --head MESH\n");
     return 2;
   }
-  if (parser.isSet(time)) window.model().setCurrentTime(parser.value(time).toDouble());
+  if (startTime) window.model().setCurrentTime(*startTime);
   if (parser.isSet(filter)) window.sliders()->setFilterText(parser.value(filter));
-  if (parser.isSet(focus)) window.model().setFocusChannel(parser.value(focus).toInt());
+  if (focusFap) window.model().setFocusChannel(*focusFap);
   if (!window.showAnimationView(parser.value(view))) {
     std::fprintf(stderr, "lacrima-editor: --view: expected keys, dope or graph, got %s\n",
                  qPrintable(parser.value(view)));
@@ -212,7 +240,7 @@ int main(int argc, char** argv) {
   }
   // The preview steps its tears on a worker; a warm-up waits for each step so the picture shows
   // exactly that many frames of tears.
-  for (int i = 0; i < parser.value(warm).toInt(); ++i) {
+  for (int i = 0; i < *warmUpFrames; ++i) {
     window.preview()->step(window.model().frameDuration());
     window.preview()->waitForTears();
   }

@@ -8,8 +8,10 @@
 #include <lacrima/player/PlayerWindow.h>
 #include <lacrima/player/ProjectHead.h>
 
+#include <lacrima/common/CommandLineNumbers.h>
 #include <lacrima/common/Diagnostics.h>
 #include <lacrima/common/ImageSize.h>
+#include <lacrima/common/Keyframes.h>
 #include <lacrima/common/TearQuality.h>
 #include <lacrima/playback/HeadRig.h>
 #include <lacrima/scene/CameraPreset.h>
@@ -153,16 +155,16 @@ int windowMode(QApplication& app, const QCommandLineParser& parser, const QSize*
     return app.exec();
   }
   // --screenshot: pose the window at --at seconds, let it lay out and render, grab it.
-  bool ok = false;
-  const double at = parser.value("at").toDouble(&ok);
-  if (!ok) {
-    std::fprintf(stderr, "lacrima-player: --at: expected seconds, got %s\n",
-                 parser.value("at").toLocal8Bit().constData());
+  std::string error;
+  const std::optional<double> at =
+      readNumberOption("--at", "seconds", parser.value("at").toStdString(), 0, kMaxKeyTime, error);
+  if (!at) {
+    std::fprintf(stderr, "lacrima-player: %s\n", error.c_str());
     return kExitUsage;
   }
   int status = kExitOk;
   QTimer::singleShot(300, &window, [&] {
-    window.seek(at);
+    window.seek(*at);
     QTimer::singleShot(300, &window, [&] {
       const QString path = parser.value("screenshot");
       if (!appsupport::grabWindowWithViewports(window).save(path)) {

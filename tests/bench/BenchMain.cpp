@@ -18,6 +18,7 @@ int runProposal(int argc, char** argv);
 int runPick(int argc, char** argv);
 int runBezier(int argc, char** argv);
 int runPreview(int argc, char** argv);
+int runWorstCases(int argc, char** argv);
 }  // namespace lacrima::bench
 
 namespace {
@@ -67,6 +68,10 @@ const Subcommand kSubcommands[] = {
     {"bezier",
      "graph editor curves: error of the Bézier u-for-t solve beside ns per solve, per tolerance",
      lacrima::bench::runBezier},
+    {"worst-cases",
+     "baking 10 minutes of keys, refusing an 8 MiB FAP line, the editor's event loop while a "
+     "real head rigs in the background",
+     lacrima::bench::runWorstCases},
 };
 
 void printUsage(FILE* out) {

@@ -2,6 +2,7 @@
 # preview ran, showed the particles asked for in at least two tear frames, and showed none soon
 # after the tear channels went back to 0. Stall figures are printed, never asserted here.
 #   cmake -DBENCH=<path to lacrima-bench> -P PreviewBenchSmoke.cmake   (under xvfb-run)
+include(${CMAKE_CURRENT_LIST_DIR}/../support/MissingData.cmake)
 execute_process(COMMAND "${BENCH}" preview --particles 200 --seconds 0.5 --json
                 OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE status)
 if(NOT status EQUAL 0)
@@ -14,8 +15,8 @@ endif()
 if(NOT ran)
   string(JSON note GET "${out}" runs 0 note)
   if(note MATCHES "^no preview")
-    # No head to preview (the default head is not fetched): CTest's SKIP_REGULAR_EXPRESSION.
-    message(STATUS "lacrima-bench preview skipped: ${note}")
+    # No head to preview: the default head is not fetched.
+    lacrima_missing_data("lacrima-bench preview: ${note}")
     return()
   endif()
   message(FATAL_ERROR "the preview did not run: ${note}")

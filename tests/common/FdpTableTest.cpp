@@ -1,6 +1,8 @@
 // The feature-point table (FdpTable.h): complete, ordered, consistent with itself (groups, sides,
 // mirrors), with the FAP table and with the default head's feature-point file, and (when
-// /work/shared is there) with the reference list of ids and sides.
+// ../shared is there) with the reference list of ids and sides.
+#include "../support/MissingData.h"
+
 #include <lacrima/common/FapTable.h>
 #include <lacrima/common/FdpTable.h>
 
@@ -73,8 +75,10 @@ class FdpTableTest : public QObject {
   }
 
   void idsAndSidesMatchTheReferenceList() {
-    QFile file(LACRIMA_SHARED_DIR "/mpeg4/fdps.csv");
-    if (!file.open(QIODevice::ReadOnly)) QSKIP("no /work/shared/mpeg4/fdps.csv");
+    const QString csv = testsupport::sharedPath(QStringLiteral("mpeg4/fdps.csv"));
+    LACRIMA_REQUIRE_SHARED(csv);
+    QFile file(csv);
+    QVERIFY2(file.open(QIODevice::ReadOnly), qPrintable(csv));
     file.readLine();  // header
     int rows = 0;
     while (!file.atEnd()) {

@@ -1,6 +1,8 @@
 // The editor's core without windows: exact undo/redo, merging slider drags, mirroring and
 // symmetric edits, presets files and their errors, key reduction, FAP import/export round
 // trips, the channel filter, the clipboard and the recovery store.
+#include "../support/MissingData.h"
+
 #include <lacrima/common/FapReader.h>
 #include <lacrima/common/FapTable.h>
 #include <lacrima/common/FapWriter.h>
@@ -28,8 +30,8 @@ using namespace lacrima::editing;
 
 namespace {
 
-std::string sharedSample(const char* relative) {
-  return std::string(LACRIMA_SHARED_DIR) + "/mpeg4/samples/" + relative;
+QString sharedSample(const char* relative) {
+  return testsupport::sharedPath(QStringLiteral("mpeg4/samples/") + QLatin1String(relative));
 }
 
 // A dense animation with smooth motion, steps, a held stretch and tears: the kinds of
@@ -577,8 +579,9 @@ class EditorCoreTest : public QObject {
 
   void publicSampleFilesRoundTrip() {
     QFETCH(QString, sample);
-    const std::string path = sharedSample(qPrintable(sample));
-    if (!QFile::exists(QString::fromStdString(path))) QSKIP("reference samples not present");
+    const QString samplePath = sharedSample(qPrintable(sample));
+    LACRIMA_REQUIRE_SHARED(samplePath);
+    const std::string path = samplePath.toStdString();
     QTemporaryDir dir;
     const editing::FapImportResult imported = editing::importFap(path);
     const std::string out = dir.filePath(QStringLiteral("out.fap")).toStdString();

@@ -3,7 +3,7 @@
 // anchors placed from picks, the rest proposed, a point moved, undo and redo; the saved file
 // validates, reads back to the same document and rigs; bad input leaves the document as it was.
 #include "../rigging/TestHeadFiles.h"
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
 
 #include <lacrima/common/AtomicSave.h>
 #include <lacrima/common/PoseSet.h>
@@ -59,14 +59,12 @@ class HeadSetupTest : public QObject {
   std::shared_ptr<const ProposalReference> reference_;
   QTemporaryDir dir_;
 
-  // The ICT head with its 8 anchors placed by hand; empty when a file is missing.
-  QString placeIctAnchors(HeadSetup& setup, rigging::FeaturePointFile& hand) {
-    if (!QFileInfo::exists(kIctMesh)) return QStringLiteral("ICT-FaceKit head not in ../shared");
+  // The ICT head (the caller checked it is there) with its 8 anchors placed by hand.
+  void placeIctAnchors(HeadSetup& setup, rigging::FeaturePointFile& hand) {
     setup.importFile(kIctMesh);
     hand = rigging::readFeaturePointFile(kIctFdp.toStdString());
     for (const std::string& id : rigging::proposalAnchors())
       setup.placePoint(id, spotAt(setup.mesh(), hand.points.at(id).at));
-    return {};
   }
 
  private slots:
@@ -133,7 +131,7 @@ class HeadSetupTest : public QObject {
   // The ICT head's parts: skin in two pieces, sided eyes from material names, gums and teeth
   // with the skull, the films and lashes attached.
   void importsIctWithRoles() {
-    if (!QFileInfo::exists(kIctMesh)) QSKIP("ICT-FaceKit head not in ../shared");
+    LACRIMA_REQUIRE_SHARED(kIctMesh);
     HeadSetup setup;
     QSignalSpy meshSpy(&setup, &HeadSetup::meshChanged);
     setup.importFile(kIctMesh);
@@ -188,7 +186,8 @@ class HeadSetupTest : public QObject {
     if (!reference_) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     HeadSetup setup;
     rigging::FeaturePointFile hand;
-    if (const QString why = placeIctAnchors(setup, hand); !why.isEmpty()) QSKIP(qPrintable(why));
+    LACRIMA_REQUIRE_SHARED(kIctMesh);
+    placeIctAnchors(setup, hand);
     const HeadMesh& mesh = setup.mesh();
     QCOMPARE(setup.points().size(), rigging::proposalAnchors().size());
     for (const std::string& id : rigging::proposalAnchors()) {
@@ -269,7 +268,8 @@ class HeadSetupTest : public QObject {
     if (!reference_) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     HeadSetup setup;
     rigging::FeaturePointFile hand;
-    if (const QString why = placeIctAnchors(setup, hand); !why.isEmpty()) QSKIP(qPrintable(why));
+    LACRIMA_REQUIRE_SHARED(kIctMesh);
+    placeIctAnchors(setup, hand);
     setup.propose(*reference_);
     setup.movePoint("8.1", *setup.position("8.1") + Eigen::Vector3d(0, 0.2, 0));
     const QString path = dir_.filePath(QStringLiteral("ict.fdp.json"));
@@ -309,7 +309,8 @@ class HeadSetupTest : public QObject {
     if (!reference_) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     HeadSetup upright;
     rigging::FeaturePointFile hand;
-    if (const QString why = placeIctAnchors(upright, hand); !why.isEmpty()) QSKIP(qPrintable(why));
+    LACRIMA_REQUIRE_SHARED(kIctMesh);
+    placeIctAnchors(upright, hand);
     upright.propose(*reference_);
 
     HeadMesh turned = upright.mesh();
@@ -343,7 +344,7 @@ class HeadSetupTest : public QObject {
   // Bad input: an unreadable file, a mesh without faces, a feature-point file for another
   // mesh. Each gives a message naming the file; the document stays as it was.
   void badInputLeavesDocumentAlone() {
-    if (!QFileInfo::exists(kIctMesh)) QSKIP("ICT-FaceKit head not in ../shared");
+    LACRIMA_REQUIRE_SHARED(kIctMesh);
     HeadSetup setup;
     setup.importFile(kIctMesh);
     setup.placePoint("9.3", SurfaceSpot{0, 0, Eigen::Vector3d(0.2, 0.3, 0.5)});

@@ -2,7 +2,7 @@
 // the sliders, with tears simulated while paused (tear preview) and while playing. Runs under
 // xvfb-run (OGRE needs X); skips when the default head is not fetched.
 #include "../support/ChangedPixels.h"
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
 #include "IctProject.h"
 
 #include <lacrima/common/FapTable.h>
@@ -226,7 +226,7 @@ class EditorPreviewTest : public QObject {
   // window with a step in flight is clean.
   void headChangeWhileSteppingIsClean() {
     if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
-    if (!rigtest::ictHeadAvailable()) QSKIP("../shared (the ICT-FaceKit head) is absent");
+    LACRIMA_REQUIRE_SHARED(rigtest::kIctMesh);
     QTemporaryDir folder;
     const QString project = rigtest::writeIctProject(folder.path(), "[]");
     QVERIFY(!project.isEmpty());

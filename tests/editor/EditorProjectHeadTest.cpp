@@ -3,7 +3,7 @@
 // message and a head reference that saving keeps; File > Choose head (setHead) is one undoable
 // edit. Runs under xvfb-run (OGRE needs X); skips without ../shared (the ICT-FaceKit head).
 #include "../support/ChangedPixels.h"
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
 
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/EditorModel.h>
@@ -54,7 +54,7 @@ class EditorProjectHeadTest : public QObject {
  private slots:
   void initTestCase() {
     QStandardPaths::setTestModeEnabled(true);
-    if (!rigtest::ictHeadAvailable()) QSKIP("../shared (the ICT-FaceKit head) is absent");
+    LACRIMA_REQUIRE_SHARED(rigtest::kIctMesh);
     // Counted by the importer itself, not by the preview under test.
     ictVertices_ = rigging::importHeadMesh(rigtest::kIctMesh.toStdString()).vertexCount();
     QVERIFY(ictVertices_ > 0);

@@ -1,12 +1,14 @@
-// The Head workspace driven like a user (issue 13), under xvfb-run: import the ICT head, fix a
-// part's role in the table, click the 8 anchors where the viewport shows them, propose the
-// rest, drag a point, undo, save; the saved file rigs, and a FAP slider re-poses the rigged
-// head at once. Bad input (a missing file, a mesh with no faces) gives a clear message and
-// leaves the workspace as it was. Also measures the longest event-loop stall from import to a
-// rigged head (printed; a figure, not an assertion).
+// The Head workspace driven like a user, under xvfb-run: import the ICT head, fix a part's role
+// in the table, click the 8 anchors where the viewport shows them, propose the rest, drag a
+// point, undo, save; the saved file rigs, and a FAP slider re-poses the rigged head at once. A
+// small head generated in the test runs the import and a clicked anchor without ../shared. Bad
+// input (a missing file, a mesh with no faces) gives a clear message and leaves the workspace as it
+// was. Also measures the longest event-loop stall from import to a rigged head (printed; a figure,
+// not an assertion).
 #include "../rigging/TestHeadFiles.h"
 #include "../support/ChangedPixels.h"
-#include "../support/DefaultHeadSkip.h"
+#include "../support/GeneratedHead.h"
+#include "../support/MissingData.h"
 
 #include <lacrima/common/AtomicSave.h>
 #include <lacrima/common/FdpTable.h>
@@ -110,7 +112,7 @@ class HeadWorkspaceTest : public QObject {
   }
 
   void importPlaceProposeDragUndoSave() {
-    if (!QFileInfo::exists(kIctMesh)) QSKIP("ICT-FaceKit head not in ../shared");
+    LACRIMA_REQUIRE_SHARED(kIctMesh);
     if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     MainWindow window(options());
     window.resize(1280, 860);
@@ -290,10 +292,57 @@ class HeadWorkspaceTest : public QObject {
     window.model().markSaved();
   }
 
+  // Without ../shared or the default head: a small head written in the test imports, shows
+  // its part, takes a clicked anchor where the mouse was (undoable), and a bad import after it
+  // leaves it as it was.
+  void aGeneratedHeadImportsAndTakesAClickedAnchor() {
+    const testsupport::GeneratedHead generated = testsupport::generatedHead();
+    const QString path = dir_.filePath(QStringLiteral("generated-head.obj"));
+    QVERIFY(testsupport::writeObj(generated, path));
+    MainWindow window(options());
+    window.resize(1280, 860);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.setWorkspace(MainWindow::Workspace::Head);
+    head::HeadWorkspace& ws = *window.headWorkspace();
+    editing::HeadSetup& setup = ws.setup();
+    viewport::FaceViewport* view = ws.viewport();
+    if (!view->usesOgre()) QSKIP("no OGRE viewport (needs an X display)");
+    QVERIFY2(importInto(ws, path), qPrintable(ws.lastError()));
+    const HeadMesh& mesh = setup.mesh();
+    QCOMPARE(setup.meshPath(), path);
+    QCOMPARE(mesh.vertexCount(), static_cast<int>(generated.positions.size()));
+    QCOMPARE(mesh.triangleCount(), static_cast<int>(generated.triangles.size()));
+    QCOMPARE(ws.partsView()->model()->rowCount(), 1);
+
+    // The first anchor, clicked on the front of the head (its vertex furthest forward).
+    const std::vector<std::string>& anchors = rigging::proposalAnchors();
+    QCOMPARE(ws.currentPoint(), anchors.front());
+    Eigen::Index front = 0;
+    mesh.positions.row(2).maxCoeff(&front);
+    const Eigen::Vector3d target = mesh.positions.col(front).cast<double>();
+    QTRY_VERIFY(view->project(target).has_value());
+    QTest::mouseClick(view, Qt::LeftButton, {}, view->project(target)->toPoint());
+    const editing::PlacedPoint* placed = setup.point(anchors.front());
+    QVERIFY(placed && placed->byHand());
+    const double off = (*setup.position(anchors.front()) - target).norm();
+    QVERIFY2(off < 0.05 * generated.radii.z(), qPrintable(QString("%1 mm off").arg(off)));
+    QCOMPARE(ws.currentPoint(), anchors[1]);
+    ws.findChild<QAction*>(QStringLiteral("head.undo"))->trigger();
+    QVERIFY(!setup.point(anchors.front()));
+
+    const QString missing = dir_.filePath(QStringLiteral("no-such-head.obj"));
+    QVERIFY(!importInto(ws, missing));
+    QVERIFY2(ws.lastError().contains(missing), qPrintable(ws.lastError()));
+    QCOMPARE(setup.meshPath(), path);
+    QCOMPARE(setup.mesh().vertexCount(), static_cast<int>(generated.positions.size()));
+    window.model().markSaved();
+  }
+
   // A head exported Z-up (x, y, z) -> (x, -z, y): once the eye corners and the chin are placed,
   // the view turns to the face's frame (the face's up is the mesh's +z), before any rig.
   void zUpHeadStandsUpOnceTheAnchorsArePlaced() {
-    if (!QFileInfo::exists(kIctMesh)) QSKIP("ICT-FaceKit head not in ../shared");
+    LACRIMA_REQUIRE_SHARED(kIctMesh);
     MainWindow window(options());
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
@@ -335,7 +384,7 @@ class HeadWorkspaceTest : public QObject {
   // the Head workspace with the head imported, proposed and rigged; wrong usage and a missing
   // mesh are refused with their exit codes.
   void commandLineOpensTheHeadWorkspace() {
-    if (!QFileInfo::exists(kIctMesh)) QSKIP("ICT-FaceKit head not in ../shared");
+    LACRIMA_REQUIRE_SHARED(kIctMesh);
     if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     // The 8 anchors of the hand-made file, as a user's partial file.
     QFile hand(kIctFdp);

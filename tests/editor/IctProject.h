@@ -1,7 +1,7 @@
 #pragma once
 // A project folder that names the ICT-FaceKit head by relative paths, as a user would lay it
 // out: project.json beside heads/ict.obj (with its material file) and heads/ict.fdp.json.
-// Shared by the editor and player suites; they skip when ../shared is absent.
+// Shared by the editor and player suites; they check for ../shared first (LACRIMA_REQUIRE_SHARED).
 #include "../rigging/TestHeadFiles.h"
 
 #include <QDir>
@@ -10,8 +10,6 @@
 #include <QString>
 
 namespace lacrima::rigtest {
-
-inline bool ictHeadAvailable() { return QFileInfo::exists(kIctMesh); }
 
 // Copies the ICT head into `folder`/heads and writes `folder`/project.json naming it, with
 // `keys` as the project's "keys" array (JSON text) and `fdpText` as the feature-point file

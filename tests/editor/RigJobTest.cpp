@@ -1,14 +1,15 @@
 // RigJob: rigging on a worker thread with results on the GUI thread. Driven with small Work
-// functions whose timing the test controls (semaphores), and once with a real head to measure
-// how long the event loop stalls while a head is rigged in the background.
+// functions whose timing the test controls (semaphores), and once with a real head rigged while
+// the event loop turns.
 #include <lacrima/common/Diagnostics.h>
+#include <lacrima/editor/HeadRigWork.h>
 #include <lacrima/editor/RigJob.h>
 #include <lacrima/playback/HeadRig.h>
 #include <lacrima/rigging/DefaultHead.h>
+#include <lacrima/rigging/MeshImport.h>
 
 #include "../rigging/TestHeadFiles.h"
 
-#include <QElapsedTimer>
 #include <QFileInfo>
 #include <QSemaphore>
 #include <QTimer>
@@ -32,6 +33,7 @@ std::unique_ptr<playback::HeadRig> taggedRig(const std::string& tag) {
 // Everything a RigJob emitted, in order.
 struct Emitted {
   std::vector<std::string> finished;  // the tags of the rigs
+  std::shared_ptr<playback::HeadRig> lastRig;
   QStringList failed;
   std::vector<std::pair<double, QString>> progress;
   bool allOnGuiThread = true;
@@ -40,6 +42,7 @@ struct Emitted {
     QObject::connect(&job, &RigJob::finished, [this](std::shared_ptr<playback::HeadRig> rig) {
       noteThread();
       finished.push_back(rig && !rig->warnings.empty() ? rig->warnings.front() : "");
+      lastRig = rig;
     });
     QObject::connect(&job, &RigJob::failed, [this](const QString& message) {
       noteThread();
@@ -172,56 +175,52 @@ class RigJobTest : public QObject {
     QCOMPARE(emittedCount, 0);
   }
 
-  // The GUI thread keeps turning while a real head is rigged: a 1 ms timer measures the
-  // longest gap between its ticks. The ICT head (about a second to rig) when ../shared is
-  // there, otherwise the default head.
-  void theEventLoopTurnsWhileAHeadIsRigged() {
+  // A real head rigged in the background: the GUI thread's event loop turns while the job runs
+  // (the work starts rigging only once a GUI-thread timer has fired three times, which cannot
+  // happen if start() blocks the GUI thread), the stages arrive on the GUI thread with their
+  // fractions rising from 0 to 1, and the rig is the head's. The ICT head (about a second to
+  // rig, several stages) when ../shared is there, otherwise the default head. How long the loop
+  // stalls is a figure of `lacrima-bench worst-cases`, not a check: it depends on the load.
+  void aRealHeadRigsWhileTheEventLoopTurns() {
     RigJob::Work work;
-    QString which;
+    int vertices = 0;
     if (QFileInfo::exists(rigtest::kIctMesh)) {
-      which = QStringLiteral("ICT-FaceKit");
-      work = [](const auto&) {
-        return playback::loadHeadRig(rigtest::kIctMesh.toStdString(),
-                                     rigtest::kIctFdp.toStdString());
-      };
+      work = headFilesWork(rigtest::kIctMesh.toStdString(), rigtest::kIctFdp.toStdString());
+      vertices = rigging::importHeadMesh(rigtest::kIctMesh.toStdString()).vertexCount();
     } else if (rigging::defaultHeadAvailable()) {
-      which = QStringLiteral("default");
-      work = [](const auto&) { return playback::loadDefaultHeadRig(); };
+      work = defaultHeadWork();
+      vertices = rigging::loadDefaultHead().vertexCount();
     } else {
-      QSKIP("neither ../shared nor the default head is available");
+      LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     }
     RigJob job;
     Emitted emitted(job);
+    QSemaphore ticked;
+    int ticks = 0;
     QTimer tick;
     tick.setInterval(1);
-    tick.setTimerType(Qt::PreciseTimer);
-    QElapsedTimer sinceTick;
-    qint64 longestStall = 0;
-    int ticks = 0;
     connect(&tick, &QTimer::timeout, [&] {
-      longestStall = std::max(longestStall, sinceTick.restart());
-      ++ticks;
+      if (++ticks == 3) ticked.release();
     });
-    QElapsedTimer rigTime;
-    rigTime.start();
-    sinceTick.start();
     tick.start();
-    job.start(work);
-    QTRY_VERIFY_WITH_TIMEOUT(emitted.total() == 1, 30000);
-    const qint64 rigMs = rigTime.elapsed();
+    job.start([&](const auto& progress) {
+      if (!ticked.tryAcquire(1, 30000))
+        throw FileError({"RigJobTest", 0}, "the GUI thread's timer never fired during the job");
+      return work(progress);
+    });
+    QTRY_VERIFY_WITH_TIMEOUT(emitted.total() == 1, 60000);
     tick.stop();
     QVERIFY2(emitted.failed.isEmpty(), qPrintable(emitted.failed.value(0)));
-    qInfo(
-        "%s head rigged in the background in %lld ms; timer ticks %d, longest event-loop stall "
-        "%lld ms",
-        qPrintable(which), static_cast<long long>(rigMs), ticks,
-        static_cast<long long>(longestStall));
-    // Rigging on the GUI thread would stall for the whole rig; allow the scheduling noise of a
-    // busy 2-core machine.
-    QVERIFY2(longestStall < 150, qPrintable(QStringLiteral("stalled %1 ms").arg(longestStall)));
-    // ... and the timer kept firing through the rig (at least once per 20 ms on average).
-    QVERIFY2(ticks >= rigMs / 20,
-             qPrintable(QStringLiteral("%1 ticks in %2 ms").arg(ticks).arg(rigMs)));
+    QCOMPARE(emitted.finished.size(), std::size_t{1});
+    QVERIFY(emitted.allOnGuiThread);
+    QVERIFY(!emitted.progress.empty());
+    double last = 0;
+    for (const auto& [fraction, stage] : emitted.progress) {
+      QVERIFY2(fraction >= last && fraction <= 1, qPrintable(stage));
+      QVERIFY(!stage.isEmpty());
+      last = fraction;
+    }
+    QCOMPARE(emitted.lastRig->head.vertexCount(), vertices);
   }
 };
 

@@ -2,7 +2,7 @@
 // (skipped when it is not fetched): framed on the point's region, the point drawn in the
 // highlight colour where it is, hidden points flagged, unknown ids give no picture, and every
 // point the head has comes with a description.
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
 
 #include <lacrima/common/FdpTable.h>
 #include <lacrima/exporters/FeaturePointReference.h>

@@ -2,7 +2,7 @@
 // Shared by the playback suites: the default head rigged once per suite, and small animations
 // built in memory so each test states exactly what it plays.
 
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
 
 #include <lacrima/common/FapAnimation.h>
 #include <lacrima/common/FapTable.h>

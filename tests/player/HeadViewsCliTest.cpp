@@ -116,7 +116,7 @@ class HeadViewsCliTest : public QObject {
 
  private slots:
   void initTestCase() {
-    if (!lacrima::rigtest::ictHeadAvailable()) QSKIP("../shared (the ICT-FaceKit head) is absent");
+    LACRIMA_REQUIRE_SHARED(lacrima::rigtest::kIctMesh);
     QVERIFY(dir_.isValid());
   }
 

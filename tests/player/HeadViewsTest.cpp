@@ -10,7 +10,7 @@
 #include <lacrima/rigging/MeshImport.h>
 
 #include "../rigging/TestHeadFiles.h"
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
 
 #include <QFileInfo>
 #include <QtTest>
@@ -128,7 +128,7 @@ class HeadViewsTest : public QObject {
   }
 
   void ictViews() {
-    if (!QFileInfo::exists(rigtest::kIctMesh)) QSKIP("../shared (the ICT-FaceKit head) is absent");
+    LACRIMA_REQUIRE_SHARED(rigtest::kIctMesh);
     QFETCH(double, scale);
     QFETCH(bool, zUp);
     Eigen::Matrix3d turn = Eigen::Matrix3d::Identity();

@@ -4,6 +4,8 @@
 // window plays a project on its head too. Runs under xvfb-run; skips without ../shared (the
 // ICT-FaceKit head).
 #include "../support/ChangedPixels.h"
+#include "../support/MissingData.h"
+#include "../support/RunProcess.h"
 
 #include <lacrima/player/PlayerWindow.h>
 #include <lacrima/player/ProjectHead.h>
@@ -13,7 +15,6 @@
 #include "../editor/IctProject.h"
 
 #include <QImage>
-#include <QProcess>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -35,22 +36,10 @@ QByteArray keysWithTears(int tears) {
       .toUtf8();
 }
 
-struct Run {
-  int exitCode = -1;
-  QString err;
-};
+using Run = testsupport::ProcessRun;
 
 Run run(const QStringList& arguments) {
-  QProcess process;
-  process.start(kPlayer, arguments);
-  Run r;
-  if (!process.waitForFinished(120000)) {
-    process.kill();
-    return r;
-  }
-  r.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-  r.err = QString::fromLocal8Bit(process.readAllStandardError());
-  return r;
+  return testsupport::runProcess(kPlayer, arguments, 120000);
 }
 
 const QString kLastFrame = QStringLiteral("/frame_0013.png");
@@ -64,7 +53,7 @@ class PlayerProjectHeadTest : public QObject {
 
  private slots:
   void initTestCase() {
-    if (!rigtest::ictHeadAvailable()) QSKIP("../shared (the ICT-FaceKit head) is absent");
+    LACRIMA_REQUIRE_SHARED(rigtest::kIctMesh);
     QVERIFY(dir_.isValid());
   }
 
@@ -136,7 +125,7 @@ class PlayerProjectHeadTest : public QObject {
     QCOMPARE(window.playback().path(), project.toStdString());
 
     // A project without a head plays on the default head.
-    if (!rigging::defaultHeadAvailable()) return;
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     const QString plain = dir_.filePath("plain.json");
     QFile file(plain);
     QVERIFY(file.open(QIODevice::WriteOnly));

@@ -2,8 +2,8 @@
 // through the Open action's path, Play until frames advance, Reset to a neutral face with no
 // tears; a bad file gives an error dialog and keeps the animation; drops open files; toggles
 // and parameters reach the playback.
-#include "../support/DefaultHeadSkip.h"
 #include "../support/MalformedFiles.h"
+#include "../support/MissingData.h"
 
 #include <lacrima/player/PlayerWindow.h>
 #include <lacrima/player/TearParametersPanel.h>

@@ -1,14 +1,14 @@
 // lacrima-player --render run as a process (under xvfb-run): a short animation gives one PNG
 // per frame and a contact sheet, progress on stderr; a bad file and a missing display fail
 // with a clear message.
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
+#include "../support/RunProcess.h"
 
 #include <lacrima/common/FapTable.h>
 #include <lacrima/common/FapWriter.h>
 #include <lacrima/rigging/DefaultHead.h>
 
 #include <QImage>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -20,25 +20,11 @@ namespace {
 
 const QString kPlayer = QStringLiteral(LACRIMA_BIN_DIR "/lacrima-player");
 
-struct Run {
-  int exitCode = -1;
-  QString out, err;
-};
+using Run = testsupport::ProcessRun;
 
 Run run(const QStringList& arguments,
         const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment()) {
-  QProcess process;
-  process.setProcessEnvironment(environment);
-  process.start(kPlayer, arguments);
-  Run r;
-  if (!process.waitForFinished(300000)) {
-    process.kill();
-    return r;
-  }
-  r.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-  r.out = QString::fromLocal8Bit(process.readAllStandardOutput());
-  r.err = QString::fromLocal8Bit(process.readAllStandardError());
-  return r;
+  return testsupport::runProcess(kPlayer, arguments, 300000, environment);
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 // A tear pixel is one that differs from the same face with no tears at all: the demo with its
 // tear channels cleared, so nothing is simulated. Texture blending is off in both renders, so
 // only the tears' own geometry (surface, trails, particles) can make a difference.
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
 
 #include <lacrima/playback/Playback.h>
 #include <lacrima/rigging/DefaultHead.h>

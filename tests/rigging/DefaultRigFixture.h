@@ -4,7 +4,7 @@
 // real head (AttachedCardsTest, SkinFoldTest). Without the head in the cache the rig is empty
 // and the suites skip (REQUIRE_DEFAULT_RIG).
 
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
 
 #include <lacrima/common/FapChannels.h>
 #include <lacrima/common/FapReader.h>

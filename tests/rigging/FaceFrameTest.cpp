@@ -2,7 +2,7 @@
 // nearest of the 24 axis-aligned rotations, applied before the rig is built. The default head's
 // frame is the identity (nothing changes); the ICT head exported Z-up, facing +y or -z and in
 // millimetres rigs to the same rig.json feature points up to rounding and scale.
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
 #include "TestHeadFiles.h"
 
 #include <lacrima/rigging/DefaultHead.h>
@@ -215,7 +215,7 @@ class FaceFrameTest : public QObject {
   // the inverse of the export's turn, and rig.json lists the same feature points, eye centres,
   // neck pivot, tear sources and FAPU, up to rounding and the scale.
   void ictHeadInAnyConventionRigsTheSame() {
-    if (!QFileInfo::exists(kIctMesh)) QSKIP("ICT-FaceKit head not present in the shared folder");
+    LACRIMA_REQUIRE_SHARED(kIctMesh);
     const HeadMesh ict = rigging::importHeadMesh(kIctMesh.toStdString());
     rigging::FeaturePointFile fdp = rigging::validateFeaturePoints(
         rigging::readFeaturePointFile(kIctFdp.toStdString()), ict, nullptr);

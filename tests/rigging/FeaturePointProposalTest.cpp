@@ -1,7 +1,7 @@
 // Proposing feature points (issue 13): the default head's points carried onto the ICT head from
 // the 8 anchors, against the hand-made ICT file; the same in another unit and axis convention;
 // and lacrima-rig --complete.
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
 #include "TestHeadFiles.h"
 
 #include <lacrima/common/AtomicSave.h>
@@ -101,19 +101,19 @@ std::pair<double, double> report(const std::map<std::string, double, rigging::Fd
 
 }  // namespace
 
+// QSKIP ends only the function it is written in, so each test expands this.
+#define REQUIRE_BOTH_HEADS()                              \
+  do {                                                    \
+    if (!reference_) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD(); \
+    if (!ict_) LACRIMA_SKIP_WITHOUT_SHARED(kIctMesh);     \
+  } while (false)
+
 class FeaturePointProposalTest : public QObject {
   Q_OBJECT
 
   std::unique_ptr<HeadMesh> reference_, ict_;
   rigging::FeaturePointFile referenceFdp_, ictFdp_;
   QTemporaryDir tmp_;
-
-  // QSKIP ends only the function it is written in, so each test calls this in a QSKIP guard.
-  QString missing() const {
-    if (!reference_) return "default head not in the cache (run packaging/fetch-default-head.sh)";
-    if (!ict_) return "ICT-FaceKit head not present in the shared folder";
-    return {};
-  }
 
   rigging::FeaturePointFile proposalOn(
       const HeadMesh& mesh,
@@ -185,7 +185,7 @@ class FeaturePointProposalTest : public QObject {
   }
 
   void proposesTheIctHeadsPoints() {
-    if (const QString why = missing(); !why.isEmpty()) QSKIP(qPrintable(why));
+    REQUIRE_BOTH_HEADS();
     const auto error = proposeOn(*ict_);
     QVERIFY(error.size() >= 30);
     const auto [mean, worst] = report(error, "y up, centimetres");
@@ -208,7 +208,7 @@ class FeaturePointProposalTest : public QObject {
 
   // The warp alone (the method before the eyes' step) is still selectable and no better.
   void eyesStepImprovesOnTheWarp() {
-    if (const QString why = missing(); !why.isEmpty()) QSKIP(qPrintable(why));
+    REQUIRE_BOTH_HEADS();
     const auto warp = errors(proposalOn(*ict_, rigging::ProposalMethod::Warp), ictFdp_, *ict_);
     const auto eyes = proposeOn(*ict_);
     const auto [warpMean, warpWorst] = report(warp, "warp alone");
@@ -220,7 +220,7 @@ class FeaturePointProposalTest : public QObject {
   // Z up facing -y, millimetres; and facing +y, inches, moved away from the origin: the same
   // vertices, whatever the head's units and axes.
   void doesNotDependOnUnitsOrAxes() {
-    if (const QString why = missing(); !why.isEmpty()) QSKIP(qPrintable(why));
+    REQUIRE_BOTH_HEADS();
     const Eigen::Matrix3f yUpToZUp =
         Eigen::AngleAxisf(static_cast<float>(EIGEN_PI / 2), Eigen::Vector3f::UnitX())
             .toRotationMatrix();
@@ -235,7 +235,7 @@ class FeaturePointProposalTest : public QObject {
 
   // Anchors that cannot define a warp: a clear error naming the file and the anchors.
   void degenerateAnchorsAreNamed() {
-    if (const QString why = missing(); !why.isEmpty()) QSKIP(qPrintable(why));
+    REQUIRE_BOTH_HEADS();
     rigging::FeaturePointFile partial = partialOf(ictFdp_, rigging::proposalAnchors());
     partial.path = "partial.fdp.json";
     rigging::FeaturePointFile coincident = partial;
@@ -276,7 +276,7 @@ class FeaturePointProposalTest : public QObject {
   }
 
   void tooFewAnchorsNamesTheMissingOnes() {
-    if (const QString why = missing(); !why.isEmpty()) QSKIP(qPrintable(why));
+    REQUIRE_BOTH_HEADS();
     rigging::FeaturePointFile partial = partialOf(ictFdp_, {"3.7", "3.8", "3.11", "3.12", "9.3"});
     partial.path = "partial.fdp.json";
     try {
@@ -294,7 +294,7 @@ class FeaturePointProposalTest : public QObject {
   // nearest skin vertex put 2.3 on the upper lip, and checkRig reported "lips-joined"); and a
   // symmetric head's proposal symmetric (checkRig reported "asymmetry" for 5.1 / 5.2).
   void innerLipsAreOnTheirLips() {
-    if (const QString why = missing(); !why.isEmpty()) QSKIP(qPrintable(why));
+    REQUIRE_BOTH_HEADS();
     const rigging::FeaturePointFile proposed = proposalOn(*ict_);
     const auto at = [&](const rigging::FeaturePointFile& f, const char* id) {
       return rigging::surfacePosition(f.points.at(id).at, *ict_);
@@ -334,7 +334,7 @@ class FeaturePointProposalTest : public QObject {
   // width round the middle of its inner lips) still gets every point, with a warning naming the lip
   // points.
   void missingLipsProposeWithAWarning() {
-    if (const QString why = missing(); !why.isEmpty()) QSKIP(qPrintable(why));
+    REQUIRE_BOTH_HEADS();
     HeadMesh cut = *ict_;
     const auto at = [&](const char* id) {
       return rigging::surfacePosition(ictFdp_.points.at(id).at, *ict_);
@@ -387,7 +387,7 @@ class FeaturePointProposalTest : public QObject {
   }
 
   void commandLineCompletesAndRigs() {
-    if (const QString why = missing(); !why.isEmpty()) QSKIP(qPrintable(why));
+    REQUIRE_BOTH_HEADS();
     const QString partial = QDir(tmp_.path()).filePath("partial.fdp.json");
     saveAtomically(partial.toStdString(),
                    rigging::featurePointFileJson(partialOf(ictFdp_, rigging::proposalAnchors())));

@@ -1,4 +1,4 @@
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
 
 #include <lacrima/common/HeadMesh.h>
 #include <lacrima/rigging/DefaultHead.h>
@@ -91,7 +91,7 @@ class HeadImportTest : public QObject {
   std::optional<HeadMesh> head_;
   QTemporaryDir tmp_;
   const QString ict_ =
-      QStringLiteral(LACRIMA_SHARED_DIR "/heads/ict-facekit/generic_neutral_mesh.obj");
+      testsupport::sharedPath(QStringLiteral("heads/ict-facekit/generic_neutral_mesh.obj"));
 
   const HeadMesh& head() const { return *head_; }
   // Present for every role: initTestCase checked.
@@ -416,7 +416,7 @@ class HeadImportTest : public QObject {
   }
 
   void importsTheIctHead() {
-    if (!QFileInfo::exists(ict_)) QSKIP("ICT-FaceKit head not present in the shared folder");
+    LACRIMA_REQUIRE_SHARED(ict_);
     QElapsedTimer timer;
     timer.start();
     const HeadMesh mesh = rigging::importHeadMesh(ict_.toStdString());

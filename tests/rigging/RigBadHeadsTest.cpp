@@ -4,7 +4,7 @@
 // duplicate and zero-area triangles rigs with finite weights and poses, warning where a point's
 // influence cannot reach. Most cases run on a small synthetic face (a curved grid with the
 // FAPU points where a face has them), the playback one on the default head.
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
 #include "TestHeadFiles.h"
 
 #include <lacrima/common/FapTable.h>

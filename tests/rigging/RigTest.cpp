@@ -1,7 +1,7 @@
 // Rig assembly end to end: feature-point files, RigBuilder on the default head and the ICT head,
 // the exported files and the lacrima-rig command.
-#include "../support/DefaultHeadSkip.h"
 #include "../support/FileErrors.h"
+#include "../support/MissingData.h"
 #include "TestHeadFiles.h"
 
 #include <lacrima/common/FapTable.h>
@@ -306,7 +306,7 @@ class RigTest : public QObject {
   }
 
   void ictHeadRigsEndToEnd() {
-    if (!QFileInfo::exists(kIctMesh)) QSKIP("ICT-FaceKit head not present in the shared folder");
+    LACRIMA_REQUIRE_SHARED(kIctMesh);
     QElapsedTimer timer;
     timer.start();
     const HeadMesh mesh = rigging::importHeadMesh(kIctMesh.toStdString());
@@ -339,7 +339,7 @@ class RigTest : public QObject {
   // index means what it meant, and survive a write and a read; a part cannot be ignored and
   // something else.
   void ignoredPartsAreLeftOut() {
-    if (!QFileInfo::exists(kIctMesh)) QSKIP("ICT-FaceKit head not present in the shared folder");
+    LACRIMA_REQUIRE_SHARED(kIctMesh);
     HeadMesh mesh = rigging::importHeadMesh(kIctMesh.toStdString());
     const rigging::FeaturePointFile fdp = rigging::validateFeaturePoints(
         rigging::readFeaturePointFile(kIctFdp.toStdString()), mesh, nullptr);

@@ -1,7 +1,7 @@
 // The off-screen renderer on the real default head (skipped when it is not fetched): tears show
 // below the eyes and nowhere else, texture blending changes the eye region and only it, the
 // camera and projection behave. Runs under xvfb-run (OGRE renders through GLX).
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
 #include "ImageCompare.h"
 #include "SyntheticTears.h"
 

@@ -3,7 +3,7 @@
 // textures, the skin's relief and the tangent frames it is shaded in, the skin's horizons (its
 // shadows), the static occlusion, the
 // orbit camera's framing and mouse mapping, and the named cameras of --render --view.
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
 
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/scene/CameraPreset.h>

@@ -2,7 +2,7 @@
 // not the generated sheet: tears emitted at the lower eyelids must run down the cheeks, stay on
 // the skin and survive a jaw-opening deformation arriving in a single frame. Skipped when the
 // head has not been fetched (packaging/fetch-default-head.sh).
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
 
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/rigging/FeaturePointFile.h>

@@ -4,7 +4,7 @@
 // checkpoint restored mid-run) and on the default head (skipped when not fetched). Runs have
 // more particles than the sharing threshold and several particle chunks, so the shared loops
 // and their spill lists really run on several threads, and the mesher splats in several slabs.
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
 #include "ParallelChunks.h"  // internal to lacrima_tears
 #include "TearTestSupport.h"
 #include "ThreadPool.h"

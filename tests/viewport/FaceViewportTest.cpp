@@ -2,7 +2,7 @@
 // not fetched): it renders once when shown, never again for the same frame or a bare update(),
 // a drag orbits, the wheel zooms, a double-click frames the face again.
 #include "../scene/ImageCompare.h"
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
 
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/scene/FaceRenderer.h>
