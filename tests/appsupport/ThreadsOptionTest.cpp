@@ -54,7 +54,7 @@ class ThreadsOptionTest : public QObject {
       QCOMPARE(editor.exitStatus(), QProcess::NormalExit);
       QCOMPARE(editor.exitCode(), 2);
       const QString err = QString::fromLocal8Bit(editor.readAllStandardError());
-      QVERIFY2(err.contains("--threads expects a whole number from 1 to 256"), qPrintable(err));
+      QVERIFY2(err.contains("--threads: expected threads from 1 to 256"), qPrintable(err));
     }
   }
 };

@@ -1,8 +1,10 @@
 #include <lacrima/appsupport/ThreadsOption.h>
+#include <lacrima/common/CommandLineNumbers.h>
 
 #include <QCommandLineParser>
 
 #include <cstdio>
+#include <string>
 
 namespace lacrima::appsupport {
 
@@ -26,12 +28,11 @@ QCommandLineOption threadsOption(const QString& simulation) {
 
 std::optional<int> threadsFrom(const QCommandLineParser& parser, const char* program) {
   if (!parser.isSet(kName)) return 0;
-  bool ok = false;
-  const int count = parser.value(kName).toInt(&ok);
-  if (ok && count >= 1 && count <= kMostThreads) return count;
-  std::fprintf(stderr, "%s: --threads expects a whole number from 1 to %d, not %s\n", program,
-               kMostThreads, qPrintable(parser.value(kName)));
-  return std::nullopt;
+  std::string error;
+  const std::optional<int> count = readWholeNumberOption(
+      "--threads", "threads", parser.value(kName).toStdString(), 1, kMostThreads, error);
+  if (!count) std::fprintf(stderr, "%s: %s\n", program, error.c_str());
+  return count;
 }
 
 }  // namespace lacrima::appsupport

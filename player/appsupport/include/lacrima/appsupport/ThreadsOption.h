@@ -15,7 +15,8 @@ namespace lacrima::appsupport {
 QCommandLineOption threadsOption(const QString& simulation);
 
 // After parser.process(): the count given (1 to 256), 0 without the option, or nullopt after
-// "<program>: --threads expects ..." on stderr, a usage error (exit status 2).
+// "<program>: --threads: expected threads from 1 to 256, not ..." on stderr, a usage error
+// (exit status 2).
 std::optional<int> threadsFrom(const QCommandLineParser& parser, const char* program);
 
 }  // namespace lacrima::appsupport
