@@ -12,6 +12,8 @@
 #include <assimp/scene.h>
 #include <assimp/Exporter.hpp>
 
+#include <Eigen/Geometry>
+
 #include <QTemporaryDir>
 #include <QtTest>
 
