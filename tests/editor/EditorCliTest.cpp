@@ -54,7 +54,7 @@ class EditorCliTest : public QObject {
   void badNumbersAreUsageErrors() {
     QFETCH(QStringList, arguments);
     QFETCH(QString, message);
-    const QString png = dir_.filePath(QStringLiteral("never.png"));
+    const QString png = dir_.filePath(QString::fromUtf8(QTest::currentDataTag()) + ".png");
     const testsupport::ProcessRun r =
         run(arguments + QStringList{"--no-preview", "--screenshot", png});
     QCOMPARE(r.exitCode, 2);

@@ -4,12 +4,15 @@
 // ../shared nor the default head.
 #include "../support/GeneratedHead.h"
 
+#include <lacrima/common/Diagnostics.h>
 #include <lacrima/common/HeadMesh.h>
 #include <lacrima/rigging/MeshImport.h>
 
 #include <assimp/material.h>
 #include <assimp/scene.h>
 #include <assimp/Exporter.hpp>
+
+#include <Eigen/Geometry>
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -62,7 +65,9 @@ class HeadFormatsTest : public QObject {
   void importsWhatAssimpExported_data() {
     QTest::addColumn<QString>("format");
     QTest::addColumn<QString>("extension");
-    QTest::newRow("FBX") << QStringLiteral("fbx") << QStringLiteral("fbx");
+    // FBX as text ("fbxa"): Debian 12's assimp 5.2.5 writes binary FBX ("fbx") without the
+    // null records' padding (assimp issue 4686), and no reader, its own included, takes it.
+    QTest::newRow("FBX") << QStringLiteral("fbxa") << QStringLiteral("fbx");
     QTest::newRow("COLLADA") << QStringLiteral("collada") << QStringLiteral("dae");
   }
   void importsWhatAssimpExported() {
@@ -77,7 +82,12 @@ class HeadFormatsTest : public QObject {
       QVERIFY2(exporter.Export(&scene, format.toStdString(), path) == aiReturn_SUCCESS,
                exporter.GetErrorString());
     }
-    const HeadMesh imported = rigging::importHeadMesh(path);
+    HeadMesh imported;
+    try {
+      imported = rigging::importHeadMesh(path);
+    } catch (const FileError& e) {
+      QFAIL(e.what());
+    }
     QCOMPARE(imported.vertexCount(), static_cast<int>(head.positions.size()));
     QCOMPARE(imported.triangleCount(), static_cast<int>(head.triangles.size()));
     // The same extent on every axis, in the file's own unit: nothing scaled, turned or lost.
