@@ -5,8 +5,8 @@
 // down the slope. No solver is tuned to it: the published law for sliding drops (Podgorski,
 // Flesselles & Limat 2001; Kim, Lee & Kang 2002) says Ca = mu U / gamma grows linearly with
 // Bo sin(alpha) = rho g V^(2/3) sin(alpha) / gamma above a threshold angle.
-#include <lacrima/tears/TearSettings.h>
 #include <lacrima/tears/SimulationOptions.h>
+#include <lacrima/tears/TearSettings.h>
 
 #include <string>
 

@@ -9,9 +9,9 @@
 // slightly curved path over the cheek, with the trail it left from the lid down to it.
 #include <lacrima/common/HeadMesh.h>
 #include <lacrima/playback/FrameView.h>
-#include <lacrima/tears/TearSettings.h>
 #include <lacrima/tears/ParticleSet.h>
 #include <lacrima/tears/SurfaceMesher.h>
+#include <lacrima/tears/TearSettings.h>
 #include <lacrima/tears/TearSimulation.h>
 #include <lacrima/tears/TrailBuilder.h>
 #include <lacrima/tears/UniformGrid.h>

@@ -4,12 +4,12 @@
 #include "TearTestSupport.h"
 
 // Internals of lacrima_tears (player/tears/src is on this test's include path).
+#include "ActivePairs.h"
 #include "CellIndex.h"
 #include "DensitySolver.h"
 #include "Emitter.h"
 #include "Kernels.h"
 #include "Octree.h"
-#include "ActivePairs.h"
 #include "VerletPairs.h"
 
 #include <lacrima/tears/TrailBuilder.h>

@@ -18,10 +18,10 @@
 // one x-slab of cells, which grows with the count); a window never exceeds n. Then each particle's
 // density is its own chunk's sum plus the earlier chunks' sums for it, in chunk order: the same sum
 // in the same order for any number of threads.
-#include "Kernels.h"
 #include "ActivePairs.h"
-#include "VerletPairs.h"
+#include "Kernels.h"
 #include "ParallelChunks.h"
+#include "VerletPairs.h"
 
 #include <lacrima/tears/ParticleSet.h>
 

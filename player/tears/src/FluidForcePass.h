@@ -30,8 +30,8 @@
 // Only baseline x86-64 instructions are used (no -march, no FMA contraction), so results are
 // bitwise identical on every x86-64 machine. Per-particle results are converted back to the
 // double ParticleSet.
-#include "Kernels.h"
 #include "ActivePairs.h"
+#include "Kernels.h"
 #include "ParallelChunks.h"
 #include "UninitialisedAllocator.h"
 #include "Viscosity_Mueller2003.h"

@@ -10,12 +10,12 @@
 // and the same pairs within h.
 #include "CellIndex.h"
 #include "MethodRegistry.h"
-#include "VerletPairs.h"
 #include "ParallelChunks.h"
+#include "VerletPairs.h"
 
-#include <lacrima/tears/TearSettings.h>
 #include <lacrima/tears/ParticleSet.h>
 #include <lacrima/tears/TearCounters.h>
+#include <lacrima/tears/TearSettings.h>
 
 namespace lacrima::tears {
 

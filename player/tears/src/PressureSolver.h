@@ -13,14 +13,14 @@
 //      skin contact constraint (DFSPH's density solve, PBF's position solve).
 // Between them the sub-step's length is chosen (AdaptiveTimeStep.h) with the solver's speed of
 // sound and the acceleration it says bounds the step.
-#include "MethodRegistry.h"
 #include "ActivePairs.h"
+#include "MethodRegistry.h"
 #include "SkinContact.h"
 
-#include <lacrima/tears/TearSettings.h>
 #include <lacrima/tears/ParticleSet.h>
 #include <lacrima/tears/SimulationOptions.h>
 #include <lacrima/tears/TearCounters.h>
+#include <lacrima/tears/TearSettings.h>
 
 #include <memory>
 #include <vector>

@@ -9,12 +9,12 @@
 // field's gradient and Laplacian along the way for a model that asks for them, and then
 // addAccelerations() on each chunk of particles as the force pass finishes it, in the pass's
 // last shared loop.
+#include "ActivePairs.h"
 #include "FluidForcePass.h"
 #include "MethodRegistry.h"
-#include "ActivePairs.h"
 
-#include <lacrima/tears/TearSettings.h>
 #include <lacrima/tears/ParticleSet.h>
+#include <lacrima/tears/TearSettings.h>
 
 #include <memory>
 

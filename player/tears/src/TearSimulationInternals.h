@@ -2,6 +2,7 @@
 // The parts of a TearSimulation that its header names only through a pointer: the neighbour
 // search, the SPH terms, the pressure and surface-tension methods the options chose, skin
 // contact and collision, emission and the adaptive time step.
+#include "ActivePairs.h"
 #include "AdaptiveTimeStep.h"
 #include "CellIndex.h"
 #include "DensitySolver.h"
@@ -9,14 +10,13 @@
 #include "Emitter.h"
 #include "FluidForcePass.h"
 #include "NeighbourStructure.h"
-#include "ActivePairs.h"
-#include "VerletPairs.h"
 #include "ParallelChunks.h"
 #include "PressureSolver.h"
 #include "SkinCollider.h"
 #include "SkinContact.h"
 #include "SurfaceTension.h"
 #include "TrailMassLoss.h"
+#include "VerletPairs.h"
 #include "Viscosity_Mueller2003.h"
 
 #include <lacrima/common/Milliseconds.h>

@@ -7,8 +7,8 @@
 #include <lacrima/common/ProjectDocument.h>
 #include <lacrima/playback/FrameView.h>
 #include <lacrima/playback/HeadRig.h>
-#include <lacrima/tears/TearSettings.h>
 #include <lacrima/tears/SimulationOptions.h>
+#include <lacrima/tears/TearSettings.h>
 
 #include <memory>
 

@@ -27,11 +27,11 @@
 // them only through a pointer, so its users compile against the public headers alone.
 #include <lacrima/common/FapChannels.h>
 #include <lacrima/common/HeadMesh.h>
-#include <lacrima/tears/TearSettings.h>
 #include <lacrima/tears/ParticleSet.h>
 #include <lacrima/tears/SimulationOptions.h>
 #include <lacrima/tears/TearCheckpoint.h>
 #include <lacrima/tears/TearCounters.h>
+#include <lacrima/tears/TearSettings.h>
 #include <lacrima/tears/UniformGrid.h>
 
 #include <Eigen/Geometry>
