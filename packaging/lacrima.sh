@@ -43,11 +43,16 @@ install_missing_packages() {
       --no-install-recommends "${missing[@]}"; } >"$log" 2>&1 || fail_with_log "apt-get install" "$log"
 }
 
+# Release, with Debian's hardening flags (packaging/build-deb.sh), so that the Debian package is
+# made from the very build the tests ran. A build configured without them is configured again,
+# which rebuilds everything once.
 build_lacrima() {
   mkdir -p "$build"
-  if [ ! -f "$build/CMakeCache.txt" ]; then
-    cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >"$build/configure.log" 2>&1 ||
-      fail_with_log "configuring (cmake)" "$build/configure.log"
+  if ! bash "$root/packaging/build-deb.sh" --check "$build"; then
+    local flags=()
+    mapfile -t flags < <(bash "$root/packaging/build-deb.sh" --cmake-flags)
+    cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release "${flags[@]}" \
+      >"$build/configure.log" 2>&1 || fail_with_log "configuring (cmake)" "$build/configure.log"
   fi
   local start=$SECONDS
   cmake --build "$build" -j "$(nproc)" >"$build/build.log" 2>&1 || fail_with_log "building" "$build/build.log"
