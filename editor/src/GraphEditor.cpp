@@ -17,7 +17,7 @@ namespace lacrima::editor {
 
 using editing::ChannelKey;
 using editing::HandleSide;
-using namespace graph_layout;
+using namespace detail;
 
 GraphEditor::GraphEditor(editing::EditorModel& model, QWidget* parent)
     : QWidget(parent), model_(model) {

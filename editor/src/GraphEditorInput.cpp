@@ -24,7 +24,7 @@ namespace lacrima::editor {
 
 using editing::ChannelKey;
 using editing::HandleSide;
-using namespace graph_layout;
+using namespace detail;
 
 namespace {
 

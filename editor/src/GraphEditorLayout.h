@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-namespace lacrima::editor::graph_layout {
+namespace lacrima::editor::detail {
 
 constexpr double kRulerHeight = 22.0;  // the time ruler along the top
 constexpr double kAxisWidth = 56.0;    // the value labels along the left
@@ -19,4 +19,4 @@ constexpr double kMaxValueScale = 1e7;
 
 inline bool sameTime(double a, double b) { return std::abs(a - b) < editing::kSameKeyTime; }
 
-}  // namespace lacrima::editor::graph_layout
+}  // namespace lacrima::editor::detail

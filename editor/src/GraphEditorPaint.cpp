@@ -18,7 +18,7 @@
 
 namespace lacrima::editor {
 
-using namespace graph_layout;
+using namespace detail;
 
 namespace {
 

@@ -53,6 +53,7 @@ MainWindow::MainWindow(EditorOptions options, QWidget* parent)
   d_->undoGroup->addStack(d_->model->undoStack());
   d_->undoGroup->addStack(d_->headWorkspace->setup().undoStack());
   d_->undoGroup->setActiveStack(d_->model->undoStack());
+  d_->history->setGroup(d_->undoGroup);  // the History dock shows the active workspace's steps
   createActions();
   d_->recentMenu = buildMainMenus(*this, [this](const QString& name) { return action(name); });
   rebuildRecentMenu();

@@ -1,6 +1,6 @@
 # Shared by the package tests (sourced). A test that cannot run skips (exit 77, CTest's
 # SKIP_RETURN_CODE) with its reason, except under CI=true, where it fails with that reason: a
-# missing tool or network must not pass CI as a skip (the rule of tests/support/DefaultHeadSkip.h).
+# missing tool or network must not pass CI as a skip (the rule of tests/support/MissingData.h).
 skip_or_fail() {
   if [ "${CI:-}" = true ]; then
     echo "FAIL: $* (CI=true makes that a failure, not a skip)" >&2

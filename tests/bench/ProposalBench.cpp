@@ -28,7 +28,7 @@ namespace lacrima::bench {
 
 namespace {
 
-// Issue 13's targets, in ES0.
+// What a proposal must reach on the ICT head, in ES0 (docs/rig.md, "Proposing feature points").
 constexpr double kMeanTarget = 0.08;
 constexpr double kWorstTarget = 0.3;
 

@@ -1,6 +1,6 @@
 // saveAtomically, the one way Lacrima writes a user's file: on a disk that fills mid-write, the
 // old file stays as it was and the error says what happened. Qt 6.4's QSaveFile alone reports
-// such a short write as success and renames the truncated file into place (issue 16).
+// such a short write as success and renames the truncated file into place.
 #include "../support/FileFaults.h"
 
 #include <lacrima/common/AtomicSave.h>

@@ -1,4 +1,4 @@
-// The Head workspace's document without windows (issue 13): the role guesser's table; the ICT
+// The Head workspace's document without windows: the role guesser's table; the ICT
 // head (OBJ) and the default head written as GLB imported with their roles guessed; the ICT
 // anchors placed from picks, the rest proposed, a point moved, undo and redo; the saved file
 // validates, reads back to the same document and rigs; bad input leaves the document as it was.

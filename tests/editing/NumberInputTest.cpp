@@ -1,4 +1,4 @@
-// Typed numbers are read exactly as typed or refused with a reason (issue 14: QSpinBox turned
+// Typed numbers are read exactly as typed or refused with a reason (QSpinBox turned
 // "-5" into 5, "abc1.5e3" into 153 and "999999" into 99999). parseNumber and parseTime alone.
 #include <lacrima/common/FapChannels.h>
 #include <lacrima/editing/NumberInput.h>

@@ -1,4 +1,4 @@
-// The editor killed (SIGKILL) during an autosave (issue 16): the next start offers the last
+// The editor killed (SIGKILL) during an autosave: the next start offers the last
 // complete recovery file, never a truncated one.
 //
 // The killed editor is this test's own executable started again as a child that autosaves a

@@ -1,4 +1,4 @@
-// Faults that must lose nothing (issue 16): Save, Save As, export and autosave when the disk
+// Faults that must lose nothing: Save, Save As, export and autosave when the disk
 // fills mid-write, when the folder is read-only and when the target path is a folder. Every
 // case checks the same three promises: the old file is intact byte for byte (and no temporary
 // file is left beside it), the document stays marked unsaved, and the window says why, naming

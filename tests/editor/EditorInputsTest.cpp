@@ -1,4 +1,4 @@
-// Issue 14's inputs, driven like a user on real widgets (offscreen): numbers are taken exactly
+// Typed inputs, driven like a user on real widgets (offscreen): numbers are taken exactly
 // as typed or refused visibly with nothing changed, the time field jumps, Space plays from a
 // numeric field, slider drags scale with the channel's range, toggles show their state.
 #include <lacrima/common/FapTable.h>

@@ -1,4 +1,4 @@
-// Every malformed fixture opened in the editor as a user would (issue 16): through File ▸ Open
+// Every malformed fixture opened in the editor as a user would: through File ▸ Open
 // (the file dialog and the warning it leads to) and by drag and drop. Each is refused with a
 // message naming the file, and the project that was open stays as it was, file name included.
 #include "../support/MalformedFiles.h"

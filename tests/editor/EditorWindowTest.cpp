@@ -31,6 +31,7 @@
 #include <QToolButton>
 #include <QUndoCommand>
 #include <QUndoStack>
+#include <QUndoView>
 #include <QtTest>
 
 #include <memory>
@@ -467,13 +468,20 @@ class EditorWindowTest : public QObject {
     auto* tabs = window().findChild<QTabBar*>(QStringLiteral("workspaces"));
     QVERIFY(tabs);
 
+    // The History dock lists the steps of the workspace shown.
+    auto* history = window().findChild<QUndoView*>();
+    QVERIFY(history);
+    QCOMPARE(history->stack(), animation);
+
     tabs->setCurrentIndex(static_cast<int>(MainWindow::Workspace::Head));
     QCOMPARE(window().workspace(), MainWindow::Workspace::Head);
+    QCOMPARE(history->stack(), head);
     QTest::keySequence(&window(), QKeySequence::Undo);
     QCOMPARE(headEdits, 0);
     QCOMPARE(animation->index(), 1);
 
     tabs->setCurrentIndex(static_cast<int>(MainWindow::Workspace::Animate));
+    QCOMPARE(history->stack(), animation);
     QTest::keySequence(&window(), QKeySequence::Undo);
     QCOMPARE(animation->index(), 0);
     QCOMPARE(headEdits, 0);

@@ -1,4 +1,4 @@
-// A head exported Z-up plays upright (issue 13): rigHead brings it into the face frame, so its
+// A head exported Z-up plays upright: rigHead brings it into the face frame, so its
 // tears run down its face towards the chin, exactly as the Y-up original's do.
 // Skipped when the default head has not been fetched.
 #include "../support/MissingData.h"

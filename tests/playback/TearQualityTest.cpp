@@ -2,7 +2,7 @@
 // claims, explicit choices replace the level's, a short run at every level (and with every
 // advanced choice) stays finite on the default head, shorter sub-steps take more of them, and
 // a quality change restarts the tears where an effect toggle does not.
-#include "../support/DefaultHeadSkip.h"
+#include "../support/MissingData.h"
 #include "PlaybackTestSupport.h"
 
 #include <lacrima/playback/FrameProducer.h>

@@ -124,7 +124,7 @@ class PlayerWindowTest : public QObject {
   }
 
   // Every malformed fixture, through File ▸ Open (the dialogs answered as a user would) and by
-  // drag and drop: refused with a message naming the file, the demo still loaded (issue 16).
+  // drag and drop: refused with a message naming the file, the demo still loaded.
   void refusesEveryMalformedFile() {
     QCoreApplication::setAttribute(Qt::AA_DontUseNativeDialogs);
     QVERIFY(window_->openFile(kDemo));

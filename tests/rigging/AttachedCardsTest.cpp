@@ -1,5 +1,5 @@
 // Attached cards (the default head's eyebrows and eyelashes) follow the skin under them at
-// every brow and eyelid FAP within its editing range (issue 17).
+// every brow and eyelid FAP within its editing range.
 //
 // The measure, per card vertex v: its distance to the skin under it, posed, against the same
 // distance at rest (cards sit slightly off the skin at rest). "The skin under it" is the skin

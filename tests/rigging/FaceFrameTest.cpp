@@ -1,4 +1,4 @@
-// The face frame (issue 13, FaceFrame.h): measured from the feature points, snapped to the
+// The face frame (FaceFrame.h): measured from the feature points, snapped to the
 // nearest of the 24 axis-aligned rotations, applied before the rig is built. The default head's
 // frame is the identity (nothing changes); the ICT head exported Z-up, facing +y or -z and in
 // millimetres rigs to the same rig.json feature points up to rounding and scale.

@@ -1,4 +1,4 @@
-// Proposing feature points (issue 13): the default head's points carried onto the ICT head from
+// Proposing feature points: the default head's points carried onto the ICT head from
 // the 8 anchors, against the hand-made ICT file; the same in another unit and axis convention;
 // and lacrima-rig --complete.
 #include "../support/MissingData.h"
@@ -28,7 +28,7 @@ using namespace lacrima::rigtest;
 
 namespace {
 
-// Issue 13's targets on the ICT head, in ES0 (measured 0.078 and 0.283, see docs/rig.md,
+// What a proposal must reach on the ICT head, in ES0 (measured 0.078 and 0.283, see docs/rig.md,
 // "Proposing feature points").
 constexpr double kMeanBound = 0.08;
 constexpr double kWorstBound = 0.3;

@@ -475,7 +475,7 @@ class HeadImportTest : public QObject {
              noTriangles.c_str());
   }
 
-  // Hostile heads (issue 16): sizes bounded after instancing, recursion bounded, every vertex
+  // Hostile heads: sizes bounded after instancing, recursion bounded, every vertex
   // finite; each refused with a FileError naming the file and the limit.
   void instancedBeyondTheVertexLimitIsRefused() {
     // 1,024 vertices placed by 5,000 nodes: 5 million vertices from a 100 KB file.

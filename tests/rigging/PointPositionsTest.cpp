@@ -1,4 +1,4 @@
-// Feature-point positions (issue 13): stored beside each vertex, read back exactly, used to
+// Feature-point positions: stored beside each vertex, read back exactly, used to
 // re-snap points when the mesh's vertex order changed, and to refuse a file placed on another
 // mesh. The synthetic sheet makes every case small and exact; the default head checks that a
 // re-snapped file rigs like the original.

@@ -1,4 +1,4 @@
-// Heads that are not what the rig expects (issue 13): files with nothing to rig are a clear
+// Heads that are not what the rig expects: files with nothing to rig are a clear
 // error; a head without eyes rigs with its eye FAPs and tears disabled, and the player's frame
 // producer then simulates no tears; a skin in several pieces or with non-manifold edges,
 // duplicate and zero-area triangles rigs with finite weights and poses, warning where a point's

@@ -1,5 +1,5 @@
 // The skin does not fold under the brow FAPs 31-38 anywhere in their fold-free range, alone or
-// together, nor in any frame of the demo (issue 17: the pale shelf over the bridge of the nose
+// together, nor in any frame of the demo (the pale shelf over the bridge of the nose
 // when both inner brows rose past about 150).
 //
 // The measure, per skin triangle: the dot of its posed unit normal with its rest normal. A

@@ -148,7 +148,7 @@ class FaceViewportTest : public QObject {
   // Resizes reach OGRE at once, whatever happens between them (a collapsed layout gives the
   // widget no height for a moment): a render right after a resize, with no event processed in
   // between, is at the new size and frames the head as a viewport made at that size does. A
-  // stale size made the head fill the view (issue 14: behind a file dialog).
+  // stale size made the head fill the view (behind a file dialog).
   void resizesReachTheRenderAtOnce() {
     const QSize sizes[] = {{400, 300}, {400, 0}, {300, 420}, {200, 150}, {360, 270}};
     for (const QSize& size : sizes) {

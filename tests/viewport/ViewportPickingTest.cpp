@@ -1,4 +1,4 @@
-// What the Head workspace asks of the viewport (issue 13), on a real (virtual) X display:
+// What the Head workspace asks of the viewport, on a real (virtual) X display:
 // project() and pick() agree on the default head from several orbit angles and on a deformed
 // frame, a pixel off the head picks nothing; markers take their colour on screen and leave the
 // picture as it was when cleared; a head in millimetres with +z up is framed whole, and its view

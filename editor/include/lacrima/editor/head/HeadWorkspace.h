@@ -1,5 +1,5 @@
 #pragma once
-// The Head workspace (issue 13): bring your own head. Import a mesh, say what each part is,
+// The Head workspace: bring your own head. Import a mesh, say what each part is,
 // click the 8 anchors on it, let the rest be proposed, drag what is off, and watch the rigged
 // head follow the editor's FAP sliders; then save the feature points and use the head in the
 // project.
