@@ -96,8 +96,7 @@ int main(int argc, char** argv) {
     if (e.message().find("std::bad_alloc") != std::string::npos) return kExitOutOfMemory;
     answer = lacrima::rigging::wire::writeImportRefusal(e.message());
   } catch (const std::exception& e) {
-    answer = lacrima::rigging::wire::writeImportRefusal(std::string("cannot read it: ") +
-                                                        e.what());
+    answer = lacrima::rigging::wire::writeImportRefusal(std::string("cannot read it: ") + e.what());
   }
   return writeAll(static_cast<int>(answerFd), answer) ? 0 : kExitWriteFailed;
 }

@@ -41,8 +41,8 @@ std::string describeSeconds(double seconds) {
 // "SIGSEGV, a segmentation fault": the signal's name, and what it means for a reader.
 std::string describeSignal(int signal) {
   const char* abbreviation = ::sigabbrev_np(signal);
-  std::string name = abbreviation ? std::string("SIG") + abbreviation
-                                  : "signal " + std::to_string(signal);
+  std::string name =
+      abbreviation ? std::string("SIG") + abbreviation : "signal " + std::to_string(signal);
   switch (signal) {
     case SIGSEGV:
       return name + ", a segmentation fault";
@@ -65,8 +65,7 @@ std::string lastLine(std::string_view text) {
   const std::size_t start = text.find_last_of('\n');
   if (start != std::string_view::npos) text.remove_prefix(start + 1);
   std::string line;
-  for (char c : text.substr(0, 200))
-    line += static_cast<unsigned char>(c) < 0x20 ? ' ' : c;
+  for (char c : text.substr(0, 200)) line += static_cast<unsigned char>(c) < 0x20 ? ' ' : c;
   return line;
 }
 
@@ -153,9 +152,9 @@ HeadMesh importHeadMeshIsolated(const std::string& path, const ImportOptions& op
     throw ImportError(ImportFailure::NotStarted, path,
                       "cannot start the importer " + program + ": " + e.code().message());
   }
-  const auto deadline = ChildProcess::Clock::now() +
-                        std::chrono::duration_cast<ChildProcess::Clock::duration>(
-                            std::chrono::duration<double>(limits.seconds));
+  const auto deadline =
+      ChildProcess::Clock::now() + std::chrono::duration_cast<ChildProcess::Clock::duration>(
+                                       std::chrono::duration<double>(limits.seconds));
   switch (child->wait(deadline, options.cancelled, wire::kMaxAnswerBytes)) {
     case ChildProcess::Stop::Cancelled:
       throw ImportError(ImportFailure::Cancelled, path, "import cancelled");

@@ -39,8 +39,7 @@ class Reader {
   std::uint32_t count(const char* what, std::uint32_t limit) {
     const auto n = get<std::uint32_t>(what);
     if (n > limit)
-      fail(std::string(what) + " is " + std::to_string(n) + ", more than " +
-           std::to_string(limit));
+      fail(std::string(what) + " is " + std::to_string(n) + ", more than " + std::to_string(limit));
     return n;
   }
   bool flag(const char* what) {

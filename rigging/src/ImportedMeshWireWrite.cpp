@@ -84,8 +84,8 @@ std::string writeImportedMesh(const HeadMesh& head) {
   w.putFloats(head.normals.data(), 3 * vertices);
   if (hasUvs) w.putFloats(head.uvs.data(), 2 * vertices);
   for (const HeadMaterial& m : head.materials) {
-    check(m.name.size() <= kMaxNameBytes, "a material name over " +
-                                              std::to_string(kMaxNameBytes) + " bytes");
+    check(m.name.size() <= kMaxNameBytes,
+          "a material name over " + std::to_string(kMaxNameBytes) + " bytes");
     w.putString(m.name);
     // A texture path too long to send cannot be opened either: the part gets its plain colour.
     w.putString(m.diffuseTexture.size() <= kMaxNameBytes ? m.diffuseTexture : std::string());

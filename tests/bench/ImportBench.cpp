@@ -115,8 +115,8 @@ void writeGeneratedHead(int rings, int segments, const std::string& path) {
     const double polar = std::numbers::pi * (r + 0.5) / rings;
     for (int s = 0; s < segments; ++s) {
       const double around = 2 * std::numbers::pi * s / segments;
-      out << "v " << 75 * std::sin(polar) * std::sin(around) << ' ' << 110 * std::cos(polar)
-          << ' ' << 95 * std::sin(polar) * std::cos(around) << '\n';
+      out << "v " << 75 * std::sin(polar) * std::sin(around) << ' ' << 110 * std::cos(polar) << ' '
+          << 95 * std::sin(polar) * std::cos(around) << '\n';
     }
   }
   for (int r = 0; r + 1 < rings; ++r)
@@ -182,9 +182,9 @@ int runImport(int argc, char** argv) {
       json.string(row.head);
       json.field("megabytes", row.megabytes);
       json.field("vertices", row.vertices);
-      for (const auto& [name, s] : {std::pair{"in_process_ms", row.inProcess},
-                                    std::pair{"isolated_ms", row.isolated},
-                                    std::pair{"added_ms", row.added}}) {
+      for (const auto& [name, s] :
+           {std::pair{"in_process_ms", row.inProcess}, std::pair{"isolated_ms", row.isolated},
+            std::pair{"added_ms", row.added}}) {
         json.key(name);
         json.beginObject();
         json.field("median", s.median);
@@ -205,8 +205,8 @@ int runImport(int argc, char** argv) {
     std::printf("%s\n", std::move(json).finish().c_str());
     return 0;
   }
-  std::printf("%-26s %6s %8s  %-22s %-22s %-22s\n", "head", "MB", "vertices",
-              "in process ms", "importer process ms", "added ms");
+  std::printf("%-26s %6s %8s  %-22s %-22s %-22s\n", "head", "MB", "vertices", "in process ms",
+              "importer process ms", "added ms");
   const auto cell = [](const Spread& s) {
     char text[64];
     std::snprintf(text, sizeof text, "%7.1f (%.1f-%.1f)", s.median, s.min, s.max);
@@ -216,9 +216,10 @@ int runImport(int argc, char** argv) {
     std::printf("%-26s %6.1f %8d  %-22s %-22s %-22s\n", row.head.c_str(), row.megabytes,
                 row.vertices, cell(row.inProcess).c_str(), cell(row.isolated).c_str(),
                 cell(row.added).c_str());
-  std::printf("medians (min-max) of %d interleaved rounds; target: under %.0f ms added for a 10 MB "
-              "head\n",
-              options.rounds, kAddedTarget);
+  std::printf(
+      "medians (min-max) of %d interleaved rounds; target: under %.0f ms added for a 10 MB "
+      "head\n",
+      options.rounds, kAddedTarget);
   for (const std::string& note : notes) std::printf("note: %s\n", note.c_str());
   return 0;
 }

@@ -22,10 +22,10 @@ namespace lacrima::rigtest {
 enum class Outcome { Hang, Crash, OutOfMemory, Refusal };
 
 struct DamagedFile {
-  QString name;      // file name, its extension the format
+  QString name;  // file name, its extension the format
   QByteArray bytes;
-  Outcome outcome;   // what assimp 5.2.5 does with it
-  QString signal;    // for a crash: "SIGSEGV" or "SIGABRT"
+  Outcome outcome;  // what assimp 5.2.5 does with it
+  QString signal;   // for a crash: "SIGSEGV" or "SIGABRT"
 };
 
 // The generated head exported by assimp as `format` (an assimp exporter id), or empty.

@@ -206,10 +206,14 @@ class ImportProcessTest : public QObject {
   void eachSignalIsNamed_data() {
     QTest::addColumn<QString>("signal");
     QTest::addColumn<QString>("meaning");
-    QTest::newRow("SEGV") << "SEGV" << "a segmentation fault";
-    QTest::newRow("ABRT") << "ABRT" << "one of assimp's own checks failed";
-    QTest::newRow("BUS") << "BUS" << "a bus error";
-    QTest::newRow("FPE") << "FPE" << "an arithmetic fault";
+    QTest::newRow("SEGV") << "SEGV"
+                          << "a segmentation fault";
+    QTest::newRow("ABRT") << "ABRT"
+                          << "one of assimp's own checks failed";
+    QTest::newRow("BUS") << "BUS"
+                         << "a bus error";
+    QTest::newRow("FPE") << "FPE"
+                         << "an arithmetic fault";
   }
   void eachSignalIsNamed() {
     QFETCH(QString, signal);
@@ -238,8 +242,8 @@ class ImportProcessTest : public QObject {
   void aCancelKillsTheChildAtOnce() {
     const QString pidFile = dir_.filePath(QStringLiteral("cancelled.pid"));
     rigging::ImportOptions options;
-    options.importer = script("hang-pid", "echo $$ > '" + pidFile.toUtf8() + "'; exec sleep 60")
-                           .toStdString();
+    options.importer =
+        script("hang-pid", "echo $$ > '" + pidFile.toUtf8() + "'; exec sleep 60").toStdString();
     QElapsedTimer timer;
     timer.start();
     options.cancelled = [&] { return timer.elapsed() > 200; };
@@ -256,8 +260,8 @@ class ImportProcessTest : public QObject {
     // A cancel check that throws stops it the same way, and its exception goes through.
     struct Stop {};
     options.cancelled = [&]() -> bool { throw Stop{}; };
-    QVERIFY_THROWS_EXCEPTION(Stop, (void)rigging::importHeadMeshIsolated(
-                                       anyFile().toStdString(), options));
+    QVERIFY_THROWS_EXCEPTION(
+        Stop, (void)rigging::importHeadMeshIsolated(anyFile().toStdString(), options));
   }
 
   void aGarbledAnswerIsRefused() {
@@ -277,9 +281,9 @@ class ImportProcessTest : public QObject {
     options.importer = dir_.filePath(QStringLiteral("no-such-importer")).toStdString();
     const Failed f = importFailure(anyFile(), options);
     QCOMPARE(f.failure, ImportFailure::NotStarted);
-    QVERIFY2(f.message.contains("cannot start the importer " +
-                                QString::fromStdString(options.importer)),
-             qPrintable(f.message));
+    QVERIFY2(
+        f.message.contains("cannot start the importer " + QString::fromStdString(options.importer)),
+        qPrintable(f.message));
   }
 
   void theChildInheritsNoOtherDescriptor() {

@@ -175,8 +175,9 @@ class ImportedMeshWireTest : public QObject {
     QVERIFY(refusalOf(header(0, 2, 0, 0)).find("expected 0 or 1") != std::string::npos);
     QVERIFY(refusalOf(header(0, 0, wire::kMaxMaterials, 0)).find("materials and parts") !=
             std::string::npos);
-    QVERIFY(refusalOf(header(0, 0, 0, std::numeric_limits<std::uint32_t>::max()))
-                .find("more than") != std::string::npos);
+    QVERIFY(
+        refusalOf(header(0, 0, 0, std::numeric_limits<std::uint32_t>::max())).find("more than") !=
+        std::string::npos);
     // A string announcing 4 GiB.
     std::string refusal(4, '\xff');
     QVERIFY(refusalOf(answerWith(2, refusal)).find("more than") != std::string::npos);

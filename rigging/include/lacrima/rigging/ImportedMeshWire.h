@@ -38,10 +38,10 @@ inline constexpr std::uint32_t kVersion = 1;
 inline constexpr std::size_t kHeaderBytes = 24;
 
 inline constexpr std::uint32_t kMaxVertices = 1u << 22;
-inline constexpr std::uint32_t kMaxTriangles = 1u << 23;     // over all parts
-inline constexpr std::uint32_t kMaxParts = 100'000;          // one per mesh instance
-inline constexpr std::uint32_t kMaxMaterials = 100'000;      // at most one per part
-inline constexpr std::uint32_t kMaxNameBytes = 4096;         // names and texture paths
+inline constexpr std::uint32_t kMaxTriangles = 1u << 23;      // over all parts
+inline constexpr std::uint32_t kMaxParts = 100'000;           // one per mesh instance
+inline constexpr std::uint32_t kMaxMaterials = 100'000;       // at most one per part
+inline constexpr std::uint32_t kMaxNameBytes = 4096;          // names and texture paths
 inline constexpr std::uint32_t kMaxMessageBytes = 64 * 1024;  // a refusal's text
 // The largest answer the bounds allow, rounded up: a reader stops reading beyond it.
 inline constexpr std::uint64_t kMaxAnswerBytes = std::uint64_t{1} << 30;
