@@ -83,10 +83,10 @@ std::unique_ptr<HeadRig> loadHeadRig(const std::string& meshPath, const std::str
   // The mesh is a user's file: read by the importer process (ImportProcess.h). While it reads,
   // the progress report is repeated now and then, so that a caller that stops a job by
   // throwing from it (the editor's RigJob) stops the import too.
-  rigging::ImportOptions import;
+  rigging::ImportOptions importOptions;
   if (options.progress) {
     auto last = std::chrono::steady_clock::now();
-    import.cancelled = [&report, &reading, last]() mutable {
+    importOptions.cancelled = [&report, &reading, last]() mutable {
       const auto now = std::chrono::steady_clock::now();
       if (now - last >= std::chrono::milliseconds(100)) {
         last = now;
@@ -95,7 +95,7 @@ std::unique_ptr<HeadRig> loadHeadRig(const std::string& meshPath, const std::str
       return false;
     };
   }
-  HeadMesh head = rigging::importHeadMeshIsolated(meshPath, import);
+  HeadMesh head = rigging::importHeadMeshIsolated(meshPath, importOptions);
   report(kMeshRead, "reading the feature points");
   rigging::RigOptions rest = options;
   if (options.progress)
