@@ -64,6 +64,7 @@ void compareHeads(const HeadMesh& a, const HeadMesh& b) {
     QCOMPARE(a.submeshes[i].name, b.submeshes[i].name);
     QCOMPARE(a.submeshes[i].material, b.submeshes[i].material);
     QCOMPARE(a.submeshes[i].firstVertex, b.submeshes[i].firstVertex);
+    QCOMPARE(a.submeshes[i].vertexCount, b.submeshes[i].vertexCount);
     QVERIFY(a.submeshes[i].triangles == b.submeshes[i].triangles);
   }
   QCOMPARE(a.materials.size(), b.materials.size());
@@ -71,6 +72,9 @@ void compareHeads(const HeadMesh& a, const HeadMesh& b) {
     QCOMPARE(a.materials[i].name, b.materials[i].name);
     QCOMPARE(a.materials[i].diffuseTexture, b.materials[i].diffuseTexture);
     QCOMPARE(a.materials[i].diffuse, b.materials[i].diffuse);
+    QCOMPARE(a.materials[i].specular, b.materials[i].specular);
+    QCOMPARE(a.materials[i].shininess, b.materials[i].shininess);
+    QCOMPARE(a.materials[i].transparent, b.materials[i].transparent);
   }
 }
 
