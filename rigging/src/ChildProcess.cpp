@@ -145,7 +145,7 @@ ChildProcess::Stop ChildProcess::wait(Clock::time_point deadline,
     if (cancelled && cancelled()) return stop(Stop::Cancelled);
     const auto now = Clock::now();
     if (now >= deadline) return stop(Stop::Deadline);
-    const int wait = static_cast<int>(
+    const int timeout = static_cast<int>(
         std::min(duration_cast<milliseconds>(deadline - now) + milliseconds(1), pollInterval)
             .count());
     pollfd fds[2];
@@ -162,7 +162,7 @@ ChildProcess::Stop ChildProcess::wait(Clock::time_point deadline,
       ::poll(nullptr, 0, 1);
       continue;
     }
-    if (::poll(fds, count, wait) < 0 && errno != EINTR) throwErrno("poll");
+    if (::poll(fds, count, timeout) < 0 && errno != EINTR) throwErrno("poll");
     for (nfds_t i = 0; i < count; ++i) {
       if (!(fds[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
       const bool isAnswer = fds[i].fd == answerPipe_.get();

@@ -140,8 +140,8 @@ HeadMesh importHeadMeshIsolated(const std::string& path, const ImportOptions& op
   if (program.empty())
     throw ImportError(ImportFailure::NotStarted, path,
                       "cannot read it: the importer lacrima-import is neither beside this "
-                      "program nor in ../" LACRIMA_LIBEXEC_FROM_BIN
-                      " (the installation is incomplete)");
+                      "program nor in " LACRIMA_LIBEXEC_FROM_BIN
+                      " from its folder (the installation is incomplete)");
   // The wall clock, kept here, is the limit a user meets; the processor-time limit is a second
   // behind it, for a child whose parent can no longer keep the clock.
   const auto cpuSeconds = static_cast<long long>(std::ceil(limits.seconds)) + 1;
