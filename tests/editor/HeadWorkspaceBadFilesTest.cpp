@@ -23,7 +23,7 @@ using lacrima::rigtest::Outcome;
 
 namespace {
 
-// The time limit the workspace gets here: the hanging file waits this long.
+// The time limit the hanging file gets here: it waits this long.
 constexpr double kLimitSeconds = 1.0;
 
 }  // namespace
@@ -58,10 +58,9 @@ class HeadWorkspaceBadFilesTest : public QObject {
     MainWindow window(options());
     window.setWorkspace(MainWindow::Workspace::Head);
     head::HeadWorkspace& ws = *window.headWorkspace();
-    ws.setImportTimeLimit(kLimitSeconds);
     const QString good = dir_.filePath(QStringLiteral("good-head.obj"));
     QVERIFY(testsupport::writeObj(testsupport::generatedHead(), good));
-    QCOMPARE(importInto(ws, good), std::optional<bool>(true));
+    QVERIFY2(importInto(ws, good) == std::optional<bool>(true), qPrintable(ws.lastError()));
     const std::shared_ptr<const HeadMesh> head = ws.setup().sharedMesh();
     window.model().setChannel(3, 400);  // the project has an edit of its own
     const int edits = window.model().undoStack()->count();
@@ -73,10 +72,13 @@ class HeadWorkspaceBadFilesTest : public QObject {
     for (const rigtest::DamagedFile& file : files) {
       const QString path = rigtest::writeDamagedFile(dir, file);
       QVERIFY(!path.isEmpty());
+      // Only the hanging file waits for the short limit; on a busy machine the others keep the
+      // default, so that a slow start is not taken for a hang.
+      ws.setImportTimeLimit(file.outcome == Outcome::Hang ? kLimitSeconds : 0);
       QElapsedTimer timer;
       timer.start();
       QCOMPARE(importInto(ws, path), std::optional<bool>(false));
-      QVERIFY2(timer.elapsed() < 1000 * (kLimitSeconds + 10), qPrintable(file.name));
+      QVERIFY2(timer.elapsed() < 30000, qPrintable(file.name));  // generous: see above
       const QString error = ws.lastError();
       QVERIFY2(error.startsWith(path + ": "), qPrintable(error));
       const char* cause = file.outcome == Outcome::Hang          ? "did not finish reading it"
@@ -125,7 +127,8 @@ class HeadWorkspaceBadFilesTest : public QObject {
     // The next import works.
     const QString good = dir_.filePath(QStringLiteral("after-cancel.obj"));
     QVERIFY(testsupport::writeObj(testsupport::generatedHead(), good));
-    QCOMPARE(importInto(ws, good), std::optional<bool>(true));
+    ws.setImportTimeLimit(0);
+    QVERIFY2(importInto(ws, good) == std::optional<bool>(true), qPrintable(ws.lastError()));
     QCOMPARE(ws.setup().meshPath(), good);
   }
 };

@@ -155,13 +155,15 @@ class ImportProcessTest : public QObject {
     QFETCH(Outcome, outcome);
     QFETCH(QString, signal);
     QVERIFY(!path.isEmpty());
+    // Only the hanging file gets the short limit: on a busy machine a slow start of the others
+    // must not be taken for a hang.
     rigging::ImportOptions options;
-    options.seconds = kLimit;
+    if (outcome == Outcome::Hang) options.seconds = kLimit;
     const Failed f = importFailure(path, options);
     QVERIFY2(f.threw, "the damaged file was read");
     QVERIFY2(f.message.startsWith(path + ": "), qPrintable(f.message));
-    // Generous: the hang stops at the limit, the others at once.
-    QVERIFY2(f.seconds < kLimit + 10, qPrintable(QString::number(f.seconds)));
+    // Generous: the hang stops at its limit, the others at once (their default limit is 10 s).
+    QVERIFY2(f.seconds < 30, qPrintable(QString::number(f.seconds)));
     switch (outcome) {
       case Outcome::Hang:
         QCOMPARE(f.failure, ImportFailure::TimedOut);
@@ -191,11 +193,12 @@ class ImportProcessTest : public QObject {
       const QString path = writeDamagedFile(dir, file);
       QElapsedTimer timer;
       timer.start();
-      const testsupport::ProcessRun run =
-          testsupport::runProcess(kRigTool,
-                                  {"--mesh", path, "--fdp", dir.filePath("none.fdp.json"),
-                                   "--import-time-limit", "1", "-o", dir.filePath("rig")},
-                                  30000);
+      QStringList arguments = {
+          "--mesh", path, "--fdp", dir.filePath("none.fdp.json"), "-o", dir.filePath("rig")};
+      if (file.outcome == Outcome::Hang)
+        arguments << "--import-time-limit"
+                  << "1";
+      const testsupport::ProcessRun run = testsupport::runProcess(kRigTool, arguments, 30000);
       QCOMPARE(run.exitCode, 1);
       const QString expected = file.outcome == Outcome::Hang
                                    ? QStringLiteral(": assimp did not finish reading it in 1 s")
