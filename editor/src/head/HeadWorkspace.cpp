@@ -83,6 +83,8 @@ HeadWorkspace::HeadWorkspace(editing::EditorModel& model, QWidget* parent)
 }
 
 HeadWorkspace::~HeadWorkspace() {
+  // A running import's worker must not wait for a process nobody will look at.
+  if (importCancelled_) *importCancelled_ = true;
   // The producer refers to the rig; the viewport to neither (it shows shownMesh_).
   producer_.reset();
   rig_.reset();
@@ -161,6 +163,11 @@ QWidget* HeadWorkspace::createToolBar() {
     });
     row->addWidget(b);
   }
+
+  cancelImportButton_ = button(tr("Cancel import"), tr("Stop reading the head file"),
+                               QStringLiteral("head.cancelImport"));
+  connect(cancelImportButton_, &QToolButton::clicked, this, &HeadWorkspace::cancelImport);
+  cancelImportButton_->hide();
 
   progress_ = new QProgressBar(bar);
   progress_->setRange(0, 100);
