@@ -61,7 +61,7 @@ void HeadWorkspace::importHead(const QString& path) {
     return;
   }
   importing_ = true;
-  cancelImportButton_->show();
+  showImportRunning(true);
   setStatus(tr("Importing %1…").arg(QFileInfo(path).fileName()));
   auto cancelled = std::make_shared<std::atomic<bool>>(false);
   importCancelled_ = cancelled;
@@ -74,7 +74,7 @@ void HeadWorkspace::importHead(const QString& path) {
     watcher->deleteLater();
     importing_ = false;
     importCancelled_.reset();
-    cancelImportButton_->hide();
+    showImportRunning(false);
     if (result.cancelled) {
       lastError_ = result.error;
       setStatus(tr("Import of %1 cancelled").arg(QFileInfo(path).fileName()));

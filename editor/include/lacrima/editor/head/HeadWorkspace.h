@@ -133,6 +133,7 @@ class HeadWorkspace : public QWidget {
 
  private:
   QWidget* createToolBar();
+  void showImportRunning(bool running);
   QWidget* createSidePanel();
   void onMeshChanged();
   void onDocumentEdited();
@@ -185,6 +186,8 @@ class HeadWorkspace : public QWidget {
   QToolButton* proposeButton_ = nullptr;
   QToolButton* saveButton_ = nullptr;
   QToolButton* useButton_ = nullptr;
+  QToolButton* importButton_ = nullptr;
+  QToolButton* openPointsButton_ = nullptr;
   QToolButton* cancelImportButton_ = nullptr;
   QTimer* rigDelay_ = nullptr;
   RigJob* rigJob_ = nullptr;
