@@ -1,3 +1,4 @@
+#include <lacrima/common/MediaFiles.h>
 #include <lacrima/rigging/ImportProcess.h>
 #include <lacrima/rigging/ImportedMeshWire.h>
 
@@ -119,12 +120,12 @@ ImportLimits ImportLimits::forFileSize(std::uintmax_t bytes) {
 }
 
 std::string importerProgram() {
-  std::error_code error;
-  const fs::path self = fs::read_symlink("/proc/self/exe", error);
-  if (error) return {};
+  const std::string dir = executableDir();
+  if (dir.empty()) return {};
+  const fs::path bin(dir);
   for (const fs::path& candidate :
-       {self.parent_path() / "lacrima-import",
-        (self.parent_path() / LACRIMA_LIBEXEC_FROM_BIN / "lacrima-import").lexically_normal()})
+       {bin / "lacrima-import",
+        (bin / LACRIMA_LIBEXEC_FROM_BIN / "lacrima-import").lexically_normal()})
     if (::access(candidate.c_str(), X_OK) == 0) return candidate.string();
   return {};
 }
