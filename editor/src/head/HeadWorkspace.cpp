@@ -386,6 +386,46 @@ void HeadWorkspace::fail(const QString& what, const QString& message) {
 
 // --- the document changed ----------------------------------------------------------------
 
+namespace {
+
+// The rig's name for a part's role (RigBuilder's roles), which the scene draws by.
+const char* rigRole(editing::PartRole role) {
+  switch (role) {
+    case editing::PartRole::Skin:
+      return "skin";
+    case editing::PartRole::EyeLeft:
+    case editing::PartRole::CorneaLeft:
+      return "eye_left";
+    case editing::PartRole::EyeRight:
+    case editing::PartRole::CorneaRight:
+      return "eye_right";
+    case editing::PartRole::TeethLower:
+      return "jaw";
+    case editing::PartRole::Tongue:
+      return "tongue";
+    case editing::PartRole::Attached:
+      return "attached";
+    case editing::PartRole::Ignored:
+      return "ignored";
+    case editing::PartRole::TeethUpper:
+    case editing::PartRole::Rigid:
+      break;
+  }
+  return "rigid";
+}
+
+}  // namespace
+
+// The imported head with its parts' guessed roles, so its untextured eyes, skin and teeth are
+// drawn as the rigged head's will be (UntexturedParts.h), from the first look.
+std::shared_ptr<const HeadMesh> HeadWorkspace::withRigRoles(
+    const HeadMesh& mesh, const std::vector<editing::PartRole>& roles) {
+  auto shown = std::make_shared<HeadMesh>(mesh);
+  for (std::size_t i = 0; i < shown->submeshes.size() && i < roles.size(); ++i)
+    shown->submeshes[i].role = rigRole(roles[i]);
+  return shown;
+}
+
 void HeadWorkspace::onMeshChanged() {
   proposalWarnings_.clear();
   shownPositions_ = nullptr;
@@ -393,7 +433,7 @@ void HeadWorkspace::onMeshChanged() {
   rig_.reset();
   checks_.clear();
   updateChecks();
-  shownMesh_ = setup_->sharedMesh();
+  shownMesh_ = withRigRoles(*setup_->sharedMesh(), setup_->roles());
   viewport_->setHead(*shownMesh_);
   viewport_->resetView();
   updatePickable();

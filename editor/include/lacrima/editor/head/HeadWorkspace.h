@@ -49,6 +49,7 @@ class QTimer;
 class QToolButton;
 
 namespace lacrima::editing {
+enum class PartRole;
 class EditorModel;
 class HeadSetup;
 struct ProposalReference;
@@ -139,6 +140,8 @@ class HeadWorkspace : public QWidget {
   void updateReference();
   void updateChecks();
   static QStringList fdpIdsIn(const QString& text);
+  static std::shared_ptr<const HeadMesh> withRigRoles(const HeadMesh& mesh,
+                                                      const std::vector<editing::PartRole>& roles);
   void updatePickable();
   void setStatus(const QString& text);
   void fail(const QString& what, const QString& message);
