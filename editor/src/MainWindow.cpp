@@ -67,6 +67,7 @@ MainWindow::MainWindow(EditorOptions options, QWidget* parent)
   d_->figures->setObjectName(QStringLiteral("statusFigures"));
   d_->figures->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
   d_->figures->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Preferred);
+  d_->figures->setMaximumWidth(720);  // the status bar's messages keep the rest
   statusBar()->addPermanentWidget(d_->figures);
 
   d_->autosaveSoon = new QTimer(this);

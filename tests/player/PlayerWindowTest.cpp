@@ -244,6 +244,26 @@ class PlayerWindowTest : public QObject {
     QVERIFY(window_->playback().scene().simulation.empty());
   }
 
+  // A project brings its own tear quality: opening it says so when it replaces the one shown.
+  void openingAProjectSaysWhenItChangesTheQuality() {
+    const QString project = dir_.filePath("reference.json");
+    QFile file(project);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"format": "lacrima-project", "version": 2, "scene": {"quality": "reference"},
+      "keys": [{"time": 0, "values": {"open_jaw": 0}}, {"time": 1, "values": {"open_jaw": 90}}]})");
+    file.close();
+    QVERIFY(window_->openFile(kDemo));
+    QVERIFY(window_->playback().scene().quality.level == TearQuality::Balanced);
+    QVERIFY(!window_->statusBar()->currentMessage().contains("tear quality"));
+    QVERIFY(window_->openFile(project));
+    QVERIFY(window_->playback().scene().quality.level == TearQuality::Reference);
+    QVERIFY2(window_->statusBar()->currentMessage().contains("tear quality reference"),
+             qPrintable(window_->statusBar()->currentMessage()));
+    QVERIFY(window_->openFile(kDemo));
+    QVERIFY2(window_->statusBar()->currentMessage().contains("tear quality balanced"),
+             qPrintable(window_->statusBar()->currentMessage()));
+  }
+
   // --quality: applied at once, kept over the files opened later, shown in the Scene panel,
   // which can still change it.
   void tearQualityChoice() {
