@@ -332,6 +332,10 @@ void MainWindow::showEvent(QShowEvent* event) {
   // about ten channels at 1440x900.
   if (auto* timeline = findChild<QDockWidget*>(QStringLiteral("dock.timeline")))
     resizeDocks({timeline}, {std::max(300, height() * 2 / 5)}, Qt::Vertical);
+  // Of the column beside the face, the presets keep what their list needs first.
+  auto* presets = findChild<QDockWidget*>(QStringLiteral("dock.presets"));
+  auto* keys = findChild<QDockWidget*>(QStringLiteral("dock.keys"));
+  if (presets && keys) resizeDocks({presets, keys}, {330, 110}, Qt::Vertical);
 }
 
 void MainWindow::updateTitle() {

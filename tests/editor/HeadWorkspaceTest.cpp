@@ -237,7 +237,7 @@ class HeadWorkspaceTest : public QObject {
       for (const std::string& id : check.points)
         QVERIFY2(line.contains(QString::fromStdString(id)), qPrintable(line));
     }
-    const std::string before = ws.currentPoint();
+    const std::string current = ws.currentPoint();
     for (int row = 0; row < ws.checksView()->count(); ++row) {
       QListWidgetItem* item = ws.checksView()->item(row);
       const QStringList ids = item->data(Qt::UserRole).toStringList();
@@ -248,7 +248,7 @@ class HeadWorkspaceTest : public QObject {
       QCOMPARE(QString::fromStdString(ws.currentPoint()), ids.front());
       break;
     }
-    ws.setCurrentPoint(before);
+    ws.setCurrentPoint(current);
 
     // A slider poses the rigged head at once.
     const QImage neutral = view->grabFrame();

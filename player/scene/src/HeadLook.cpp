@@ -78,6 +78,12 @@ HeadLook::HeadLook(OgreRuntime& runtime, const HeadMesh& head, HeadGeometry& geo
     const bool generatedEye = drawsGeneratedEye(head, sub);
     const std::optional<UntexturedKind> untextured = untexturedKind(sub, look);
     const Eigen::Vector4f colour = untextured ? untexturedColour(*untextured) : look.diffuse;
+    // Parts the rig leaves out (tear films, occlusion shells) are not drawn; nor is a lash shell
+    // without its texture, which would only hide the eye behind a solid band.
+    if (sub.role == "ignored" || untextured == UntexturedKind::Lashes) {
+      entity->setVisible(false);
+      continue;
+    }
     Part part;
     part.entity = entity;
     if (sub.name == "skin")
@@ -86,7 +92,7 @@ HeadLook::HeadLook(OgreRuntime& runtime, const HeadMesh& head, HeadGeometry& geo
       part.role = Role::Eye;
     else if (sub.name == "cornea_l" || sub.name == "cornea_r")
       part.role = Role::Cornea;
-    else if (look.transparent || untextured == UntexturedKind::Lashes)
+    else if (look.transparent)
       part.role = Role::Card;
     part.eye = eyeSideOf(sub);
 

@@ -7,8 +7,9 @@
 //         mapped by projecting each eye's vertices along its gaze (+z, the face frame's
 //         forward) onto the disc of the eyeball seen from the front, so the iris and the pupil
 //         sit where the eye looks and turn with it;
-//   skin, teeth, lashes (no texture and a grey colour): a skin tone, an ivory, a dark brown
-//         drawn as a soft, half-transparent card.
+//   skin, teeth (no texture and a grey colour): a skin tone, an ivory;
+//   lashes (attached, no texture, grey): not drawn, since a lash shell without its alpha
+//         texture is a solid band over the eye.
 // A part with a texture, or with a colour of its own (not grey), keeps it. The roles come from
 // the rig (HeadSubmesh::role); the default head's own parts are named by role and textured.
 #include <lacrima/common/HeadMesh.h>
@@ -34,7 +35,8 @@ inline constexpr double kPupilOfIris = 0.42;
 // The generated eye texture, `size` pixels square.
 QImage generatedEyeTexture(int size = 256);
 
-// The colour an untextured part is drawn with instead of `material`'s grey, if any.
+// What an untextured grey part is, if it is one of those above (lashes are hidden, the others
+// drawn in untexturedColour).
 enum class UntexturedKind { Skin, Teeth, Lashes };
 std::optional<UntexturedKind> untexturedKind(const HeadSubmesh& part, const HeadMaterial& material);
 Eigen::Vector4f untexturedColour(UntexturedKind kind);
