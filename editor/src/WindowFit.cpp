@@ -9,10 +9,11 @@
 namespace lacrima::editor {
 
 QRect fitRect(const QRect& wanted, const QRect& room, const QSize& frame) {
-  const QSize most = (room.size() - frame).expandedTo(QSize(1, 1));
+  const QSize margins = frame.expandedTo(QSize(0, 0));  // an unknown frame adds nothing
+  const QSize most = (room.size() - margins).expandedTo(QSize(1, 1));
   QRect fitted(wanted.topLeft(), wanted.size().boundedTo(most));
-  const int right = room.right() - frame.width() - fitted.width() + 1;
-  const int bottom = room.bottom() - frame.height() - fitted.height() + 1;
+  const int right = room.right() - margins.width() - fitted.width() + 1;
+  const int bottom = room.bottom() - margins.height() - fitted.height() + 1;
   fitted.moveTo(std::clamp(fitted.left(), room.left(), std::max(room.left(), right)),
                 std::clamp(fitted.top(), room.top(), std::max(room.top(), bottom)));
   return fitted;

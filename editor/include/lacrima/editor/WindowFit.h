@@ -11,7 +11,7 @@ namespace lacrima::editor {
 
 // `wanted` shrunk to fit `room` (at most its size) and moved inside it; `frame` is what the
 // window manager adds around the window's contents (left, top, right and bottom together).
-QRect fitRect(const QRect& wanted, const QRect& room, const QSize& frame = {});
+QRect fitRect(const QRect& wanted, const QRect& room, const QSize& frame = QSize(0, 0));
 
 // Fits `window` to the available area of the screen under its centre (else its own screen).
 void fitToScreen(QWidget& window);
