@@ -90,21 +90,24 @@ PreviewPanel::PreviewPanel(editing::EditorModel& model, editing::FrameStepClock&
   warnings_ = new viewport::WarningsButton(bar);
   // While paused the tears run on from whatever they were, to show the pose's tears as you
   // work: what the player shows at this time may differ (it has wept since 0 s). Say so.
-  approximate_ = new QLabel(tr("live tears, not the animation's"), bar);
+  approximate_ = new viewport::ElidedLabel(bar);
+  approximate_->setText(tr("live tears, not the animation's"));
   approximate_->setObjectName(QStringLiteral("approximateTears"));
   approximate_->setToolTip(
       tr("Paused, the tears keep running from where they were, for the pose at the playhead. "
          "The animation's own tears at this time (what lacrima-player shows) are the ones "
          "played from 0 s: play from the start to see them."));
-  approximate_->setStyleSheet(QStringLiteral("QLabel { color: #e6b43c; }"));
+  QPalette amber = approximate_->palette();
+  amber.setColor(QPalette::WindowText, QColor(0xe6, 0xb4, 0x3c));
+  approximate_->setPalette(amber);
   approximate_->hide();
   QPalette dim = status_->palette();
   dim.setColor(QPalette::WindowText, dim.color(QPalette::WindowText).darker(125));
   status_->setPalette(dim);
   barLayout->addWidget(tearToggle_);
   barLayout->addWidget(resetTears);
-  barLayout->addWidget(approximate_);
-  barLayout->addWidget(status_, 1);
+  barLayout->addWidget(approximate_, 1);
+  barLayout->addWidget(status_, 2);
   barLayout->addWidget(warnings_);
   layout->addWidget(bar);
 

@@ -125,7 +125,8 @@ class MainWindow : public QMainWindow {
 
   void createDocks();
   void arrangeDocks(Workspace workspace);
-  QByteArray animateLayout() const;  // the docks to save: the Animate workspace's
+  // The docks to save: the Animate workspace's, also while the Head workspace is shown.
+  QByteArray animateLayout() const;
   void createActions();  // every action and what it does; MainMenus.h lays them out
   QAction* makeAction(const QString& name, const QString& text, const QKeySequence& shortcut,
                       const QString& tip = {});

@@ -138,7 +138,7 @@ class PreviewPanel : public QWidget {
   viewport::WarningsButton* warnings_;
   QToolButton* tearToggle_;
   QTimer* idle_;
-  QLabel* approximate_;
+  viewport::ElidedLabel* approximate_;
   bool tearPreview_ = true;
   int simulationThreads_ = 0;
   bool figuresShown_ = false;     // the status line shows the tear figures (not the head's)
