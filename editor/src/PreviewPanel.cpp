@@ -106,7 +106,8 @@ PreviewPanel::PreviewPanel(editing::EditorModel& model, editing::FrameStepClock&
   status_->setPalette(dim);
   barLayout->addWidget(tearToggle_);
   barLayout->addWidget(resetTears);
-  barLayout->addWidget(approximate_, 1);
+  // The note first: the status is in the status bar too.
+  barLayout->addWidget(approximate_, 3);
   barLayout->addWidget(status_, 2);
   barLayout->addWidget(warnings_);
   layout->addWidget(bar);
