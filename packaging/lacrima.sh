@@ -7,7 +7,8 @@
 #   in ./build-sanitize and runs their suites and a replay of every fuzz corpus there; sanitize
 #   does only that part, and leaks builds lacrima-player and lacrima-rig there and runs them under
 #   LeakSanitizer on the demo and the heads. fuzz builds the libFuzzer targets of tests/fuzz with clang in
-#   ./build-fuzz and runs each for SECONDS (default 60). soak plays the demo in a loop headless
+#   ./build-fuzz and runs each for SECONDS (default 60), then assimp's PLY, glTF/GLB, FBX, DAE and
+#   3MF readers through the importer process, keeping what crashes or hangs assimp as its findings. soak plays the demo in a loop headless
 #   (xvfb-run) for SECONDS (default 600) and prints the player's resident memory as it goes.
 #   package builds the Debian package into ./build (packaging/build-deb.sh, docs/packaging.md).
 #   Idempotent; prints only what it does. Run as root on Debian 12, or as a user with sudo.
@@ -228,6 +229,42 @@ run_fuzzers() {
       echo "lacrima: $target: see $log" >&2
     fi
   done <"$fuzz_build/fuzz-targets.txt"
+  run_assimp_fuzzers "$seconds" "$fuzz_build" || found=1
+  return $found
+}
+
+# assimp's readers of PLY, glTF/GLB, FBX, DAE and 3MF, each for $1 seconds through the importer
+# process, as the programs read a user's head. A crash, hang or exhausted memory of the child is
+# a finding of assimp: the target keeps the input (and its message, .txt) in
+# build-fuzz/assimp-findings/TARGET/ and goes on, and it is counted here, not failed on; that is
+# what the isolation is for. Only a finding of the target itself (our reading side) fails.
+run_assimp_fuzzers() {
+  local seconds=$1 fuzz_build=$2 target seeds log work kept found=0
+  echo "assimp through lacrima-import (crashes, hangs and exhausted memory are assimp's findings):"
+  printf '%-22s %12s %10s %8s %8s %8s  %s\n' target executions "exec/s" crashes hangs memory kept
+  while read -r target seeds; do
+    [ -n "$target" ] || continue
+    work="$fuzz_build/corpus/$target"
+    kept="$fuzz_build/assimp-findings/$target"
+    mkdir -p "$work" "$kept" "$fuzz_build/findings/$target"
+    log="$fuzz_build/findings/$target.log"
+    LACRIMA_ASSIMP_FINDINGS="$kept" LSAN_OPTIONS="suppressions=$root/tests/fuzz/lsan.supp" \
+      "$fuzz_build/bin/$target" -max_total_time="$seconds" -print_final_stats=1 -timeout=10 \
+        -rss_limit_mb=2048 -artifact_prefix="$fuzz_build/findings/$target/" "$work" \
+        "$root/tests/fuzz/corpus/$seeds" >"$log" 2>&1 || true
+    local execs rate ours
+    execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
+    rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -n 1)
+    ours=$(find "$fuzz_build/findings/$target" -type f | wc -l)
+    printf '%-22s %12s %10s %8s %8s %8s  %s\n' "$target" "${execs:-?}" "${rate:-?}" \
+      "$(find "$kept" -name 'crash-*' ! -name '*.txt' | wc -l)" \
+      "$(find "$kept" -name 'hang-*' ! -name '*.txt' | wc -l)" \
+      "$(find "$kept" -name 'memory-*' ! -name '*.txt' | wc -l)" "$kept"
+    if [ "$ours" -gt 0 ] || [ -z "$execs" ]; then
+      found=1
+      echo "lacrima: $target: a finding on our side of the pipe; see $log" >&2
+    fi
+  done <"$fuzz_build/fuzz-assimp-targets.txt"
   return $found
 }
 

@@ -32,7 +32,8 @@ done
 
 contents=$(dpkg-deb -c "$deb" | awk '{print $NF}' | sed 's|^\./|/|')
 for path in /usr/bin/lacrima-editor /usr/bin/lacrima-player /usr/bin/lacrima-fap \
-    /usr/bin/lacrima-rig /usr/bin/lacrima-fetch-head /usr/share/lacrima/demo/crying.fap \
+    /usr/bin/lacrima-rig /usr/bin/lacrima-fetch-head /usr/libexec/lacrima/lacrima-import \
+    /usr/share/lacrima/demo/crying.fap \
     /usr/share/lacrima/default-head.fdp.json /usr/share/applications/lacrima-player.desktop \
     /usr/share/applications/lacrima-editor.desktop /usr/share/mime/packages/lacrima.xml \
     /usr/share/metainfo/io.github.lacrima.player.metainfo.xml \

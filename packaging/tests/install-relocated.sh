@@ -17,7 +17,7 @@ mkdir -p "$(dirname "$prefix")"
 mv "$work/staged" "$prefix"
 
 for path in bin/lacrima-editor bin/lacrima-player bin/lacrima-fap bin/lacrima-rig \
-    bin/lacrima-fetch-head share/lacrima/default-head.fdp.json share/lacrima/demo/crying.fap \
+    bin/lacrima-fetch-head libexec/lacrima/lacrima-import share/lacrima/default-head.fdp.json share/lacrima/demo/crying.fap \
     share/lacrima/demo/crying.lacrima share/applications/lacrima-player.desktop \
     share/applications/lacrima-editor.desktop share/mime/packages/lacrima.xml \
     share/metainfo/io.github.lacrima.player.metainfo.xml \
@@ -43,6 +43,20 @@ echo "lacrima-fap check crying.fap: $installed"
 "$prefix/bin/lacrima-fap" check "$work/converted.lacrima" | grep -q ': project ' ||
   fail "lacrima-fap convert -o X.lacrima did not write a project"
 echo "lacrima-fap reads and writes .lacrima projects"
+
+# A user's head is read by the installed importer in libexec/lacrima: a file without faces comes
+# back refused in its words; without the importer the program says so and runs nothing else.
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\n' >"$work/points.obj"
+message=$("$prefix/bin/lacrima-rig" --mesh "$work/points.obj" --fdp "$work/none.fdp.json" \
+  -o "$work/none" 2>&1) && fail "lacrima-rig rigged a file without faces"
+case "$message" in *"points.obj: no faces in it"*) ;; *) fail "no refusal from the importer: $message" ;; esac
+echo "a user's head through libexec/lacrima/lacrima-import: $(grep "lacrima-rig:" <<<"$message")"
+mv "$prefix/libexec/lacrima/lacrima-import" "$work/lacrima-import.moved"
+message=$("$prefix/bin/lacrima-rig" --mesh "$work/points.obj" --fdp "$work/none.fdp.json" \
+  -o "$work/none" 2>&1) && fail "lacrima-rig ran without its importer"
+case "$message" in *"lacrima-import is neither beside"*) ;; *) fail "no missing-importer message: $message" ;; esac
+mv "$work/lacrima-import.moved" "$prefix/libexec/lacrima/lacrima-import"
+echo "without it: $(grep "lacrima-rig:" <<<"$message")"
 
 # Without the head, the installed programs name the installed command.
 empty=$work/empty-cache

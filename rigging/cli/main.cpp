@@ -15,7 +15,7 @@
 #include <lacrima/rigging/FaceFrame.h>
 #include <lacrima/rigging/FeaturePointFile.h>
 #include <lacrima/rigging/FeaturePointProposal.h>
-#include <lacrima/rigging/MeshImport.h>
+#include <lacrima/rigging/ImportProcess.h>
 #include <lacrima/rigging/RigBuilder.h>
 #include <lacrima/rigging/RigChecks.h>
 #include <lacrima/rigging/RigDescription.h>
@@ -142,6 +142,14 @@ int run(QCommandLineParser& parser) {
   if (!sizeOk || panelSize < 100 || panelSize > 4000)
     throw UsageError("--image-size: expected 100 to 4000 pixels");
   const FapValues values = parseFapValues(parser.values("fap"));
+  rigging::ImportOptions importOptions;
+  if (parser.isSet("import-time-limit")) {
+    bool ok = false;
+    const double seconds = parser.value("import-time-limit").toDouble(&ok);
+    if (!ok || !(seconds >= 0.1 && seconds <= 86400))
+      throw UsageError("--import-time-limit: expected 0.1 to 86400 seconds");
+    importOptions.seconds = seconds;
+  }
 
   QElapsedTimer timer;
   timer.start();
@@ -156,7 +164,9 @@ int run(QCommandLineParser& parser) {
     mesh = rigging::loadDefaultHead();
     if (fdpPath.empty()) fdpPath = findMediaFile("default-head.fdp.json");
   } else {
-    mesh = rigging::importHeadMesh(parser.value("mesh").toStdString());
+    // A user's file is read by the importer process: a file that crashes or hangs assimp costs
+    // that process, and comes back here as a FileError naming the file.
+    mesh = rigging::importHeadMeshIsolated(parser.value("mesh").toStdString(), importOptions);
   }
   Warnings warnings;
   rigging::FeaturePointFile fdp = rigging::readFeaturePointFile(fdpPath, &warnings);
@@ -321,6 +331,10 @@ int main(int argc, char** argv) {
       {"fap", "A FAP value for --pose-image, e.g. 3=400 or open_jaw=400 (repeatable).",
        "FAP=VALUE"},
       {"image-size", "Pixels per image panel (default 600).", "N", "600"},
+      {"import-time-limit",
+       "Longest the importer process may take to read --mesh (default 10 s plus 3 s per MiB "
+       "of the file); past it the import stops with an error.",
+       "SECONDS"},
   });
   if (!parser.parse(QCoreApplication::arguments())) {
     std::fprintf(stderr, "lacrima-rig: %s\n(see lacrima-rig --help)\n",

@@ -6,7 +6,7 @@
 #include <lacrima/rigging/ClosestSurfacePoints.h>
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/rigging/FeaturePointProposal.h>
-#include <lacrima/rigging/MeshImport.h>
+#include <lacrima/rigging/ImportProcess.h>
 
 #include <QFileInfo>
 
@@ -59,8 +59,8 @@ std::shared_ptr<const ProposalReference> ProposalReference::loadDefault() {
 HeadSetup::HeadSetup(QObject* parent) : QObject(parent) {}
 HeadSetup::~HeadSetup() = default;
 
-HeadMesh HeadSetup::importMesh(const QString& path) {
-  return rigging::importHeadMesh(path.toStdString());
+HeadMesh HeadSetup::importMesh(const QString& path, const rigging::ImportOptions& options) {
+  return rigging::importHeadMeshIsolated(path.toStdString(), options);
 }
 
 void HeadSetup::setMesh(const QString& path, HeadMesh mesh) {

@@ -91,6 +91,8 @@ HeadWorkspace::HeadWorkspace(editing::EditorModel& model, QWidget* parent)
 }
 
 HeadWorkspace::~HeadWorkspace() {
+  // A running import's worker must not wait for a process nobody will look at.
+  if (importCancelled_) *importCancelled_ = true;
   // The producer refers to the rig; the viewport to neither (it shows shownMesh_).
   producer_.reset();
   rig_.reset();
@@ -108,23 +110,24 @@ QWidget* HeadWorkspace::createToolBar() {
     row->addWidget(b);
     return b;
   };
-  connect(button(tr("Import…"), tr("Read a head mesh (any format assimp reads)"),
-                 QStringLiteral("head.import")),
-          &QToolButton::clicked, this, [this] {
-            const QString path = QFileDialog::getOpenFileName(
-                this, tr("Import a head"), {},
-                tr("Meshes (*.obj *.fbx *.glb *.gltf *.dae *.ply *.stl *.3ds *.blend);;"
-                   "All files (*)"));
-            if (!path.isEmpty()) importHead(path);
-          });
-  connect(button(tr("Open points…"), tr("Open a feature-point file (.fdp.json) for this head"),
-                 QStringLiteral("head.open")),
-          &QToolButton::clicked, this, [this] {
-            const QString path = QFileDialog::getOpenFileName(
-                this, tr("Open feature points"), QFileInfo(setup_->meshPath()).absolutePath(),
-                tr("Feature points (*.fdp.json *.json)"));
-            if (!path.isEmpty()) openPoints(path);
-          });
+  importButton_ = button(tr("Import…"), tr("Read a head mesh (any format assimp reads)"),
+                         QStringLiteral("head.import"));
+  connect(importButton_, &QToolButton::clicked, this, [this] {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Import a head"), {},
+        tr("Meshes (*.obj *.fbx *.glb *.gltf *.dae *.ply *.stl *.3ds *.blend);;"
+           "All files (*)"));
+    if (!path.isEmpty()) importHead(path);
+  });
+  openPointsButton_ =
+      button(tr("Open points…"), tr("Open a feature-point file (.fdp.json) for this head"),
+             QStringLiteral("head.open"));
+  connect(openPointsButton_, &QToolButton::clicked, this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open feature points"),
+                                                      QFileInfo(setup_->meshPath()).absolutePath(),
+                                                      tr("Feature points (*.fdp.json *.json)"));
+    if (!path.isEmpty()) openPoints(path);
+  });
   proposeButton_ =
       button(tr("Propose"), tr("Place every point not placed by hand, from the 8 anchors"),
              QStringLiteral("head.propose"));
@@ -170,6 +173,16 @@ QWidget* HeadWorkspace::createToolBar() {
     row->addWidget(b);
   }
 
+  // Shown in place of Import… and Open points… while an import runs, so the bar never grows
+  // (a window grown to fit a wider bar would not shrink back).
+  cancelImportButton_ = new QToolButton(bar);
+  cancelImportButton_->setText(tr("Cancel import"));
+  cancelImportButton_->setToolTip(tr("Stop reading the head file"));
+  cancelImportButton_->setObjectName(QStringLiteral("head.cancelImport"));
+  row->insertWidget(row->indexOf(importButton_), cancelImportButton_);
+  connect(cancelImportButton_, &QToolButton::clicked, this, &HeadWorkspace::cancelImport);
+  cancelImportButton_->hide();
+
   progress_ = new QProgressBar(bar);
   progress_->setRange(0, 100);
   progress_->setMaximumWidth(260);
@@ -186,6 +199,19 @@ QWidget* HeadWorkspace::createToolBar() {
   row->addWidget(status_, 1);
   for (QToolButton* b : {proposeButton_, saveButton_, useButton_}) b->setEnabled(false);
   return bar;
+}
+
+void HeadWorkspace::showImportRunning(bool running) {
+  // Hide before showing: a child shown lays its window out at once, and a window grown to fit
+  // both for that moment would not shrink back.
+  const std::initializer_list<QWidget*> idle = {importButton_, openPointsButton_};
+  if (running) {
+    for (QWidget* w : idle) w->hide();
+    cancelImportButton_->show();
+  } else {
+    cancelImportButton_->hide();
+    for (QWidget* w : idle) w->show();
+  }
 }
 
 // Checking a rig is not animating: say that the sliders pose without keys, and offer the way

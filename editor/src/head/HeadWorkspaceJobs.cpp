@@ -9,6 +9,7 @@
 #include <lacrima/exporters/FeaturePointReference.h>
 #include <lacrima/playback/FrameProducer.h>
 #include <lacrima/playback/HeadRig.h>
+#include <lacrima/rigging/ImportProcess.h>
 #include <lacrima/viewport/FaceViewport.h>
 
 #include <QElapsedTimer>
@@ -21,6 +22,7 @@
 #include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
+#include <atomic>
 
 namespace lacrima::editor::head {
 namespace {
@@ -30,6 +32,7 @@ QString text(const std::exception& e) { return QString::fromUtf8(e.what()); }
 struct ImportResult {
   HeadMesh mesh;
   QString error;
+  bool cancelled = false;
   double milliseconds = 0;
 };
 
@@ -58,12 +61,26 @@ void HeadWorkspace::importHead(const QString& path) {
     return;
   }
   importing_ = true;
+  showImportRunning(true);
   setStatus(tr("Importing %1…").arg(QFileInfo(path).fileName()));
+  auto cancelled = std::make_shared<std::atomic<bool>>(false);
+  importCancelled_ = cancelled;
+  rigging::ImportOptions options;
+  if (importSeconds_ > 0) options.seconds = importSeconds_;
+  options.cancelled = [cancelled] { return cancelled->load(); };
   auto* watcher = new QFutureWatcher<ImportResult>(this);
   connect(watcher, &QFutureWatcher<ImportResult>::finished, this, [this, watcher, path] {
     ImportResult result = watcher->result();
     watcher->deleteLater();
     importing_ = false;
+    importCancelled_.reset();
+    showImportRunning(false);
+    if (result.cancelled) {
+      lastError_ = result.error;
+      setStatus(tr("Import of %1 cancelled").arg(QFileInfo(path).fileName()));
+      emit importFinished(false);
+      return;
+    }
     if (result.error.isEmpty()) {
       try {
         setup_->setMesh(path, std::move(result.mesh));
@@ -82,19 +99,27 @@ void HeadWorkspace::importHead(const QString& path) {
                   .arg(result.milliseconds, 0, 'f', 0));
     emit importFinished(true);
   });
-  // assimp takes a good part of a second on a large head: never on the GUI thread.
-  watcher->setFuture(QtConcurrent::run([path] {
+  // assimp takes a good part of a second on a large head: never on the GUI thread. The worker
+  // waits for the importer process, which a cancel kills.
+  watcher->setFuture(QtConcurrent::run([path, options] {
     ImportResult r;
     QElapsedTimer timer;
     timer.start();
     try {
-      r.mesh = editing::HeadSetup::importMesh(path);
+      r.mesh = editing::HeadSetup::importMesh(path, options);
+    } catch (const rigging::ImportError& e) {
+      r.error = text(e);
+      r.cancelled = e.failure() == rigging::ImportFailure::Cancelled;
     } catch (const std::exception& e) {
       r.error = text(e);
     }
     r.milliseconds = timer.nsecsElapsed() / 1e6;
     return r;
   }));
+}
+
+void HeadWorkspace::cancelImport() {
+  if (importCancelled_) *importCancelled_ = true;
 }
 
 void HeadWorkspace::proposePoints() {

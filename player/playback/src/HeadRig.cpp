@@ -4,9 +4,10 @@
 #include <lacrima/playback/HeadRig.h>
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/rigging/FeaturePointFile.h>
-#include <lacrima/rigging/MeshImport.h>
+#include <lacrima/rigging/ImportProcess.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <initializer_list>
 #include <stdexcept>
@@ -81,16 +82,24 @@ std::unique_ptr<HeadRig> loadHeadRig(const std::string& meshPath, const std::str
   const auto report = [&](double fraction, std::string_view stage) {
     if (options.progress) options.progress(fraction, stage);
   };
-  report(0.0, "reading " + std::filesystem::path(meshPath).filename().string());
-  HeadMesh head;
-  try {
-    head = rigging::importHeadMesh(meshPath);
-  } catch (const FileError&) {
-    throw;
-  } catch (const std::runtime_error& e) {
-    // importHeadMesh's message already names the file; keep it as the location for dialogs.
-    throw FileError({meshPath, 0, 0}, e.what());
+  const std::string reading = "reading " + std::filesystem::path(meshPath).filename().string();
+  report(0.0, reading);
+  // The mesh is a user's file: read by the importer process (ImportProcess.h). While it reads,
+  // the progress report is repeated now and then, so that a caller that stops a job by
+  // throwing from it (the editor's RigJob) stops the import too.
+  rigging::ImportOptions importOptions;
+  if (options.progress) {
+    auto last = std::chrono::steady_clock::now();
+    importOptions.cancelled = [&report, &reading, last]() mutable {
+      const auto now = std::chrono::steady_clock::now();
+      if (now - last >= std::chrono::milliseconds(100)) {
+        last = now;
+        report(0.0, reading);
+      }
+      return false;
+    };
   }
+  HeadMesh head = rigging::importHeadMeshIsolated(meshPath, importOptions);
   report(kMeshRead, "reading the feature points");
   rigging::RigOptions rest = options;
   if (options.progress)

@@ -6,6 +6,9 @@
 
 namespace lacrima::rigging {
 
+// Runs assimp in this process: a damaged file can crash or hang it. The programs read a user's
+// file with importHeadMeshIsolated (ImportProcess.h), which runs this in lacrima-import.
+//
 // Reads `path` into a HeadMesh, without changing its units or axes (the head must already be in
 // the face frame: +y up, +x the face's own left, +z forward).
 //

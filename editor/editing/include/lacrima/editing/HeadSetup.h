@@ -17,6 +17,7 @@
 #include <lacrima/common/HeadMesh.h>
 #include <lacrima/editing/HeadSetupRoles.h>
 #include <lacrima/rigging/FeaturePointFile.h>
+#include <lacrima/rigging/ImportProcess.h>
 
 #include <Eigen/Core>
 #include <QObject>
@@ -61,9 +62,11 @@ class HeadSetup : public QObject {
   ~HeadSetup() override;
 
   // --- the head -------------------------------------------------------------------------
-  // Reads a mesh with rigging::importHeadMesh. Throws std::runtime_error naming the file. Safe
-  // to call on any thread (it touches no document).
-  static HeadMesh importMesh(const QString& path);
+  // Reads a mesh in the importer process (rigging::importHeadMeshIsolated: a file that crashes
+  // or hangs assimp costs that process, not the editor). Throws rigging::ImportError naming the
+  // file; options.cancelled stops it at once. Safe to call on any thread (it touches no
+  // document).
+  static HeadMesh importMesh(const QString& path, const rigging::ImportOptions& options = {});
   // Starts a new document on `mesh` (read from `path`): guessed roles, no points, empty undo
   // history. A mesh with no triangles is refused (std::invalid_argument) and nothing changes.
   void setMesh(const QString& path, HeadMesh mesh);

@@ -36,6 +36,7 @@
 #include <QStringList>
 #include <QWidget>
 
+#include <atomic>
 #include <map>
 #include <memory>
 #include <string>
@@ -86,9 +87,15 @@ class HeadWorkspace : public QWidget {
   QListWidget* checksView() const { return checksView_; }
 
   // --- actions (no dialogs) ---------------------------------------------------------------
-  // Reads the mesh on a worker thread; importFinished(ok) tells how it went. On failure the
-  // workspace keeps the head it had.
+  // Reads the mesh on a worker thread, through the importer process (a file that crashes or
+  // hangs assimp costs that process only); importFinished(ok) tells how it went. On failure or
+  // cancel the workspace keeps the head it had.
   void importHead(const QString& path);
+  // Stops a running import at once (its process is killed); importFinished(false) follows.
+  void cancelImport();
+  bool importing() const { return importing_; }
+  // How long an import may take; 0 (the default) lets the file's size decide (ImportProcess.h).
+  void setImportTimeLimit(double seconds) { importSeconds_ = seconds; }
   // Proposes every point not placed by hand, on a worker thread; proposalFinished(ok).
   void proposePoints();
   bool saveTo(const QString& path);
@@ -130,6 +137,7 @@ class HeadWorkspace : public QWidget {
 
  private:
   QWidget* createToolBar();
+  void showImportRunning(bool running);
   QWidget* createSidePanel();
   QWidget* createPoseBar(QWidget* parent);
   void onMeshChanged();
@@ -187,6 +195,9 @@ class HeadWorkspace : public QWidget {
   QToolButton* proposeButton_ = nullptr;
   QToolButton* saveButton_ = nullptr;
   QToolButton* useButton_ = nullptr;
+  QToolButton* importButton_ = nullptr;
+  QToolButton* openPointsButton_ = nullptr;
+  QToolButton* cancelImportButton_ = nullptr;
   QTimer* rigDelay_ = nullptr;
   RigJob* rigJob_ = nullptr;
 
@@ -194,6 +205,8 @@ class HeadWorkspace : public QWidget {
   std::string dragged_;  // the point whose marker is being dragged
   QPointF pressAt_;      // where the marker drag started
   bool importing_ = false;
+  std::shared_ptr<std::atomic<bool>> importCancelled_;  // the running import's cancel flag
+  double importSeconds_ = 0;
   bool proposing_ = false;
   bool interactive_ = true;
   QString lastError_;

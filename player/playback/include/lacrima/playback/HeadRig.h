@@ -33,7 +33,8 @@ struct HeadRig {
 // The default head (fetched at set-up) with media/default-head.fdp.json. Throws FileError
 // naming what is missing when the head has not been fetched (packaging/fetch-default-head.sh).
 std::unique_ptr<HeadRig> loadDefaultHeadRig();
-// Any mesh assimp reads, with its feature-point file (lacrima-fdp v1). Throws FileError.
+// Any mesh assimp reads, read in the importer process (ImportProcess.h), with its feature-point
+// file (lacrima-fdp v1). Throws FileError. A progress callback that throws stops the import too.
 // `options.progress` reports the whole load: reading the mesh, the feature points, the rig.
 std::unique_ptr<HeadRig> loadHeadRig(const std::string& meshPath, const std::string& fdpPath,
                                      const rigging::RigOptions& options = {});
