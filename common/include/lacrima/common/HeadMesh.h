@@ -25,12 +25,13 @@ struct HeadSubmesh {
   std::string name;   // role for the default head: skin, eye_l, eye_r, cornea_l, cornea_r,
                       // teeth_upper, teeth_lower, tongue, eyelashes, eyebrows; else as loaded
   int material = -1;  // index into HeadMesh::materials, -1 for none
-  // Its role in the rig (skin, eye_left, eye_right, jaw, tongue, attached, ignored, rigid), set
-  // when the head is rigged; empty before. The scene draws untextured parts by it.
-  std::string role;
   int firstVertex = 0;
   int vertexCount = 0;
   std::vector<Eigen::Vector3i> triangles;  // global vertex indices, counter-clockwise outside
+  // Its role in the rig (skin, eye_left, eye_right, jaw, tongue, attached, ignored, rigid), set
+  // when the head is rigged; empty before. The scene draws untextured parts by it. Last and
+  // defaulted, so that a part written as {name, material, first, count, triangles} needs none.
+  std::string role = {};
 };
 
 struct HeadMesh {
