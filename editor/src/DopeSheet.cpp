@@ -34,15 +34,21 @@ DopeSheet::DopeSheet(editing::EditorModel& model, QWidget* parent)
          "copy · Ctrl+V paste at the playhead · Shift+D duplicate to the playhead · F frame all"));
 
   auto* bar = new QHBoxLayout;
-  bar->setContentsMargins(4, 2, 4, 2);
+  bar->setContentsMargins(4, 2, 8, 2);
+  // The filter's long placeholder must not claim the bar: the buttons after it keep their room.
+  filter_->setMinimumWidth(120);
+  filter_->setMaximumWidth(520);
   bar->addWidget(filter_, 1);
   bar->addWidget(onlyAnimated_);
+  bar->addStretch(0);
+  help->setMinimumWidth(help->sizeHint().width());
   bar->addWidget(help);
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->setSpacing(0);
   layout->addLayout(bar);
   layout->addWidget(view_, 1);
+  setFocusProxy(view_);  // focusing the sheet (after a time is entered) focuses its marks
 
   connect(filter_, &QLineEdit::textChanged, view_, &DopeSheetView::setFilterText);
   connect(onlyAnimated_, &QToolButton::toggled, view_, &DopeSheetView::setOnlyAnimated);

@@ -9,6 +9,7 @@
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editor/EditorTheme.h>
+#include <lacrima/editor/TimeAxis.h>
 
 #include <QPainter>
 #include <QPainterPath>
@@ -33,15 +34,6 @@ double niceStep(double minimum) {
   for (double m : {1.0, 2.0, 5.0, 10.0})
     if (m * power >= minimum) return m * power;
   return 10.0 * power;
-}
-
-// As many decimals as the step needs (0.25 s steps label 0.25, 0.50, 0.75).
-QString timeLabel(double seconds, double step) {
-  int decimals = 0;
-  while (decimals < 3 && std::abs(step * std::pow(10.0, decimals) -
-                                  std::round(step * std::pow(10.0, decimals))) > 1e-9)
-    ++decimals;
-  return QString::number(seconds, 'f', decimals) + QStringLiteral("s");
 }
 
 }  // namespace
@@ -128,7 +120,7 @@ void GraphEditor::paintRuler(QPainter& p) const {
     p.setPen(QPen(pal.color(QPalette::WindowText).darker(130), 1));
     p.drawLine(QPointF(x, kRulerHeight - 8), QPointF(x, kRulerHeight));
     // Seconds, and the frame number when frames are whole at this step.
-    QString label = timeLabel(t, step);
+    QString label = rulerLabel(t, step);
     const double frames = t / frame;
     if (std::abs(frames - std::round(frames)) < 1e-6)
       label += QStringLiteral("  f%1").arg(static_cast<long long>(std::llround(frames)));

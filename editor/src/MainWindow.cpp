@@ -16,8 +16,10 @@
 #include <lacrima/editor/SliderPanel.h>
 #include <lacrima/editor/TimelineWidget.h>
 #include <lacrima/editor/TransportBar.h>
+#include <lacrima/editor/WindowFit.h>
 #include <lacrima/editor/head/HeadWorkspace.h>
 #include <lacrima/viewport/EffectsPanel.h>
+#include <lacrima/viewport/ElidedLabel.h>
 
 #include <QApplication>
 #include <QClipboard>
@@ -40,6 +42,8 @@
 #include <QUndoView>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace lacrima::editor {
 
 MainWindow::MainWindow(EditorOptions options, QWidget* parent)
@@ -58,7 +62,12 @@ MainWindow::MainWindow(EditorOptions options, QWidget* parent)
   d_->recentMenu = buildMainMenus(*this, [this](const QString& name) { return action(name); });
   rebuildRecentMenu();
 
-  d_->figures = new QLabel(this);
+  // The figures repeat the preview's status, which can be long: cut to fit, never wider.
+  d_->figures = new viewport::ElidedLabel(this);
+  d_->figures->setObjectName(QStringLiteral("statusFigures"));
+  d_->figures->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+  d_->figures->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Preferred);
+  d_->figures->setMaximumWidth(720);  // the status bar's messages keep the rest
   statusBar()->addPermanentWidget(d_->figures);
 
   d_->autosaveSoon = new QTimer(this);
@@ -88,7 +97,9 @@ MainWindow::MainWindow(EditorOptions options, QWidget* parent)
   QSettings settings;
   resize(1440, 900);
   restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
-  restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+  d_->docksSized = restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+  // The default size, or one saved on a larger screen, fitted to the screen it opens on.
+  fitToScreen(*this);
 
   newDocument();
   if (d_->options.offerRecovery) checkForRecovery();
@@ -110,13 +121,35 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::setWorkspace(Workspace workspace) {
+  const Workspace before = this->workspace();
   d_->workspaceStack->setCurrentIndex(static_cast<int>(workspace));
+  if (workspace != before) arrangeDocks(workspace);
+  // Checking a rig is not animating: in the Head workspace the sliders pose without keys.
+  d_->model->setPosingOnly(workspace == Workspace::Head);
   const QSignalBlocker block(d_->workspaces);
   d_->workspaces->setCurrentIndex(static_cast<int>(workspace));
   // Edit ▸ Undo and Redo (and their shortcuts) act on the history of the workspace shown.
   d_->undoGroup->setActiveStack(workspace == Workspace::Head
                                     ? d_->headWorkspace->setup().undoStack()
                                     : d_->model->undoStack());
+}
+
+// The Head workspace needs the room: its viewport, parts, points, reference picture and checks
+// beside the channels. The presets, keys, layers, history and timeline act on the animation, so
+// they step aside there and come back as they were.
+void MainWindow::arrangeDocks(Workspace workspace) {
+  if (workspace == Workspace::Head) {
+    d_->animateLayout = saveState();
+    for (QDockWidget* dock : findChildren<QDockWidget*>())
+      if (dock->objectName() != QLatin1String("dock.channels")) dock->hide();
+  } else if (!d_->animateLayout.isEmpty()) {
+    restoreState(d_->animateLayout);
+    d_->animateLayout.clear();
+  }
+}
+
+QByteArray MainWindow::animateLayout() const {
+  return d_->animateLayout.isEmpty() ? saveState() : d_->animateLayout;
 }
 
 MainWindow::Workspace MainWindow::workspace() const {
@@ -270,6 +303,10 @@ void MainWindow::createDocks() {
   resizeDocks({timelineDock}, {300}, Qt::Vertical);  // room for the dope sheet and graph
   resizeDocks({channels, presetDock}, {470, 330}, Qt::Horizontal);
 
+  // A time typed and entered (Ctrl+G, "2.5", Enter) hands the keys back to the animation view,
+  // so K keys there instead of typing "k" into the field.
+  connect(d_->transport->timeField(), &NumberField::entered, this,
+          [this] { d_->animationViews->currentWidget()->setFocus(Qt::OtherFocusReason); });
   connect(d_->timeline, &TimelineWidget::copyRequested, this, &MainWindow::copyKeys);
   connect(d_->timeline, &TimelineWidget::pasteRequested, this,
           [this](double at) { pasteKeys(at); });
@@ -285,6 +322,20 @@ void MainWindow::createDocks() {
     }
   });
   connect(d_->preview, &PreviewPanel::statusChanged, this, &MainWindow::updateStatusFigures);
+}
+
+void MainWindow::showEvent(QShowEvent* event) {
+  QMainWindow::showEvent(event);
+  if (d_->docksSized) return;
+  d_->docksSized = true;
+  // The timeline under the transport gets over a third of the height, so the dope sheet shows
+  // about ten channels at 1440x900.
+  if (auto* timeline = findChild<QDockWidget*>(QStringLiteral("dock.timeline")))
+    resizeDocks({timeline}, {std::max(300, height() * 2 / 5)}, Qt::Vertical);
+  // Of the column beside the face, the presets keep what their list needs first.
+  auto* presets = findChild<QDockWidget*>(QStringLiteral("dock.presets"));
+  auto* keys = findChild<QDockWidget*>(QStringLiteral("dock.keys"));
+  if (presets && keys) resizeDocks({presets, keys}, {330, 110}, Qt::Vertical);
 }
 
 void MainWindow::updateTitle() {

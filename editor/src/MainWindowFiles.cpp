@@ -449,7 +449,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
   d_->recovery->discard();  // a clean exit leaves nothing to recover
   QSettings settings;
   settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
-  settings.setValue(QStringLiteral("window/state"), saveState());
+  settings.setValue(QStringLiteral("window/state"), animateLayout());
   event->accept();
 }
 

@@ -7,6 +7,7 @@
 #include <lacrima/editing/RecoveryStore.h>
 #include <lacrima/editor/MainWindow.h>
 
+#include <QByteArray>
 #include <QString>
 
 #include <memory>
@@ -18,6 +19,10 @@ class QTabBar;
 class QTimer;
 class QUndoGroup;
 class QUndoView;
+
+namespace lacrima::viewport {
+class ElidedLabel;
+}
 
 namespace lacrima::editor {
 
@@ -51,13 +56,19 @@ struct MainWindow::Private {
   QUndoGroup* undoGroup = nullptr;  // the animation's and the head's undo stacks
   QUndoView* history = nullptr;
   QMenu* recentMenu = nullptr;
-  QLabel* figures = nullptr;
+  viewport::ElidedLabel* figures = nullptr;
   QTimer* autosaveSoon = nullptr;
   QTimer* autosavePeriodic = nullptr;
   bool autosaveDirty = false;
   QString filePath;
   QString lastError;
   QString pendingRecovery;
+  // The Animate workspace's docks as they were when the Head workspace was shown (which hides
+  // every dock but the channels), to put back on return and to save on closing.
+  QByteArray animateLayout;
+  // The docks' sizes are set once the window has its size (on the first show), unless a saved
+  // layout was restored: set before, the window's first, smaller size squeezes the timeline.
+  bool docksSized = false;
 };
 
 }  // namespace lacrima::editor

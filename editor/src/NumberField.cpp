@@ -163,6 +163,13 @@ bool NumberField::event(QEvent* event) {
       event->setAccepted(typing_);
       return true;
     }
+    if (key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo)) {
+      // Typing: the line edit undoes the typed text. Otherwise the field shows the document's
+      // value, and undoing its text alone would show one the document does not have: the
+      // window's Edit ▸ Undo / Redo take the key instead.
+      event->setAccepted(typing_);
+      return true;
+    }
   }
   return QAbstractSpinBox::event(event);
 }
@@ -173,6 +180,7 @@ void NumberField::keyPressEvent(QKeyEvent* event) {
     case Qt::Key_Return:
       if (commit()) {
         lineEdit()->selectAll();
+        emit entered();
         event->ignore();  // a dialog's default button may act on it, as with QSpinBox
       } else {
         event->accept();  // refused: the dialog stays, the text stays for correcting
@@ -190,6 +198,10 @@ void NumberField::keyPressEvent(QKeyEvent* event) {
       event->accept();  // never part of a number
       return;
     default:
+      if (!typing_ && (event->matches(QKeySequence::Undo) || event->matches(QKeySequence::Redo))) {
+        event->ignore();  // no window action took it: the shown value stays (see event())
+        return;
+      }
       QAbstractSpinBox::keyPressEvent(event);
   }
 }

@@ -10,7 +10,9 @@
 #include <lacrima/playback/FrameProducer.h>
 #include <lacrima/playback/HeadRig.h>
 #include <lacrima/playback/PreviewWorker.h>
+#include <lacrima/viewport/ElidedLabel.h>
 #include <lacrima/viewport/FaceViewport.h>
+#include <lacrima/viewport/WarningsButton.h>
 
 #include <QElapsedTimer>
 #include <QEventLoop>
@@ -80,15 +82,34 @@ PreviewPanel::PreviewPanel(editing::EditorModel& model, editing::FrameStepClock&
   resetTears->setText(tr("Clear tears"));
   resetTears->setToolTip(
       tr("Remove every tear particle and trail; they build up again from the tear channels"));
-  status_ = new QLabel(bar);
+  // The status can name a file and a warning: cut to the room there is, whole in the tooltip;
+  // the warnings themselves are read in full through the button beside it.
+  status_ = new viewport::ElidedLabel(bar);
+  status_->setObjectName(QStringLiteral("previewStatus"));
   status_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+  warnings_ = new viewport::WarningsButton(bar);
+  // While paused the tears run on from whatever they were, to show the pose's tears as you
+  // work: what the player shows at this time may differ (it has wept since 0 s). Say so.
+  approximate_ = new viewport::ElidedLabel(bar);
+  approximate_->setText(tr("live tears, not the animation's"));
+  approximate_->setObjectName(QStringLiteral("approximateTears"));
+  approximate_->setToolTip(
+      tr("Paused, the tears keep running from where they were, for the pose at the playhead. "
+         "The animation's own tears at this time (what lacrima-player shows) are the ones "
+         "played from 0 s: play from the start to see them."));
+  QPalette amber = approximate_->palette();
+  amber.setColor(QPalette::WindowText, QColor(0xe6, 0xb4, 0x3c));
+  approximate_->setPalette(amber);
+  approximate_->hide();
   QPalette dim = status_->palette();
   dim.setColor(QPalette::WindowText, dim.color(QPalette::WindowText).darker(125));
   status_->setPalette(dim);
   barLayout->addWidget(tearToggle_);
   barLayout->addWidget(resetTears);
-  barLayout->addStretch(1);
-  barLayout->addWidget(status_);
+  // The note first: the status is in the status bar too.
+  barLayout->addWidget(approximate_, 3);
+  barLayout->addWidget(status_, 2);
+  barLayout->addWidget(warnings_);
   layout->addWidget(bar);
 
   message_ = new QLabel(this);
@@ -272,11 +293,11 @@ void PreviewPanel::installRig(std::shared_ptr<playback::HeadRig> rig) {
                      .arg(state_->rig->head.vertexCount());
   const QStringList warnings = headWarnings();
   if (!warnings.isEmpty()) {
-    // The first warning in the line (a head without eyes: "tears disabled"), all in the tooltip.
+    // The first warning in the line (a head without eyes: "tears disabled"), all in the list.
     text += tr(" · %n warning(s): %1", nullptr, static_cast<int>(warnings.size()))
                 .arg(warnings.front());
   }
-  status_->setToolTip(warnings.join(QLatin1Char('\n')));
+  warnings_->setWarnings(warnings, tr("%1's rig").arg(headName(*state_->target)));
   setStatus(text);
   onValuesChanged();
   emit headReady();
@@ -287,7 +308,7 @@ void PreviewPanel::showRigFailure(const QString& error) {
   retireWorker();
   state_->producer.reset();  // keeps the rig: the hidden viewport still points at its head
   idle_->stop();
-  status_->setToolTip({});
+  warnings_->setWarnings({}, {});
   if (*state_->target) {
     showMessage(tr("No preview: the project's head could not be loaded.\n\n%1\n\nUse File > "
                    "Choose head… to point the project at the mesh and feature-point files. Until "
@@ -410,7 +431,7 @@ void PreviewPanel::showFigures() {
   figuresShown_ = true;
   QString text = tr("%1 particles").arg(particleCount());
   if (particleCount() > 0) text += tr(" · step %1 ms").arg(lastProduceMilliseconds(), 0, 'f', 1);
-  // The rig's warnings stay in view (listed in the tooltip) once the figures take the line.
+  // The rig's warnings stay in view (listed by the button) once the figures take the line.
   if (const auto count = static_cast<int>(state_->rig->warnings.size()); count > 0)
     text += tr(" · %n rig warning(s)", nullptr, count);
   setStatus(text);
@@ -432,6 +453,9 @@ void PreviewPanel::updateIdleTimer() {
   } else if (!run && idle_->isActive()) {
     idle_->stop();
   }
+  approximate_->setVisible(run);
 }
+
+bool PreviewPanel::showsLiveTears() const { return approximate_->isVisibleTo(this); }
 
 }  // namespace lacrima::editor

@@ -13,18 +13,18 @@
 #include <iterator>
 
 namespace lacrima::editor {
-namespace {
-
-QString timeLabel(double seconds, double step) {
+QString rulerLabel(double seconds, double step) {
   if (seconds >= 60.0 && step >= 1.0) {
     const int s = static_cast<int>(std::lround(seconds));
     return QStringLiteral("%1:%2").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'));
   }
-  const int decimals = step >= 1.0 ? 0 : step >= 0.1 ? 1 : 2;
+  // As many decimals as the step needs: quarter seconds read 0.25 and 0.75, not 0.3 and 0.8.
+  int decimals = 0;
+  while (decimals < 3 && std::abs(step * std::pow(10.0, decimals) -
+                                  std::round(step * std::pow(10.0, decimals))) > 1e-9)
+    ++decimals;
   return QString::number(seconds, 'f', decimals) + QStringLiteral("s");
 }
-
-}  // namespace
 
 void TimeAxis::set(double startSeconds, double pixelsPerSecond) {
   if (!std::isfinite(pixelsPerSecond)) pixelsPerSecond = scale_;
@@ -96,7 +96,7 @@ void paintTimeRuler(QPainter& p, const TimeAxis& axis, const QRectF& area, doubl
     p.setPen(QPen(palette.color(QPalette::WindowText).darker(130), 1));
     p.drawLine(QPointF(x, bottom - 8), QPointF(x, bottom));
     p.drawText(QRectF(x + 3, area.top(), 80, area.height() - 6), Qt::AlignLeft | Qt::AlignVCenter,
-               timeLabel(t, step));
+               rulerLabel(t, step));
     // Half steps, unlabelled.
     const double hx = std::round(xOf(t + step / 2)) + 0.5;
     p.drawLine(QPointF(hx, bottom - 5), QPointF(hx, bottom));

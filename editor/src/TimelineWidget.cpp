@@ -308,12 +308,15 @@ void TimelineWidget::paintCurves(QPainter& p, const QRectF& area) {
   p.drawText(QRectF(6, area.top(), 400, 16), Qt::AlignLeft | Qt::AlignTop, label);
 }
 
+QString TimelineWidget::emptyHint() {
+  return tr("No keys yet — move a slider or apply a preset: it is keyed at the playhead");
+}
+
 void TimelineWidget::paintKeys(QPainter& p) {
   const auto& keys = model_.document().keys.keys();
   if (keys.empty()) {
     p.setPen(palette().color(QPalette::PlaceholderText));
-    p.drawText(QRectF(0, kRulerHeight, width(), kLaneHeight), Qt::AlignCenter,
-               tr("No keys yet — move a slider, apply a preset, or press K"));
+    p.drawText(QRectF(0, kRulerHeight, width(), kLaneHeight), Qt::AlignCenter, emptyHint());
     return;
   }
   const double cy = laneCentre();

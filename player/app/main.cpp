@@ -15,6 +15,7 @@
 #include <lacrima/common/TearQuality.h>
 #include <lacrima/playback/HeadRig.h>
 #include <lacrima/scene/CameraPreset.h>
+#include <lacrima/viewport/DarkTheme.h>
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -137,6 +138,7 @@ int windowMode(QApplication& app, const QCommandLineParser& parser, const QSize*
     // An unreadable project: the window opens on the default head and openFile() reports the
     // problem the way it reports any file it cannot use.
   }
+  viewport::applyDarkTheme(app);  // the editor's look: the suite is one
   player::PlayerWindow window(loadRig(parser, head));
   window.setHeadSource(head.files, head.fixed);
   window.setSimulationThreads(mode.threads);

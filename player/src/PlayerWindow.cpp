@@ -10,8 +10,10 @@
 #include <lacrima/playback/AnimationFile.h>
 #include <lacrima/viewport/EffectsPanel.h>
 #include <lacrima/viewport/FaceViewport.h>
+#include <lacrima/viewport/WarningsButton.h>
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QDockWidget>
 #include <QDragEnterEvent>
@@ -70,6 +72,7 @@ PlayerWindow::PlayerWindow(std::unique_ptr<playback::HeadRig> rig, QWidget* pare
   buildActions();
   buildLayout();
   viewport_->setHead(rig_->head);
+  showRigWarnings();
   display(playback_->view());
   updateTransport();
   statusBar()->showMessage(tr("Open a FAP file or a project (Ctrl+O), or drop one here"));
@@ -118,7 +121,11 @@ void PlayerWindow::buildActions() {
   resetView_ = new QAction(tr("Reset &view"), this);
   resetView_->setShortcut(Qt::Key_V);
   resetView_->setToolTip(tr("Frame the face again (V, or double-click the face)"));
-  connect(resetView_, &QAction::triggered, this, [this] { viewport_->resetView(); });
+  connect(resetView_, &QAction::triggered, this, [this] {
+    viewport_->resetView();
+    cameraPreset_ = scene::CameraPreset::Framing;
+    cameraActions_.front()->setChecked(true);
+  });
   updatePlayIcon();
 
   QMenu* file = menuBar()->addMenu(tr("&File"));
@@ -130,6 +137,26 @@ void PlayerWindow::buildActions() {
   for (QAction* a : {play_, reset_, stepBack_, stepForward_, loop_}) playMenu->addAction(a);
   viewMenu_ = menuBar()->addMenu(tr("&View"));
   viewMenu_->addAction(resetView_);
+  // The named cameras of --view, also here: one checked, the camera shown.
+  viewMenu_->addSection(tr("Camera"));
+  auto* cameras = new QActionGroup(this);
+  const std::pair<scene::CameraPreset, QString> kCameras[] = {
+      {scene::CameraPreset::Framing, tr("&Framing")},
+      {scene::CameraPreset::Front, tr("F&ront")},
+      {scene::CameraPreset::ThreeQuarter, tr("&Three-quarter")},
+      {scene::CameraPreset::Profile, tr("&Profile")},
+      {scene::CameraPreset::CloseLeft, tr("Close-up, &left cheek")},
+      {scene::CameraPreset::CloseRight, tr("Close-up, ri&ght cheek")}};
+  for (const auto& [preset, label] : kCameras) {
+    QAction* a = viewMenu_->addAction(label);
+    a->setObjectName(QStringLiteral("view.") + QString::fromUtf8(scene::toString(preset).data()));
+    a->setCheckable(true);
+    a->setChecked(preset == cameraPreset_);
+    cameras->addAction(a);
+    connect(a, &QAction::triggered, this, [this, p = preset] { setCameraPreset(p); });
+    cameraActions_.push_back(a);
+  }
+  viewMenu_->addSeparator();
   // Application-wide, so the keys also work while the floating Scene panel has the focus;
   // modal dialogs still block them, and text fields keep Space and the arrows for typing.
   for (QAction* a : {play_, reset_, stepBack_, stepForward_, loop_, resetView_})
@@ -212,6 +239,9 @@ void PlayerWindow::buildLayout() {
   fpsLabel_ = new QLabel(this);
   tearsLabel_ = new QLabel(this);
   fpsLabel_->setMinimumWidth(fpsLabel_->fontMetrics().horizontalAdvance("000 fps") + 8);
+  // The rig's warnings are read in the window (stderr has them too).
+  rigWarnings_ = new viewport::WarningsButton(this);
+  statusBar()->addPermanentWidget(rigWarnings_);
   for (QLabel* label : {tearsLabel_, frameLabel_, fpsLabel_}) {
     label->setContentsMargins(10, 0, 10, 0);
     statusBar()->addPermanentWidget(label);
@@ -231,6 +261,7 @@ void PlayerWindow::setHeadSource(std::optional<HeadFiles> head, bool fixed) {
 bool PlayerWindow::openFile(const QString& path) {
   pause();
   QApplication::setOverrideCursor(Qt::WaitCursor);
+  const TearQualitySettings qualityBefore = playback_->scene().quality;
   // A project on another head: rig it and open the file on it before anything is replaced, so
   // a failure leaves the previous head and animation playing.
   std::unique_ptr<playback::HeadRig> newRig;
@@ -260,12 +291,14 @@ bool PlayerWindow::openFile(const QString& path) {
     playback_ = std::move(newPlayback);  // the old playback goes before the rig it refers to
     rig_ = std::move(newRig);
     head_ = std::move(newHead);
+    showRigWarnings();
     viewport_->resetView();
     if (cameraPreset_ != scene::CameraPreset::Framing)
       viewport_->setView(presetView(*rig_, cameraPreset_));
   }
   clock_.setTime(0);
   applyTearQuality();
+  const bool qualityChanged = playback_->scene().quality != qualityBefore;
   fileParameters_ = playback_->scene().simulation;
   effects_->display(playback_->scene());
   parameters_->display(playback_->scene().simulation, fileParameters_);
@@ -288,6 +321,10 @@ bool PlayerWindow::openFile(const QString& path) {
     summary += tr("; %n warning(s), the first: %1", nullptr,
                   static_cast<int>(playback_->warnings().size()))
                    .arg(QString::fromStdString(playback_->warnings().front().toString()));
+  // A project brings its own tear quality: say so when it replaces the one shown.
+  if (qualityChanged)
+    summary += tr("; tear quality %1 (the file's)")
+                   .arg(QString::fromUtf8(toString(playback_->scene().quality.level).data()));
   statusBar()->showMessage(summary);
   for (const Diagnostic& d : playback_->warnings())
     std::fprintf(stderr, "warning: %s\n", d.toString().c_str());
@@ -300,8 +337,14 @@ bool PlayerWindow::openFile(const QString& path) {
 void PlayerWindow::reportError(const std::exception& error, const QString& path) {
   const ErrorReport report = describeError(error, path);
   std::fprintf(stderr, "lacrima-player: %s\n", report.oneLine.toLocal8Bit().constData());
-  statusBar()->showMessage(tr("Could not open %1 (the previous animation is still loaded)")
-                               .arg(QFileInfo(path).fileName()));
+  // Only an animation that is there can be said to stay.
+  const QString name = QFileInfo(path).fileName();
+  const QString loaded = QFileInfo(QString::fromStdString(playback_->path())).fileName();
+  statusBar()->showMessage(
+      playback_->frameCount() == 0 ? tr("Could not open %1").arg(name)
+      : loaded.isEmpty()
+          ? tr("Could not open %1 (the previous animation is still loaded)").arg(name)
+          : tr("Could not open %1 (%2 is still loaded)").arg(name, loaded));
   emit openFailed(report.oneLine);
   if (!errorDialogs_) return;
   auto* box =
@@ -484,6 +527,18 @@ void PlayerWindow::countRender() {
 void PlayerWindow::setCameraPreset(scene::CameraPreset preset) {
   cameraPreset_ = preset;
   viewport_->setView(presetView(*rig_, preset));
+  if (QAction* a = cameraAction(preset)) a->setChecked(true);
+}
+
+QAction* PlayerWindow::cameraAction(scene::CameraPreset preset) const {
+  const auto index = static_cast<std::size_t>(preset);
+  return index < cameraActions_.size() ? cameraActions_[index] : nullptr;
+}
+
+void PlayerWindow::showRigWarnings() {
+  QStringList warnings;
+  for (const std::string& w : rig_->warnings) warnings << QString::fromStdString(w);
+  rigWarnings_->setWarnings(warnings, tr("the head's rig"));
 }
 
 void PlayerWindow::dragEnterEvent(QDragEnterEvent* event) {

@@ -281,9 +281,13 @@ class EditorCoreTest : public QObject {
     model.setSymmetricEdit(true);
     model.setChannel(6, 120);
     QCOMPARE(model.currentValue(7), 120.0f);
+    // The History names both channels.
+    QCOMPARE(model.undoStack()->text(0),
+             QStringLiteral("Set stretch_l_cornerlip and stretch_r_cornerlip"));
     model.setChannel(23, 5000);  // eyeballs mirror with the sign flipped
     QCOMPARE(model.currentValue(24), -5000.0f);
     model.setChannel(3, 200);  // centre channel: alone
+    QCOMPARE(model.undoStack()->text(2), QStringLiteral("Set open_jaw"));
     QCOMPARE(model.keyedAtCurrentTime().count(), std::size_t{5});
     QCOMPARE(model.undoStack()->count(), 3);
     model.setSymmetricEdit(false);
@@ -635,6 +639,9 @@ class EditorCoreTest : public QObject {
     QCOMPARE(numbers("cheeks"), (std::vector<int>{39, 40, 41, 42}));
     QCOMPARE(numbers("OPEN JAW"), (std::vector<int>{3}));
     QCOMPARE(numbers("jaw, 69"), (std::vector<int>{3, 14, 15, 69}));
+    // Words the names abbreviate are found in the descriptions: "inner" is the _i_ of 31, 32.
+    QCOMPARE(numbers("inner brow"), (std::vector<int>{31, 32}));
+    QCOMPARE(numbers("nose"), (std::vector<int>{61, 62, 63, 64}));  // names first
     QCOMPARE(numbers("").size(), std::size_t{70});
     QVERIFY(numbers("no such channel").empty());
   }

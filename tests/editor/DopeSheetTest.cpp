@@ -350,6 +350,17 @@ class DopeSheetTest : public QObject {
     QVERIFY(std::abs(axis.scale() - 115.0) < 1e-9);
   }
 
+  void rulerLabelsShowTheirStepExactly() {
+    // The timeline's and the dope sheet's ruler (and the graph editor's) label with this.
+    QCOMPARE(rulerLabel(0.25, 0.25), QStringLiteral("0.25s"));
+    QCOMPARE(rulerLabel(0.75, 0.25), QStringLiteral("0.75s"));
+    QCOMPARE(rulerLabel(0.5, 0.25), QStringLiteral("0.50s"));
+    QCOMPARE(rulerLabel(1.5, 0.5), QStringLiteral("1.5s"));
+    QCOMPARE(rulerLabel(0.1 + 0.05, 0.05), QStringLiteral("0.15s"));
+    QCOMPARE(rulerLabel(2.0, 1.0), QStringLiteral("2s"));
+    QCOMPARE(rulerLabel(90.0, 30.0), QStringLiteral("1:30"));
+  }
+
   void theWindowHasTheTabsAndTheirKeysActOnChannelKeys() {
     QTemporaryDir recovery;
     EditorOptions options;

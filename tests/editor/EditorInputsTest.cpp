@@ -11,10 +11,12 @@
 #include <lacrima/editor/NumberField.h>
 #include <lacrima/editor/PresetPanel.h>
 #include <lacrima/editor/SliderPanel.h>
+#include <lacrima/editor/TimelineWidget.h>
 #include <lacrima/editor/TransportBar.h>
 #include <lacrima/editor/ZeroSlider.h>
 
 #include <QAction>
+#include <QApplication>
 #include <QLineEdit>
 #include <QSettings>
 #include <QStatusBar>
@@ -264,6 +266,7 @@ class EditorInputsTest : public QObject {
   }
 
   void ctrlGFocusesTheTimeField() {
+    model().setChannel(kOpenJaw, 100.0);  // a key at 0 s, so K has a channel to key
     window().sliders()->row(kOpenJaw)->slider()->setFocus();
     QTest::keySequence(&window(), QKeySequence(QStringLiteral("Ctrl+G")));
     NumberField* time = window().transport()->timeField();
@@ -272,6 +275,35 @@ class EditorInputsTest : public QObject {
     QTest::keyClicks(time, QStringLiteral("33f"));
     QTest::keyClick(time, Qt::Key_Return);
     QCOMPARE(model().currentTime(), 1.5);
+    // Enter hands the keys back to the animation view: K keys there, not into the field.
+    QVERIFY(!time->hasFocus());
+    QVERIFY(window().timeline()->hasFocus());
+    QCOMPARE(model().document().keys.keys().size(), std::size_t{1});
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_K);
+    QCOMPARE(model().document().keys.keys().size(), std::size_t{2});
+    QCOMPARE(model().document().keys.keys().back().time, 1.5);
+  }
+
+  // With the cursor in a value field that shows the document's value, Ctrl+Z is the document's
+  // undo (the field, the slider and the document agree); while typing, it undoes the typing.
+  void undoInAValueFieldUndoesTheDocument() {
+    typeInto(field(kOpenJaw), QStringLiteral("500"));
+    QCOMPARE(model().currentValue(kOpenJaw), 500.0f);
+    QVERIFY(field(kOpenJaw)->hasFocus());
+    QTest::keySequence(QApplication::focusWidget(), QKeySequence::Undo);
+    QCOMPARE(model().currentValue(kOpenJaw), 0.0f);
+    QCOMPARE(shownText(field(kOpenJaw)), QStringLiteral("0"));
+    QCOMPARE(window().sliders()->row(kOpenJaw)->slider()->value(), 0);
+    QTest::keySequence(QApplication::focusWidget(), QKeySequence(QStringLiteral("Ctrl+Shift+Z")));
+    QCOMPARE(model().currentValue(kOpenJaw), 500.0f);
+    QCOMPARE(shownText(field(kOpenJaw)), QStringLiteral("500"));
+    // While typing: the typed text goes, the document stays.
+    const int steps = model().undoStack()->count();
+    QTest::keyClicks(field(kOpenJaw), QStringLiteral("7"));
+    QVERIFY(field(kOpenJaw)->isTyping());
+    QTest::keySequence(QApplication::focusWidget(), QKeySequence::Undo);
+    QCOMPARE(model().undoStack()->count(), steps);
+    QCOMPARE(model().currentValue(kOpenJaw), 500.0f);
   }
 
   void spacePlaysFromANumericFieldUnlessTyping() {

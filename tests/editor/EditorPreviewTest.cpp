@@ -77,8 +77,10 @@ class EditorPreviewTest : public QObject {
     window.model().setChannels({{kTearLeftFap, 40}, {kTearRightFap, 30}}, QStringLiteral("tears"));
     QVERIFY(window.preview()->tearPreview());
     QTRY_VERIFY(window.preview()->particleCount() > 0);  // the idle timer simulates
-    // Off: the tears stop advancing (the count stays what it was).
+    // Live tears while paused are not the animation's: the bar says so, and not once off.
+    QVERIFY(window.preview()->showsLiveTears());
     window.preview()->setTearPreview(false);
+    QVERIFY(!window.preview()->showsLiveTears());
     window.preview()->waitForTears();  // a step may still be running on the worker
     const int frozen = window.preview()->particleCount();
     QTest::qWait(200);
@@ -89,6 +91,7 @@ class EditorPreviewTest : public QObject {
                                QStringLiteral("more tears"));
     window.model().setCurrentTime(0.0);
     window.clock().play();
+    QVERIFY(!window.preview()->showsLiveTears());  // playing shows the animation's
     QTRY_VERIFY(window.model().currentTime() > 0.5);
     window.clock().pause();
     QVERIFY(window.preview()->particleCount() > frozen);

@@ -11,10 +11,17 @@
 #include <lacrima/editor/PreviewPanel.h>
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/rigging/MeshImport.h>
+#include <lacrima/scene/OrbitView.h>
+#include <lacrima/viewport/FaceViewport.h>
+#include <lacrima/viewport/WarningsButton.h>
 
 #include "IctProject.h"
 
+#include <Eigen/Geometry>
+#include <QDialog>
 #include <QImage>
+#include <QPlainTextEdit>
+#include <QScreen>
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
@@ -188,11 +195,73 @@ class EditorProjectHeadTest : public QObject {
                             "feature point 3.5: sub-mesh \"M_ScleraLeft\" has no deforming role"))
                 .size() == 1,
         qPrintable(warnings.join('\n')));
-    // The status line counts them and shows the first; its tooltip lists them all.
+    // The status line counts them and shows the first; the button beside it lists them all,
+    // in full, in a window of its own.
     const QString status = window.preview()->statusText();
     QVERIFY2(status.contains(QStringLiteral("%1 warning").arg(warnings.size())) &&
                  status.contains(warnings.front()),
              qPrintable(status));
+    viewport::WarningsButton* button = window.preview()->warningsButton();
+    QVERIFY(button->isVisible());
+    QCOMPARE(button->warnings(), warnings);
+    QTest::mouseClick(button, Qt::LeftButton);
+    QVERIFY(button->list() && button->list()->isVisible());
+    const QString listed = button->list()->findChild<QPlainTextEdit*>()->toPlainText();
+    for (const QString& w : warnings) QVERIFY2(listed.contains(w), qPrintable(w));
+    button->list()->close();
+    // However long the status, no text widens the window: it needs no more width than a
+    // window with no head at all.
+    MainWindow plain(options());
+    QVERIFY2(window.minimumSizeHint().width() <= plain.minimumSizeHint().width(),
+             qPrintable(QStringLiteral("%1 > %2")
+                            .arg(window.minimumSizeHint().width())
+                            .arg(plain.minimumSizeHint().width())));
+  }
+
+  // Untextured eyes (the ICT head's) show an iris and a pupil where they look: the pupil's
+  // pixel, straight in front of the eye, is much darker than the sclera beside the iris.
+  void anUntexturedEyeHasAPupil() {
+    QTemporaryDir folder;
+    const QString project = rigtest::writeIctProject(folder.path(), kKeys);
+    MainWindow window(options());
+    window.resize(1280, 800);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.openFile(project));
+    QVERIFY2(window.preview()->loadHead(), qPrintable(window.preview()->messageText()));
+    auto* view = window.findChild<viewport::FaceViewport*>(QStringLiteral("faceViewport"));
+    QVERIFY(view && view->head());
+    const HeadMesh& head = *view->head();
+    const HeadSubmesh* iris = head.findSubmesh("M_IrisLeft");
+    const HeadSubmesh* sclera = head.findSubmesh("M_ScleraLeft");
+    QVERIFY(iris && sclera);
+    Eigen::AlignedBox3f box;
+    for (const HeadSubmesh* part : {iris, sclera})
+      for (int v = part->firstVertex; v < part->firstVertex + part->vertexCount; ++v)
+        box.extend(head.positions.col(v));
+    const Eigen::Vector3d centre = box.center().cast<double>();
+    const double radius = 0.25 * (box.sizes().x() + box.sizes().y());
+    const Eigen::Vector3d front = centre + Eigen::Vector3d(0, 0, radius);
+    const Eigen::Vector3d side = centre + Eigen::Vector3d(0.65 * radius, 0, 0.76 * radius);
+    // Straight on, the eye filling a good part of the view.
+    scene::OrbitView close;
+    close.target = centre;
+    close.distance = 12 * radius;
+    close.minDistance = radius;
+    close.maxDistance = 100 * radius;
+    view->setView(close);
+    const QImage picture = window.preview()->grabFrame();
+    QVERIFY(!picture.isNull());
+    const auto pupil = view->project(front), white = view->project(side);
+    QVERIFY(pupil && white);
+    const double ratio = picture.devicePixelRatio();
+    const auto lightness = [&](const QPointF& at) {
+      return picture.pixelColor((at * ratio).toPoint()).lightnessF();
+    };
+    QVERIFY2(
+        lightness(*pupil) + 0.25 < lightness(*white),
+        qPrintable(
+            QStringLiteral("pupil %1, sclera %2").arg(lightness(*pupil)).arg(lightness(*white))));
   }
 };
 

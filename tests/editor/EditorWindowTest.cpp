@@ -8,6 +8,8 @@
 #include <lacrima/editing/HeadSetup.h>
 #include <lacrima/editing/RecoveryStore.h>
 #include <lacrima/editor/ChannelRow.h>
+#include <lacrima/editor/DopeSheet.h>
+#include <lacrima/editor/DopeSheetView.h>
 #include <lacrima/editor/KeyListPanel.h>
 #include <lacrima/editor/MainWindow.h>
 #include <lacrima/editor/NumberField.h>
@@ -15,15 +17,22 @@
 #include <lacrima/editor/RecoveryBanner.h>
 #include <lacrima/editor/SliderPanel.h>
 #include <lacrima/editor/TimelineWidget.h>
+#include <lacrima/editor/WindowFit.h>
 #include <lacrima/editor/ZeroSlider.h>
 #include <lacrima/editor/head/HeadWorkspace.h>
+#include <lacrima/viewport/ElidedLabel.h>
+#include <lacrima/viewport/FaceViewport.h>
 
 #include <QAction>
+#include <QApplication>
 #include <QComboBox>
 #include <QDir>
+#include <QDockWidget>
 #include <QElapsedTimer>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QScreen>
 #include <QSettings>
 #include <QTabBar>
 #include <QTableView>
@@ -286,6 +295,14 @@ class EditorWindowTest : public QObject {
 
   void timelineAddsMovesCopiesPastesAndDeletesKeys() {
     TimelineWidget* timeline = window().timeline();
+    // The empty timeline's hint offers only what works now: K has nothing to key yet.
+    QVERIFY(model().document().keys.keys().empty());
+    QSignalSpy said(&model(), &editing::EditorModel::message);
+    QTest::keyClick(&window(), Qt::Key_K);
+    QVERIFY(model().document().keys.keys().empty());
+    QCOMPARE(said.size(), 1);
+    QVERIFY(!TimelineWidget::emptyHint().contains(QLatin1String("K")));
+    QVERIFY(TimelineWidget::emptyHint().contains(QLatin1String("slider")));
     timeline->setView(-0.1, 200.0);  // 200 px per second
     setSpin(window().sliders()->row(3)->valueField(), 300);
     model().setCurrentTime(1.0);
@@ -493,6 +510,102 @@ class EditorWindowTest : public QObject {
     QTest::keySequence(&window(), QKeySequence(QStringLiteral("Ctrl+Shift+Z")));
     QCOMPARE(headEdits, 1);
     QCOMPARE(animation->index(), 1);
+  }
+
+  // No text widens the window: a status as long as a rig warning with its path is cut to fit.
+  void longStatusTextDoesNotWidenTheWindow() {
+    window_->resize(1440, 900);
+    auto* figures = window().findChild<viewport::ElidedLabel*>(QStringLiteral("statusFigures"));
+    QVERIFY(figures);
+    const QString warning = QStringLiteral(
+        "ict.obj ready in 111 ms · 28716 vertices · 10 warning(s): /a/long/path/to/the/heads/"
+        "ict.fdp.json:30:3: points: no feature point 6.1; FAP 43, 44, 45 will have no pose");
+    figures->setText(warning + QLatin1Char(' ') + warning);
+    QVERIFY(figures->fontMetrics().horizontalAdvance(figures->text()) > 1440);
+    QVERIFY2(window().minimumSizeHint().width() <= 1440,
+             qPrintable(QString::number(window().minimumSizeHint().width())));
+    QCoreApplication::processEvents();
+    QCOMPARE(window().width(), 1440);
+    QVERIFY(figures->shownText().endsWith(QChar(0x2026)));  // cut, "…"
+    QCOMPARE(figures->toolTip(), figures->text());          // and whole in the tooltip
+  }
+
+  // The default layout gives the dope sheet room for about ten channels, and its bar shows
+  // its "Keys…" help whole.
+  void theDopeSheetHasRoomInTheDefaultLayout() {
+    QVERIFY(window().showAnimationView(QStringLiteral("dope")));
+    QCoreApplication::processEvents();
+    auto* view = window().dopeSheet()->findChild<DopeSheetView*>();
+    QVERIFY(view);
+    const double rows = (view->height() - DopeSheetView::kRulerHeight) / DopeSheetView::kRowHeight;
+    QVERIFY2(rows >= 9, qPrintable(QString::number(rows)));
+    QLabel* help = nullptr;
+    for (QLabel* label : window().dopeSheet()->findChildren<QLabel*>())
+      if (label->text() == QStringLiteral("Keys…")) help = label;
+    QVERIFY(help);
+    QVERIFY(help->width() >= help->sizeHint().width());
+    QVERIFY(help->geometry().right() < window().dopeSheet()->width());
+  }
+
+  // A geometry saved wider and taller than the screen (a window once widened by its status)
+  // opens fitted to the screen it opens on.
+  void savedGeometryIsFittedToTheScreen() {
+    const QRect screen = QGuiApplication::primaryScreen()->availableGeometry();
+    QWidget huge;
+    huge.setGeometry(screen.x() + 40, screen.y() + 40, screen.width() * 3, screen.height() * 2);
+    QSettings().setValue(QStringLiteral("window/geometry"), huge.saveGeometry());
+    MainWindow next(testOptions(recoveryDir_.path()));
+    const QSize least = next.minimumSizeHint();
+    QVERIFY(next.width() <= std::max(screen.width(), least.width()));
+    QVERIFY(next.height() <= std::max(screen.height(), least.height()));
+    QVERIFY(next.width() < screen.width() * 3);
+    QSettings().remove(QStringLiteral("window/geometry"));
+    // The rule itself: shrunk to the room, then moved inside it.
+    QCOMPARE(fitRect(QRect(300, 50, 2124, 900), QRect(0, 0, 1600, 1000)), QRect(0, 50, 1600, 900));
+    QCOMPARE(fitRect(QRect(900, 800, 1000, 600), QRect(0, 0, 1600, 1000), QSize(10, 30)),
+             QRect(590, 370, 1000, 600));
+    QCOMPARE(fitRect(QRect(-50, -20, 400, 300), QRect(0, 0, 1600, 1000)), QRect(0, 0, 400, 300));
+  }
+
+  // The Head workspace has the room (the animation's docks step aside), lists the anchors in the
+  // manual's order, and its sliders pose without keying; Animate gets its docks and values back.
+  void headWorkspaceHasRoomAndPosesWithoutKeys() {
+    window_->resize(1440, 900);
+    QCoreApplication::processEvents();
+    auto* presets = window().findChild<QDockWidget*>(QStringLiteral("dock.presets"));
+    auto* timeline = window().findChild<QDockWidget*>(QStringLiteral("dock.timeline"));
+    QVERIFY(presets && timeline && presets->isVisible() && timeline->isVisible());
+    window().setWorkspace(MainWindow::Workspace::Head);
+    QCoreApplication::processEvents();
+    QVERIFY(!presets->isVisible() && !timeline->isVisible());
+    QVERIFY(window().sliders()->isVisible());
+    head::HeadWorkspace* ws = window().headWorkspace();
+    QVERIFY2(ws->viewport()->width() >= 480, qPrintable(QString::number(ws->viewport()->width())));
+    auto* points = ws->findChild<QTableView*>(QStringLiteral("head.points"));
+    QVERIFY(points);
+    const int rowsShown = points->viewport()->height() / points->rowHeight(0);
+    QVERIFY2(rowsShown >= 10, qPrintable(QString::number(rowsShown)));
+    QCOMPARE(points->model()->index(0, 0).data().toString(), QStringLiteral("3.7"));
+    QCOMPARE(points->model()->index(7, 0).data().toString(), QStringLiteral("2.10"));
+
+    const int steps = model().undoStack()->count();
+    setSpin(window().sliders()->row(3)->valueField(), 500);
+    QCOMPARE(model().currentValue(3), 500.0f);
+    QVERIFY(model().document().keys.keys().empty());
+    QCOMPARE(model().undoStack()->count(), steps);
+    QTest::keyClick(&window(), Qt::Key_K);  // K keys nothing here either
+    QVERIFY(model().document().keys.keys().empty());
+    ws->findChild<QToolButton*>(QStringLiteral("head.neutral"))->click();
+    QCOMPARE(model().currentValue(3), 0.0f);
+    setSpin(window().sliders()->row(3)->valueField(), 300);
+
+    window().setWorkspace(MainWindow::Workspace::Animate);
+    QCoreApplication::processEvents();
+    QVERIFY(presets->isVisible() && timeline->isVisible());
+    QCOMPARE(model().currentValue(3), 0.0f);  // the pose is gone, the animation is as it was
+    QCOMPARE(window().sliders()->row(3)->valueField()->value(), 0.0);
+    setSpin(window().sliders()->row(3)->valueField(), 200);  // Animate keys again
+    QCOMPARE(model().document().keys.keys().size(), std::size_t{1});
   }
 
   void spaceTogglesPlayback() {

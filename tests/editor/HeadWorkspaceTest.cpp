@@ -17,6 +17,7 @@
 #include <lacrima/editor/MainWindow.h>
 #include <lacrima/editor/head/HeadWorkspace.h>
 #include <lacrima/editor/head/PartsTableModel.h>
+#include <lacrima/editor/head/PointListModel.h>
 #include <lacrima/playback/HeadRig.h>
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/rigging/FeaturePointProposal.h>
@@ -143,7 +144,7 @@ class HeadWorkspaceTest : public QObject {
     QCOMPARE(ws.partsView()->model()->rowCount(), static_cast<int>(mesh.submeshes.size()));
 
     // The reference picture and description of the point to place first.
-    QCOMPARE(ws.currentPoint(), rigging::proposalAnchors().front());
+    QCOMPARE(ws.currentPoint(), head::PointListModel::anchorOrder().front());
     QSignalSpy shown(&ws, &head::HeadWorkspace::referenceShown);
     QVERIFY(shown.wait(30000));
     QVERIFY(!ws.referencePicture().isNull());
@@ -173,7 +174,7 @@ class HeadWorkspaceTest : public QObject {
                         rigging::surfacePosition(hand.points.at("3.6").at, mesh))
                            .norm();
     double worst = 0;
-    for (const std::string& id : rigging::proposalAnchors()) {
+    for (const std::string& id : head::PointListModel::anchorOrder()) {
       QCOMPARE(ws.currentPoint(), id);
       const Eigen::Vector3d target = rigging::surfacePosition(hand.points.at(id).at, mesh);
       const QPoint pixel = view->project(target)->toPoint();
@@ -226,10 +227,28 @@ class HeadWorkspaceTest : public QObject {
         "clicked -> proposed -> rigged in %.0f ms; longest stall while importing, proposing "
         "and rigging %.1f ms",
         importMs, importStall, riggedMs, meter.longestMilliseconds());
-    // The checks ran on the rig: the list shows each (or that nothing was found).
-    QCOMPARE(ws.checksView()->count(), std::max<int>(1, int(ws.checks().size())));
-    for (const rigging::RigCheck& check : ws.checks())
+    // The checks ran on the rig: the list shows each with the points it names, then the rig's
+    // and the proposal's warnings (or that nothing was found); a click selects a line's point.
+    QVERIFY(ws.checksView()->count() >= std::max<int>(1, int(ws.checks().size())));
+    for (std::size_t i = 0; i < ws.checks().size(); ++i) {
+      const rigging::RigCheck& check = ws.checks()[i];
       qInfo("check: %s", rigging::toString(check).c_str());
+      const QString line = ws.checksView()->item(static_cast<int>(i))->text();
+      for (const std::string& id : check.points)
+        QVERIFY2(line.contains(QString::fromStdString(id)), qPrintable(line));
+    }
+    const std::string current = ws.currentPoint();
+    for (int row = 0; row < ws.checksView()->count(); ++row) {
+      QListWidgetItem* item = ws.checksView()->item(row);
+      const QStringList ids = item->data(Qt::UserRole).toStringList();
+      if (ids.isEmpty()) continue;
+      ws.checksView()->scrollToItem(item);
+      QTest::mouseClick(ws.checksView()->viewport(), Qt::LeftButton, {},
+                        ws.checksView()->visualItemRect(item).center());
+      QCOMPARE(QString::fromStdString(ws.currentPoint()), ids.front());
+      break;
+    }
+    ws.setCurrentPoint(current);
 
     // A slider poses the rigged head at once.
     const QImage neutral = view->grabFrame();
@@ -316,7 +335,7 @@ class HeadWorkspaceTest : public QObject {
     QCOMPARE(ws.partsView()->model()->rowCount(), 1);
 
     // The first anchor, clicked on the front of the head (its vertex furthest forward).
-    const std::vector<std::string>& anchors = rigging::proposalAnchors();
+    const std::vector<std::string>& anchors = head::PointListModel::anchorOrder();
     QCOMPARE(ws.currentPoint(), anchors.front());
     Eigen::Index front = 0;
     mesh.positions.row(2).maxCoeff(&front);

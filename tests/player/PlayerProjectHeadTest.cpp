@@ -11,6 +11,7 @@
 #include <lacrima/player/ProjectHead.h>
 #include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/rigging/MeshImport.h>
+#include <lacrima/viewport/WarningsButton.h>
 
 #include "../editor/IctProject.h"
 
@@ -110,6 +111,16 @@ class PlayerProjectHeadTest : public QObject {
     QVERIFY(window.openFile(project));
     const int ictVertices = window.rig().head.vertexCount();
     QCOMPARE(ictVertices, rigging::importHeadMesh(rigtest::kIctMesh.toStdString()).vertexCount());
+    // The rig's warnings are in the window, in full, not only on stderr.
+    QStringList warnings;
+    for (const std::string& w : window.rig().warnings) warnings << QString::fromStdString(w);
+    QCOMPARE(window.rigWarnings().warnings(), warnings);
+    QCOMPARE(window.rigWarnings().isVisible(), !warnings.isEmpty());
+    // The rig gives the scene each part's role (its untextured eyes and skin are drawn by it).
+    const HeadSubmesh* face = window.rig().head.findSubmesh("M_Face");
+    QVERIFY(face);
+    QCOMPARE(face->role, std::string("skin"));
+    QCOMPARE(window.rig().head.findSubmesh("M_IrisLeft")->role, std::string("eye_left"));
     window.seek(0.6);
     QVERIFY(window.playback().producer().particleCount() > 0);
 

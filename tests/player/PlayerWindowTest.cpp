@@ -23,6 +23,7 @@
 #include <QMimeData>
 #include <QPushButton>
 #include <QSlider>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QToolButton>
 #include <QtTest>
@@ -56,6 +57,12 @@ class PlayerWindowTest : public QObject {
   }
 
   void loadPlayReset() {
+    // A missing file with nothing loaded: no "previous animation" to keep.
+    window_->setErrorDialogsEnabled(false);
+    QVERIFY(!window_->openFile(dir_.filePath("missing.fap")));
+    QVERIFY2(!window_->statusBar()->currentMessage().contains("still loaded"),
+             qPrintable(window_->statusBar()->currentMessage()));
+    window_->setErrorDialogsEnabled(true);
     QSignalSpy opened(window_.get(), &PlayerWindow::fileOpened);
     QVERIFY(window_->openFile(kDemo));
     QCOMPARE(opened.count(), 1);
@@ -117,6 +124,8 @@ class PlayerWindowTest : public QObject {
     QTRY_VERIFY(dialog->isVisible());
     QVERIFY(dialog->text().contains("broken.fap") && dialog->text().contains("line 2"));
     dialog->accept();
+    QVERIFY2(window_->statusBar()->currentMessage().contains("crying.fap is still loaded"),
+             qPrintable(window_->statusBar()->currentMessage()));
     QCOMPARE(window_->playback().frameCount(), frames);
     QCOMPARE(QString::fromStdString(window_->playback().path()), kDemo);
     QVERIFY(window_->windowTitle().contains("crying.fap"));
@@ -163,6 +172,22 @@ class PlayerWindowTest : public QObject {
   }
 
   // Loop (L, --loop): at the end playing goes on from the start; without it, it stops there.
+  // The named cameras of --view are in the View menu; the one shown is checked.
+  void viewMenuHasTheCameras() {
+    QVERIFY(window_->openFile(kDemo));
+    QAction* framing = window_->cameraAction(scene::CameraPreset::Framing);
+    QAction* front = window_->cameraAction(scene::CameraPreset::Front);
+    QVERIFY(framing && front && framing->isChecked() && !front->isChecked());
+    const QImage before = window_->viewport().grabFrame();
+    front->trigger();
+    QVERIFY(front->isChecked() && !framing->isChecked());
+    QVERIFY(window_->viewport().grabFrame() != before);
+    window_->cameraAction(scene::CameraPreset::CloseLeft)->trigger();
+    QVERIFY(window_->cameraAction(scene::CameraPreset::CloseLeft)->isChecked());
+    framing->trigger();
+    QVERIFY(framing->isChecked());
+  }
+
   void loopPlaysAgainFromTheStart() {
     QVERIFY(window_->openFile(kDemo));
     const double end = window_->playback().duration();
@@ -219,6 +244,26 @@ class PlayerWindowTest : public QObject {
     QVERIFY(window_->playback().scene().simulation.empty());
   }
 
+  // A project brings its own tear quality: opening it says so when it replaces the one shown.
+  void openingAProjectSaysWhenItChangesTheQuality() {
+    const QString project = dir_.filePath("reference.json");
+    QFile file(project);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"format": "lacrima-project", "version": 2, "scene": {"quality": "reference"},
+      "keys": [{"time": 0, "values": {"open_jaw": 0}}, {"time": 1, "values": {"open_jaw": 90}}]})");
+    file.close();
+    QVERIFY(window_->openFile(kDemo));
+    QVERIFY(window_->playback().scene().quality.level == TearQuality::Balanced);
+    QVERIFY(!window_->statusBar()->currentMessage().contains("tear quality"));
+    QVERIFY(window_->openFile(project));
+    QVERIFY(window_->playback().scene().quality.level == TearQuality::Reference);
+    QVERIFY2(window_->statusBar()->currentMessage().contains("tear quality reference"),
+             qPrintable(window_->statusBar()->currentMessage()));
+    QVERIFY(window_->openFile(kDemo));
+    QVERIFY2(window_->statusBar()->currentMessage().contains("tear quality balanced"),
+             qPrintable(window_->statusBar()->currentMessage()));
+  }
+
   // --quality: applied at once, kept over the files opened later, shown in the Scene panel,
   // which can still change it.
   void tearQualityChoice() {
@@ -236,6 +281,9 @@ class PlayerWindowTest : public QObject {
     window_->seek(6.0);
     QVERIFY(window_->playback().producer().particleCount() > 0);
     QVERIFY(!window_->effects().cost()->text().contains("sub-steps"));  // seeking is not playing
+    // Tears on screen, none measured yet: the label must not say there are none.
+    QVERIFY2(!window_->effects().cost()->text().contains("no tears"),
+             qPrintable(window_->effects().cost()->text()));
     window_->play();
     QTRY_VERIFY_WITH_TIMEOUT(window_->effects().cost()->text().contains("sub-steps"), 20000);
     window_->pause();

@@ -72,13 +72,17 @@ bool ChannelFilter::matches(const FapInfo& info) const {
   if (alternatives_.empty()) return true;
   const std::string name = normalised(info.name);
   const std::string group = normalised(toString(info.group));
+  // A word no name holds may be one the names abbreviate ("inner" for the _i_ of
+  // raise_l_i_eyebrow): the descriptions spell those out.
+  const std::string description = normalised(info.description);
   for (const auto& words : alternatives_) {
     const bool all = std::all_of(words.begin(), words.end(), [&](const Word& w) {
       if (w.from <= w.to) return info.number >= w.from && info.number <= w.to;
       if (w.text == "left") return hasSide(name, 'l');
       if (w.text == "right") return hasSide(name, 'r');
-      return w.groups ? group.find(w.text) != std::string::npos
-                      : name.find(w.text) != std::string::npos;
+      if (!w.groups) return name.find(w.text) != std::string::npos;
+      return group.find(w.text) != std::string::npos ||
+             description.find(w.text) != std::string::npos;
     });
     if (all) return true;
   }

@@ -121,6 +121,20 @@ void EditorModel::setCurrentTimeExact(double seconds) {
 void EditorModel::refreshValues() {
   keyedValues_ = document_.keys.evaluate(time_);
   values_ = mixLayers(keyedValues_, document_.layers, time_);
+  for (int i = 0; i < kChannelCount; ++i)
+    if (posed_.test(static_cast<std::size_t>(i)))
+      values_[static_cast<std::size_t>(i)] = poseValues_[static_cast<std::size_t>(i)];
+}
+
+void EditorModel::setPosingOnly(bool on) {
+  if (on == posingOnly_) return;
+  posingOnly_ = on;
+  const bool hadPose = posed_.any();
+  posed_.reset();
+  emit posingOnlyChanged(on);
+  if (!hadPose) return;
+  refreshValues();
+  emit valuesChanged();
 }
 
 int EditorModel::currentKeyIndex() const { return findKey(document_.keys, time_); }
@@ -216,8 +230,12 @@ void EditorModel::editKeys(const KeyChange& change, const QString& text,
 }
 
 void EditorModel::setChannel(int fap, double value, int dragSession) {
-  setChannels({{fap, static_cast<float>(value)}}, QStringLiteral("Set %1").arg(channelName(fap)),
-              dragSession);
+  // The History names every channel the edit sets, the mirror one included.
+  const auto partner = symmetric_ ? symmetricPartner(fap, static_cast<float>(value)) : std::nullopt;
+  const QString text =
+      partner ? QStringLiteral("Set %1 and %2").arg(channelName(fap), channelName(partner->first))
+              : QStringLiteral("Set %1").arg(channelName(fap));
+  setChannels({{fap, static_cast<float>(value)}}, text, dragSession);
 }
 
 void EditorModel::setChannels(std::vector<ChannelValue> values, const QString& text,
@@ -232,6 +250,16 @@ void EditorModel::setChannels(std::vector<ChannelValue> values, const QString& t
                       [&](const ChannelValue& v) { return v.first == partner->first; });
       if (!listed) values.push_back(*partner);
     }
+  }
+  if (posingOnly_) {
+    for (const auto& [fap, value] : values) {
+      if (!isValidFap(fap)) continue;
+      const auto i = static_cast<std::size_t>(channelIndex(fap));
+      poseValues_[i] = values_[i] = sanitised(fap, value);
+      posed_.set(i);
+    }
+    emit valuesChanged();
+    return;
   }
   Keyframe key = keyOrNewAt(time_);
   ChannelMask channels;
@@ -262,6 +290,10 @@ void EditorModel::resetChannels(std::span<const int> faps, const QString& text) 
 }
 
 void EditorModel::unkeyChannel(int fap) {
+  if (posingOnly_) {
+    emit message(tr("Posing only: nothing is keyed here (Animate keys the animation)"));
+    return;
+  }
   const int index = currentKeyIndex();
   if (index < 0 || !isValidFap(fap)) return;
   Keyframe key = document_.keys.keys()[static_cast<std::size_t>(index)];
@@ -272,6 +304,10 @@ void EditorModel::unkeyChannel(int fap) {
 }
 
 void EditorModel::addKey() {
+  if (posingOnly_) {
+    emit message(tr("Posing only: nothing is keyed here (Animate keys the animation)"));
+    return;
+  }
   if (animated_.none()) {
     emit message(tr("Nothing to key yet: move a slider or apply a preset first."));
     return;

@@ -1,5 +1,6 @@
 #include <lacrima/editor/head/HeadWorkspace.h>
 
+#include <lacrima/common/FapTable.h>
 #include <lacrima/common/FdpTable.h>
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editing/HeadSetup.h>
@@ -21,6 +22,7 @@
 #include <QListWidget>
 #include <QMessageBox>
 #include <QProgressBar>
+#include <QRegularExpression>
 #include <QSplitter>
 #include <QTableView>
 #include <QTimer>
@@ -43,11 +45,17 @@ HeadWorkspace::HeadWorkspace(editing::EditorModel& model, QWidget* parent)
   layout->addWidget(createToolBar());
 
   auto* split = new QSplitter(Qt::Horizontal, this);
-  viewport_ = new viewport::FaceViewport(split);
+  auto* view = new QWidget(split);
+  auto* viewLayout = new QVBoxLayout(view);
+  viewLayout->setContentsMargins(0, 0, 0, 0);
+  viewLayout->setSpacing(0);
+  viewLayout->addWidget(createPoseBar(view));
+  viewport_ = new viewport::FaceViewport(view);
   viewport_->setObjectName(QStringLiteral("headViewport"));
   viewport_->setMinimumSize(240, 240);
   connectViewport();
-  split->addWidget(viewport_);
+  viewLayout->addWidget(viewport_, 1);
+  split->addWidget(view);
   QWidget* side = createSidePanel();
   side->setMinimumWidth(300);  // the parts' roles and the points' descriptions stay readable
   split->addWidget(side);
@@ -206,6 +214,30 @@ void HeadWorkspace::showImportRunning(bool running) {
   }
 }
 
+// Checking a rig is not animating: say that the sliders pose without keys, and offer the way
+// back to the neutral face.
+QWidget* HeadWorkspace::createPoseBar(QWidget* parent) {
+  auto* bar = new QWidget(parent);
+  auto* row = new QHBoxLayout(bar);
+  row->setContentsMargins(6, 2, 6, 2);
+  auto* note =
+      new QLabel(tr("The sliders pose this head to check its rig; nothing is keyed here."), bar);
+  note->setObjectName(QStringLiteral("head.poseNote"));
+  note->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+  auto* neutral = new QToolButton(bar);
+  neutral->setObjectName(QStringLiteral("head.neutral"));
+  neutral->setText(tr("Neutral pose"));
+  neutral->setToolTip(tr("Every slider back to 0 (the animation is not touched)"));
+  connect(neutral, &QToolButton::clicked, this, [this] {
+    std::vector<int> all;
+    for (int fap = 1; fap <= kChannelCount; ++fap) all.push_back(fap);
+    model_.resetChannels(all, tr("Neutral pose"));
+  });
+  row->addWidget(note, 1);
+  row->addWidget(neutral);
+  return bar;
+}
+
 QWidget* HeadWorkspace::createSidePanel() {
   auto* side = new QSplitter(Qt::Vertical, this);
 
@@ -218,6 +250,8 @@ QWidget* HeadWorkspace::createSidePanel() {
                               QAbstractItemView::SelectedClicked |
                               QAbstractItemView::EditKeyPressed);
   partsView_->verticalHeader()->hide();
+  partsView_->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+  partsView_->verticalHeader()->setDefaultSectionSize(partsView_->fontMetrics().height() + 8);
   partsView_->horizontalHeader()->setStretchLastSection(true);
   side->addWidget(partsView_);
 
@@ -235,6 +269,12 @@ QWidget* HeadWorkspace::createSidePanel() {
   pointsView_->setSelectionMode(QAbstractItemView::SingleSelection);
   pointsView_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   pointsView_->verticalHeader()->hide();
+  // One line a point (descriptions are cut; the tooltip and the reference text give them whole),
+  // so the list shows many points at once.
+  pointsView_->setWordWrap(false);
+  pointsView_->setTextElideMode(Qt::ElideRight);
+  pointsView_->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+  pointsView_->verticalHeader()->setDefaultSectionSize(pointsView_->fontMetrics().height() + 6);
   pointsView_->horizontalHeader()->setSectionResizeMode(PointListModel::Description,
                                                         QHeaderView::Stretch);
   connect(pointsView_->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
@@ -261,11 +301,20 @@ QWidget* HeadWorkspace::createSidePanel() {
 
   checksView_ = new QListWidget(side);
   checksView_->setObjectName(QStringLiteral("head.checks"));
-  connect(checksView_, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
-    const QString id = item->data(Qt::UserRole).toString();
-    if (!id.isEmpty()) setCurrentPoint(id.toStdString());
-  });
+  checksView_->setWordWrap(true);
+  // A check names its points; a click selects the first (the list and the markers follow).
+  const auto selectPoints = [this](QListWidgetItem* item) {
+    const QStringList ids = item->data(Qt::UserRole).toStringList();
+    if (!ids.isEmpty()) setCurrentPoint(ids.front().toStdString());
+  };
+  connect(checksView_, &QListWidget::itemClicked, this, selectPoints);
+  connect(checksView_, &QListWidget::itemActivated, this, selectPoints);
   side->addWidget(checksView_);
+  // The point list takes the height the others leave.
+  side->setStretchFactor(0, 1);
+  side->setStretchFactor(1, 4);
+  side->setStretchFactor(2, 0);
+  side->setStretchFactor(3, 1);
   return side;
 }
 
@@ -329,12 +378,13 @@ void HeadWorkspace::setCurrentPoint(const std::string& id) {
     const QSignalBlocker block(pointsView_->selectionModel());
     pointsView_->selectRow(row);
   }
+  if (row >= 0) pointsView_->scrollTo(pointList_->index(row, 0));
   updateReference();
   updateMarkers();
 }
 
 void HeadWorkspace::selectNextMissingAnchor() {
-  for (const std::string& id : rigging::proposalAnchors())
+  for (const std::string& id : PointListModel::anchorOrder())
     if (!setup_->point(id)) {
       setCurrentPoint(id);
       return;
@@ -362,13 +412,54 @@ void HeadWorkspace::fail(const QString& what, const QString& message) {
 
 // --- the document changed ----------------------------------------------------------------
 
+namespace {
+
+// The rig's name for a part's role (RigBuilder's roles), which the scene draws by.
+const char* rigRole(editing::PartRole role) {
+  switch (role) {
+    case editing::PartRole::Skin:
+      return "skin";
+    case editing::PartRole::EyeLeft:
+    case editing::PartRole::CorneaLeft:
+      return "eye_left";
+    case editing::PartRole::EyeRight:
+    case editing::PartRole::CorneaRight:
+      return "eye_right";
+    case editing::PartRole::TeethLower:
+      return "jaw";
+    case editing::PartRole::Tongue:
+      return "tongue";
+    case editing::PartRole::Attached:
+      return "attached";
+    case editing::PartRole::Ignored:
+      return "ignored";
+    case editing::PartRole::TeethUpper:
+    case editing::PartRole::Rigid:
+      break;
+  }
+  return "rigid";
+}
+
+}  // namespace
+
+// The imported head with its parts' guessed roles, so its untextured eyes, skin and teeth are
+// drawn as the rigged head's will be (UntexturedParts.h), from the first look.
+std::shared_ptr<const HeadMesh> HeadWorkspace::withRigRoles(
+    const HeadMesh& mesh, const std::vector<editing::PartRole>& roles) {
+  auto shown = std::make_shared<HeadMesh>(mesh);
+  for (std::size_t i = 0; i < shown->submeshes.size() && i < roles.size(); ++i)
+    shown->submeshes[i].role = rigRole(roles[i]);
+  return shown;
+}
+
 void HeadWorkspace::onMeshChanged() {
+  proposalWarnings_.clear();
   shownPositions_ = nullptr;
   producer_.reset();
   rig_.reset();
   checks_.clear();
   updateChecks();
-  shownMesh_ = setup_->sharedMesh();
+  shownMesh_ = withRigRoles(*setup_->sharedMesh(), setup_->roles());
   viewport_->setHead(*shownMesh_);
   viewport_->resetView();
   updatePickable();
@@ -388,15 +479,43 @@ void HeadWorkspace::updateChecks() {
   checksView_->clear();
   for (const rigging::RigCheck& check : checks_) {
     const bool error = check.severity == rigging::RigCheck::Severity::Error;
-    auto* item =
-        new QListWidgetItem(QStringLiteral("%1 %2").arg(error ? tr("Error:") : tr("Warning:"),
-                                                        QString::fromStdString(check.message)),
-                            checksView_);
+    QStringList ids;
+    for (const std::string& id : check.points) ids << QString::fromStdString(id);
+    const QString where = ids.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(ids.join(", "));
+    auto* item = new QListWidgetItem(
+        QStringLiteral("%1%2 %3").arg(error ? tr("Error") : tr("Warning"), where + ':',
+                                      QString::fromStdString(check.message)),
+        checksView_);
     item->setForeground(error ? QColor(230, 90, 80) : QColor(230, 180, 60));
-    item->setToolTip(QString::fromStdString(rigging::toString(check)));
-    if (!check.points.empty()) item->setData(Qt::UserRole, QString::fromStdString(check.points[0]));
+    item->setToolTip(QString::fromStdString(rigging::toString(check)) +
+                     (ids.isEmpty() ? QString() : tr("\nClick to select %1").arg(ids.front())));
+    item->setData(Qt::UserRole, ids);
   }
-  if (checks_.empty() && rig_) new QListWidgetItem(tr("No problems found"), checksView_);
+  // The rig's and the proposal's warnings are sentences naming their points: the points they
+  // name are selected by a click as a check's are.
+  const auto addNote = [this](const QString& kind, const QString& message) {
+    auto* item = new QListWidgetItem(QStringLiteral("%1: %2").arg(kind, message), checksView_);
+    item->setForeground(QColor(230, 180, 60));
+    const QStringList ids = fdpIdsIn(message);
+    item->setToolTip(ids.isEmpty() ? message : message + tr("\nClick to select %1").arg(ids[0]));
+    item->setData(Qt::UserRole, ids);
+  };
+  if (rig_)
+    for (const std::string& w : rig_->warnings) addNote(tr("Rig"), QString::fromStdString(w));
+  for (const QString& w : proposalWarnings_) addNote(tr("Proposal"), w);
+  if (checksView_->count() == 0 && rig_) new QListWidgetItem(tr("No problems found"), checksView_);
+}
+
+// The FDP ids ("6.1", "10.7") a warning names, in order, each once.
+QStringList HeadWorkspace::fdpIdsIn(const QString& text) {
+  static const QRegularExpression number(
+      QStringLiteral("(?<![\\d.])(\\d{1,2}\\.\\d{1,2})(?![\\d.])"));
+  QStringList ids;
+  for (auto it = number.globalMatch(text); it.hasNext();) {
+    const QString id = it.next().captured(1);
+    if (!fdpDescription(id.toStdString()).empty() && !ids.contains(id)) ids << id;
+  }
+  return ids;
 }
 
 }  // namespace lacrima::editor::head

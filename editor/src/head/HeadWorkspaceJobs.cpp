@@ -147,7 +147,11 @@ void HeadWorkspace::proposePoints() {
       emit proposalFinished(false);
       return;
     }
+    proposalWarnings_.clear();
+    for (const Diagnostic& w : result.warnings)
+      proposalWarnings_ << QString::fromStdString(w.message);
     setup_->applyProposal(result.points);
+    updateChecks();
     lastError_.clear();
     setStatus(tr("Proposed %1 points in %2 ms%3: drag any that are off")
                   .arg(std::count_if(result.points.begin(), result.points.end(),
@@ -155,9 +159,8 @@ void HeadWorkspace::proposePoints() {
                   .arg(result.milliseconds, 0, 'f', 0)
                   .arg(result.warnings.empty()
                            ? QString()
-                           : tr(" (%1 warnings: %2)")
-                                 .arg(result.warnings.size())
-                                 .arg(QString::fromStdString(result.warnings.front().message))));
+                           : tr(" (%n warning(s), listed under the checks)", nullptr,
+                                static_cast<int>(result.warnings.size()))));
     emit proposalFinished(true);
   });
   watcher->setFuture(

@@ -22,10 +22,17 @@ PointListModel::PointListModel(editing::HeadSetup& setup, Describe describe, QOb
   });
 }
 
+const std::vector<std::string>& PointListModel::anchorOrder() {
+  // From the top of the face down, the eyes first: they and the chin give the face's frame.
+  static const std::vector<std::string> order = {"3.7", "3.8", "3.11", "3.12",
+                                                 "9.3", "8.3", "8.4",  "2.10"};
+  return order;
+}
+
 void PointListModel::rebuild() {
   // The anchors in the order they are placed, then every point the rig knows, then any other
   // point the document has (a file may carry more), by FDP id.
-  std::vector<std::string> ids = rigging::proposalAnchors();
+  std::vector<std::string> ids = anchorOrder();
   std::set<std::string, rigging::FdpIdLess> rest;
   for (const auto& id : rigging::fapuFeaturePoints()) rest.insert(id);
   for (const auto& id : rigging::animatedFeaturePoints()) rest.insert(id);

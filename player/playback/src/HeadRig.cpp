@@ -29,6 +29,10 @@ std::unique_ptr<HeadRig> rigNamedHead(HeadMesh head, const rigging::FeaturePoint
   rig->frame = rigging::bringToFaceFrame(rig->head, points, &warnings);
   rigging::dropIgnoredParts(rig->head, points);
   rig->rig = rigging::buildRig(rig->head, points, options);
+  // The scene draws a part the file left untextured by its role (UntexturedParts.h).
+  for (HeadSubmesh& part : rig->head.submeshes)
+    if (const auto role = rig->rig.roles.find(part.name); role != rig->rig.roles.end())
+      part.role = role->second;
   for (const Diagnostic& d : warnings) rig->warnings.push_back(d.toString());
   for (const std::string& w : rig->rig.warnings) rig->warnings.push_back(fdp.path + ": " + w);
   try {

@@ -11,6 +11,7 @@
 #include <lacrima/scene/OgreRuntime.h>
 #include <lacrima/scene/SkinDetail.h>
 #include <lacrima/scene/SkinHorizons.h>
+#include <lacrima/scene/UntexturedParts.h>
 
 #include <OgreCamera.h>
 #include <OgreEntity.h>
@@ -160,7 +161,7 @@ struct FaceScene::State {
     head = &mesh;
     frame = Eigen::Matrix3d::Identity();
     if (mesh.vertexCount() > 0 && mesh.triangleCount() > 0) {
-      detail::StaticShading shading{headOcclusion(mesh), headTangents(mesh), {}};
+      detail::StaticShading shading{drawnUvs(mesh), headOcclusion(mesh), headTangents(mesh), {}};
       shading.horizons = skinHorizons(mesh, shading.tangents);
       auto built = std::make_unique<detail::HeadGeometry>(
           *scene, mesh, shading, runtime->uniqueName("head"), runtime->resourceGroup());

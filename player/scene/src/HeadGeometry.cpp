@@ -52,12 +52,14 @@ HeadGeometry::HeadGeometry(Ogre::SceneManager& scene, const HeadMesh& head,
                                         Ogre::HardwareBuffer::HBU_DYNAMIC_WRITE_ONLY_DISCARDABLE);
   constexpr std::size_t kStatic = 15;  // floats per vertex in source 1
   std::vector<float> fixed(kStatic * n, 0.0f);
-  const bool hasUvs = head.uvs.cols() == head.positions.cols();
+  const Eigen::Matrix2Xf& uvs =
+      shading.uvs.cols() == head.positions.cols() ? shading.uvs : head.uvs;
+  const bool hasUvs = uvs.cols() == head.positions.cols();
   for (std::size_t v = 0; v < n; ++v) {
     float* out = fixed.data() + kStatic * v;
     if (hasUvs) {
-      out[0] = head.uvs(0, static_cast<Eigen::Index>(v));
-      out[1] = head.uvs(1, static_cast<Eigen::Index>(v));
+      out[0] = uvs(0, static_cast<Eigen::Index>(v));
+      out[1] = uvs(1, static_cast<Eigen::Index>(v));
     }
     out[2] = v < shading.occlusion.size() ? shading.occlusion[v] : 1.0f;
     const Eigen::Vector4f tangent =

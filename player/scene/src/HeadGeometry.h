@@ -29,6 +29,7 @@ namespace lacrima::scene::detail {
 // What the shaders need per vertex that no pose changes, computed once per head; vertices
 // beyond a vector's size get 1, (1, 0, 0, 1) and no horizon.
 struct StaticShading {
+  Eigen::Matrix2Xf uvs;                   // UntexturedParts.h's drawnUvs; none: the head's own
   std::vector<float> occlusion;           // HeadOcclusion.h
   std::vector<Eigen::Vector4f> tangents;  // HeadTangents.h
   std::vector<Horizons> horizons;         // SkinHorizons.h

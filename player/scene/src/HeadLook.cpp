@@ -8,6 +8,7 @@
 #include <lacrima/scene/OverlayMasks.h>
 #include <lacrima/scene/OverlayTextures.h>
 #include <lacrima/scene/SkinDetail.h>
+#include <lacrima/scene/UntexturedParts.h>
 
 #include <OgreGpuProgramParams.h>
 #include <OgreLogManager.h>
@@ -22,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 namespace lacrima::scene::detail {
 namespace {
@@ -72,18 +74,27 @@ HeadLook::HeadLook(OgreRuntime& runtime, const HeadMesh& head, HeadGeometry& geo
         sub.material >= 0 && sub.material < static_cast<int>(head.materials.size())
             ? head.materials[static_cast<std::size_t>(sub.material)]
             : fallback;
+    // An untextured part of a custom head: a generated eye, or a colour for its kind.
+    const bool generatedEye = drawsGeneratedEye(head, sub);
+    const std::optional<UntexturedKind> untextured = untexturedKind(sub, look);
+    const Eigen::Vector4f colour = untextured ? untexturedColour(*untextured) : look.diffuse;
+    // Parts the rig leaves out (tear films, occlusion shells) are not drawn; nor is a lash shell
+    // without its texture, which would only hide the eye behind a solid band.
+    if (sub.role == "ignored" || untextured == UntexturedKind::Lashes) {
+      entity->setVisible(false);
+      continue;
+    }
     Part part;
     part.entity = entity;
     if (sub.name == "skin")
       part.role = Role::Skin;
-    else if (sub.name == "eye_l" || sub.name == "eye_r")
+    else if (sub.name == "eye_l" || sub.name == "eye_r" || generatedEye)
       part.role = Role::Eye;
     else if (sub.name == "cornea_l" || sub.name == "cornea_r")
       part.role = Role::Cornea;
     else if (look.transparent)
       part.role = Role::Card;
-    if (sub.name.ends_with("_l")) part.eye = 0;
-    if (sub.name.ends_with("_r")) part.eye = 1;
+    part.eye = eyeSideOf(sub);
 
     static const std::map<Role, const char*> kBase{{Role::Skin, "Lacrima/Skin"},
                                                    {Role::Eye, "Lacrima/Eye"},
@@ -120,21 +131,31 @@ HeadLook::HeadLook(OgreRuntime& runtime, const HeadMesh& head, HeadGeometry& geo
         materials_.push_back(part.closeUp);
         break;
       }
-      case Role::Eye:
-        pass->getTextureUnitState(0)->setTexture(diffuseOf(sub.material));
-        pass->getTextureUnitState(1)->setTexture(texture(makeWetEye(imageOf(sub.material)), true));
-        fragment->setNamedConstant("materialColour", toOgre(look.diffuse));
+      case Role::Eye: {
+        if (generatedEye && !generatedEyeTexture_) {
+          const QImage eye = generatedEyeTexture();
+          generatedEyeTexture_ = texture(eye, true);
+          generatedWetEye_ = texture(makeWetEye(eye), true);
+        }
+        pass->getTextureUnitState(0)->setTexture(generatedEye ? generatedEyeTexture_
+                                                              : diffuseOf(sub.material));
+        pass->getTextureUnitState(1)->setTexture(
+            generatedEye ? generatedWetEye_ : texture(makeWetEye(imageOf(sub.material)), true));
+        // The generated picture carries the eye's colours; the file's grey would only dim it.
+        fragment->setNamedConstant("materialColour",
+                                   generatedEye ? Ogre::Vector4(1, 1, 1, 1) : toOgre(look.diffuse));
         break;
+      }
       case Role::Cornea:
         break;
       case Role::Card:
         pass->getTextureUnitState(0)->setTexture(diffuseOf(sub.material));
-        fragment->setNamedConstant("materialColour", toOgre(look.diffuse));
+        fragment->setNamedConstant("materialColour", toOgre(colour));
         entity->setRenderQueueGroup(kCardQueue);
         break;
       case Role::Lit:
         pass->getTextureUnitState(0)->setTexture(diffuseOf(sub.material));
-        fragment->setNamedConstant("materialColour", toOgre(look.diffuse));
+        fragment->setNamedConstant("materialColour", toOgre(colour));
         fragment->setNamedConstant(
             "specularColour",
             Ogre::Vector4(look.specular.x(), look.specular.y(), look.specular.z(), look.shininess));

@@ -7,6 +7,9 @@
 //   cornea_l/_r     Lacrima/Cornea: additive reflections only
 //   transparent     Lacrima/Card: alpha-textured lashes and brows, drawn after the tears
 //   anything else   Lacrima/Lit with the material's colour, specular and shininess
+// A custom head's untextured parts (UntexturedParts.h): its eyes are Lacrima/Eye with the
+// generated eye texture on projected uvs, grey skin and teeth get a skin tone and an ivory;
+// grey lash shells and parts the rig ignores are not drawn.
 // The overlay weights reach the shaders as custom parameter 0 of each sub-entity
 // (x redness, y this eye's wetness, z blush; skin gets x and z, eyes and corneas x and y), and
 // the strength of the skin's relief as custom parameter 1 (x), so changing them costs no
@@ -62,6 +65,7 @@ class HeadLook {
   std::vector<Part> parts_;
   std::vector<Ogre::MaterialPtr> materials_;
   std::vector<Ogre::TexturePtr> textures_;
+  Ogre::TexturePtr generatedEyeTexture_, generatedWetEye_;  // shared by both generated eyes
 };
 
 }  // namespace lacrima::scene::detail

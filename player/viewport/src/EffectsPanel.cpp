@@ -210,7 +210,9 @@ void EffectsPanel::clearCost() {
 
 void EffectsPanel::showCost() {
   if (costs_.empty()) {
-    cost_->setText(tr("no tears simulated yet"));
+    // Frames are measured as they play, not as a seek replays them: tears on screen after a
+    // seek or a quality change have no cost to show yet.
+    cost_->setText(tr("measured while tears play"));
     return;
   }
   double milliseconds = 0, substeps = 0;

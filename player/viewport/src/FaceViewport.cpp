@@ -175,6 +175,8 @@ void FaceViewport::setHead(const HeadMesh& neutral) {
   requestRender();
 }
 
+const HeadMesh* FaceViewport::head() const { return state_->head; }
+
 void FaceViewport::showFrame(const playback::FrameView& view) {
   State& s = *state_;
   if (!s.ogre) return;

@@ -28,6 +28,10 @@ struct HeadSubmesh {
   int firstVertex = 0;
   int vertexCount = 0;
   std::vector<Eigen::Vector3i> triangles;  // global vertex indices, counter-clockwise outside
+  // Its role in the rig (skin, eye_left, eye_right, jaw, tongue, attached, ignored, rigid), set
+  // when the head is rigged; empty before. The scene draws untextured parts by it. Last and
+  // defaulted, so that a part written as {name, material, first, count, triangles} needs none.
+  std::string role = {};
 };
 
 struct HeadMesh {

@@ -14,6 +14,7 @@
 // (errors go to lastError() and the status bar, and unsaved changes are discarded).
 #include <lacrima/editing/FapTransfer.h>
 
+#include <QByteArray>
 #include <QMainWindow>
 
 #include <memory>
@@ -77,7 +78,9 @@ class MainWindow : public QMainWindow {
   KeyListPanel* keyList() const;
   RecoveryBanner* recoveryBanner() const;
   // The workspaces over the central area: Animate (the preview) and Head (bring your own head).
-  // Each has its own undo history; Edit ▸ Undo and Redo act on the one shown.
+  // Each has its own undo history; Edit ▸ Undo and Redo act on the one shown. The Head workspace
+  // hides the animation's docks (presets, keys, layers, history, timeline) for room, and its
+  // sliders pose the head without keying (EditorModel::setPosingOnly).
   enum class Workspace { Animate, Head };
   head::HeadWorkspace* headWorkspace() const;
   void setWorkspace(Workspace workspace);
@@ -111,6 +114,7 @@ class MainWindow : public QMainWindow {
 
  protected:
   void closeEvent(QCloseEvent* event) override;
+  void showEvent(QShowEvent* event) override;
   void dragEnterEvent(QDragEnterEvent* event) override;
   void dropEvent(QDropEvent* event) override;
 
@@ -120,6 +124,9 @@ class MainWindow : public QMainWindow {
   struct Private;
 
   void createDocks();
+  void arrangeDocks(Workspace workspace);
+  // The docks to save: the Animate workspace's, also while the Head workspace is shown.
+  QByteArray animateLayout() const;
   void createActions();  // every action and what it does; MainMenus.h lays them out
   QAction* makeAction(const QString& name, const QString& text, const QKeySequence& shortcut,
                       const QString& tip = {});

@@ -70,6 +70,7 @@ class NumberField : public QAbstractSpinBox {
 
  signals:
   void valueEntered(double value);  // by the user: typed and entered, or stepped
+  void entered();                   // Enter took the text (also when the value stayed)
   void refused(const QString& message);
 
  protected:

@@ -12,7 +12,9 @@
 //   paused, a tear channel > 0
 //   and "tear preview" on       -> one tear request per frame of the project's rate on an idle
 //                                  timer, so tears keep running down the face while the
-//                                  animator works.
+//                                  animator works. These live tears are an approximation of
+//                                  the animation's (the player's tears at that time have run
+//                                  since 0 s): the bar says so while they run.
 // The worker drops requests rather than queueing them: while a step runs, a newer request
 // replaces the waiting one, and each finished step is drawn over the face posed now. With 100,000
 // particles the tears update every few seconds while sliders, the timeline and playback stay
@@ -26,7 +28,8 @@
 // changed (File > Choose head…). A head file that is missing, or a rig that fails, leaves the
 // editor working without a preview and says what is wrong and what to do; the document keeps
 // its head reference, so saving loses nothing. Rig warnings (a head without eyes: no tears)
-// go to the status. When the viewport cannot render (the offscreen platform) the panel says so.
+// are counted in the status and listed in full by the warnings button beside it. When the
+// viewport cannot render (the offscreen platform) the panel says so.
 #include <QWidget>
 
 #include <QStringList>
@@ -36,6 +39,11 @@
 class QLabel;
 class QToolButton;
 class QTimer;
+
+namespace lacrima::viewport {
+class ElidedLabel;
+class WarningsButton;
+}  // namespace lacrima::viewport
 
 namespace lacrima::playback {
 struct HeadRig;
@@ -65,12 +73,17 @@ class PreviewPanel : public QWidget {
   int headVertexCount() const;
   // The rig's warnings for the head shown ("file: message").
   QStringList headWarnings() const;
+  // The button beside the status that lists those warnings in full (hidden when none).
+  viewport::WarningsButton* warningsButton() const { return warnings_; }
   QString statusText() const;
   // The text shown instead of the viewport (loading, a missing head file, no display); empty
   // while the viewport shows a head.
   QString messageText() const;
 
   bool tearPreview() const { return tearPreview_; }
+  // Paused with tear preview on: the tears shown run live from where they were, which is not
+  // what the animation (the player) shows at this time; the bar says so while true.
+  bool showsLiveTears() const;
   void setTearPreview(bool on);
   // Threads the preview's tear simulation shares (--threads; FrameProducer::
   // setSimulationThreads), for the worker of each head shown from now on.
@@ -121,9 +134,11 @@ class PreviewPanel : public QWidget {
   editing::EditorModel& model_;
   editing::FrameStepClock& clock_;
   QLabel* message_;
-  QLabel* status_;
+  viewport::ElidedLabel* status_;
+  viewport::WarningsButton* warnings_;
   QToolButton* tearToggle_;
   QTimer* idle_;
+  viewport::ElidedLabel* approximate_;
   bool tearPreview_ = true;
   int simulationThreads_ = 0;
   bool figuresShown_ = false;     // the status line shows the tear figures (not the head's)

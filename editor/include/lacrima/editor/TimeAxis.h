@@ -7,6 +7,7 @@
 // The scale stays within [0.5, 4000] px/s (30 minutes across 900 px .. a frame at 22 fps is
 // 180 px wide) and the view never starts more than 40 px before 0 s.
 #include <QRectF>
+#include <QString>
 
 class QFont;
 class QPainter;
@@ -40,6 +41,10 @@ class TimeAxis {
   double start_ = -0.25;
   double scale_ = 120.0;
 };
+
+// A ruler's label for `seconds` on labels `step` apart: m:ss from a minute on at whole-second
+// steps, else seconds with as many decimals as the step needs (0.25 s steps: 0.25, 0.50, 0.75).
+QString rulerLabel(double seconds, double step);
 
 // The ruler over `area` (x measured from area.left()): labels at the smallest "nice" step
 // that leaves >= 70 px between them, half-step ticks, frame ticks when frames are >= 6 px

@@ -32,6 +32,10 @@ class TimelineWidget : public QWidget {
  public:
   explicit TimelineWidget(editing::EditorModel& model, QWidget* parent = nullptr);
 
+  // What the empty timeline suggests: only what works on an empty project (K keys channels
+  // already animated, so it has nothing to key yet).
+  static QString emptyHint();
+
   double viewStart() const { return axis_.start(); }
   double pixelsPerSecond() const { return axis_.scale(); }
   void setView(double startSeconds, double pixelsPerSecond);

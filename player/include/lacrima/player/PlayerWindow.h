@@ -25,6 +25,7 @@
 #include <deque>
 #include <memory>
 #include <optional>
+#include <vector>
 
 class QAction;
 class QLabel;
@@ -35,6 +36,7 @@ class QTimer;
 namespace lacrima::viewport {
 class EffectsPanel;
 class FaceViewport;
+class WarningsButton;
 }  // namespace lacrima::viewport
 
 namespace lacrima::player {
@@ -78,6 +80,10 @@ class PlayerWindow : public QMainWindow {
   viewport::EffectsPanel& effects() { return *effects_; }
   TearParametersPanel& parameters() { return *parameters_; }
   QAction* loopAction() const { return loop_; }  // checkable: play again from the start
+  // View ▸ the named cameras (--view), one checked: the camera shown.
+  QAction* cameraAction(scene::CameraPreset preset) const;
+  // The rig's warnings, counted in the status bar and listed in full when clicked.
+  viewport::WarningsButton& rigWarnings() { return *rigWarnings_; }
 
   // Error dialogs are window-modal and do not block; tests and scripts may turn them off
   // (the error still goes to stderr and the status bar).
@@ -106,6 +112,7 @@ class PlayerWindow : public QMainWindow {
   void countRender();
   void timelineMoved(int milliseconds);
   void reportError(const std::exception& error, const QString& path);
+  void showRigWarnings();
 
   std::unique_ptr<playback::HeadRig> rig_;
   scene::CameraPreset cameraPreset_ = scene::CameraPreset::Framing;
@@ -122,6 +129,8 @@ class PlayerWindow : public QMainWindow {
   viewport::EffectsPanel* effects_;
   TearParametersPanel* parameters_;
   QMenu* viewMenu_;
+  std::vector<QAction*> cameraActions_;  // in CameraPreset order
+  viewport::WarningsButton* rigWarnings_;
   QAction *open_, *openDemo_, *play_, *reset_, *loop_, *resetView_, *quit_, *stepBack_,
       *stepForward_;
   TearParameterValues fileParameters_;

@@ -7,8 +7,9 @@
 //   - "left" / "right": the face's left or right channels (name contains _l_ / _r_ or ends
 //     in _l / _r, as the standard names them);
 //   - any other text: part of the channel's name (case-insensitive, '_' and ' ' alike); text
-//     that is part of no channel name is looked up in the group names instead, so "jaw" finds
-//     open_jaw, thrust_jaw and shift_jaw, while "eyes", "cheeks" or "outer lips" find a group.
+//     that is part of no channel name is looked up in the group names and the channels'
+//     descriptions instead, so "jaw" finds open_jaw, thrust_jaw and shift_jaw, "eyes",
+//     "cheeks" or "outer lips" find a group, and "inner brow" the inner eyebrows (31, 32).
 // An empty filter matches everything.
 #include <lacrima/common/FapTable.h>
 

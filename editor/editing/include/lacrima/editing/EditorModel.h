@@ -89,6 +89,16 @@ class EditorModel : public QObject {
   const ChannelMask& selectedChannels() const { return selectedChannels_; }
   void setSelectedChannels(ChannelMask channels);
 
+  // --- posing without keys ---------------------------------------------------------------
+  // Checking a rig is not animating: while posing only (the Head workspace), the slider edits
+  // (setChannel, setChannels, resetChannels) pose the face over the animation at the current
+  // time without writing keys or undo steps, and unkeyChannel and addKey do nothing but say
+  // so. Turning it off drops the pose: currentValues() are the animation's again.
+  bool posingOnly() const { return posingOnly_; }
+  void setPosingOnly(bool on);
+  // The channels the pose sets (empty when not posing only).
+  const ChannelMask& posedChannels() const { return posed_; }
+
   // --- options ------------------------------------------------------------------------
   bool symmetricEdit() const { return symmetric_; }
   void setSymmetricEdit(bool on);
@@ -151,6 +161,7 @@ class EditorModel : public QObject {
   void selectionChanged();
   void selectedChannelsChanged();
   void symmetricEditChanged(bool on);
+  void posingOnlyChanged(bool on);
   void focusChannelChanged(int fap);
   // A user-visible note about an edit that could not be done ("nothing to mirror").
   void message(const QString& text);
@@ -185,6 +196,9 @@ class EditorModel : public QObject {
   bool symmetric_ = false;
   int focus_ = 3;
   int dragSessions_ = 0;
+  bool posingOnly_ = false;
+  ChannelMask posed_;       // channels the pose sets, over the animation
+  FapValues poseValues_{};  // their values
 };
 
 }  // namespace lacrima::editing

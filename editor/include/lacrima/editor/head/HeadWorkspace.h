@@ -20,7 +20,9 @@
 // Nothing blocks the window: the import (assimp), the proposal and the rig run on worker
 // threads; an edit restarts the rig after a short pause (rigDelay), with progress, and a newer
 // edit supersedes a rig still running (RigJob.h). Once rigged, the viewport shows the head posed
-// by the editor model's current FAP values, so the slider panel deforms it at once.
+// by the editor model's current FAP values, so the slider panel deforms it at once; while the
+// workspace is shown the sliders pose without keying (EditorModel::setPosingOnly), and the bar
+// over the viewport says so.
 //
 // Every action exists without dialogs (importHead, proposePoints, saveTo, openPoints) for
 // tests; failures go to lastError() and the status line and leave the workspace as it was.
@@ -31,6 +33,7 @@
 #include <QImage>
 #include <QPointF>
 #include <QString>
+#include <QStringList>
 #include <QWidget>
 
 #include <atomic>
@@ -47,6 +50,7 @@ class QTimer;
 class QToolButton;
 
 namespace lacrima::editing {
+enum class PartRole;
 class EditorModel;
 class HeadSetup;
 struct ProposalReference;
@@ -135,6 +139,7 @@ class HeadWorkspace : public QWidget {
   QWidget* createToolBar();
   void showImportRunning(bool running);
   QWidget* createSidePanel();
+  QWidget* createPoseBar(QWidget* parent);
   void onMeshChanged();
   void onDocumentEdited();
   void startRig();
@@ -142,6 +147,9 @@ class HeadWorkspace : public QWidget {
   void updateMarkers();
   void updateReference();
   void updateChecks();
+  static QStringList fdpIdsIn(const QString& text);
+  static std::shared_ptr<const HeadMesh> withRigRoles(const HeadMesh& mesh,
+                                                      const std::vector<editing::PartRole>& roles);
   void updatePickable();
   void setStatus(const QString& text);
   void fail(const QString& what, const QString& message);
@@ -164,6 +172,7 @@ class HeadWorkspace : public QWidget {
   const Eigen::Matrix3Xf* shownPositions_ = nullptr;  // the posed head shown, or null
   Eigen::Matrix3Xf posedPositions_, posedNormals_;    // a rotated rig's pose, in mesh axes
   std::vector<rigging::RigCheck> checks_;
+  QStringList proposalWarnings_;  // the last proposal's, until the head changes
   // The default head drawn with the current point highlighted, loaded and rendered off the GUI
   // thread; pictures are kept per point.
   std::shared_ptr<const exporters::ReferenceHead> referenceHead_;

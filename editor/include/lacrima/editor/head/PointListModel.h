@@ -1,7 +1,7 @@
 #pragma once
-// The Head workspace's feature points: the anchors to place by hand first (proposalAnchors()),
-// then every other point a rig uses, by FDP id. Columns: id, description, state (hand,
-// proposed or missing, coloured as the markers are).
+// The Head workspace's feature points: the anchors to place by hand first (proposalAnchors(),
+// in anchorOrder()), then every other point a rig uses, by FDP id. Columns: id, description,
+// state (hand, proposed or missing, coloured as the markers are).
 #include <QAbstractTableModel>
 #include <QColor>
 
@@ -32,6 +32,10 @@ class PointListModel : public QAbstractTableModel {
   // `describe` gives a point's description from the FDP table (empty: none).
   using Describe = std::function<QString(const std::string& id)>;
   PointListModel(editing::HeadSetup& setup, Describe describe, QObject* parent = nullptr);
+
+  // The 8 anchors in the order they are asked for, as the manual lists them: the eye corners,
+  // the nose tip, the mouth corners, the chin.
+  static const std::vector<std::string>& anchorOrder();
 
   const std::vector<std::string>& ids() const { return ids_; }
   int rowOf(const std::string& id) const;  // -1 when absent

@@ -46,6 +46,8 @@ class FaceViewport : public QWidget {
 
   // The head to show; `neutral` must outlive the viewport (or the next setHead).
   void setHead(const HeadMesh& neutral);
+  // The head given to setHead (nullptr before).
+  const HeadMesh* head() const;
   // Shows `view` on the next render when its revision differs from the last one shown.
   void showFrame(const playback::FrameView& view);
   void resetView();
