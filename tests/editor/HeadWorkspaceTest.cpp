@@ -164,8 +164,12 @@ class HeadWorkspaceTest : public QObject {
     QCOMPARE(setup.role(teeth), editing::PartRole::TeethLower);
     QCOMPARE(roleCell.data().toString(),
              head::PartsTableModel::roleLabel(int(editing::PartRole::TeethLower)));
+    // The viewport draws the head with the role it now has (an untextured part's look follows it).
+    QCOMPARE(view->head()->submeshes.at(static_cast<std::size_t>(teeth)).role, std::string("jaw"));
     ws.findChild<QAction*>(QStringLiteral("head.undo"))->trigger();
     QCOMPARE(setup.role(teeth), editing::PartRole::TeethUpper);
+    QCOMPARE(view->head()->submeshes.at(static_cast<std::size_t>(teeth)).role,
+             std::string("rigid"));
 
     // Click the anchors where the hand-made file has them; the workspace steps to the next one.
     const rigging::FeaturePointFile hand = rigging::readFeaturePointFile(kIctFdp.toStdString());

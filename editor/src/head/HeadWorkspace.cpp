@@ -84,7 +84,7 @@ HeadWorkspace::HeadWorkspace(editing::EditorModel& model, QWidget* parent)
   connect(setup_.get(), &editing::HeadSetup::meshChanged, this, &HeadWorkspace::onMeshChanged);
   connect(setup_.get(), &editing::HeadSetup::changed, this, &HeadWorkspace::onDocumentEdited);
   connect(setup_.get(), &editing::HeadSetup::pointsChanged, this, &HeadWorkspace::updateMarkers);
-  connect(setup_.get(), &editing::HeadSetup::rolesChanged, this, &HeadWorkspace::updatePickable);
+  connect(setup_.get(), &editing::HeadSetup::rolesChanged, this, &HeadWorkspace::onRolesChanged);
   connect(&model_, &editing::EditorModel::valuesChanged, this, &HeadWorkspace::pose);
 
   setStatus(tr("Import a head (OBJ, FBX, glTF, ...) to start"));
@@ -450,6 +450,26 @@ std::shared_ptr<const HeadMesh> HeadWorkspace::withRigRoles(
   for (std::size_t i = 0; i < shown->submeshes.size() && i < roles.size(); ++i)
     shown->submeshes[i].role = rigRole(roles[i]);
   return shown;
+}
+
+// A part's role decides how an untextured part is drawn (an eye gets an iris, the skin a skin
+// tone), so a role changed in the table or read from a points file shows at once, not at the
+// next import. The import itself already drew the guessed roles.
+void HeadWorkspace::onRolesChanged() {
+  updatePickable();
+  if (!setup_->hasMesh() || !shownMesh_) return;
+  const std::vector<editing::PartRole>& roles = setup_->roles();
+  bool same = true;
+  for (std::size_t i = 0; i < shownMesh_->submeshes.size() && i < roles.size(); ++i)
+    same = same && shownMesh_->submeshes[i].role == rigRole(roles[i]);
+  if (same) return;
+  shownMesh_ = withRigRoles(*setup_->sharedMesh(), roles);
+  viewport_->setHead(*shownMesh_);
+  orientView();
+  if (producer_)
+    pose();
+  else
+    updateMarkers();
 }
 
 void HeadWorkspace::onMeshChanged() {

@@ -151,6 +151,7 @@ class HeadWorkspace : public QWidget {
   static std::shared_ptr<const HeadMesh> withRigRoles(const HeadMesh& mesh,
                                                       const std::vector<editing::PartRole>& roles);
   void updatePickable();
+  void onRolesChanged();
   void setStatus(const QString& text);
   void fail(const QString& what, const QString& message);
   void selectNextMissingAnchor();
