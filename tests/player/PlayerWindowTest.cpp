@@ -5,6 +5,9 @@
 #include "../support/MalformedFiles.h"
 #include "../support/MissingData.h"
 
+#include <lacrima/live/ListenUrl.h>
+#include <lacrima/live/LiveSession.h>
+#include <lacrima/player/LivePanel.h>
 #include <lacrima/player/PlayerWindow.h>
 #include <lacrima/player/TearParametersPanel.h>
 #include <lacrima/viewport/EffectsPanel.h>
@@ -24,6 +27,7 @@
 #include <QPushButton>
 #include <QSlider>
 #include <QStatusBar>
+#include <QTcpSocket>
 #include <QTemporaryDir>
 #include <QToolButton>
 #include <QtTest>
@@ -289,6 +293,38 @@ class PlayerWindowTest : public QObject {
     window_->pause();
     QVERIFY2(window_->effects().cost()->text().contains("ms per frame"),
              qPrintable(window_->effects().cost()->text()));
+  }
+
+  // Live > Listen: a Greta-style frame over TCP turns the head; the timeline gives way to the
+  // live indicator, the Live box counts what came, the player's tear counts weep; opening a file
+  // goes back to it.
+  void liveStreamDrivesTheFace() {
+    QVERIFY(window_->openFile(kDemo));
+    live::ListenUrl url;  // fap+tcp on 127.0.0.1, a port the system chooses
+    window_->listen(url);
+    QVERIFY(window_->isLive());
+    QVERIFY(!window_->source().seekable());
+    const quint16 port = window_->liveSession().inputs().front()->url().port;
+    QTcpSocket agent;
+    agent.connectToHost(QHostAddress::LocalHost, port);
+    QVERIFY(agent.waitForConnected(3000));
+    QByteArray mask;
+    for (int fap = 1; fap <= 68; ++fap) mask += fap == 49 ? "1 " : "0 ";
+    agent.write(mask + "\n0 20000\n");  // head_yaw: 0.2 rad
+    QTRY_COMPARE_WITH_TIMEOUT(window_->liveSource()->framesReceived(), 1LL, 5000);
+    QTRY_COMPARE_WITH_TIMEOUT(window_->liveSource()->shownValues()[channelIndex(49)], 20000.0F,
+                              5000);
+    QVERIFY(!window_->timeline().isEnabled());
+    auto labels = window_->findChildren<QLabel*>();
+    QVERIFY(std::any_of(labels.begin(), labels.end(),
+                        [](QLabel* l) { return l->text().contains("LIVE"); }));
+    window_->livePanel().setTears(30, 30);
+    QTRY_VERIFY_WITH_TIMEOUT(window_->liveSource()->producer().particleCount() > 0, 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(window_->livePanel().statusText().contains("1 frame"), 5000);
+    QVERIFY(window_->openFile(kDemo));
+    QVERIFY(!window_->isLive());
+    QVERIFY(window_->timeline().isEnabled());
+    QVERIFY(!window_->liveSession().listening());
   }
 };
 
