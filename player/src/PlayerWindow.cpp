@@ -2,6 +2,7 @@
 
 #include <lacrima/player/ErrorReport.h>
 #include <lacrima/player/HeadViews.h>
+#include <lacrima/player/LiveMappingDialog.h>
 #include <lacrima/player/LivePanel.h>
 #include <lacrima/player/ProjectHead.h>
 #include <lacrima/player/TearParametersPanel.h>
@@ -161,9 +162,15 @@ void PlayerWindow::buildActions() {
   stopListening_->setObjectName(QStringLiteral("live.stop"));
   stopListening_->setEnabled(false);
   connect(stopListening_, &QAction::triggered, this, &PlayerWindow::stopListening);
+  QAction* mapping = new QAction(tr("Live Link &mapping..."), this);
+  mapping->setObjectName(QStringLiteral("live.mapping"));
+  mapping->setToolTip(tr("The gains from Live Link Face's blendshapes and angles to FAPs"));
+  connect(mapping, &QAction::triggered, this, &PlayerWindow::editMapping);
   QMenu* liveMenu = menuBar()->addMenu(tr("&Live"));
   liveMenu->addAction(listen_);
   liveMenu->addAction(stopListening_);
+  liveMenu->addSeparator();
+  liveMenu->addAction(mapping);
   viewMenu_ = menuBar()->addMenu(tr("&View"));
   viewMenu_->addAction(resetView_);
   // The named cameras of --view, also here: one checked, the camera shown.
@@ -708,6 +715,31 @@ void PlayerWindow::liveFrameArrived() {
   if (now - liveStatusShown_ < 250) return;
   liveStatusShown_ = now;
   livePanel_->showStatus(session_->statusText());
+}
+
+LiveMappingDialog& PlayerWindow::mappingDialog() {
+  if (!mappingDialog_) {
+    LiveLinkMapping mapping = session_->mapping();
+    if (mapping.rows.empty()) {
+      try {
+        mapping = live::defaultLiveLinkMapping();
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "lacrima-player: %s\n", e.what());
+      }
+    }
+    mappingDialog_ = new LiveMappingDialog(mapping, this);
+    connect(mappingDialog_, &LiveMappingDialog::applied, this, [this](const LiveLinkMapping& m) {
+      session_->setMapping(m);
+      statusBar()->showMessage(tr("Live Link mapping applied"), 4000);
+    });
+  }
+  return *mappingDialog_;
+}
+
+void PlayerWindow::editMapping() {
+  LiveMappingDialog& dialog = mappingDialog();
+  dialog.show();
+  dialog.raise();
 }
 
 }  // namespace lacrima::player

@@ -1,6 +1,8 @@
 // FapTextStream and decodeFapDatagram: FAP text arriving in pieces goes through the file
 // reader's parser (same frames, same diagnostics), never stops at a bad line, and holds at most
 // one line of memory.
+#include "../support/FapMaskLine.h"
+
 #include <lacrima/common/FapReader.h>
 #include <lacrima/common/FapTextStream.h>
 
@@ -16,16 +18,7 @@ using namespace lacrima;
 
 namespace {
 
-std::string mask(std::initializer_list<int> faps, int tokens = kFapCount) {
-  std::string line;
-  for (int fap = 1; fap <= tokens; ++fap) {
-    bool set = false;
-    for (int f : faps) set = set || f == fap;
-    line += set ? "1 " : "0 ";
-  }
-  line.pop_back();
-  return line;
-}
+using lacrima::test::mask;
 
 std::string readText(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

@@ -47,6 +47,7 @@ class WarningsButton;
 
 namespace lacrima::player {
 
+class LiveMappingDialog;
 class LivePanel;
 class TearParametersPanel;
 
@@ -88,6 +89,8 @@ class PlayerWindow : public QMainWindow {
   live::LiveSession& liveSession() { return *session_; }
   playback::LiveSource* liveSource() { return live_.get(); }
   LivePanel& livePanel() { return *livePanel_; }
+  // Live > Live Link mapping...: the gains, edited and applied to every Live Link input.
+  LiveMappingDialog& mappingDialog();
   // What the transport shows: the file's Playback, or the live stream.
   playback::AnimationSource& source() { return *source_; }
 
@@ -134,6 +137,7 @@ class PlayerWindow : public QMainWindow {
   void reportError(const std::exception& error, const QString& path);
   void showRigWarnings();
   void chooseStream();
+  void editMapping();
   void liveFrameArrived();
 
   std::unique_ptr<playback::HeadRig> rig_;
@@ -143,6 +147,7 @@ class PlayerWindow : public QMainWindow {
   playback::AnimationSource* source_;  // playback_ or live_
   live::LiveSession* session_;
   LivePanel* livePanel_;
+  LiveMappingDialog* mappingDialog_ = nullptr;
   std::optional<HeadFiles> head_;  // setHeadSource()
   bool headFixed_ = false;
   std::optional<TearQuality> tearQuality_;  // setTearQuality()
