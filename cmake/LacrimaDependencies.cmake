@@ -9,9 +9,9 @@ function(lacrima_missing what debian_package)
     "(or run 'bash packaging/lacrima.sh test', which installs everything in packaging/debian-packages.txt)")
 endfunction()
 
-find_package(Qt6 6.4 QUIET COMPONENTS Core Gui Widgets Test)
-if(NOT Qt6_FOUND OR NOT TARGET Qt6::Widgets OR NOT TARGET Qt6::Test)
-  lacrima_missing("Qt 6 (Core, Gui, Widgets, Test)" "qt6-base-dev")
+find_package(Qt6 6.4 QUIET COMPONENTS Core Gui Widgets Test Network)
+if(NOT Qt6_FOUND OR NOT TARGET Qt6::Widgets OR NOT TARGET Qt6::Test OR NOT TARGET Qt6::Network)
+  lacrima_missing("Qt 6 (Core, Gui, Widgets, Test, Network)" "qt6-base-dev")
 endif()
 set(CMAKE_AUTOMOC ON)
 

@@ -47,7 +47,7 @@ QMenu* buildMainMenus(QMainWindow& window, const std::function<QAction*(const QS
              {"key.add", "key.linear", "key.smooth", "", "key.previous", "key.next"}, action);
   addActions(*bar->addMenu(QMainWindow::tr("&Playback")),
              {"play.toggle", "play.start", "play.end", "play.previousFrame", "play.nextFrame",
-              "play.goToTime"},
+              "play.goToTime", "", "play.recordLive"},
              action);
   QMenu* view = bar->addMenu(QMainWindow::tr("&View"));
   addActions(

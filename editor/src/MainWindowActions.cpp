@@ -7,8 +7,14 @@
 #include <lacrima/editor/TimelineWidget.h>
 #include <lacrima/editor/TransportBar.h>
 
+#include <lacrima/editor/LiveRecording.h>
+#include <lacrima/live/ListenUrl.h>
+
 #include <QAction>
+#include <QInputDialog>
 #include <QLineEdit>
+#include <QSignalBlocker>
+#include <QStatusBar>
 #include <QUndoGroup>
 
 namespace lacrima::editor {
@@ -142,6 +148,44 @@ void MainWindow::createActions() {
                      QKeySequence(QStringLiteral("Ctrl+G"))),
           &QAction::triggered, d_->transport, &TransportBar::editTime);
 
+  // Record live: asks where to listen, counts in, records; the same action stops and keys.
+  d_->liveRecording = new LiveRecording(m, this);
+  QAction* record = makeAction(QStringLiteral("play.recordLive"), tr("&Record live…"),
+                               QKeySequence(QStringLiteral("Ctrl+R")),
+                               tr("Turn a live stream into keys from the playhead, after a "
+                                  "count-in; the selected channels, or all the stream sets"));
+  record->setCheckable(true);
+  connect(d_->liveRecording, &LiveRecording::message, this,
+          [this](const QString& text) { statusBar()->showMessage(text, 8000); });
+  connect(d_->liveRecording, &LiveRecording::stateChanged, this,
+          [record](LiveRecording::State state) {
+            const QSignalBlocker block(record);
+            record->setChecked(state != LiveRecording::State::Idle);
+          });
+  connect(record, &QAction::triggered, this, [this, record] {
+    if (d_->liveRecording->state() != LiveRecording::State::Idle) {
+      d_->liveRecording->stop();
+      return;
+    }
+    record->setChecked(false);
+    const QString text =
+        d_->options.interactive
+            ? QInputDialog::getText(this, tr("Record live"),
+                                    tr("Listen at (fap+tcp://HOST:PORT, fap+udp://HOST:PORT or "
+                                       "livelink+udp://HOST:PORT):"),
+                                    QLineEdit::Normal, QStringLiteral("fap+tcp://127.0.0.1:5555"))
+            : QString();
+    if (text.isEmpty()) return;
+    QString error;
+    const std::optional<live::ListenUrl> url = live::parseListenUrl(text, error);
+    try {
+      if (!url) throw std::runtime_error(error.toStdString());
+      d_->liveRecording->start(*url, d_->model->selectedChannels(), 3.0);
+    } catch (const std::exception& e) {
+      reportError(tr("Cannot record"), QString::fromStdString(e.what()));
+    }
+  });
+
   QAction* tears = makeAction(QStringLiteral("view.tearPreview"), tr("&Tear preview"),
                               QKeySequence(Qt::Key_T), tr("Simulate the tears while paused"));
   tears->setCheckable(true);
@@ -167,5 +211,7 @@ void MainWindow::createActions() {
                      QKeySequence::HelpContents),
           &QAction::triggered, this, &MainWindow::showShortcuts);
 }
+
+LiveRecording& MainWindow::liveRecording() { return *d_->liveRecording; }
 
 }  // namespace lacrima::editor

@@ -48,6 +48,7 @@ struct MainWindow::Private {
   TransportBar* transport = nullptr;
   PresetPanel* presets = nullptr;
   PreviewPanel* preview = nullptr;
+  LiveRecording* liveRecording = nullptr;
   KeyListPanel* keyList = nullptr;
   RecoveryBanner* banner = nullptr;
   head::HeadWorkspace* headWorkspace = nullptr;

@@ -13,6 +13,8 @@
 #include <lacrima/common/ImageSize.h>
 #include <lacrima/common/Keyframes.h>
 #include <lacrima/common/TearQuality.h>
+#include <lacrima/live/ListenUrl.h>
+#include <lacrima/live/LiveSession.h>
 #include <lacrima/playback/HeadRig.h>
 #include <lacrima/scene/CameraPreset.h>
 #include <lacrima/viewport/DarkTheme.h>
@@ -24,10 +26,13 @@
 #include <QTimer>
 
 #include <unistd.h>
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 using namespace lacrima;
 
@@ -96,6 +101,112 @@ struct ModeOptions {
   int threads = 0;                     // --threads
 };
 
+// --listen, --record, --record-rate, --mapping, --exit-when-idle: the live options.
+struct LiveOptions {
+  std::vector<live::ListenUrl> urls;
+  QString record;
+  std::optional<double> recordRate;
+  std::optional<LiveLinkMapping> mapping;
+  std::optional<double> exitWhenIdle;
+};
+
+// The live options, or nullopt after saying what is wrong (a usage error).
+std::optional<LiveOptions> liveOptions(const QCommandLineParser& parser) {
+  LiveOptions options;
+  for (const QString& text : parser.values("listen")) {
+    QString error;
+    const std::optional<live::ListenUrl> url = live::parseListenUrl(text, error);
+    if (!url) {
+      std::fprintf(stderr, "lacrima-player: --listen: %s\n", error.toLocal8Bit().constData());
+      return std::nullopt;
+    }
+    options.urls.push_back(*url);
+  }
+  std::string error;
+  if (parser.isSet("record-rate")) {
+    options.recordRate =
+        readNumberOption("--record-rate", "frames per second",
+                         parser.value("record-rate").toStdString(), 1, 1000, error);
+    if (!options.recordRate) {
+      std::fprintf(stderr, "lacrima-player: %s\n", error.c_str());
+      return std::nullopt;
+    }
+  }
+  if (parser.isSet("exit-when-idle")) {
+    options.exitWhenIdle =
+        readNumberOption("--exit-when-idle", "seconds",
+                         parser.value("exit-when-idle").toStdString(), 0.01, 86400, error);
+    if (!options.exitWhenIdle) {
+      std::fprintf(stderr, "lacrima-player: %s\n", error.c_str());
+      return std::nullopt;
+    }
+  }
+  options.record = parser.value("record");
+  if ((!options.record.isEmpty() || options.exitWhenIdle) && options.urls.empty()) {
+    std::fprintf(stderr, "lacrima-player: --record and --exit-when-idle need --listen URL\n");
+    return std::nullopt;
+  }
+  return options;
+}
+
+// Starts the inputs and the recording, saying where each listens on stdout (a port of 0 is
+// the one the system chose). Throws std::runtime_error when an input cannot be opened.
+void startLive(live::LiveSession& session, const LiveOptions& options,
+               const std::function<void(const live::ListenUrl&)>& listen) {
+  if (options.mapping) session.setMapping(*options.mapping);
+  if (!options.record.isEmpty())
+    session.startRecording(options.record.toStdString(), options.recordRate);
+  for (const live::ListenUrl& url : options.urls) listen(url);
+  for (const auto& input : session.inputs())
+    std::printf("listening on %s\n", input->url().toString().toLocal8Bit().constData());
+  std::fflush(stdout);
+}
+
+// Ends the recording, saying where it went; false when the file could not be written.
+bool finishRecording(live::LiveSession& session) {
+  if (!session.recorder()) return true;
+  const std::string path = session.recorder()->path();
+  const int frames = session.recorder()->frameCount();
+  const double rate = session.recorder()->rate();
+  try {
+    if (session.stopRecording())
+      std::fprintf(stderr, "lacrima-player: recorded %d frames at %g fps to %s\n", frames, rate,
+                   path.c_str());
+    else
+      std::fprintf(stderr, "lacrima-player: nothing arrived; %s not written\n", path.c_str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "lacrima-player: %s\n", e.what());
+    return false;
+  }
+  return true;
+}
+
+// --exit-when-idle: quits the application after that long without a frame.
+void quitWhenIdle(QCoreApplication& app, live::LiveSession& session,
+                  std::optional<double> seconds) {
+  if (!seconds) return;
+  auto* timer = new QTimer(&session);
+  timer->setInterval(std::clamp(static_cast<int>(*seconds * 250), 10, 500));
+  QObject::connect(timer, &QTimer::timeout, &app, [&app, &session, limit = *seconds] {
+    if (session.idleSeconds() >= limit) app.quit();
+  });
+  timer->start();
+}
+
+// --no-window: the inputs and the recording without a window (and without a head).
+int headlessMode(QCoreApplication& app, const LiveOptions& options) {
+  if (options.urls.empty() || options.record.isEmpty()) {
+    std::fprintf(stderr, "lacrima-player: --no-window needs --listen URL and --record OUT.fap\n");
+    return kExitUsage;
+  }
+  live::LiveSession session;
+  startLive(session, options, [&](const live::ListenUrl& url) { session.listen(url); });
+  quitWhenIdle(app, session, options.exitWhenIdle);
+  app.exec();
+  std::fprintf(stderr, "lacrima-player: %s\n", session.statusText().toLocal8Bit().constData());
+  return finishRecording(session) ? kExitOk : kExitBadInput;
+}
+
 int renderMode(const QCommandLineParser& parser, const QSize& size, const ModeOptions& mode) {
   const QStringList files = parser.positionalArguments();
   if (files.size() != 1) {
@@ -123,7 +234,7 @@ int renderMode(const QCommandLineParser& parser, const QSize& size, const ModeOp
 }
 
 int windowMode(QApplication& app, const QCommandLineParser& parser, const QSize* size,
-               const ModeOptions& mode) {
+               const ModeOptions& mode, const LiveOptions& liveOptions) {
   const QStringList files = parser.positionalArguments();
   if (files.size() > 1) {
     std::fprintf(stderr, "lacrima-player: give at most one FILE to open\n");
@@ -154,7 +265,11 @@ int windowMode(QApplication& app, const QCommandLineParser& parser, const QSize*
   if (!screenshot) {
     window.loopAction()->setChecked(parser.isSet("loop"));
     if (parser.isSet("play")) window.play();
-    return app.exec();
+    startLive(window.liveSession(), liveOptions,
+              [&](const live::ListenUrl& url) { window.listen(url); });
+    quitWhenIdle(app, window.liveSession(), liveOptions.exitWhenIdle);
+    const int status = app.exec();
+    return finishRecording(window.liveSession()) ? status : kExitBadInput;
   }
   // --screenshot: pose the window at --at seconds, let it lay out and render, grab it.
   std::string error;
@@ -186,10 +301,11 @@ int main(int argc, char** argv) {
   // OGRE on Debian renders through GLX: both modes need an X display. Say so before Qt would
   // abort on a missing one.
   const bool render = hasOption(argc, argv, "--render");
+  const bool noWindow = hasOption(argc, argv, "--no-window");
   const bool help = hasOption(argc, argv, "--help") || hasOption(argc, argv, "-h") ||
                     hasOption(argc, argv, "--version");
   const bool haveX = !qEnvironmentVariableIsEmpty("DISPLAY");
-  if (!haveX && !help) {
+  if (!haveX && !help && !noWindow) {
     if (render)
       std::fprintf(
           stderr,
@@ -205,7 +321,7 @@ int main(int argc, char** argv) {
   // The OGRE viewport embeds a GLX window: use X even in a Wayland session (XWayland). Help
   // and version need no display at all.
   if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
-    qputenv("QT_QPA_PLATFORM", haveX ? "xcb" : "offscreen");
+    qputenv("QT_QPA_PLATFORM", haveX && !noWindow ? "xcb" : "offscreen");
   QApplication app(argc, argv);
   QCoreApplication::setApplicationName("lacrima-player");
   QCoreApplication::setApplicationVersion(LACRIMA_VERSION);
@@ -220,6 +336,11 @@ int main(int argc, char** argv) {
       "  xvfb-run -a lacrima-player --render close/ --view close-left media/demo/crying.fap\n"
       "  lacrima-player --mesh head.obj --fdp head.fdp.json animation.fap\n"
       "  lacrima-player my-character/project.lacrima\n\n"
+      "Live (docs/live.md):\n"
+      "  lacrima-player --listen fap+tcp://127.0.0.1:5555     # then: lacrima-send FILE --to ...\n"
+      "  lacrima-player --listen livelink+udp://0.0.0.0:11111  # Live Link Face on a phone\n"
+      "  lacrima-player --no-window --listen fap+tcp://:5555 --record take.fap --exit-when-idle "
+      "2\n\n"
       "Keys: Space play/pause, Home reset, Left/Right one frame, L loop, V reset the view, Ctrl+O\n"
       "open.\n"
       "Mouse: left drag orbits, right drag pans, the wheel zooms, double-click frames the face.\n\n"
@@ -255,6 +376,20 @@ int main(int argc, char** argv) {
        "default) or reference (shorter sub-steps, closest to a fine reference).",
        "LEVEL"},
       appsupport::threadsOption(QStringLiteral("the tear simulation")),
+      {"listen",
+       "Play a live stream (repeatable): fap+tcp://HOST:PORT, fap+udp://HOST:PORT or "
+       "livelink+udp://HOST:PORT. Without HOST only this machine can send (127.0.0.1).",
+       "URL"},
+      {"record",
+       "Record what arrives, after retargeting, to a FAP file, written when the player ends.",
+       "OUT.fap"},
+      {"record-rate", "Frame rate of --record (default: the stream's, else 30).", "FPS"},
+      {"mapping",
+       "The Live Link mapping table (ARKit blendshapes to FAPs, with gains) in place of the "
+       "shipped one (media/livelink-mapping.json).",
+       "FILE"},
+      {"no-window", "Run without a window (with --listen and --record): for scripts and tests."},
+      {"exit-when-idle", "End after this long without a live frame.", "SECONDS"},
   });
   parser.process(app);
   const std::optional<int> threads = appsupport::threadsFrom(parser, "lacrima-player");
@@ -286,9 +421,14 @@ int main(int argc, char** argv) {
     }
     size = parsed.size;
   }
+  std::optional<LiveOptions> live = liveOptions(parser);
+  if (!live) return kExitUsage;
   try {
+    if (parser.isSet("mapping"))
+      live->mapping = LiveLinkMapping::load(parser.value("mapping").toStdString());
+    if (noWindow) return headlessMode(app, *live);
     if (parser.isSet("render")) return renderMode(parser, size, mode);
-    return windowMode(app, parser, parser.isSet("size") ? &size : nullptr, mode);
+    return windowMode(app, parser, parser.isSet("size") ? &size : nullptr, mode, *live);
   } catch (const std::exception& e) {
     const QString input = parser.positionalArguments().value(0);
     std::fprintf(stderr, "lacrima-player: %s\n",

@@ -2,11 +2,15 @@
 
 #include <lacrima/player/ErrorReport.h>
 #include <lacrima/player/HeadViews.h>
+#include <lacrima/player/LiveMappingDialog.h>
+#include <lacrima/player/LivePanel.h>
 #include <lacrima/player/ProjectHead.h>
 #include <lacrima/player/TearParametersPanel.h>
 
 #include <lacrima/common/MediaFiles.h>
 #include <lacrima/common/ProjectPath.h>
+#include <lacrima/live/ListenUrl.h>
+#include <lacrima/live/LiveSession.h>
 #include <lacrima/playback/AnimationFile.h>
 #include <lacrima/viewport/EffectsPanel.h>
 #include <lacrima/viewport/FaceViewport.h>
@@ -22,7 +26,9 @@
 #include <QFileInfo>
 #include <QGroupBox>
 #include <QHBoxLayout>
+#include <QInputDialog>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
@@ -47,6 +53,9 @@ constexpr int kMaxFramesPerTick = 4;
 // A checkpoint every 22 frames (a second at the usual rate): scrubbing back replays at most
 // 21 frames, about 0.1 s on the demo, for some hundred kilobytes per checkpoint.
 constexpr int kCheckpointInterval = 22;
+// A live stream is shown at the display's pace: about 60 pictures a second.
+constexpr int kLiveTickMilliseconds = 16;
+constexpr int kFileTickMilliseconds = 8;
 
 QString clockText(double seconds) {
   const int tenths = static_cast<int>(std::lround(seconds * 100));
@@ -61,13 +70,21 @@ QString clockText(double seconds) {
 PlayerWindow::PlayerWindow(std::unique_ptr<playback::HeadRig> rig, QWidget* parent)
     : QMainWindow(parent),
       rig_(std::move(rig)),
-      playback_(std::make_unique<playback::Playback>(*rig_, kCheckpointInterval)) {
+      playback_(std::make_unique<playback::Playback>(*rig_, kCheckpointInterval)),
+      source_(playback_.get()) {
   setWindowTitle(tr("Lacrima Player"));
   setAcceptDrops(true);
   sinceStart_.start();
   ticker_ = new QTimer(this);
   ticker_->setTimerType(Qt::PreciseTimer);
-  ticker_->setInterval(8);
+  ticker_->setInterval(kFileTickMilliseconds);
+  session_ = new live::LiveSession(this);
+  session_->setFrameHandler([this](const live::LiveFrame& frame) {
+    if (!live_) return;
+    live_->push(frame.values, frame.mask, frame.arrival);
+    if (frame.frameRate) live_->setFrameRate(*frame.frameRate);
+  });
+  connect(session_, &live::LiveSession::countersChanged, this, &PlayerWindow::liveFrameArrived);
   connect(ticker_, &QTimer::timeout, this, &PlayerWindow::tick);
   buildActions();
   buildLayout();
@@ -104,12 +121,14 @@ void PlayerWindow::buildActions() {
   stepBack_ = new QAction(tr("Previous frame"), this);
   stepBack_->setShortcut(Qt::Key_Left);
   connect(stepBack_, &QAction::triggered, this, [this] {
+    if (isLive()) return;
     pause();
     seek((playback_->currentFrame() - 1) / playback_->frameRate());
   });
   stepForward_ = new QAction(tr("Next frame"), this);
   stepForward_->setShortcut(Qt::Key_Right);
   connect(stepForward_, &QAction::triggered, this, [this] {
+    if (isLive()) return;
     pause();
     seek((playback_->currentFrame() + 1) / playback_->frameRate());
   });
@@ -135,6 +154,23 @@ void PlayerWindow::buildActions() {
   file->addAction(quit_);
   QMenu* playMenu = menuBar()->addMenu(tr("&Playback"));
   for (QAction* a : {play_, reset_, stepBack_, stepForward_, loop_}) playMenu->addAction(a);
+  listen_ = new QAction(tr("&Listen..."), this);
+  listen_->setObjectName(QStringLiteral("live.listen"));
+  listen_->setToolTip(tr("Play a live stream: FAP frames over TCP or UDP, or Live Link Face"));
+  connect(listen_, &QAction::triggered, this, &PlayerWindow::chooseStream);
+  stopListening_ = new QAction(tr("&Stop listening"), this);
+  stopListening_->setObjectName(QStringLiteral("live.stop"));
+  stopListening_->setEnabled(false);
+  connect(stopListening_, &QAction::triggered, this, &PlayerWindow::stopListening);
+  QAction* mapping = new QAction(tr("Live Link &mapping..."), this);
+  mapping->setObjectName(QStringLiteral("live.mapping"));
+  mapping->setToolTip(tr("The gains from Live Link Face's blendshapes and angles to FAPs"));
+  connect(mapping, &QAction::triggered, this, &PlayerWindow::editMapping);
+  QMenu* liveMenu = menuBar()->addMenu(tr("&Live"));
+  liveMenu->addAction(listen_);
+  liveMenu->addAction(stopListening_);
+  liveMenu->addSeparator();
+  liveMenu->addAction(mapping);
   viewMenu_ = menuBar()->addMenu(tr("&View"));
   viewMenu_->addAction(resetView_);
   // The named cameras of --view, also here: one checked, the camera shown.
@@ -216,6 +252,15 @@ void PlayerWindow::buildLayout() {
   auto* parametersBox = new QGroupBox(tr("Tear parameters"), side);
   (new QVBoxLayout(parametersBox))->addWidget(parameters_);
   parametersBox->setToolTip(tr("Changing a parameter restarts the tears"));
+  livePanel_ = new LivePanel(side);
+  auto* liveBox = new QGroupBox(tr("Live"), side);
+  liveBox->setObjectName("liveBox");
+  (new QVBoxLayout(liveBox))->addWidget(livePanel_);
+  liveBox->setVisible(false);
+  connect(livePanel_, &LivePanel::tearsEdited, this, [this](int left, int right) {
+    if (live_) live_->setTears(static_cast<float>(left), static_cast<float>(right));
+  });
+  sideLayout->addWidget(liveBox);
   sideLayout->addWidget(effectsBox);
   sideLayout->addWidget(parametersBox);
   sideLayout->addStretch(1);
@@ -285,6 +330,7 @@ bool PlayerWindow::openFile(const QString& path) {
     return false;
   }
   QApplication::restoreOverrideCursor();
+  stopListening();  // the file takes the transport (and a new head outlives no live source)
   if (newRig) {
     for (const std::string& w : newRig->warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     viewport_->setHead(newRig->head);
@@ -296,6 +342,7 @@ bool PlayerWindow::openFile(const QString& path) {
     if (cameraPreset_ != scene::CameraPreset::Framing)
       viewport_->setView(presetView(*rig_, cameraPreset_));
   }
+  source_ = playback_.get();
   clock_.setTime(0);
   applyTearQuality();
   const bool qualityChanged = playback_->scene().quality != qualityBefore;
@@ -376,7 +423,16 @@ void PlayerWindow::openDemo() {
 }
 
 void PlayerWindow::play() {
-  if (playback_->frameCount() == 0 || playing()) return;
+  if (playing()) return;
+  if (isLive()) {
+    clock_.play();
+    ticker_->setInterval(kLiveTickMilliseconds);
+    ticker_->start();
+    updatePlayIcon();
+    return;
+  }
+  if (playback_->frameCount() == 0) return;
+  ticker_->setInterval(kFileTickMilliseconds);
   // At the end, Play starts over (the tears replay from the first checkpoint).
   if (playback_->currentTime() >= playback_->duration()) seek(0);
   clock_.setTime(playback_->currentTime());
@@ -395,21 +451,31 @@ void PlayerWindow::pause() {
 void PlayerWindow::togglePlay() { playing() ? pause() : play(); }
 
 void PlayerWindow::resetPlayback() {
+  const bool live = isLive() && playing();
   pause();
-  playback_->reset();
+  source_->reset();
   clock_.setTime(0);
-  display(playback_->view());
+  display(source_->view());
+  if (live) play();  // a stream goes on: Reset clears the tears
   updateTransport();
 }
 
 void PlayerWindow::seek(double seconds) {
-  if (playback_->frameCount() == 0) return;
+  if (isLive() || playback_->frameCount() == 0) return;
   display(playback_->seek(seconds));
   clock_.setTime(playback_->currentTime());
   updateTransport();
 }
 
 void PlayerWindow::tick() {
+  if (isLive()) {
+    const long long framesBefore = live_->producer().counters().frames;
+    display(live_->seek(live::liveClockSeconds()));
+    recordTearCost(framesBefore);
+    updateTransport();
+    liveFrameArrived();
+    return;
+  }
   double t = clock_.time();
   const double end = playback_->duration();
   const double reachable = (playback_->currentFrame() + kMaxFramesPerTick) / playback_->frameRate();
@@ -433,7 +499,7 @@ void PlayerWindow::tick() {
 // Only frames produced by a tick of playing: seeking replays from a checkpoint, which says
 // nothing about the cost of a frame as it plays. Of a tick's frames the last is measured.
 void PlayerWindow::recordTearCost(long long framesBefore) {
-  const playback::FrameProducer& producer = playback_->producer();
+  const playback::FrameProducer& producer = source_->producer();
   if (producer.counters().frames == framesBefore) return;  // the tick stayed on its frame
   const playback::ProducerTimes& t = producer.lastTimes();
   effects_->addFrameCost(t.simulation + t.surface + t.trails, t.substeps);
@@ -442,33 +508,34 @@ void PlayerWindow::recordTearCost(long long framesBefore) {
 void PlayerWindow::setTearQuality(TearQuality level) {
   tearQuality_ = level;
   applyTearQuality();
-  effects_->display(playback_->scene());
-  display(playback_->view());
+  effects_->display(source_->scene());
+  display(source_->view());
   updateTransport();
 }
 
 void PlayerWindow::setSimulationThreads(int threads) {
   simulationThreads_ = threads;
   playback_->setSimulationThreads(threads);
+  if (live_) live_->setSimulationThreads(threads);
 }
 
 void PlayerWindow::applyTearQuality() {
-  if (!tearQuality_ || playback_->scene().quality.level == *tearQuality_) return;
-  SceneSettings scene = playback_->scene();
+  if (!tearQuality_ || source_->scene().quality.level == *tearQuality_) return;
+  SceneSettings scene = source_->scene();
   scene.quality.level = *tearQuality_;
-  playback_->setScene(scene);
+  source_->setScene(scene);
 }
 
 void PlayerWindow::display(const playback::FrameView& view) { viewport_->showFrame(view); }
 
 void PlayerWindow::applyScene() {
-  SceneSettings scene = playback_->scene();
+  SceneSettings scene = source_->scene();
   effects_->applyTo(scene);
   scene.simulation = parameters_->values();
-  const bool restart = playback::restartsTears(playback_->scene(), scene);
+  const bool restart = playback::restartsTears(source_->scene(), scene);
   if (restart) QApplication::setOverrideCursor(Qt::WaitCursor);
   try {
-    playback_->setScene(scene);
+    source_->setScene(scene);
   } catch (const std::exception& e) {
     statusBar()->showMessage(tr("Parameters refused: %1").arg(QString::fromUtf8(e.what())));
   }
@@ -476,8 +543,8 @@ void PlayerWindow::applyScene() {
     QApplication::restoreOverrideCursor();
     statusBar()->showMessage(tr("Tear parameters or quality changed: the tears restarted"), 4000);
   }
-  clock_.setTime(playback_->currentTime());
-  display(playback_->view());
+  clock_.setTime(source_->currentTime());
+  display(source_->view());
   updateTransport();
 }
 
@@ -486,6 +553,25 @@ void PlayerWindow::applyScene() {
 void PlayerWindow::timelineMoved(int milliseconds) { seek(milliseconds / 1000.0); }
 
 void PlayerWindow::updateTransport() {
+  if (isLive()) {
+    const QSignalBlocker block(timeline_);
+    timeline_->setEnabled(false);
+    play_->setEnabled(true);
+    // No position in a stream: the indicator says it is live, and since when.
+    timeLabel_->setText(tr("\u25CF LIVE %1").arg(clockText(live_->currentTime())));
+    frameLabel_->setText(tr("%1 frames received, %2 shown, %3 dropped")
+                             .arg(live_->framesReceived())
+                             .arg(live_->currentFrame())
+                             .arg(live_->framesDropped()));
+    const int particles = live_->producer().particleCount();
+    const playback::ProducerTimes& t = live_->producer().lastTimes();
+    tearsLabel_->setText(particles > 0 ? tr("%1 tear particles (%2 ms)")
+                                             .arg(particles)
+                                             .arg(t.simulation + t.surface + t.trails, 0, 'f', 1)
+                                       : QString());
+    return;
+  }
+  timeLabel_->setStyleSheet(QString());
   const bool loaded = playback_->frameCount() > 0;
   {
     const QSignalBlocker block(timeline_);
@@ -553,6 +639,107 @@ void PlayerWindow::dropEvent(QDropEvent* event) {
   // Open after the drop returns, so the drag source is not kept waiting by a dialog.
   const QString path = urls.front().toLocalFile();
   QTimer::singleShot(0, this, [this, path] { openFile(path); });
+}
+
+void PlayerWindow::listen(const live::ListenUrl& url) {
+  session_->listen(url);  // throws before anything changes
+  if (!live_) {
+    pause();
+    live_ = std::make_unique<playback::LiveSource>(*rig_);
+    live_->setSimulationThreads(simulationThreads_);
+    SceneSettings scene = live_->scene();
+    scene.simulation = parameters_->values();
+    effects_->applyTo(scene);
+    scene.redness = SceneSettings::Redness::Tears;  // a stream has no progress to follow
+    if (tearQuality_) scene.quality.level = *tearQuality_;
+    live_->setScene(scene);
+    live_->setTears(static_cast<float>(livePanel_->tearsLeft()),
+                    static_cast<float>(livePanel_->tearsRight()));
+    source_ = live_.get();
+    effects_->display(live_->scene());
+    timeLabel_->setStyleSheet(QStringLiteral("color: #e04040; font-weight: bold"));
+    if (QWidget* box = findChild<QWidget*>(QStringLiteral("liveBox"))) box->setVisible(true);
+    stopListening_->setEnabled(true);
+    play();
+  }
+  setWindowTitle(tr("Live - Lacrima Player"));
+  QStringList urls;
+  for (const auto& input : session_->inputs()) urls << input->url().toString();
+  statusBar()->showMessage(tr("Listening on %1").arg(urls.join(QStringLiteral(", "))));
+  liveStatusShown_ = -1000;
+  liveFrameArrived();
+}
+
+void PlayerWindow::stopListening() {
+  if (!live_) return;
+  pause();
+  session_->stopListening();
+  source_ = playback_.get();
+  live_.reset();
+  stopListening_->setEnabled(false);
+  if (QWidget* box = findChild<QWidget*>(QStringLiteral("liveBox"))) box->setVisible(false);
+  effects_->display(playback_->scene());
+  display(playback_->view());
+  updateTransport();
+  statusBar()->showMessage(tr("Stopped listening"), 4000);
+}
+
+void PlayerWindow::chooseStream() {
+  bool ok = false;
+  const QString text = QInputDialog::getText(
+      this, tr("Listen to a live stream"),
+      tr("fap+tcp://HOST:PORT (FAP text, e.g. from an agent or lacrima-send)\n"
+         "fap+udp://HOST:PORT (one frame per datagram)\n"
+         "livelink+udp://HOST:PORT (Live Link Face, port 11111)\n"
+         "Without HOST only this machine can send (127.0.0.1); 0.0.0.0 listens on every "
+         "network."),
+      QLineEdit::Normal, QStringLiteral("fap+tcp://127.0.0.1:5555"), &ok);
+  if (!ok || text.isEmpty()) return;
+  QString error;
+  const std::optional<live::ListenUrl> url = live::parseListenUrl(text, error);
+  try {
+    if (!url) throw std::runtime_error(error.toStdString());
+    listen(*url);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "lacrima-player: %s\n", e.what());
+    statusBar()->showMessage(tr("Cannot listen: %1").arg(QString::fromStdString(e.what())));
+    if (errorDialogs_)
+      QMessageBox::warning(this, tr("Cannot listen"), QString::fromStdString(e.what()));
+  }
+}
+
+// At most a few times a second: a flood of datagrams must not become a flood of repaints.
+void PlayerWindow::liveFrameArrived() {
+  if (!live_) return;
+  const qint64 now = sinceStart_.elapsed();
+  if (now - liveStatusShown_ < 250) return;
+  liveStatusShown_ = now;
+  livePanel_->showStatus(session_->statusText());
+}
+
+LiveMappingDialog& PlayerWindow::mappingDialog() {
+  if (!mappingDialog_) {
+    LiveLinkMapping mapping = session_->mapping();
+    if (mapping.rows.empty()) {
+      try {
+        mapping = live::defaultLiveLinkMapping();
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "lacrima-player: %s\n", e.what());
+      }
+    }
+    mappingDialog_ = new LiveMappingDialog(mapping, this);
+    connect(mappingDialog_, &LiveMappingDialog::applied, this, [this](const LiveLinkMapping& m) {
+      session_->setMapping(m);
+      statusBar()->showMessage(tr("Live Link mapping applied"), 4000);
+    });
+  }
+  return *mappingDialog_;
+}
+
+void PlayerWindow::editMapping() {
+  LiveMappingDialog& dialog = mappingDialog();
+  dialog.show();
+  dialog.raise();
 }
 
 }  // namespace lacrima::player

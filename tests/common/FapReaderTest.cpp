@@ -1,5 +1,6 @@
 // FapReader: the public samples, every tolerated variation, every rejected one, and inputs that
 // try to make the reader crash, hang or allocate.
+#include "../support/FapMaskLine.h"
 #include "../support/MissingData.h"
 #include "../support/WorstCaseInputs.h"
 
@@ -25,17 +26,7 @@ namespace {
 
 const std::string kName = "t.fap";
 
-// A mask line setting `faps`, with `tokens` tokens (68 or 70).
-std::string mask(std::initializer_list<int> faps, int tokens = kFapCount) {
-  std::string line;
-  for (int fap = 1; fap <= tokens; ++fap) {
-    bool set = false;
-    for (int f : faps) set = set || f == fap;
-    line += set ? "1 " : "0 ";
-  }
-  line.pop_back();
-  return line;
-}
+using lacrima::test::mask;
 
 FapReadResult parse(const std::string& text) { return FapReader::parse(text, kName); }
 

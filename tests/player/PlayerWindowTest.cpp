@@ -2,9 +2,14 @@
 // through the Open action's path, Play until frames advance, Reset to a neutral face with no
 // tears; a bad file gives an error dialog and keeps the animation; drops open files; toggles
 // and parameters reach the playback.
+#include "../live/LiveTestSupport.h"
 #include "../support/MalformedFiles.h"
 #include "../support/MissingData.h"
 
+#include <lacrima/live/ListenUrl.h>
+#include <lacrima/live/LiveSession.h>
+#include <lacrima/player/LiveMappingDialog.h>
+#include <lacrima/player/LivePanel.h>
 #include <lacrima/player/PlayerWindow.h>
 #include <lacrima/player/TearParametersPanel.h>
 #include <lacrima/viewport/EffectsPanel.h>
@@ -24,8 +29,11 @@
 #include <QPushButton>
 #include <QSlider>
 #include <QStatusBar>
+#include <QTableWidget>
+#include <QTcpSocket>
 #include <QTemporaryDir>
 #include <QToolButton>
+#include <QUdpSocket>
 #include <QtTest>
 
 #include <fstream>
@@ -289,6 +297,55 @@ class PlayerWindowTest : public QObject {
     window_->pause();
     QVERIFY2(window_->effects().cost()->text().contains("ms per frame"),
              qPrintable(window_->effects().cost()->text()));
+  }
+
+  // Live > Listen: a Greta-style frame over TCP turns the head; the timeline gives way to the
+  // live indicator, the Live box counts what came, the player's tear counts weep; opening a file
+  // goes back to it.
+  void liveStreamDrivesTheFace() {
+    QVERIFY(window_->openFile(kDemo));
+    live::ListenUrl url;  // fap+tcp on 127.0.0.1, a port the system chooses
+    window_->listen(url);
+    QVERIFY(window_->isLive());
+    QVERIFY(!window_->source().seekable());
+    const quint16 port = window_->liveSession().inputs().front()->url().port;
+    QTcpSocket agent;
+    agent.connectToHost(QHostAddress::LocalHost, port);
+    QVERIFY(agent.waitForConnected(3000));
+    QByteArray mask;
+    for (int fap = 1; fap <= 68; ++fap) mask += fap == 49 ? "1 " : "0 ";
+    agent.write(mask + "\n0 20000\n");  // head_yaw: 0.2 rad
+    QTRY_COMPARE_WITH_TIMEOUT(window_->liveSource()->framesReceived(), 1LL, 5000);
+    QTRY_COMPARE_WITH_TIMEOUT(window_->liveSource()->shownValues()[channelIndex(49)], 20000.0F,
+                              5000);
+    QVERIFY(!window_->timeline().isEnabled());
+    auto labels = window_->findChildren<QLabel*>();
+    QVERIFY(std::any_of(labels.begin(), labels.end(),
+                        [](QLabel* l) { return l->text().contains("LIVE"); }));
+    window_->livePanel().setTears(30, 30);
+    QTRY_VERIFY_WITH_TIMEOUT(window_->liveSource()->producer().particleCount() > 0, 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(window_->livePanel().statusText().contains("1 frame"), 5000);
+
+    // Live > Live Link mapping: a gain edited and applied drives the next packet.
+    live::ListenUrl phoneUrl;
+    phoneUrl.kind = live::StreamKind::LiveLinkUdp;
+    window_->listen(phoneUrl);
+    LiveMappingDialog& mapping = window_->mappingDialog();
+    QTableWidget& table = mapping.table();
+    for (int r = 0; r < table.rowCount(); ++r)
+      if (table.item(r, 0)->text() == "jawOpen") table.item(r, 2)->setData(Qt::EditRole, 1000.0);
+    emit mapping.applied(mapping.mapping());
+    std::array<float, 61> values{};
+    values[live::test::kJawOpen] = 0.5F;
+    QUdpSocket phone;
+    phone.writeDatagram(live::test::liveLinkPacket(values), QHostAddress::LocalHost,
+                        window_->liveSession().inputs().back()->url().port);
+    QTRY_COMPARE_WITH_TIMEOUT(window_->liveSource()->shownValues()[channelIndex(3)], 500.0F, 5000);
+
+    QVERIFY(window_->openFile(kDemo));
+    QVERIFY(!window_->isLive());
+    QVERIFY(window_->timeline().isEnabled());
+    QVERIFY(!window_->liveSession().listening());
   }
 };
 

@@ -14,6 +14,7 @@
 // [0, kMaxTearParticles]. Memory is bounded by the input's size, never by numbers in it.
 #include <lacrima/common/Diagnostics.h>
 #include <lacrima/common/FapAnimation.h>
+#include <lacrima/common/FapTextParser.h>
 
 #include <iosfwd>
 #include <string>
@@ -29,8 +30,8 @@ struct FapReadResult {
 
 class FapReader {
  public:
-  // Longest physical line accepted. A real value line is < 4 KiB.
-  static constexpr std::size_t kMaxLineLength = 64 * 1024;
+  // Longest physical line accepted: the text parser's, the same for files and streams.
+  static constexpr std::size_t kMaxLineLength = FapTextParser::kMaxLineLength;
   // Highest frame count gaps may expand to, beyond the frames actually present: keeps a
   // two-line file that names frame 2'000'000'000 from allocating gigabytes.
   static constexpr int kMaxFilledFrames = 100000;

@@ -38,6 +38,7 @@ class GraphEditor;
 class KeyListPanel;
 class LayerPanel;
 class PresetPanel;
+class LiveRecording;
 class PreviewPanel;
 class RecoveryBanner;
 class SliderPanel;
@@ -88,6 +89,8 @@ class MainWindow : public QMainWindow {
   editing::RecoveryStore& recovery();
   // Actions by object name ("file.save", "key.add", ...), for tests and the shortcut list.
   QAction* action(const QString& name) const;
+  // Playback > Record live...: a stream turned into keys from the playhead (LiveRecording.h).
+  LiveRecording& liveRecording();
 
   // --- files (false on failure; the reason is in lastError()) ---------------------------
   void newDocument();

@@ -17,6 +17,7 @@
 #include <lacrima/player/RealTimeClock.h>
 
 #include <lacrima/playback/HeadRig.h>
+#include <lacrima/playback/LiveSource.h>
 #include <lacrima/playback/Playback.h>
 #include <lacrima/scene/CameraPreset.h>
 
@@ -33,6 +34,11 @@ class QMenu;
 class QSlider;
 class QTimer;
 
+namespace lacrima::live {
+class LiveSession;
+struct ListenUrl;
+}  // namespace lacrima::live
+
 namespace lacrima::viewport {
 class EffectsPanel;
 class FaceViewport;
@@ -41,6 +47,8 @@ class WarningsButton;
 
 namespace lacrima::player {
 
+class LiveMappingDialog;
+class LivePanel;
 class TearParametersPanel;
 
 class PlayerWindow : public QMainWindow {
@@ -70,6 +78,21 @@ class PlayerWindow : public QMainWindow {
   // Threads the tear simulation shares (--threads; Playback::setSimulationThreads), for this
   // animation's next tears and every file opened later.
   void setSimulationThreads(int threads);
+
+  // Live input (--listen, Live > Listen...): the face follows the newest frame of every stream
+  // listened to, the tears simulate at the display's pace, the timeline shows a live indicator.
+  // Throws std::runtime_error (naming the URL) when the input cannot be opened; the stream
+  // listened to before stays. Opening a file stops listening.
+  void listen(const live::ListenUrl& url);
+  void stopListening();
+  bool isLive() const { return source_ == live_.get() && live_; }
+  live::LiveSession& liveSession() { return *session_; }
+  playback::LiveSource* liveSource() { return live_.get(); }
+  LivePanel& livePanel() { return *livePanel_; }
+  // Live > Live Link mapping...: the gains, edited and applied to every Live Link input.
+  LiveMappingDialog& mappingDialog();
+  // What the transport shows: the file's Playback, or the live stream.
+  playback::AnimationSource& source() { return *source_; }
 
   bool playing() const { return clock_.running(); }
   double renderedFramesPerSecond() const { return fps_; }
@@ -113,10 +136,18 @@ class PlayerWindow : public QMainWindow {
   void timelineMoved(int milliseconds);
   void reportError(const std::exception& error, const QString& path);
   void showRigWarnings();
+  void chooseStream();
+  void editMapping();
+  void liveFrameArrived();
 
   std::unique_ptr<playback::HeadRig> rig_;
   scene::CameraPreset cameraPreset_ = scene::CameraPreset::Framing;
   std::unique_ptr<playback::Playback> playback_;
+  std::unique_ptr<playback::LiveSource> live_;
+  playback::AnimationSource* source_;  // playback_ or live_
+  live::LiveSession* session_;
+  LivePanel* livePanel_;
+  LiveMappingDialog* mappingDialog_ = nullptr;
   std::optional<HeadFiles> head_;  // setHeadSource()
   bool headFixed_ = false;
   std::optional<TearQuality> tearQuality_;  // setTearQuality()
@@ -131,12 +162,14 @@ class PlayerWindow : public QMainWindow {
   QMenu* viewMenu_;
   std::vector<QAction*> cameraActions_;  // in CameraPreset order
   viewport::WarningsButton* rigWarnings_;
+  QAction *listen_, *stopListening_;
   QAction *open_, *openDemo_, *play_, *reset_, *loop_, *resetView_, *quit_, *stepBack_,
       *stepForward_;
   TearParameterValues fileParameters_;
   std::deque<qint64> renderTimes_;  // ms stamps of the last second's renders
   QElapsedTimer sinceStart_;
   double fps_ = 0;
+  qint64 liveStatusShown_ = -1000;  // sinceStart_ ms of the last live status shown
   bool playAfterScrub_ = false, errorDialogs_ = true;
 };
 

@@ -14,6 +14,7 @@
 #include <lacrima/common/Diagnostics.h>
 #include <lacrima/common/FapAnimation.h>
 #include <lacrima/common/ProjectDocument.h>
+#include <lacrima/playback/AnimationSource.h>
 #include <lacrima/playback/FrameProducer.h>
 
 #include <cstddef>
@@ -22,13 +23,13 @@
 
 namespace lacrima::playback {
 
-class Playback {
+class Playback : public AnimationSource {
  public:
   static constexpr std::size_t kCheckpointBudget = std::size_t{512} << 20;
 
   explicit Playback(const HeadRig& rig, int checkpointInterval = 50,
                     std::size_t checkpointBudget = kCheckpointBudget);
-  ~Playback();
+  ~Playback() override;
 
   // A .fap file or a project (.json, .lacrima). Throws FileError (file, line, what was expected);
   // on error the current animation stays loaded. Shows the first frame.
@@ -40,29 +41,30 @@ class Playback {
   const Warnings& warnings() const;  // the FAP reader's for the open file
   const TearSources& tearSources() const;
 
-  int frameCount() const;
-  double frameRate() const;
-  double duration() const;
+  bool seekable() const override { return true; }
+  int frameCount() const override;
+  double frameRate() const override;
+  double duration() const override;
   // True when the animation drives a tear channel; false means no simulation will ever run.
-  bool hasTears() const;
+  bool hasTears() const override;
 
-  void setScene(const SceneSettings& scene);  // effects; simulation changes restart the tears
-  const SceneSettings& scene() const;
+  void setScene(const SceneSettings& scene) override;  // simulation changes restart the tears
+  const SceneSettings& scene() const override;
   // FrameProducer::setSimulationThreads; kept for every animation opened later.
-  void setSimulationThreads(int threads);
+  void setSimulationThreads(int threads) override;
 
   // Shows time t (clamped to the animation): the tears at the last whole frame <= t, the face
   // interpolated at t.
-  const FrameView& seek(double seconds);
-  const FrameView& view() const;
-  int currentFrame() const;  // the last whole frame the tears have reached
-  double currentTime() const;
+  const FrameView& seek(double seconds) override;
+  const FrameView& view() const override;
+  int currentFrame() const override;  // the last whole frame the tears have reached
+  double currentTime() const override;
 
   // Neutral face, all tears gone, time 0. Checkpoints stay valid; the next seek plays from the
   // first frame.
-  void reset();
+  void reset() override;
 
-  const FrameProducer& producer() const;
+  const FrameProducer& producer() const override;
   int checkpointCount() const;
   std::size_t checkpointBytes() const;  // what they hold now
   int checkpointInterval() const;       // frames between them now (doubled at each thinning)

@@ -1,0 +1,126 @@
+// Record live in the editor, offscreen: a Greta-style agent streams over TCP while the editor
+// counts in and records from the playhead; the preview poses the stream meanwhile; Stop writes
+// keys on the chosen channels, reduced, as one undo step that undo takes back. And
+// planLiveTakeKeys alone: reduction within the tolerance, other channels and keys kept.
+#include "../live/LiveTestSupport.h"
+
+#include <lacrima/common/FapTable.h>
+#include <lacrima/editing/EditorModel.h>
+#include <lacrima/editing/LiveTake.h>
+#include <lacrima/editor/LiveRecording.h>
+#include <lacrima/editor/MainWindow.h>
+
+#include <QTcpSocket>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QtTest>
+
+using namespace lacrima;
+using namespace lacrima::live::test;
+
+namespace {
+
+int fap(const char* name) { return *fapByName(name); }
+
+ChannelMask maskOf(std::initializer_list<const char*> names) {
+  ChannelMask mask;
+  for (const char* name : names) mask.set(static_cast<std::size_t>(channelIndex(fap(name))));
+  return mask;
+}
+
+}  // namespace
+
+class LiveRecordTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  // A ramp and a hold on open_jaw: the reduction keeps the corners, and every frame of the take
+  // is within the tolerance; a key already there keeps its other channels.
+  void takeBecomesReducedKeys() {
+    KeyframeSequence keys;
+    Keyframe existing;
+    existing.time = 2.0;
+    existing.set(fap("open_jaw"), 999);
+    existing.set(fap("raise_l_i_eyebrow"), 50);
+    keys.insert(existing);
+    Keyframe outside;
+    outside.time = 10.0;
+    outside.set(fap("open_jaw"), 7);
+    keys.insert(outside);
+
+    FapAnimation take;
+    take.fps = 10;
+    take.animated = maskOf({"open_jaw", "head_yaw"});
+    for (int f = 0; f <= 30; ++f) {
+      FapValues v{};
+      v[channelIndex(fap("open_jaw"))] = static_cast<float>(f <= 10 ? 30 * f : 300);
+      v[channelIndex(fap("head_yaw"))] = static_cast<float>(f * 100);
+      take.frames.push_back(v);
+    }
+    const editing::LiveTakeKeys planned = editing::planLiveTakeKeys(
+        keys, take, 1.0, maskOf({"open_jaw"}), 1.0, Interpolation::Linear);
+    QCOMPARE(planned.framesRecorded, 31);
+    QCOMPARE(planned.keysWritten, 3);  // 1 s, the corner at 2 s, 4 s
+    QVERIFY(planned.maxError <= 1.0);
+    KeyframeSequence after = keys;
+    editing::applyKeys(after, planned.change.times, planned.change.after);
+    for (int f = 0; f <= 30; ++f)
+      QCOMPARE(after.evaluate(1.0 + f / 10.0)[channelIndex(fap("open_jaw"))],
+               take.frames[f][channelIndex(fap("open_jaw"))]);
+    const int at2 = editing::findKey(after, 2.0);
+    QVERIFY(at2 >= 0);
+    QCOMPARE(after.keys()[at2].value(fap("raise_l_i_eyebrow")), 50.0F);  // kept
+    QCOMPARE(after.keys()[at2].value(fap("open_jaw")), 300.0F);          // the take's
+    QVERIFY(!after.keys()[at2].has(fap("head_yaw")));                    // not chosen
+    QCOMPARE(after.keys()[editing::findKey(after, 10.0)].value(fap("open_jaw")), 7.0F);
+  }
+
+  void windowRecordsAStreamAsOneUndoStep() {
+    QTemporaryDir recovery;
+    editor::EditorOptions options;
+    options.preview = false;
+    options.interactive = false;
+    options.offerRecovery = false;
+    options.recoveryDirectory = recovery.path();
+    editor::MainWindow window(options);
+    editing::EditorModel& model = window.model();
+    model.setCurrentTime(1.0);
+    QVERIFY(window.action("play.recordLive"));
+    editor::LiveRecording& recording = window.liveRecording();
+    live::ListenUrl url;  // fap+tcp, 127.0.0.1, a port of the system's choice
+    recording.start(url, maskOf({"open_jaw", "head_pitch"}), 0.3);
+    QCOMPARE(recording.state(), editor::LiveRecording::State::CountIn);
+    const quint16 port = recording.session().inputs().front()->url().port;
+    QTcpSocket agent;
+    agent.connectToHost(QHostAddress::LocalHost, port);
+    QVERIFY(agent.waitForConnected(3000));
+    agent.write("2.1 greta 20 0\n");
+    // During the count-in the preview poses the stream, nothing is recorded.
+    agent.write(gretaFrame(0, {{3, 500}, {48, 1000}, {19, 80}}));
+    QTRY_COMPARE_WITH_TIMEOUT(model.currentValue(3), 500.0F, 3000);
+    QTRY_COMPARE_WITH_TIMEOUT(recording.state(), editor::LiveRecording::State::Recording, 3000);
+    const int undoBefore = model.undoStack()->count();
+    for (int f = 0; f < 12; ++f) {
+      agent.write(gretaFrame(f, {{3, 20 * f}, {48, -500 * f}, {19, 80}}));
+      agent.flush();
+      waitFor([] { return false; }, 50);
+    }
+    QTRY_COMPARE_WITH_TIMEOUT(model.currentValue(3), 220.0F, 3000);  // the preview follows
+    QVERIFY(recording.stop());
+    QCOMPARE(recording.state(), editor::LiveRecording::State::Idle);
+    QCOMPARE(model.undoStack()->count(), undoBefore + 1);  // one step
+    const KeyframeSequence& keys = model.document().keys;
+    QVERIFY(!keys.empty());
+    QVERIFY(keys.startTime() >= 1.0 - 1e-9);  // from the playhead on
+    QVERIFY(keys.keys().size() < 12);         // reduced: a straight ramp needs few keys
+    const Keyframe& last = keys.keys().back();
+    QCOMPARE(last.value(3), 220.0F);
+    QCOMPARE(last.value(48), -5500.0F);
+    for (const Keyframe& k : keys.keys()) QVERIFY(!k.has(19));  // not chosen
+    model.undoStack()->undo();
+    QVERIFY(model.document().keys.empty());
+  }
+};
+
+QTEST_MAIN(LiveRecordTest)
+#include "LiveRecordTest.moc"

@@ -1,0 +1,121 @@
+// The live programs as scripts use them: `lacrima-player --no-window --listen ... --record`
+// fed by a client written here from the published layouts, and by `lacrima-send`, as the
+// README shows. Real processes; the recorded file is read back and checked.
+#include "LiveTestSupport.h"
+
+#include <lacrima/common/FapReader.h>
+#include <lacrima/common/FapTable.h>
+
+#include <QProcess>
+#include <QTcpSocket>
+#include <QTemporaryDir>
+#include <QUdpSocket>
+#include <QtTest>
+
+using namespace lacrima;
+using namespace lacrima::live::test;
+
+namespace {
+
+const QString kBin = QStringLiteral(LACRIMA_BIN_DIR);
+
+float channel(const FapValues& values, const char* name) {
+  return values[static_cast<std::size_t>(channelIndex(*fapByName(name)))];
+}
+
+// Starts a headless player on `url` (port 0) recording to `out`; returns the port it got.
+quint16 startPlayer(QProcess& player, const QString& url, const QString& out,
+                    const QStringList& more = {}) {
+  player.setProgram(kBin + "/lacrima-player");
+  player.setArguments(
+      QStringList{"--no-window", "--listen", url, "--record", out, "--exit-when-idle", "1.5"} +
+      more);
+  player.start();
+  if (!player.waitForStarted(5000)) return 0;
+  // "listening on fap+tcp://127.0.0.1:40123"
+  if (!waitFor([&] { return player.canReadLine(); }, 10000)) return 0;
+  const QByteArray line = player.readLine().trimmed();
+  return static_cast<quint16>(line.mid(line.lastIndexOf(':') + 1).toUInt());
+}
+
+}  // namespace
+
+class LiveCliTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  // A Greta-style agent over TCP; the player records it and exits when the agent is done.
+  void headlessPlayerRecordsAnAgent() {
+    QTemporaryDir dir;
+    const QString out = dir.filePath("agent.fap");
+    QProcess player;
+    const quint16 port = startPlayer(player, "fap+tcp://127.0.0.1:0", out);
+    QVERIFY2(port != 0, player.readAllStandardError().constData());
+    QTcpSocket agent;
+    agent.connectToHost(QHostAddress::LocalHost, port);
+    QVERIFY(agent.waitForConnected(3000));
+    agent.write("2.1 greta 20 10\n");
+    for (int f = 0; f < 10; ++f) {
+      agent.write(gretaFrame(f, {{3, 30 * f}, {48, -1000 * f}, {69, 5 * f}, {70, 0}}, 70));
+      agent.flush();
+      waitFor([] { return false; }, 50);
+    }
+    agent.disconnectFromHost();
+    QVERIFY(player.waitForFinished(15000));
+    const QByteArray err = player.readAllStandardError();
+    QCOMPARE(player.exitCode(), 0);
+    QVERIFY2(err.contains("recorded"), err.constData());
+    const FapReadResult take = FapReader::readFile(out.toStdString());
+    QCOMPARE(take.animation.fps, 20.0);
+    QVERIFY(std::abs(take.animation.frameCount() - 10) <= 3);
+    const FapValues& last = take.animation.frames.back();
+    QCOMPARE(channel(last, "open_jaw"), 270.0F);
+    QCOMPARE(channel(last, "head_pitch"), -9000.0F);  // the head moved
+    QCOMPARE(channel(last, "tears_l_eye"), 45.0F);    // the stream's own tears
+  }
+
+  // The README's example: lacrima-send plays the demo into a listening player, over UDP here.
+  void lacrimaSendStreamsTheDemo() {
+    QTemporaryDir dir;
+    const QString out = dir.filePath("demo.fap");
+    QProcess player;
+    const quint16 port = startPlayer(player, "fap+udp://:0", out);
+    QVERIFY2(port != 0, player.readAllStandardError().constData());
+    const QString demo = QStringLiteral(LACRIMA_SOURCE_DIR "/media/demo/crying.fap");
+    QProcess send;
+    // 88 fps: four times the demo's rate, so the test takes 3.5 s; recorded at 88 fps too.
+    send.start(kBin + "/lacrima-send",
+               {demo, "--to", QStringLiteral("fap+udp://127.0.0.1:%1").arg(port), "--rate", "88"});
+    QVERIFY(send.waitForFinished(30000));
+    QCOMPARE(send.exitCode(), 0);
+    QVERIFY(player.waitForFinished(15000));
+    QCOMPARE(player.exitCode(), 0);
+    const FapAnimation sent = FapReader::readFile(demo.toStdString()).animation;
+    const FapAnimation got = FapReader::readFile(out.toStdString()).animation;
+    QCOMPARE(got.fps, 88.0);
+    qInfo("sent %d frames, recorded %d", sent.frameCount(), got.frameCount());
+    QVERIFY(std::abs(got.frameCount() - sent.frameCount()) <= 10);
+    // Every recorded frame is one of the demo's, in order: none invented, none out of place.
+    int at = 0;
+    for (const FapValues& v : got.frames) {
+      while (at < sent.frameCount() && sent.frames[static_cast<std::size_t>(at)] != v) ++at;
+      QVERIFY2(at < sent.frameCount(), "a recorded frame the demo does not have, or out of order");
+    }
+    QVERIFY(got.frames.back() == sent.frames.back());
+  }
+
+  void usageErrors() {
+    QProcess player;
+    player.start(kBin + "/lacrima-player", {"--no-window", "--listen", "tcp://x:1"});
+    QVERIFY(player.waitForFinished(10000));
+    QCOMPARE(player.exitCode(), 2);
+    QVERIFY(player.readAllStandardError().contains("--listen: expected fap+tcp://"));
+    QProcess send;
+    send.start(kBin + "/lacrima-send", {"x.fap", "--to", "livelink+udp://:11111"});
+    QVERIFY(send.waitForFinished(10000));
+    QCOMPARE(send.exitCode(), 2);
+  }
+};
+
+QTEST_GUILESS_MAIN(LiveCliTest)
+#include "LiveCliTest.moc"

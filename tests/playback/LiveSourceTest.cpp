@@ -1,0 +1,86 @@
+// LiveSource: a stream on the default head. The newest frame wins (the others are counted as
+// dropped), the face follows it, the tears run at the display's pace between frames and after
+// the stream stops, and streams without tear channels weep what the player sets.
+#include "PlaybackTestSupport.h"
+
+#include <lacrima/playback/LiveSource.h>
+
+using namespace lacrima;
+using namespace lacrima::playback;
+using namespace lacrima::playback::test;
+
+namespace {
+
+ChannelMask maskOf(std::initializer_list<const char*> names) {
+  ChannelMask mask;
+  for (const char* name : names) mask.set(static_cast<std::size_t>(channelIndex(*fapByName(name))));
+  return mask;
+}
+
+double largestMove(const FrameView& view, const HeadMesh& neutral) {
+  return double(((*view.positions) - neutral.positions).colwise().norm().maxCoeff());
+}
+
+}  // namespace
+
+class LiveSourceTest : public QObject {
+  Q_OBJECT
+  std::unique_ptr<HeadRig> rig_;
+
+ private slots:
+  void initTestCase() { LOAD_DEFAULT_HEAD_RIG(rig_); }
+
+  void newestFrameWinsAndTheHeadTurns() {
+    LiveSource live(*rig_);
+    QVERIFY(!live.seekable());
+    QCOMPARE(live.duration(), 0.0);
+    FapValues a{}, b{};
+    channel(a, "open_jaw") = 200;
+    channel(b, "head_yaw") = 20000;
+    live.push(a, maskOf({"open_jaw"}), 1.0);
+    live.push(b, maskOf({"head_yaw"}), 1.01);  // before any display: a is dropped
+    const FrameView& view = live.seek(0.0);
+    QCOMPARE(live.framesReceived(), 2LL);
+    QCOMPARE(live.framesDropped(), 1LL);
+    QCOMPARE(live.shownArrival(), 1.01);
+    QCOMPARE(live.shownValues()[channelIndex(49)], 20000.0F);
+    QCOMPARE(live.shownValues()[channelIndex(3)], 0.0F);
+    QVERIFY(largestMove(view, rig_->head) > 1e-3);  // the head turned
+    const auto revision = view.revision;
+    live.seek(0.001);  // nothing new, no tears: the same picture
+    QCOMPARE(live.view().revision, revision);
+    QCOMPARE(live.shownArrival(), -1.0);
+  }
+
+  // A stream without tear channels weeps what the player sets; the tears go on between frames
+  // and after the stream stops, stepped by the display clock (capped per call).
+  void tearsRunAtTheDisplaysPace() {
+    LiveSource live(*rig_);
+    live.setTears(40, 30);
+    FapValues v{};
+    channel(v, "open_jaw") = 100;
+    live.push(v, maskOf({"open_jaw"}), 0);
+    double t = 0;
+    live.seek(t);
+    for (int i = 0; i < 30; ++i) live.seek(t += 1.0 / 60);
+    QCOMPARE(live.shownValues()[channelIndex(kTearLeftFap)], 40.0F);
+    const int particles = live.producer().particleCount();
+    QVERIFY2(particles > 0, "no tears from the player's own counts");
+    QVERIFY(live.hasTears());
+    const long long steps = live.producer().counters().simulationSteps;
+    live.seek(t += 5.0);  // a stalled display: one capped step, not five seconds at once
+    QCOMPARE(live.producer().counters().simulationSteps, steps + 1);
+
+    // A frame that carries tear channels wins over the player's counts.
+    FapValues dry{};
+    live.push(dry, maskOf({"open_jaw", "tears_l_eye", "tears_r_eye"}), 1);
+    live.seek(t += 1.0 / 60);
+    QCOMPARE(live.shownValues()[channelIndex(kTearLeftFap)], 0.0F);
+
+    live.reset();
+    QCOMPARE(live.producer().particleCount(), 0);
+  }
+};
+
+QTEST_GUILESS_MAIN(LiveSourceTest)
+#include "LiveSourceTest.moc"
