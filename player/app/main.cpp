@@ -13,6 +13,7 @@
 #include <lacrima/common/ImageSize.h>
 #include <lacrima/common/Keyframes.h>
 #include <lacrima/common/TearQuality.h>
+#include <lacrima/export/GltfAnimationExport.h>
 #include <lacrima/playback/HeadRig.h>
 #include <lacrima/scene/CameraPreset.h>
 #include <lacrima/viewport/DarkTheme.h>
@@ -68,7 +69,7 @@ std::unique_ptr<playback::HeadRig> loadRig(const QCommandLineParser& parser,
 }
 
 // One line per step on a log, a bar redrawn in place on a terminal.
-void showProgress(int done, int total) {
+void showProgress(int done, int total, const char* verb = "rendered") {
   static const bool terminal = isatty(fileno(stderr));
   if (terminal) {
     const int width = 40, filled = done * width / std::max(1, total);
@@ -76,7 +77,7 @@ void showProgress(int done, int total) {
                  "########################################", width - filled, "", done, total);
     if (done == total) std::fputc('\n', stderr);
   } else if (done == total || done % std::max(1, total / 10) == 0) {
-    std::fprintf(stderr, "lacrima-player: rendered %d/%d frames\n", done, total);
+    std::fprintf(stderr, "lacrima-player: %s %d/%d frames\n", verb, done, total);
   }
 }
 
@@ -111,7 +112,7 @@ int renderMode(const QCommandLineParser& parser, const QSize& size, const ModeOp
   options.outputDir = parser.value("render");
   options.size = size;
   options.view = *view;
-  options.progress = showProgress;
+  options.progress = [](int done, int total) { showProgress(done, total); };
   options.quality = mode.quality;
   options.threads = mode.threads;
   const player::BatchRenderResult result = player::renderAnimation(*rig, options);
@@ -119,6 +120,67 @@ int renderMode(const QCommandLineParser& parser, const QSize& size, const ModeOp
   std::printf("%s/frame_0000.png ... frame_%04d.png and %s\n",
               QDir(options.outputDir).absolutePath().toLocal8Bit().constData(), result.frames - 1,
               QFileInfo(result.contactSheet).absoluteFilePath().toLocal8Bit().constData());
+  return kExitOk;
+}
+
+// --frames FIRST-LAST (frame numbers, both included), or nullopt after saying what it takes.
+std::optional<std::pair<int, int>> frameRange(const QCommandLineParser& parser) {
+  if (!parser.isSet("frames")) return std::pair{0, -1};
+  const QStringList ends = parser.value("frames").split('-');
+  bool firstOk = false, lastOk = false;
+  const int first = ends.value(0).toInt(&firstOk), last = ends.value(1).toInt(&lastOk);
+  if (ends.size() != 2 || !firstOk || !lastOk || first < 0 || last < first) {
+    std::fprintf(stderr,
+                 "lacrima-player: --frames: expected FIRST-LAST with 0 <= FIRST <= LAST, "
+                 "not '%s'\n",
+                 parser.value("frames").toLocal8Bit().constData());
+    return std::nullopt;
+  }
+  return std::pair{first, last};
+}
+
+// The options every export takes from the command line; nullopt after a usage error.
+std::optional<exporting::ExportOptions> exportOptions(const QCommandLineParser& parser,
+                                                      const QString& option,
+                                                      const ModeOptions& mode) {
+  const QStringList files = parser.positionalArguments();
+  if (files.size() != 1) {
+    std::fprintf(stderr, "lacrima-player: --%s needs exactly one FILE to export\n",
+                 option.toLocal8Bit().constData());
+    return std::nullopt;
+  }
+  const std::optional<std::pair<int, int>> range = frameRange(parser);
+  if (!range) return std::nullopt;
+  exporting::ExportOptions options;
+  options.input = files.front().toStdString();
+  options.output = parser.value(option).toStdString();
+  options.quality = mode.quality;
+  options.threads = mode.threads;
+  options.firstFrame = range->first;
+  options.lastFrame = range->second;
+  options.progress = [](int done, int total) {
+    showProgress(done, total, "exported");
+    return true;
+  };
+  return options;
+}
+
+int gltfMode(const QCommandLineParser& parser, const ModeOptions& mode) {
+  const std::optional<exporting::ExportOptions> options =
+      exportOptions(parser, QStringLiteral("export-gltf"), mode);
+  if (!options) return kExitUsage;
+  const auto rig = loadRig(parser, chooseHead(parser));
+  for (const std::string& w : rig->warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  const exporting::GltfExportResult result = exporting::exportGltfAnimation(*rig, *options);
+  std::fprintf(stderr,
+               "lacrima-player: %d frames, %d morph targets, tears in %d frames, %.1f MB in "
+               "%.1f s\n",
+               result.frames, result.morphTargets, result.tearFrames,
+               static_cast<double>(result.bytes) / 1e6, result.seconds);
+  std::printf("%s\n", QFileInfo(QString::fromStdString(options->output))
+                          .absoluteFilePath()
+                          .toLocal8Bit()
+                          .constData());
   return kExitOk;
 }
 
@@ -186,10 +248,12 @@ int main(int argc, char** argv) {
   // OGRE on Debian renders through GLX: both modes need an X display. Say so before Qt would
   // abort on a missing one.
   const bool render = hasOption(argc, argv, "--render");
+  // Exports that draw nothing need no display.
+  const bool headless = hasOption(argc, argv, "--export-gltf");
   const bool help = hasOption(argc, argv, "--help") || hasOption(argc, argv, "-h") ||
                     hasOption(argc, argv, "--version");
   const bool haveX = !qEnvironmentVariableIsEmpty("DISPLAY");
-  if (!haveX && !help) {
+  if (!haveX && !help && !headless) {
     if (render)
       std::fprintf(
           stderr,
@@ -218,6 +282,7 @@ int main(int argc, char** argv) {
       "  lacrima-player media/demo/crying.fap\n"
       "  xvfb-run -a lacrima-player --render out/ --size 1280x720 media/demo/crying.fap\n"
       "  xvfb-run -a lacrima-player --render close/ --view close-left media/demo/crying.fap\n"
+      "  lacrima-player --export-gltf crying.glb media/demo/crying.fap\n"
       "  lacrima-player --mesh head.obj --fdp head.fdp.json animation.fap\n"
       "  lacrima-player my-character/project.lacrima\n\n"
       "Keys: Space play/pause, Home reset, Left/Right one frame, L loop, V reset the view, Ctrl+O\n"
@@ -233,6 +298,11 @@ int main(int argc, char** argv) {
        "Render every frame to OUT_DIR/frame_NNNN.png plus contact_sheet.png, then exit (needs an X "
        "display: run under xvfb-run).",
        "OUT_DIR"},
+      {"export-gltf",
+       "Export the animation with its tears as one binary glTF 2.0 file (head, morph targets "
+       "named by FAP, eye and head joints, tears per frame), then exit. Needs no display.",
+       "OUT.glb"},
+      {"frames", "Frames to export, both included (default: all).", "FIRST-LAST"},
       {"size", "Image size for --render, window size otherwise (default 1280x720 for --render).",
        "WxH"},
       {"view",
@@ -287,6 +357,7 @@ int main(int argc, char** argv) {
     size = parsed.size;
   }
   try {
+    if (parser.isSet("export-gltf")) return gltfMode(parser, mode);
     if (parser.isSet("render")) return renderMode(parser, size, mode);
     return windowMode(app, parser, parser.isSet("size") ? &size : nullptr, mode);
   } catch (const std::exception& e) {
