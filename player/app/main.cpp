@@ -14,7 +14,9 @@
 #include <lacrima/common/Keyframes.h>
 #include <lacrima/common/TearQuality.h>
 #include <lacrima/export/GltfAnimationExport.h>
+#include <lacrima/export/VideoExport.h>
 #include <lacrima/playback/HeadRig.h>
+#include <lacrima/player/HeadViews.h>
 #include <lacrima/scene/CameraPreset.h>
 #include <lacrima/viewport/DarkTheme.h>
 
@@ -184,6 +186,31 @@ int gltfMode(const QCommandLineParser& parser, const ModeOptions& mode) {
   return kExitOk;
 }
 
+int videoMode(const QCommandLineParser& parser, const QSize& size, const ModeOptions& mode) {
+  const std::optional<exporting::ExportOptions> options =
+      exportOptions(parser, QStringLiteral("video"), mode);
+  if (!options) return kExitUsage;
+  const std::optional<scene::CameraPreset> view = cameraPreset(parser);
+  if (!view) return kExitUsage;
+  if (size.width() % 2 || size.height() % 2) {
+    std::fprintf(stderr,
+                 "lacrima-player: --size: H.264 video needs an even width and height, not %dx%d\n",
+                 size.width(), size.height());
+    return kExitUsage;
+  }
+  const auto rig = loadRig(parser, chooseHead(parser));
+  for (const std::string& w : rig->warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  const exporting::VideoExportResult result =
+      exporting::exportVideo(*rig, *options, size, player::presetView(*rig, *view));
+  std::fprintf(stderr, "lacrima-player: %d frames at %g fps (H.264, %s) in %.1f s\n", result.frames,
+               result.fps, result.encoder.c_str(), result.seconds);
+  std::printf("%s\n", QFileInfo(QString::fromStdString(options->output))
+                          .absoluteFilePath()
+                          .toLocal8Bit()
+                          .constData());
+  return kExitOk;
+}
+
 int windowMode(QApplication& app, const QCommandLineParser& parser, const QSize* size,
                const ModeOptions& mode) {
   const QStringList files = parser.positionalArguments();
@@ -247,7 +274,7 @@ int windowMode(QApplication& app, const QCommandLineParser& parser, const QSize*
 int main(int argc, char** argv) {
   // OGRE on Debian renders through GLX: both modes need an X display. Say so before Qt would
   // abort on a missing one.
-  const bool render = hasOption(argc, argv, "--render");
+  const bool render = hasOption(argc, argv, "--render") || hasOption(argc, argv, "--video");
   // Exports that draw nothing need no display.
   const bool headless = hasOption(argc, argv, "--export-gltf");
   const bool help = hasOption(argc, argv, "--help") || hasOption(argc, argv, "-h") ||
@@ -257,8 +284,8 @@ int main(int argc, char** argv) {
     if (render)
       std::fprintf(
           stderr,
-          "lacrima-player: --render needs an X display (OGRE renders through GLX) and there is "
-          "none;\n"
+          "lacrima-player: --render and --video need an X display (OGRE renders through GLX) and "
+          "there is none;\n"
           "  run it under a virtual one: xvfb-run -a lacrima-player --render OUT_DIR FILE\n");
     else
       std::fprintf(stderr,
@@ -283,6 +310,7 @@ int main(int argc, char** argv) {
       "  xvfb-run -a lacrima-player --render out/ --size 1280x720 media/demo/crying.fap\n"
       "  xvfb-run -a lacrima-player --render close/ --view close-left media/demo/crying.fap\n"
       "  lacrima-player --export-gltf crying.glb media/demo/crying.fap\n"
+      "  xvfb-run -a lacrima-player --video crying.mp4 --size 1280x720 media/demo/crying.fap\n"
       "  lacrima-player --mesh head.obj --fdp head.fdp.json animation.fap\n"
       "  lacrima-player my-character/project.lacrima\n\n"
       "Keys: Space play/pause, Home reset, Left/Right one frame, L loop, V reset the view, Ctrl+O\n"
@@ -302,8 +330,14 @@ int main(int argc, char** argv) {
        "Export the animation with its tears as one binary glTF 2.0 file (head, morph targets "
        "named by FAP, eye and head joints, tears per frame), then exit. Needs no display.",
        "OUT.glb"},
+      {"video",
+       "Export the animation as an H.264 MP4 video (yuv420p, the file's frame rate) at --size "
+       "from --view, then exit (needs an X display: run under xvfb-run).",
+       "OUT.mp4"},
       {"frames", "Frames to export, both included (default: all).", "FIRST-LAST"},
-      {"size", "Image size for --render, window size otherwise (default 1280x720 for --render).",
+      {"size",
+       "Image size for --render and --video, window size otherwise (default 1280x720 for "
+       "--render and --video).",
        "WxH"},
       {"view",
        "Camera of --render, --screenshot and the window: framing (the viewport's reset view, "
@@ -358,6 +392,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (parser.isSet("export-gltf")) return gltfMode(parser, mode);
+    if (parser.isSet("video")) return videoMode(parser, size, mode);
     if (parser.isSet("render")) return renderMode(parser, size, mode);
     return windowMode(app, parser, parser.isSet("size") ? &size : nullptr, mode);
   } catch (const std::exception& e) {
