@@ -14,6 +14,7 @@
 #include <lacrima/common/Keyframes.h>
 #include <lacrima/common/TearQuality.h>
 #include <lacrima/export/GltfAnimationExport.h>
+#include <lacrima/export/TearMeshExport.h>
 #include <lacrima/export/VideoExport.h>
 #include <lacrima/playback/HeadRig.h>
 #include <lacrima/player/HeadViews.h>
@@ -167,22 +168,43 @@ std::optional<exporting::ExportOptions> exportOptions(const QCommandLineParser& 
   return options;
 }
 
+// The rig of an export's FILE, its warnings said on stderr.
+std::unique_ptr<playback::HeadRig> exportRig(const QCommandLineParser& parser) {
+  auto rig = loadRig(parser, chooseHead(parser));
+  for (const std::string& w : rig->warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  return rig;
+}
+
+void printPath(const std::string& path) {
+  std::printf("%s\n",
+              QFileInfo(QString::fromStdString(path)).absoluteFilePath().toLocal8Bit().constData());
+}
+
 int gltfMode(const QCommandLineParser& parser, const ModeOptions& mode) {
   const std::optional<exporting::ExportOptions> options =
       exportOptions(parser, QStringLiteral("export-gltf"), mode);
   if (!options) return kExitUsage;
-  const auto rig = loadRig(parser, chooseHead(parser));
-  for (const std::string& w : rig->warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-  const exporting::GltfExportResult result = exporting::exportGltfAnimation(*rig, *options);
+  const exporting::GltfExportResult result =
+      exporting::exportGltfAnimation(*exportRig(parser), *options);
   std::fprintf(stderr,
                "lacrima-player: %d frames, %d morph targets, tears in %d frames, %.1f MB in "
                "%.1f s\n",
                result.frames, result.morphTargets, result.tearFrames,
                static_cast<double>(result.bytes) / 1e6, result.seconds);
-  std::printf("%s\n", QFileInfo(QString::fromStdString(options->output))
-                          .absoluteFilePath()
-                          .toLocal8Bit()
-                          .constData());
+  printPath(options->output);
+  return kExitOk;
+}
+
+int tearsMode(const QCommandLineParser& parser, const ModeOptions& mode) {
+  const std::optional<exporting::ExportOptions> options =
+      exportOptions(parser, QStringLiteral("export-tears"), mode);
+  if (!options) return kExitUsage;
+  const exporting::TearMeshExportResult result =
+      exporting::exportTearMeshes(*exportRig(parser), *options);
+  std::fprintf(stderr, "lacrima-player: %d PLY files, tears in %d, %.1f MB in %.1f s\n",
+               result.frames, result.framesWithTears, static_cast<double>(result.bytes) / 1e6,
+               result.seconds);
+  printPath(options->output);
   return kExitOk;
 }
 
@@ -198,16 +220,12 @@ int videoMode(const QCommandLineParser& parser, const QSize& size, const ModeOpt
                  size.width(), size.height());
     return kExitUsage;
   }
-  const auto rig = loadRig(parser, chooseHead(parser));
-  for (const std::string& w : rig->warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  const auto rig = exportRig(parser);
   const exporting::VideoExportResult result =
       exporting::exportVideo(*rig, *options, size, player::presetView(*rig, *view));
   std::fprintf(stderr, "lacrima-player: %d frames at %g fps (H.264, %s) in %.1f s\n", result.frames,
                result.fps, result.encoder.c_str(), result.seconds);
-  std::printf("%s\n", QFileInfo(QString::fromStdString(options->output))
-                          .absoluteFilePath()
-                          .toLocal8Bit()
-                          .constData());
+  printPath(options->output);
   return kExitOk;
 }
 
@@ -276,7 +294,8 @@ int main(int argc, char** argv) {
   // abort on a missing one.
   const bool render = hasOption(argc, argv, "--render") || hasOption(argc, argv, "--video");
   // Exports that draw nothing need no display.
-  const bool headless = hasOption(argc, argv, "--export-gltf");
+  const bool headless =
+      hasOption(argc, argv, "--export-gltf") || hasOption(argc, argv, "--export-tears");
   const bool help = hasOption(argc, argv, "--help") || hasOption(argc, argv, "-h") ||
                     hasOption(argc, argv, "--version");
   const bool haveX = !qEnvironmentVariableIsEmpty("DISPLAY");
@@ -310,6 +329,7 @@ int main(int argc, char** argv) {
       "  xvfb-run -a lacrima-player --render out/ --size 1280x720 media/demo/crying.fap\n"
       "  xvfb-run -a lacrima-player --render close/ --view close-left media/demo/crying.fap\n"
       "  lacrima-player --export-gltf crying.glb media/demo/crying.fap\n"
+      "  lacrima-player --export-tears tears/ media/demo/crying.fap\n"
       "  xvfb-run -a lacrima-player --video crying.mp4 --size 1280x720 media/demo/crying.fap\n"
       "  lacrima-player --mesh head.obj --fdp head.fdp.json animation.fap\n"
       "  lacrima-player my-character/project.lacrima\n\n"
@@ -334,6 +354,10 @@ int main(int argc, char** argv) {
        "Export the animation as an H.264 MP4 video (yuv420p, the file's frame rate) at --size "
        "from --view, then exit (needs an X display: run under xvfb-run).",
        "OUT.mp4"},
+      {"export-tears",
+       "Export the tear geometry of every frame (water and wet trails) as OUT_DIR/tears_NNNN.ply, "
+       "then exit. Needs no display.",
+       "OUT_DIR"},
       {"frames", "Frames to export, both included (default: all).", "FIRST-LAST"},
       {"size",
        "Image size for --render and --video, window size otherwise (default 1280x720 for "
@@ -392,6 +416,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (parser.isSet("export-gltf")) return gltfMode(parser, mode);
+    if (parser.isSet("export-tears")) return tearsMode(parser, mode);
     if (parser.isSet("video")) return videoMode(parser, size, mode);
     if (parser.isSet("render")) return renderMode(parser, size, mode);
     return windowMode(app, parser, parser.isSet("size") ? &size : nullptr, mode);

@@ -1,5 +1,6 @@
 #include <lacrima/export/ExportOptions.h>
 
+#include <cmath>
 #include <string>
 
 namespace lacrima::exporting {
@@ -19,6 +20,11 @@ FrameSpan openForExport(playback::Playback& playback, const ExportOptions& optio
                                 std::to_string(span.last) + ": the animation has frames 0 to " +
                                 std::to_string(frames - 1));
   return span;
+}
+
+double metresPerUnit(const playback::HeadRig& rig) {
+  const double es0 = rig.rig.fapu.es0;
+  return std::isfinite(es0) && es0 > 0 ? kMeanEyeSeparationMetres / es0 : 1.0;
 }
 
 void reportProgress(const ExportOptions& options, int done, int total) {

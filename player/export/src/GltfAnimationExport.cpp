@@ -1,11 +1,11 @@
 #include <lacrima/export/GltfAnimationExport.h>
 
+#include "TearPieces.h"
+
 #include <lacrima/common/FapTable.h>
 #include <lacrima/common/HeadTurns.h>
 #include <lacrima/exporters/GltfDocument.h>
 #include <lacrima/exporters/RigExport.h>
-#include <lacrima/tears/SurfaceMesher.h>
-#include <lacrima/tears/TrailBuilder.h>
 
 #include <QElapsedTimer>
 
@@ -38,48 +38,19 @@ GltfHeadSkin headSkin(const playback::HeadRig& rig) {
   return skin;
 }
 
-double metresPerUnit(const playback::HeadRig& rig) {
-  const double es0 = rig.rig.fapu.es0;
-  return std::isfinite(es0) && es0 > 0 ? kMeanEyeSeparationMetres / es0 : 1.0;
-}
-
-// A tear mesh's arrays in the document's double-precision form.
-struct TearArrays {
-  Eigen::Matrix3Xd positions, normals;
-  Eigen::Matrix3Xi triangles;
-  Eigen::VectorXd alpha;
-};
-
-TearArrays arraysOf(const tears::TearSurface& s) {
-  return {s.positions(), s.normals(), s.triangles(), {}};
-}
-
-TearArrays arraysOf(const tears::TrailMesh& t) {
-  return {t.positions(), t.normals(), t.triangles(), t.alpha()};
-}
-
 // The tears one frame shows, as a mesh; nullopt when it shows none.
 class TearMeshes {
  public:
   explicit TearMeshes(GltfDocument& document) : document_(document) {}
 
   std::optional<int> add(const playback::FrameView& view, int frame) {
-    std::vector<TearArrays> arrays;
-    std::vector<int> materials;
-    auto take = [&](const auto* mesh, int material) {
-      if (mesh && !mesh->empty()) {
-        arrays.push_back(arraysOf(*mesh));
-        materials.push_back(material);
-      }
-    };
-    if (view.surface || view.drops || view.trails) ensureMaterials();
-    take(view.surface, water_);
-    take(view.drops, water_);
-    take(view.trails, film_);
+    const std::vector<TearPiece> pieces = tearPieces(view);
+    if (!pieces.empty()) ensureMaterials();
     std::vector<exporters::GltfSurface> surfaces;
-    for (std::size_t i = 0; i < arrays.size(); ++i)
-      surfaces.push_back({&arrays[i].positions, &arrays[i].normals, &arrays[i].triangles,
-                          arrays[i].alpha.size() ? &arrays[i].alpha : nullptr, materials[i]});
+    for (const TearPiece& p : pieces)
+      surfaces.push_back({&p.positions, &p.normals, &p.triangles,
+                          p.alpha.size() ? &p.alpha : nullptr,
+                          p.kind == TearKind::Water ? water_ : film_});
     char name[32];
     std::snprintf(name, sizeof name, "tears_%04d", frame);
     return document_.addMesh(name, surfaces);

@@ -41,6 +41,11 @@ struct FrameSpan {
 // std::invalid_argument naming the range and the file's frames for a range outside it.
 FrameSpan openForExport(playback::Playback& playback, const ExportOptions& options);
 
+// Heads come in any unit; files for other programs are in metres: head units times 0.063 m / ES0
+// (the pupils' distance, FAPU; 63 mm is an adult's mean), or 1 when ES0 is unusable.
+inline constexpr double kMeanEyeSeparationMetres = 0.063;
+double metresPerUnit(const playback::HeadRig& rig);
+
 // Calls options.progress; throws ExportCancelled when it asks to stop.
 void reportProgress(const ExportOptions& options, int done, int total);
 

@@ -3,8 +3,7 @@
 // Blender, three.js and game engines play without plug-ins.
 //
 //  - The head at rest as the player shows it (every sub-mesh with its material and embedded
-//    texture, GltfDocument.h), Y up, +Z forward, in metres: head units times 0.063 m / ES0 (the
-//    pupils' distance, FAPU; 63 mm is an adult's mean), since a head file does not say its unit.
+//    texture, GltfDocument.h), Y up, +Z forward, in metres (metresPerUnit, ExportOptions.h).
 //  - One morph target per FAP pose of the rig, named by the FAP (mesh.extras.targetNames:
 //    "open_jaw", "raise_b_midlip", ...); a target's weight is the FAP value / 1024.
 //  - A skin of rigid joints: "body" (what does not follow the head), "head" at the neck pivot
@@ -27,8 +26,6 @@
 #include <cstddef>
 
 namespace lacrima::exporting {
-
-inline constexpr double kMeanEyeSeparationMetres = 0.063;
 
 struct GltfExportResult {
   int frames = 0;
