@@ -116,6 +116,8 @@ int renderMode(const QCommandLineParser& parser, const QSize& size, const ModeOp
   options.size = size;
   options.view = *view;
   options.progress = [](int done, int total) { showProgress(done, total); };
+  options.alpha = parser.isSet("alpha");
+  options.masks = parser.isSet("masks");
   options.quality = mode.quality;
   options.threads = mode.threads;
   const player::BatchRenderResult result = player::renderAnimation(*rig, options);
@@ -328,6 +330,7 @@ int main(int argc, char** argv) {
       "  lacrima-player media/demo/crying.fap\n"
       "  xvfb-run -a lacrima-player --render out/ --size 1280x720 media/demo/crying.fap\n"
       "  xvfb-run -a lacrima-player --render close/ --view close-left media/demo/crying.fap\n"
+      "  xvfb-run -a lacrima-player --render layers/ --alpha --masks media/demo/crying.fap\n"
       "  lacrima-player --export-gltf crying.glb media/demo/crying.fap\n"
       "  lacrima-player --export-tears tears/ media/demo/crying.fap\n"
       "  xvfb-run -a lacrima-player --video crying.mp4 --size 1280x720 media/demo/crying.fap\n"
@@ -346,6 +349,10 @@ int main(int argc, char** argv) {
        "Render every frame to OUT_DIR/frame_NNNN.png plus contact_sheet.png, then exit (needs an X "
        "display: run under xvfb-run).",
        "OUT_DIR"},
+      {"alpha", "With --render: RGBA frames with a transparent background, for compositing."},
+      {"masks",
+       "With --render: beside each frame a mask_NNNN.png of the same render's tears (255 tear "
+       "water, 128 wet trail, 0 the rest)."},
       {"export-gltf",
        "Export the animation with its tears as one binary glTF 2.0 file (head, morph targets "
        "named by FAP, eye and head joints, tears per frame), then exit. Needs no display.",
@@ -392,6 +399,10 @@ int main(int argc, char** argv) {
   if (parser.isSet("mesh") != parser.isSet("fdp")) {
     std::fprintf(stderr,
                  "lacrima-player: --mesh and --fdp go together (a head and its feature points)\n");
+    return kExitUsage;
+  }
+  if ((parser.isSet("alpha") || parser.isSet("masks")) && !parser.isSet("render")) {
+    std::fprintf(stderr, "lacrima-player: --alpha and --masks go with --render OUT_DIR\n");
     return kExitUsage;
   }
   if (parser.isSet("quality")) {
