@@ -52,3 +52,9 @@ pkg_check_modules(ODE QUIET IMPORTED_TARGET ode>=0.16)
 if(NOT ODE_FOUND)
   lacrima_missing("ODE 0.16" "libode-dev")
 endif()
+# FFmpeg's libraries write the videos (lacrima_export): in the process, not by running a program.
+pkg_check_modules(FFMPEG QUIET IMPORTED_TARGET libavformat libavcodec libswscale libavutil)
+if(NOT FFMPEG_FOUND)
+  lacrima_missing("FFmpeg's libraries (the video export)"
+                  "libavformat-dev libavcodec-dev libswscale-dev libavutil-dev")
+endif()

@@ -2,6 +2,7 @@
 
 #include <lacrima/common/FapTable.h>
 #include <lacrima/common/Fapu.h>
+#include <lacrima/common/HeadTurns.h>
 
 #include <Eigen/Geometry>
 
@@ -15,24 +16,9 @@
 namespace lacrima::inline common {
 namespace {
 
-constexpr float kMaxValue = 16777216.0f;  // 2^24, see PoseSet.h
-
-// Non-finite values are the neutral face; huge ones are clamped so sums stay finite.
-float usableValue(float value) {
-  if (!std::isfinite(value)) return 0.0f;
-  return std::clamp(value, -kMaxValue, kMaxValue);
-}
-
-// A rotation channel's turn as an exact rotation. The angle is formed in double so that a
-// value of 90 degrees gives cos = 0 to float precision, not to the error of value * 1e-5f.
-Eigen::Quaterniond channelRotation(const FapValues& values, int fap) {
-  const double angle = double(usableValue(values[channelIndex(fap)])) * FapuSet::kAngleUnit;
-  return Eigen::Quaterniond(Eigen::AngleAxisd(angle, fapInfo(fap).positiveMotion.cast<double>()));
-}
-
 bool anyNonZero(const FapValues& values, std::initializer_list<int> faps) {
   for (int fap : faps)
-    if (usableValue(values[channelIndex(fap)]) != 0.0f) return true;
+    if (usableFapValue(values[channelIndex(fap)]) != 0.0f) return true;
   return false;
 }
 
@@ -150,7 +136,7 @@ void PoseBlender::blend(const FapValues& values, Eigen::Matrix3Xf& positions,
   Eigen::Vector3f rightCentre = poses_.eyeRight.centre;
   float* out = positions.data();
   for (int i : linearChannels_) {
-    const float value = usableValue(values[static_cast<std::size_t>(i)]);
+    const float value = usableFapValue(values[static_cast<std::size_t>(i)]);
     if (value == 0.0f) continue;
     const VertexPose& pose = poses_.poses[static_cast<std::size_t>(i)];
     const float* offset = pose.offsets.data();
@@ -166,20 +152,18 @@ void PoseBlender::blend(const FapValues& values, Eigen::Matrix3Xf& positions,
   }
 
   // Eyeballs: yaw, then pitch about the yawed horizontal axis (E = R_yaw * R_pitch).
-  auto turnEye = [&](const RotationGroup& eye, int yawFap, int pitchFap,
+  auto turnEye = [&](const RotationGroup& eye, EyeSide side, int yawFap, int pitchFap,
                      const Eigen::Vector3f& centre) {
     if (eye.vertices.empty() || !anyNonZero(values, {yawFap, pitchFap})) return;
-    const Eigen::Quaterniond turn =
-        channelRotation(values, yawFap) * channelRotation(values, pitchFap);
-    rotateVertices(positions, eye.vertices, turn.toRotationMatrix().cast<float>(), centre);
+    rotateVertices(positions, eye.vertices, eyeTurn(values, side).toRotationMatrix().cast<float>(),
+                   centre);
   };
-  turnEye(poses_.eyeLeft, 23, 25, leftCentre);
-  turnEye(poses_.eyeRight, 24, 26, rightCentre);
+  turnEye(poses_.eyeLeft, EyeSide::Left, 23, 25, leftCentre);
+  turnEye(poses_.eyeRight, EyeSide::Right, 24, 26, rightCentre);
 
   // Head: R_head = R_yaw(49) * R_pitch(48) * R_roll(50) about the neck pivot.
   if (!poses_.head.vertices.empty() && anyNonZero(values, {48, 49, 50})) {
-    const Eigen::Quaterniond turn =
-        channelRotation(values, 49) * channelRotation(values, 48) * channelRotation(values, 50);
+    const Eigen::Quaterniond turn = headTurn(values);
     rotateVertices(positions, poses_.head.vertices, turn.toRotationMatrix().cast<float>(),
                    poses_.head.centre);
   }

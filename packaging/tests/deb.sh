@@ -21,7 +21,8 @@ recommends=$(dpkg-deb -f "$deb" Recommends)
 echo "Depends: $depends"
 echo "Recommends: $recommends"
 # Libraries only dpkg-shlibdeps can have put there (nothing lists them by hand), with versions.
-for library in libqt6core6 libqt6widgets6 libogre1.12.10 libode8 libassimp5 libtinygltf2d libc6; do
+for library in libqt6core6 libqt6widgets6 libogre1.12.10 libode8 libassimp5 libtinygltf2d \
+    libavcodec59 libavformat59 libswscale6 libc6; do
   [[ "$depends" =~ (^|, )$library(:[a-z0-9]+)?\ \(\>= ]] ||
     fail "Depends lacks a versioned $library from dpkg-shlibdeps: $depends"
 done

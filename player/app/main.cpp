@@ -13,9 +13,13 @@
 #include <lacrima/common/ImageSize.h>
 #include <lacrima/common/Keyframes.h>
 #include <lacrima/common/TearQuality.h>
+#include <lacrima/export/GltfAnimationExport.h>
+#include <lacrima/export/TearMeshExport.h>
+#include <lacrima/export/VideoExport.h>
 #include <lacrima/live/ListenUrl.h>
 #include <lacrima/live/LiveSession.h>
 #include <lacrima/playback/HeadRig.h>
+#include <lacrima/player/HeadViews.h>
 #include <lacrima/scene/CameraPreset.h>
 #include <lacrima/viewport/DarkTheme.h>
 
@@ -73,7 +77,7 @@ std::unique_ptr<playback::HeadRig> loadRig(const QCommandLineParser& parser,
 }
 
 // One line per step on a log, a bar redrawn in place on a terminal.
-void showProgress(int done, int total) {
+void showProgress(int done, int total, const char* verb = "rendered") {
   static const bool terminal = isatty(fileno(stderr));
   if (terminal) {
     const int width = 40, filled = done * width / std::max(1, total);
@@ -81,7 +85,7 @@ void showProgress(int done, int total) {
                  "########################################", width - filled, "", done, total);
     if (done == total) std::fputc('\n', stderr);
   } else if (done == total || done % std::max(1, total / 10) == 0) {
-    std::fprintf(stderr, "lacrima-player: rendered %d/%d frames\n", done, total);
+    std::fprintf(stderr, "lacrima-player: %s %d/%d frames\n", verb, done, total);
   }
 }
 
@@ -222,7 +226,9 @@ int renderMode(const QCommandLineParser& parser, const QSize& size, const ModeOp
   options.outputDir = parser.value("render");
   options.size = size;
   options.view = *view;
-  options.progress = showProgress;
+  options.progress = [](int done, int total) { showProgress(done, total); };
+  options.alpha = parser.isSet("alpha");
+  options.masks = parser.isSet("masks");
   options.quality = mode.quality;
   options.threads = mode.threads;
   const player::BatchRenderResult result = player::renderAnimation(*rig, options);
@@ -230,6 +236,109 @@ int renderMode(const QCommandLineParser& parser, const QSize& size, const ModeOp
   std::printf("%s/frame_0000.png ... frame_%04d.png and %s\n",
               QDir(options.outputDir).absolutePath().toLocal8Bit().constData(), result.frames - 1,
               QFileInfo(result.contactSheet).absoluteFilePath().toLocal8Bit().constData());
+  return kExitOk;
+}
+
+// --frames FIRST-LAST (frame numbers, both included), or nullopt after saying what it takes.
+std::optional<std::pair<int, int>> frameRange(const QCommandLineParser& parser) {
+  if (!parser.isSet("frames")) return std::pair{0, -1};
+  const QStringList ends = parser.value("frames").split('-');
+  bool firstOk = false, lastOk = false;
+  const int first = ends.value(0).toInt(&firstOk), last = ends.value(1).toInt(&lastOk);
+  if (ends.size() != 2 || !firstOk || !lastOk || first < 0 || last < first) {
+    std::fprintf(stderr,
+                 "lacrima-player: --frames: expected FIRST-LAST with 0 <= FIRST <= LAST, "
+                 "not '%s'\n",
+                 parser.value("frames").toLocal8Bit().constData());
+    return std::nullopt;
+  }
+  return std::pair{first, last};
+}
+
+// The options every export takes from the command line; nullopt after a usage error.
+std::optional<exporting::ExportOptions> exportOptions(const QCommandLineParser& parser,
+                                                      const QString& option,
+                                                      const ModeOptions& mode) {
+  const QStringList files = parser.positionalArguments();
+  if (files.size() != 1) {
+    std::fprintf(stderr, "lacrima-player: --%s needs exactly one FILE to export\n",
+                 option.toLocal8Bit().constData());
+    return std::nullopt;
+  }
+  const std::optional<std::pair<int, int>> range = frameRange(parser);
+  if (!range) return std::nullopt;
+  exporting::ExportOptions options;
+  options.input = files.front().toStdString();
+  options.output = parser.value(option).toStdString();
+  options.quality = mode.quality;
+  options.threads = mode.threads;
+  options.firstFrame = range->first;
+  options.lastFrame = range->second;
+  options.progress = [](int done, int total) {
+    showProgress(done, total, "exported");
+    return true;
+  };
+  return options;
+}
+
+// The rig of an export's FILE, its warnings said on stderr.
+std::unique_ptr<playback::HeadRig> exportRig(const QCommandLineParser& parser) {
+  auto rig = loadRig(parser, chooseHead(parser));
+  for (const std::string& w : rig->warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  return rig;
+}
+
+void printPath(const std::string& path) {
+  std::printf("%s\n",
+              QFileInfo(QString::fromStdString(path)).absoluteFilePath().toLocal8Bit().constData());
+}
+
+int gltfMode(const QCommandLineParser& parser, const ModeOptions& mode) {
+  const std::optional<exporting::ExportOptions> options =
+      exportOptions(parser, QStringLiteral("export-gltf"), mode);
+  if (!options) return kExitUsage;
+  const exporting::GltfExportResult result =
+      exporting::exportGltfAnimation(*exportRig(parser), *options);
+  std::fprintf(stderr,
+               "lacrima-player: %d frames, %d morph targets, tears in %d frames, %.1f MB in "
+               "%.1f s\n",
+               result.frames, result.morphTargets, result.tearFrames,
+               static_cast<double>(result.bytes) / 1e6, result.seconds);
+  printPath(options->output);
+  return kExitOk;
+}
+
+int tearsMode(const QCommandLineParser& parser, const ModeOptions& mode) {
+  const std::optional<exporting::ExportOptions> options =
+      exportOptions(parser, QStringLiteral("export-tears"), mode);
+  if (!options) return kExitUsage;
+  const exporting::TearMeshExportResult result =
+      exporting::exportTearMeshes(*exportRig(parser), *options);
+  std::fprintf(stderr, "lacrima-player: %d PLY files, tears in %d, %.1f MB in %.1f s\n",
+               result.frames, result.framesWithTears, static_cast<double>(result.bytes) / 1e6,
+               result.seconds);
+  printPath(options->output);
+  return kExitOk;
+}
+
+int videoMode(const QCommandLineParser& parser, const QSize& size, const ModeOptions& mode) {
+  const std::optional<exporting::ExportOptions> options =
+      exportOptions(parser, QStringLiteral("video"), mode);
+  if (!options) return kExitUsage;
+  const std::optional<scene::CameraPreset> view = cameraPreset(parser);
+  if (!view) return kExitUsage;
+  if (size.width() % 2 || size.height() % 2) {
+    std::fprintf(stderr,
+                 "lacrima-player: --size: H.264 video needs an even width and height, not %dx%d\n",
+                 size.width(), size.height());
+    return kExitUsage;
+  }
+  const auto rig = exportRig(parser);
+  const exporting::VideoExportResult result =
+      exporting::exportVideo(*rig, *options, size, player::presetView(*rig, *view));
+  std::fprintf(stderr, "lacrima-player: %d frames at %g fps (H.264, %s) in %.1f s\n", result.frames,
+               result.fps, result.encoder.c_str(), result.seconds);
+  printPath(options->output);
   return kExitOk;
 }
 
@@ -300,17 +409,20 @@ int windowMode(QApplication& app, const QCommandLineParser& parser, const QSize*
 int main(int argc, char** argv) {
   // OGRE on Debian renders through GLX: both modes need an X display. Say so before Qt would
   // abort on a missing one.
-  const bool render = hasOption(argc, argv, "--render");
+  const bool render = hasOption(argc, argv, "--render") || hasOption(argc, argv, "--video");
   const bool noWindow = hasOption(argc, argv, "--no-window");
+  // Exports that draw nothing need no display, nor does a stream recorded without a window.
+  const bool headless = noWindow || hasOption(argc, argv, "--export-gltf") ||
+                        hasOption(argc, argv, "--export-tears");
   const bool help = hasOption(argc, argv, "--help") || hasOption(argc, argv, "-h") ||
                     hasOption(argc, argv, "--version");
   const bool haveX = !qEnvironmentVariableIsEmpty("DISPLAY");
-  if (!haveX && !help && !noWindow) {
+  if (!haveX && !help && !headless) {
     if (render)
       std::fprintf(
           stderr,
-          "lacrima-player: --render needs an X display (OGRE renders through GLX) and there is "
-          "none;\n"
+          "lacrima-player: --render and --video need an X display (OGRE renders through GLX) and "
+          "there is none;\n"
           "  run it under a virtual one: xvfb-run -a lacrima-player --render OUT_DIR FILE\n");
     else
       std::fprintf(stderr,
@@ -334,6 +446,10 @@ int main(int argc, char** argv) {
       "  lacrima-player media/demo/crying.fap\n"
       "  xvfb-run -a lacrima-player --render out/ --size 1280x720 media/demo/crying.fap\n"
       "  xvfb-run -a lacrima-player --render close/ --view close-left media/demo/crying.fap\n"
+      "  xvfb-run -a lacrima-player --render layers/ --alpha --masks media/demo/crying.fap\n"
+      "  lacrima-player --export-gltf crying.glb media/demo/crying.fap\n"
+      "  lacrima-player --export-tears tears/ media/demo/crying.fap\n"
+      "  xvfb-run -a lacrima-player --video crying.mp4 --size 1280x720 media/demo/crying.fap\n"
       "  lacrima-player --mesh head.obj --fdp head.fdp.json animation.fap\n"
       "  lacrima-player my-character/project.lacrima\n\n"
       "Live (docs/live.md):\n"
@@ -354,7 +470,26 @@ int main(int argc, char** argv) {
        "Render every frame to OUT_DIR/frame_NNNN.png plus contact_sheet.png, then exit (needs an X "
        "display: run under xvfb-run).",
        "OUT_DIR"},
-      {"size", "Image size for --render, window size otherwise (default 1280x720 for --render).",
+      {"alpha", "With --render: RGBA frames with a transparent background, for compositing."},
+      {"masks",
+       "With --render: beside each frame a mask_NNNN.png of the same render's tears (255 tear "
+       "water, 128 wet trail, 0 the rest)."},
+      {"export-gltf",
+       "Export the animation with its tears as one binary glTF 2.0 file (head, morph targets "
+       "named by FAP, eye and head joints, tears per frame), then exit. Needs no display.",
+       "OUT.glb"},
+      {"video",
+       "Export the animation as an H.264 MP4 video (yuv420p, the file's frame rate) at --size "
+       "from --view, then exit (needs an X display: run under xvfb-run).",
+       "OUT.mp4"},
+      {"export-tears",
+       "Export the tear geometry of every frame (water and wet trails) as OUT_DIR/tears_NNNN.ply, "
+       "then exit. Needs no display.",
+       "OUT_DIR"},
+      {"frames", "Frames to export, both included (default: all).", "FIRST-LAST"},
+      {"size",
+       "Image size for --render and --video, window size otherwise (default 1280x720 for "
+       "--render and --video).",
        "WxH"},
       {"view",
        "Camera of --render, --screenshot and the window: framing (the viewport's reset view, "
@@ -401,6 +536,10 @@ int main(int argc, char** argv) {
                  "lacrima-player: --mesh and --fdp go together (a head and its feature points)\n");
     return kExitUsage;
   }
+  if ((parser.isSet("alpha") || parser.isSet("masks")) && !parser.isSet("render")) {
+    std::fprintf(stderr, "lacrima-player: --alpha and --masks go with --render OUT_DIR\n");
+    return kExitUsage;
+  }
   if (parser.isSet("quality")) {
     const std::string name = parser.value("quality").toStdString();
     mode.quality = parseTearQuality(name);
@@ -427,6 +566,9 @@ int main(int argc, char** argv) {
     if (parser.isSet("mapping"))
       live->mapping = LiveLinkMapping::load(parser.value("mapping").toStdString());
     if (noWindow) return headlessMode(app, *live);
+    if (parser.isSet("export-gltf")) return gltfMode(parser, mode);
+    if (parser.isSet("export-tears")) return tearsMode(parser, mode);
+    if (parser.isSet("video")) return videoMode(parser, size, mode);
     if (parser.isSet("render")) return renderMode(parser, size, mode);
     return windowMode(app, parser, parser.isSet("size") ? &size : nullptr, mode, *live);
   } catch (const std::exception& e) {

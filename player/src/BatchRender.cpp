@@ -34,6 +34,7 @@ BatchRenderResult renderAnimation(const playback::HeadRig& rig, const BatchRende
 
   scene::FaceRenderer renderer(rig.head, options.size);
   renderer.scene().setView(presetView(rig, options.view));
+  renderer.scene().setTransparentBackground(options.alpha);
   const int frames = playback.frameCount();
   const std::vector<int> picked = evenlySpacedFrames(frames, options.sheetFrames);
   std::vector<SheetFrame> sheet;
@@ -44,8 +45,10 @@ BatchRenderResult renderAnimation(const playback::HeadRig& rig, const BatchRende
     const QImage image = renderer.render();
     if (std::binary_search(picked.begin(), picked.end(), f))
       sheet.push_back({image.scaledToWidth(400, Qt::SmoothTransformation), f, t});
-    writer.write(image,
-                 out.filePath(QStringLiteral("frame_%1.png").arg(f, 4, 10, QLatin1Char('0'))));
+    const QString number = QStringLiteral("%1").arg(f, 4, 10, QLatin1Char('0'));
+    writer.write(image, out.filePath(QStringLiteral("frame_") + number + ".png"));
+    if (options.masks)
+      writer.write(renderer.renderMask(), out.filePath(QStringLiteral("mask_") + number + ".png"));
     if (options.progress) options.progress(f + 1, frames);
   }
   writer.finish();

@@ -7,9 +7,13 @@
 namespace lacrima::player {
 
 void savePng(const QImage& image, const QString& path) {
-  // Opaque renders lose nothing as RGB; quality 80 is zlib level 1, which for these images is
-  // about 30% larger than the default level and four times faster.
-  const QImage rgb = image.hasAlphaChannel() ? image.convertToFormat(QImage::Format_RGB888) : image;
+  // Opaque renders (FaceRenderer's Format_RGBA8888, alpha 255 throughout) lose nothing as RGB;
+  // renders over a transparent background come premultiplied and keep their alpha (Qt writes
+  // it straight, as PNG wants). Quality 80 is zlib level 1, which for these images is about 30%
+  // larger than the default level and four times faster.
+  const QImage rgb = image.format() == QImage::Format_RGBA8888
+                         ? image.convertToFormat(QImage::Format_RGB888)
+                         : image;
   if (!rgb.save(path, "PNG", 80))
     throw FileError({path.toStdString(), 0, 0},
                     "cannot write the PNG image (folder not writable or disk full?)");

@@ -3,6 +3,7 @@
 // with a clear message.
 #include "../support/MissingData.h"
 #include "../support/RunProcess.h"
+#include "../support/WeepingClip.h"
 
 #include <lacrima/common/FapTable.h>
 #include <lacrima/common/FapWriter.h>
@@ -40,19 +41,8 @@ class RenderCliTest : public QObject {
     if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
     QVERIFY(dir_.isValid());
     // 14 frames: the jaw opens while tears appear at both eyes.
-    FapAnimation a;
-    a.name = "short";
-    a.fps = 22;
-    for (int f = 0; f < 14; ++f) {
-      FapValues v{};
-      v[static_cast<std::size_t>(channelIndex(*fapByName("open_jaw")))] =
-          static_cast<float>(30 * f);
-      v[static_cast<std::size_t>(channelIndex(kTearLeftFap))] =
-          v[static_cast<std::size_t>(channelIndex(kTearRightFap))] = 20;
-      a.frames.push_back(v);
-    }
     animation_ = dir_.filePath("short.fap");
-    FapWriter::save(a, animation_.toStdString());
+    FapWriter::save(testsupport::weepingClip(14, 30, 20), animation_.toStdString());
   }
 
   void writesFramesAndContactSheet() {

@@ -6,6 +6,7 @@
 #include <lacrima/scene/OgreRuntime.h>
 
 #include <OgreHardwarePixelBuffer.h>
+#include <OgreMaterialManager.h>
 #include <OgreRenderTexture.h>
 #include <OgreRoot.h>
 #include <OgreTextureManager.h>
@@ -40,6 +41,24 @@ struct FaceRenderer::State {
     const std::string name = target->getName(), group = target->getGroup();
     target.reset();
     Ogre::TextureManager::getSingleton().remove(name, group);
+  }
+
+  // Renders the scene's viewport and reads its pixels into an image of `format` (4 bytes a pixel).
+  QImage renderInto(QImage::Format format) {
+    Ogre::RenderTarget* rt = target->getBuffer()->getRenderTarget();
+    auto start = SteadyClock::now();
+    rt->update(true);  // with multisampling, the "swap" resolves the samples into the texture
+    times.render = millisecondsSince(start);
+    start = SteadyClock::now();
+    QImage image(size, format);
+    const Ogre::PixelBox box(static_cast<Ogre::uint32>(size.width()),
+                             static_cast<Ogre::uint32>(size.height()), 1, Ogre::PF_BYTE_RGBA,
+                             image.bits());
+    rt->copyContentsToMemory(Ogre::Box(0, 0, static_cast<Ogre::uint32>(size.width()),
+                                       static_cast<Ogre::uint32>(size.height())),
+                             box, Ogre::RenderTarget::FB_AUTO);
+    times.readback = millisecondsSince(start);
+    return image;
   }
 
   void createTarget() {
@@ -95,21 +114,24 @@ void FaceRenderer::show(const playback::FrameView& view) {
 }
 
 QImage FaceRenderer::render() {
+  return state_->renderInto(state_->scene->transparentBackground()
+                                ? QImage::Format_RGBA8888_Premultiplied
+                                : QImage::Format_RGBA8888);
+}
+
+QImage FaceRenderer::renderMask() {
   State& s = *state_;
-  Ogre::RenderTarget* rt = s.target->getBuffer()->getRenderTarget();
-  auto start = SteadyClock::now();
-  rt->update(true);  // with multisampling, the "swap" resolves the samples into the texture
-  s.times.render = millisecondsSince(start);
-  start = SteadyClock::now();
-  QImage image(s.size, QImage::Format_RGBA8888);
-  const Ogre::PixelBox box(static_cast<Ogre::uint32>(s.size.width()),
-                           static_cast<Ogre::uint32>(s.size.height()), 1, Ogre::PF_BYTE_RGBA,
-                           image.bits());
-  rt->copyContentsToMemory(Ogre::Box(0, 0, static_cast<Ogre::uint32>(s.size.width()),
-                                     static_cast<Ogre::uint32>(s.size.height())),
-                           box, Ogre::RenderTarget::FB_AUTO);
-  s.times.readback = millisecondsSince(start);
-  return image;
+  Ogre::Viewport* viewport = s.target->getBuffer()->getRenderTarget()->getViewport(0);
+  const Ogre::ColourValue background = viewport->getBackgroundColour();
+  const unsigned int buffers = viewport->getClearBuffers();
+  viewport->setMaterialScheme("LacrimaMask");
+  viewport->setBackgroundColour(Ogre::ColourValue::Black);
+  viewport->setClearEveryFrame(true, Ogre::FBT_COLOUR | Ogre::FBT_DEPTH | Ogre::FBT_STENCIL);
+  const QImage ids = s.renderInto(QImage::Format_RGBA8888);
+  viewport->setMaterialScheme(Ogre::MaterialManager::DEFAULT_SCHEME_NAME);
+  viewport->setBackgroundColour(background);
+  viewport->setClearEveryFrame(true, buffers);
+  return ids.convertToFormat(QImage::Format_Grayscale8);
 }
 
 void FaceRenderer::resetView() { state_->scene->resetView(); }

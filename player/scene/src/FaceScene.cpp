@@ -102,6 +102,20 @@ struct FaceScene::State {
   OrbitView view = defaultView();
   double framingDistance = 0;  // of the head shown (skinDetailStrength)
   double aspect = 4.0 / 3.0;
+  bool transparent = false;
+
+  // The backdrop covers every pixel, so only depth and stencil (the trails' marks, TearLayers.h)
+  // are cleared: clearing colour too would be a wasted pass over the frame. Transparent, the
+  // backdrop is hidden and the colour cleared to alpha 0.
+  void applyBackground() {
+    backdropNode->setVisible(!transparent);
+    if (!viewport) return;
+    viewport->setBackgroundColour(transparent ? Ogre::ColourValue(0, 0, 0, 0)
+                                              : Ogre::ColourValue(0.1f, 0.1f, 0.11f));
+    viewport->setClearEveryFrame(true, transparent
+                                           ? Ogre::FBT_COLOUR | Ogre::FBT_DEPTH | Ogre::FBT_STENCIL
+                                           : Ogre::FBT_DEPTH | Ogre::FBT_STENCIL);
+  }
 
   static OrbitView defaultView() {
     OrbitView v;
@@ -231,17 +245,21 @@ void FaceScene::show(const playback::FrameView& view) {
 
 Ogre::Viewport& FaceScene::attach(Ogre::RenderTarget& target) {
   Ogre::Viewport* viewport = target.addViewport(state_->camera);
-  viewport->setBackgroundColour(Ogre::ColourValue(0.1f, 0.1f, 0.11f));
   viewport->setOverlaysEnabled(false);
-  // The backdrop covers every pixel: clearing colour too would be a wasted pass over the frame.
-  // The trails mark the stencil (TearLayers.h).
-  viewport->setClearEveryFrame(true, Ogre::FBT_DEPTH | Ogre::FBT_STENCIL);
   viewport->setShadowsEnabled(false);
   state_->camera->setAutoAspectRatio(false);
   state_->viewport = viewport;
+  state_->applyBackground();
   if (target.getHeight() > 0) setAspect(double(target.getWidth()) / double(target.getHeight()));
   return *viewport;
 }
+
+void FaceScene::setTransparentBackground(bool transparent) {
+  state_->transparent = transparent;
+  state_->applyBackground();
+}
+
+bool FaceScene::transparentBackground() const { return state_->transparent; }
 
 void FaceScene::setAspect(double widthOverHeight) {
   if (!(widthOverHeight > 0) || !std::isfinite(widthOverHeight)) return;

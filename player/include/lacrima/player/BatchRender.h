@@ -1,7 +1,8 @@
 #pragma once
 // lacrima-player --render: every frame of an animation as a PNG (frame_0000.png, ...) and a
 // contact sheet of 12 evenly spaced frames (contact_sheet.png), through the same scene the
-// viewport shows (FaceRenderer), with progress on stderr. Needs an X display (xvfb-run).
+// viewport shows (FaceRenderer), with progress on stderr; optionally with a transparent
+// background (--alpha) and a tear mask per frame (--masks). Needs an X display (xvfb-run).
 #include <lacrima/common/TearQuality.h>
 #include <lacrima/playback/HeadRig.h>
 #include <lacrima/scene/CameraPreset.h>
@@ -20,6 +21,11 @@ struct BatchRenderOptions {
   QSize size{1280, 720};
   scene::CameraPreset view = scene::CameraPreset::Framing;  // --view
   int sheetFrames = 12;
+  // --alpha: RGBA frames with a transparent background (no backdrop), for compositing.
+  bool alpha = false;
+  // --masks: beside each frame_NNNN.png a mask_NNNN.png of the same size, the ID pass of the
+  // same render (FaceRenderer::renderMask): 255 tear water, 128 wet trail, 0 the rest.
+  bool masks = false;
   std::optional<TearQuality> quality;  // --quality: replaces the file's level
   int threads = 0;                     // --threads: SimulationOptions::threads (0: its default)
   // Called after each frame with (frames done, frames in all).

@@ -39,7 +39,15 @@ class FaceRenderer {
   void resize(QSize size);
   QSize size() const;
   void show(const playback::FrameView& view);
-  QImage render();  // Format_RGBA8888, upright
+  // Format_RGBA8888, upright; Format_RGBA8888_Premultiplied over a transparent background
+  // (FaceScene::setTransparentBackground).
+  QImage render();
+  // The ID pass of the frame shown, from the same camera and geometry as render(): Grayscale8,
+  // 255 where tear water (surface, drops) is the nearest thing seen, 128 where a wet trail is,
+  // 0 elsewhere (skin, eyes, the background). Each part's label is written whatever its colour
+  // (the scheme "LacrimaMask" of media/materials/lacrima.material), so it is exact per pixel,
+  // not a threshold. Lashes and brows are left out of it.
+  QImage renderMask();
   // Camera: the same framing as the viewport's reset view, then orbit/zoom in its terms.
   void resetView();
   void orbit(double yawDegrees, double pitchDegrees);

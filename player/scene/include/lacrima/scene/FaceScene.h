@@ -53,6 +53,11 @@ class FaceScene {
 
   // Adds a viewport showing this scene's camera to `target` (one target per scene).
   Ogre::Viewport& attach(Ogre::RenderTarget& target);
+  // Without the backdrop, over a clear of alpha 0, for compositing (--render --alpha): the
+  // pixels come out premultiplied by their alpha (the lashes' and the tears' blending keeps the
+  // alpha channel an "over" of what is behind them).
+  void setTransparentBackground(bool transparent);
+  bool transparentBackground() const;
   void setAspect(double widthOverHeight);
 
   const OrbitView& view() const;
