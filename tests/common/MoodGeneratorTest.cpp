@@ -218,7 +218,8 @@ class MoodGeneratorTest : public QObject {
     MoodLevels wild;
     wild.level = {std::numeric_limits<double>::quiet_NaN(), 1e300, -5,
                   std::numeric_limits<double>::infinity()};
-    for (double t : {0.0, 1e-9, 0.5, 0.4, 3600.0, 3600.0, 1e9, 1e9 + 1}) {
+    for (double t : {0.0, 1e-9, 0.5, 0.4, 3600.0, 3600.0, 1e9, 1e9 + 1, 1e300,
+                     std::numeric_limits<double>::infinity()}) {
       const MoodFrame frame = generator.step(t, wild);
       for (int fap = 1; fap <= kChannelCount; ++fap) {
         const float v = frame.channels[channelIndex(fap)];
