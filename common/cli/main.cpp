@@ -2,9 +2,12 @@
 // The interface scripts rely on: exit 0 on success, 1 on bad input or a failed write,
 // 2 on wrong usage; results on stdout, diagnostics on stderr as "file:line:col: message".
 #include "CliFiles.h"
+#include "GenerateCommand.h"
 
+#include <lacrima/common/CommandLineNumbers.h>
 #include <lacrima/common/FapTable.h>
 #include <lacrima/common/Keyframes.h>
+#include <lacrima/common/mood/MoodGenerator.h>
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -28,7 +31,10 @@ const char* const kCommandSummary =
     "  dump FILE                          decoded frames as CSV (frame,fap1,...,fap70)\n"
     "  interpolate IN -o OUT [--fps 22] [--smooth]\n"
     "                                     IN's frames as keys, resampled densely at --fps\n"
-    "  convert IN -o OUT [--strict]       .fap <-> .lacrima/.json; --strict: 68-FAP .fap\n";
+    "  convert IN -o OUT [--strict]       .fap <-> .lacrima/.json; --strict: 68-FAP .fap\n"
+    "  generate --mood sadness=0.8[,anger=0.2] | --script moods.json --seconds S\n"
+    "           [--seed N] [--rate 22] [--strict] -o OUT\n"
+    "                                     a take of the crying generator (docs/mood.md)\n";
 
 // "3-26 39-42 63": compact list of the channels in a mask.
 std::string channelRanges(const ChannelMask& mask) {
@@ -129,7 +135,7 @@ int convert(const std::string& in, const std::string& out, bool strict) {
 struct Command {
   const char* name;
   const char* description;
-  const char* positional;  // "FILE" or "IN"
+  const char* positional;  // "FILE" or "IN"; nullptr: the command takes none
   bool takesOutput;
   std::function<int(QCommandLineParser&, const std::string&, const std::string&)> run;
   std::function<void(QCommandLineParser&)> addOptions = [](QCommandLineParser&) {};
@@ -152,6 +158,47 @@ int main(int argc, char** argv) {
   const QCommandLineOption fpsOption("fps", "Output frame rate (default 22).", "rate", "22");
   const QCommandLineOption smoothOption("smooth", "Monotone cubic instead of linear.");
   const QCommandLineOption strictOption("strict", "Write the 68 standard FAPs only.");
+  const QCommandLineOption moodOption(
+      "mood", "Constant moods: sadness, anger, joy, shame, each 0..1 (sadness=0.8,anger=0.2).",
+      "moods");
+  const QCommandLineOption scriptOption(
+      "script", "Moods over time: a JSON file of keys (docs/mood.md#mood-scripts).", "file");
+  const QCommandLineOption secondsOption("seconds", "Length of the take (0 to 86400).", "s");
+  const QCommandLineOption seedOption("seed", "The take's seed (default 1).", "n", "1");
+  const QCommandLineOption rateOption("rate", "Frames per second (default 22).", "fps", "22");
+  // generate's options read and checked; usage errors exit 2 before anything is generated.
+  const auto runGenerate = [&](QCommandLineParser& p, const std::string& out) {
+    GenerateRequest request;
+    request.output = out;
+    if (p.isSet(moodOption) == p.isSet(scriptOption))
+      return usageError("generate takes either --mood or --script");
+    if (p.isSet(moodOption)) {
+      try {
+        request.moods = parseMoodLevels(p.value(moodOption).toStdString());
+      } catch (const std::invalid_argument& error) {
+        return usageError(QString("--mood: ") + error.what());
+      }
+    } else {
+      request.script = p.value(scriptOption).toStdString();
+    }
+    if (!p.isSet(secondsOption)) return usageError("generate needs --seconds S");
+    std::string error;
+    const auto seconds = readNumberOption(
+        "--seconds", "seconds", p.value(secondsOption).toStdString(), 0, kMaxMoodSeconds, error);
+    const auto rate = readNumberOption("--rate", "frames per second",
+                                       p.value(rateOption).toStdString(), 0.001, 1000, error);
+    if (!seconds || !rate) return usageError(QString::fromStdString(error));
+    bool ok = false;
+    request.seed = p.value(seedOption).toULongLong(&ok);
+    if (!ok)
+      return usageError("--seed: expected a whole number from 0 to 18446744073709551615, got '" +
+                        p.value(seedOption) + "'");
+    request.seconds = *seconds;
+    request.fps = *rate;
+    request.strict = p.isSet(strictOption);
+    std::fprintf(stderr, "%s\n", generate(request).c_str());
+    return kExitOk;
+  };
 
   const Command commands[] = {
       {"check", "Validate FILE and print one summary line.", "FILE", false,
@@ -178,6 +225,17 @@ int main(int argc, char** argv) {
          return convert(in, out, p.isSet(strictOption));
        },
        [&](QCommandLineParser& p) { p.addOption(strictOption); }},
+      {"generate",
+       "Write a take of the crying generator (docs/mood.md) to OUT: moods held constant "
+       "(--mood) or following a script (--script), for --seconds, from --seed.",
+       nullptr, true,
+       [&](QCommandLineParser& p, const std::string&, const std::string& out) {
+         return runGenerate(p, out);
+       },
+       [&](QCommandLineParser& p) {
+         p.addOptions(
+             {moodOption, scriptOption, secondsOption, seedOption, rateOption, strictOption});
+       }},
   };
 
   const QStringList args = QCoreApplication::arguments();
@@ -198,8 +256,9 @@ int main(int argc, char** argv) {
     QCommandLineParser parser;
     parser.setApplicationDescription(command.description);
     parser.addHelpOption();
-    parser.addPositionalArgument(command.positional,
-                                 "Input .fap file or project (.lacrima or .json).");
+    if (command.positional)
+      parser.addPositionalArgument(command.positional,
+                                   "Input .fap file or project (.lacrima or .json).");
     if (command.takesOutput) parser.addOption(outputOption);
     command.addOptions(parser);
     QStringList commandArgs = args.mid(1);
@@ -210,14 +269,17 @@ int main(int argc, char** argv) {
       return kExitOk;
     }
     const QStringList positional = parser.positionalArguments();
-    if (positional.size() != 1)
+    if (!command.positional && !positional.isEmpty())
+      return usageError(
+          QString("%1 takes no file but -o OUT, got '%2'").arg(command.name, positional.first()));
+    if (command.positional && positional.size() != 1)
       return usageError(QString("%1 takes exactly one %2").arg(command.name, command.positional));
     if (command.takesOutput && !parser.isSet(outputOption))
       return usageError(QString("%1 needs -o OUT").arg(command.name));
     try {
       const std::string output =
           command.takesOutput ? parser.value(outputOption).toStdString() : std::string();
-      return command.run(parser, positional.first().toStdString(), output);
+      return command.run(parser, positional.value(0).toStdString(), output);
     } catch (const std::exception& error) {
       std::fprintf(stderr, "%s\n", error.what());
       return kExitBadInput;

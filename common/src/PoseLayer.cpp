@@ -6,12 +6,6 @@
 #include <string>
 
 namespace lacrima::inline common {
-namespace {
-
-// Any ordinary low-level channel: no rounding, no code semantics.
-constexpr int kCurveFap = 3;
-
-}  // namespace
 
 void PoseLayer::setPoseValue(int fap, float value) {
   if (!isValidFap(fap) || isHighLevelFap(fap)) {
@@ -21,31 +15,9 @@ void PoseLayer::setPoseValue(int fap, float value) {
   pose_[channelIndex(fap)] = value;
 }
 
-void PoseLayer::setIntensityKeys(std::vector<IntensityKey> keys) {
-  std::vector<Keyframe> knots;
-  knots.reserve(keys.size());
-  for (const IntensityKey& key : keys) {
-    Keyframe knot;
-    knot.time = key.time;  // KeyframeSequence refuses a time that is not finite
-    knot.interpolation = key.interpolation;
-    knot.set(kCurveFap, static_cast<float>(key.value));
-    knots.push_back(knot);
-  }
-  curve_ = KeyframeSequence(std::move(knots));
-  keys_.clear();
-  for (const Keyframe& knot : curve_.keys()) {
-    keys_.push_back({knot.time, knot.value(kCurveFap), knot.interpolation});
-  }
-}
-
-double PoseLayer::intensityAt(double seconds) const {
-  if (keys_.empty()) return 0.0;
-  return curve_.evaluate(seconds)[channelIndex(kCurveFap)];
-}
-
 bool PoseLayer::operator==(const PoseLayer& other) const {
   if (name != other.name || muted != other.muted || channels_ != other.channels_ ||
-      keys_ != other.keys_) {
+      intensity_ != other.intensity_) {
     return false;
   }
   for (int i = 0; i < kChannelCount; ++i) {

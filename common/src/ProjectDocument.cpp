@@ -20,7 +20,6 @@ namespace {
 
 constexpr std::string_view kFormat = "lacrima-project";
 constexpr double kMaxFps = 1000.0;
-constexpr qint64 kMaxFileBytes = qint64{64} << 20;
 
 void writeSource(JsonWriter& out, std::string_view side,
                  const std::optional<Eigen::Vector3d>& source) {
@@ -245,6 +244,20 @@ SceneSettings readScene(const JsonValue& value, int version, const TearMethodKey
   return scene;
 }
 
+FaceColourCurves readColours(const JsonValue& value, int version) {
+  if (version < 2) value.fail("colours need a project of version 2 or later");
+  if (!value.isObject())
+    value.fail("expected an object {\"redness\": [keys], \"blush\": [keys]}, got " +
+               value.describe());
+  value.rejectUnknownMembers({"redness", "blush"});
+  FaceColourCurves colours;
+  if (value.has("redness"))
+    colours.redness = IntensityCurve(detail::readIntensityKeys(value["redness"], version, 0, 1));
+  if (value.has("blush"))
+    colours.blush = IntensityCurve(detail::readIntensityKeys(value["blush"], version, 0, 1));
+  return colours;
+}
+
 std::string readHeadPath(const JsonValue& value) {
   const std::string path = value.isString() ? value.string() : std::string();
   if (path.empty() || path.find('\0') != std::string::npos)
@@ -268,7 +281,7 @@ bool ProjectDocument::operator==(const ProjectDocument& other) const {
   return name == other.name && fps == other.fps &&
          defaultInterpolation == other.defaultInterpolation && keys.keys() == other.keys.keys() &&
          layers == other.layers && tearSources == other.tearSources && scene == other.scene &&
-         head == other.head;
+         head == other.head && colours == other.colours;
 }
 
 namespace {
@@ -337,6 +350,19 @@ std::string ProjectDocument::toJson() const {
     out.key("layers");
     detail::writeLayers(out, layers);
   }
+  if (!colours.empty()) {
+    out.key("colours");
+    out.beginObject();
+    if (!colours.redness.empty()) {
+      out.key("redness");
+      detail::writeIntensityKeys(out, colours.redness.keys());
+    }
+    if (!colours.blush.empty()) {
+      out.key("blush");
+      detail::writeIntensityKeys(out, colours.blush.keys());
+    }
+    out.endObject();
+  }
   out.endObject();
   return std::move(out).finish();
 }
@@ -369,7 +395,7 @@ ProjectDocument ProjectDocument::read(const JsonValue& root, Use use,
                                       const TearMethodKeys* methods) {
   const int version = checkFormatAndVersion(root);
   root.rejectUnknownMembers({"format", "version", "name", "fps", "interpolation", "keys",
-                             "tearSources", "scene", "head", "layers"});
+                             "tearSources", "scene", "head", "layers", "colours"});
   ProjectDocument document;
   if (root.has("name")) document.name = root["name"].string();
   if (root.has("fps")) document.fps = readFps(root["fps"]);
@@ -385,6 +411,7 @@ ProjectDocument ProjectDocument::read(const JsonValue& root, Use use,
     if (version < 2) root["layers"].fail("layers need a project of version 2 or later");
     document.layers = detail::readLayers(root["layers"], version);
   }
+  if (root.has("colours")) document.colours = readColours(root["colours"], version);
   if (use == Use::Bake) requireBakeable(root, document);
   return document;
 }
@@ -396,8 +423,8 @@ ProjectDocument ProjectDocument::fromJson(std::string_view json, const std::stri
 
 ProjectDocument ProjectDocument::load(const std::string& path, Use use,
                                       const TearMethodKeys* methods) {
-  ProjectDocument document =
-      read(JsonInput::load(path, {"project file", kMaxFileBytes}).root(), use, methods);
+  ProjectDocument document = read(
+      JsonInput::load(path, {"project file", ProjectDocument::kMaxFileBytes}).root(), use, methods);
   document.resolveHeadPaths(fs::path(path).parent_path().string());
   return document;
 }

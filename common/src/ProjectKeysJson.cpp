@@ -259,30 +259,8 @@ void writeLayer(JsonWriter& out, const PoseLayer& layer) {
   }
   out.endObject();
   out.key("intensity");
-  out.beginArray();
-  for (const IntensityKey& key : layer.intensityKeys()) {
-    out.beginObject();
-    out.key("time");
-    out.number(key.time);
-    out.key("value");
-    out.number(key.value);
-    out.key("interpolation");
-    out.string(toString(key.interpolation));
-    out.endObject();
-  }
-  out.endArray();
+  writeIntensityKeys(out, layer.intensityKeys());
   out.endObject();
-}
-
-IntensityKey readIntensityKey(const JsonValue& value, int version) {
-  value.rejectUnknownMembers({"time", "value", "interpolation"});
-  IntensityKey key;
-  key.time = readKeyTime(value.required("time"));
-  key.value = value.required("value").number(-kMaxIntensity, kMaxIntensity);
-  if (value.has("interpolation")) {
-    key.interpolation = readInterpolation(value["interpolation"], version);
-  }
-  return key;
 }
 
 PoseLayer readLayer(const JsonValue& value, int version) {
@@ -297,14 +275,47 @@ PoseLayer readLayer(const JsonValue& value, int version) {
     if (isHighLevelFap(*fap)) channel.fail("viseme and expression codes cannot be layered");
     layer.setPoseValue(*fap, readChannelValue(*fap, channel));
   }
-  std::vector<IntensityKey> keys;
-  const std::vector<JsonValue> list = value.required("intensity").array(kMaxIntensityKeys);
-  for (const JsonValue& entry : list) keys.push_back(readIntensityKey(entry, version));
-  layer.setIntensityKeys(std::move(keys));
+  layer.setIntensityKeys(
+      readIntensityKeys(value.required("intensity"), version, -kMaxIntensity, kMaxIntensity));
   return layer;
 }
 
+IntensityKey readIntensityKey(const JsonValue& value, int version, double min, double max) {
+  value.rejectUnknownMembers({"time", "value", "interpolation"});
+  IntensityKey key;
+  key.time = readKeyTime(value.required("time"));
+  key.value = value.required("value").number(min, max);
+  if (value.has("interpolation")) {
+    key.interpolation = readInterpolation(value["interpolation"], version);
+  }
+  return key;
+}
+
 }  // namespace
+
+void writeIntensityKeys(JsonWriter& out, const std::vector<IntensityKey>& keys) {
+  out.beginArray();
+  for (const IntensityKey& key : keys) {
+    out.beginObject();
+    out.key("time");
+    out.number(key.time);
+    out.key("value");
+    out.number(key.value);
+    out.key("interpolation");
+    out.string(toString(key.interpolation));
+    out.endObject();
+  }
+  out.endArray();
+}
+
+std::vector<IntensityKey> readIntensityKeys(const JsonValue& value, int version, double min,
+                                            double max) {
+  std::vector<IntensityKey> keys;
+  const std::vector<JsonValue> list = value.array(kMaxIntensityKeys);
+  keys.reserve(list.size());
+  for (const JsonValue& entry : list) keys.push_back(readIntensityKey(entry, version, min, max));
+  return keys;
+}
 
 void writeLayers(JsonWriter& out, const std::vector<PoseLayer>& layers) {
   out.beginArray();

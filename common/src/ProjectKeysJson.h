@@ -36,6 +36,12 @@ Interpolation readInterpolation(const JsonValue& value, int version);
 void writeKeys(JsonWriter& out, const KeyframeSequence& keys);
 KeyframeSequence readKeys(const JsonValue& value, Interpolation defaultMode, int version);
 
+// A curve's keys (IntensityCurve.h): [{ "time", "value", "interpolation" }], each value in
+// [min, max]; at most 100,000 keys.
+void writeIntensityKeys(JsonWriter& out, const std::vector<IntensityKey>& keys);
+std::vector<IntensityKey> readIntensityKeys(const JsonValue& value, int version, double min,
+                                            double max);
+
 // Layers (PoseLayer.h): [{ "name", "muted", "pose": {channel: value}, "intensity":
 // [{ "time", "value", "interpolation" }] }]. A pose may not hold FAP 1 or 2.
 void writeLayers(JsonWriter& out, const std::vector<PoseLayer>& layers);

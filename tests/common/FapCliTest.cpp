@@ -198,6 +198,129 @@ class FapCliTest : public QObject {
     QCOMPARE(run.exitCode, 1);
     QVERIFY2(run.err.contains(out), qPrintable(run.err));
   }
+
+  // lacrima-fap generate (docs/mood.md): a take of the crying generator as a .fap or a project.
+  void generateWritesAFapFileAndAProject() {
+    const QString fap = path("sad.fap");
+    const Run run = runFap({"generate", "--mood", "sadness=0.8,anger=0.2", "--seconds", "12",
+                            "--seed", "5", "-o", fap});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    QVERIFY2(run.err.contains("265 frames at 22 fps"), qPrintable(run.err));
+    const FapReadResult read = FapReader::readFile(fap.toStdString());
+    QCOMPARE(read.animation.frameCount(), 12 * 22 + 1);
+    QVERIFY(read.warnings.empty());
+    QVERIFY(read.animation.hasTears());
+
+    const QString project = path("sad.lacrima");
+    QCOMPARE(runFap({"generate", "--mood", "sadness=0.8,anger=0.2", "--seconds", "12", "--seed",
+                     "5", "-o", project})
+                 .exitCode,
+             0);
+    const ProjectDocument document = ProjectDocument::load(project.toStdString());
+    QCOMPARE(document.bake().frames, read.animation.frames);  // the same take, keyed
+    QVERIFY(!document.colours.redness.empty() && !document.colours.blush.empty());
+    QCOMPARE(document.colours.redness.endTime(), 12.0);
+    QVERIFY(document.colours.blush.at(12) > 0.1);  // anger blushes
+    QVERIFY(document.scene.blush);
+  }
+
+  void generateFollowsAScriptAndTheSeed() {
+    const QString script = path("moods.json");
+    QFile file(script);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"format": "lacrima-moods", "version": 1,
+                   "keys": [{"time": 0, "joy": 0}, {"time": 2, "joy": 0.9}]})");
+    file.close();
+    const auto take = [&](const QString& seed, const QString& name, const QString& rate) {
+      const QString out = path(name);
+      const Run run = runFap({"generate", "--script", script, "--seconds", "6", "--seed", seed,
+                              "--rate", rate, "-o", out});
+      if (run.exitCode != 0) qWarning("%s", qPrintable(run.err));
+      QFile f(out);
+      return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+    };
+    const QByteArray a = take("9", "a.fap", "22"), b = take("9", "b.fap", "22");
+    QVERIFY(!a.isEmpty());
+    QCOMPARE(a, b);  // same seed, same bytes
+    QVERIFY(take("10", "c.fap", "22") != a);
+    take("9", "d.fap", "50");
+    QCOMPARE(FapReader::readFile(path("d.fap").toStdString()).animation.frameCount(), 301);
+    // joy lifts the lip corners once the script has raised it
+    const FapAnimation joy = FapReader::readFile(path("a.fap").toStdString()).animation;
+    QVERIFY(joy.frames.back()[channelIndex(12)] > 100);
+    QCOMPARE(joy.frames.front()[channelIndex(12)], 0.0f);
+  }
+
+  void generateStrictWritesTheStandardFaps() {
+    const QString out = path("strict-sad.fap");
+    QCOMPARE(runFap({"generate", "--mood", "sadness=1", "--seconds", "15", "--strict", "-o", out})
+                 .exitCode,
+             0);
+    const FapAnimation strict = FapReader::readFile(out.toStdString()).animation;
+    QVERIFY(!strict.hasTears());
+    QVERIFY(!strict.animated.test(channelIndex(kTearLeftFap)));
+  }
+
+  void generateRefusesBadInputWithoutWriting() {
+    const QString out = path("refused.fap");
+    const auto usage = [&](const QStringList& args) {
+      const Run run = runFap(QStringList{"generate"} + args + QStringList{"-o", out});
+      return run.exitCode;
+    };
+    QCOMPARE(usage({"--seconds", "3"}), 2);                                           // no moods
+    QCOMPARE(usage({"--mood", "joy=1", "--script", "x.json", "--seconds", "3"}), 2);  // both
+    QCOMPARE(usage({"--mood", "grief=1", "--seconds", "3"}), 2);
+    QCOMPARE(usage({"--mood", "joy=2", "--seconds", "3"}), 2);
+    QCOMPARE(usage({"--mood", "joy=1"}), 2);  // no length
+    QCOMPARE(usage({"--mood", "joy=1", "--seconds", "-1"}), 2);
+    QCOMPARE(usage({"--mood", "joy=1", "--seconds", "3", "--rate", "0"}), 2);
+    QCOMPARE(usage({"--mood", "joy=1", "--seconds", "3", "--seed", "-4"}), 2);
+    QCOMPARE(runFap({"generate", "--mood", "joy=1", "--seconds", "3"}).exitCode, 2);  // no -o
+
+    // Too many frames: refused before anything is generated.
+    const Run longRun =
+        runFap({"generate", "--mood", "joy=1", "--seconds", "86400", "--rate", "1000", "-o", out});
+    QCOMPARE(longRun.exitCode, 1);
+    QVERIFY2(longRun.err.contains("at most 1048576"), qPrintable(longRun.err));
+
+    // Bad scripts name the file, line and what was expected.
+    const struct {
+      const char* json;
+      const char* expected;
+    } scripts[] = {
+        {"{\"keys\": [\n{\"time\": 1},\n{\"time\": 0.5}]}",
+         ":3:2: keys[1].time: expected a time after"},
+        {"{\"keys\": [{\"time\": 0, \"sadness\": \"lots\"}]}",
+         "keys[0].sadness: expected a number in [0, 1]"},
+        {"{\"keys\": [{\"time\": 0, \"grief\": 1}]}", "keys[0].grief: unknown field"},
+        {"{\"keys\": [{\"time\": 0}", "invalid JSON"},
+        {"", "invalid JSON"},
+    };
+    for (const auto& bad : scripts) {
+      const QString script = path("bad-moods.json");
+      QFile file(script);
+      QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+      file.write(bad.json);
+      file.close();
+      const Run run = runFap({"generate", "--script", script, "--seconds", "3", "-o", out});
+      QCOMPARE(run.exitCode, 1);
+      QVERIFY2(run.err.startsWith(script + ":") && run.err.contains(bad.expected),
+               qPrintable(run.err));
+    }
+    QVERIFY(!QFile::exists(out));
+    const Run missing =
+        runFap({"generate", "--script", path("none.json"), "--seconds", "3", "-o", out});
+    QCOMPARE(missing.exitCode, 1);
+    QVERIFY(missing.err.contains("none.json"));
+    QVERIFY(!QFile::exists(out));
+  }
+
+  void generateKeepsTheOldFileWhenTheWriteFails() {
+    const QString out = path("no/such/dir/take.fap");
+    const Run run = runFap({"generate", "--mood", "sadness=1", "--seconds", "2", "-o", out});
+    QCOMPARE(run.exitCode, 1);
+    QVERIFY2(run.err.contains(out), qPrintable(run.err));
+  }
 };
 
 QTEST_GUILESS_MAIN(FapCliTest)

@@ -112,6 +112,15 @@ ProjectDocument randomDocument(unsigned seed) {
   if (coin(random)) scene.quality.neighbours = coin(random) ? "octree" : "grid";
   // Absolute paths outside any temporary folder: they survive a save anywhere unchanged.
   if (coin(random)) document.head = HeadFiles{"/opt/faces/head.obj", "/opt/faces/head.fdp.json"};
+  if (coin(random)) {  // keyed face colours (FaceColours.h)
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<IntensityKey> redness;
+    for (int k = 0; k < 3; ++k)
+      redness.push_back({unit(random) * 100, unit(random), Interpolation::Linear});
+    document.colours.redness = IntensityCurve(redness);
+    if (coin(random))
+      document.colours.blush = IntensityCurve({{0.0, unit(random), Interpolation::Smooth}});
+  }
   return document;
 }
 
@@ -502,6 +511,17 @@ class ProjectDocumentTest : public QObject {
         << QString::fromStdString(withTopLevel(R"("scene": {"solver": "dfsph"})"))
         << "doc.json:1:67"
         << "scene.solver: solver needs a project of version 2 or later";
+    QTest::newRow("colours in a version 1 file")
+        << QString::fromStdString(withTopLevel(R"("colours": {"redness": []})")) << "doc.json:1:57"
+        << "colours: colours need a project of version 2 or later";
+    QTest::newRow("colour beyond 1")
+        << R"({"format": "lacrima-project", "version": 2, "keys": [], "colours": {"blush": [{"time": 0, "value": 1.5}]}})"
+        << "doc.json:1:91"
+        << "colours.blush[0].value: expected a number in [0, 1], got 1.5";
+    QTest::newRow("unknown colour")
+        << R"({"format": "lacrima-project", "version": 2, "keys": [], "colours": {"tint": []}})"
+        << "doc.json:1:69"
+        << "colours.tint: unknown field; expected one of redness, blush";
     QTest::newRow("duplicate key time") << R"({"format": "lacrima-project", "version": 1, "keys": [
                {"time": 0.5, "values": {}}, {"time": 1, "values": {}},
                {"time": 0.5, "values": {"open_jaw": 1}}]})"

@@ -357,6 +357,40 @@ class PlaybackTest : public QObject {
     QCOMPARE(v.overlays, OverlayWeights{});
   }
 
+  // A project's keyed colours (a generated take's, docs/decisions/0019) replace the computed
+  // redness and blush, read at project time; without them nothing changes.
+  void keyedColoursReplaceTheComputedOnes() {
+    const QString path = dir_.filePath("colours.lacrima");
+    writeText(path, R"({
+  "format": "lacrima-project", "version": 2, "name": "t", "fps": 22, "interpolation": "linear",
+  "keys": [ { "time": 1, "values": { "open_jaw": 0 } }, { "time": 3, "values": { "open_jaw": 50 } } ],
+  "scene": { "redness": "animation", "blush": true },
+  "colours": { "redness": [ { "time": 1, "value": 0.2, "interpolation": "linear" },
+                            { "time": 3, "value": 0.6, "interpolation": "linear" } ],
+               "blush": [ { "time": 0, "value": 0.7, "interpolation": "linear" } ] }
+})");
+    Playback playback(*rig_);
+    playback.open(path.toStdString());
+    QCOMPARE(playback.frameCount(), 45);  // frame 0 is the first key, at 1 s
+    // Curves hold floats, as every channel does.
+    QVERIFY(std::abs(playback.view().overlays.redness - 0.2) < 1e-6);
+    const OverlayWeights middle = playback.seek(1.0).overlays;  // project time 2 s
+    QVERIFY(std::abs(middle.redness - 0.4) < 1e-6);
+    QVERIFY(std::abs(middle.blush - 0.7) < 1e-6);
+    QVERIFY(std::abs(playback.seek(2.0).overlays.redness - 0.6) < 1e-6);
+    // Played frame by frame the same.
+    playback.reset();
+    QVERIFY(std::abs(playback.seek(1.0).overlays.redness - 0.4) < 1e-6);
+    // Without the blush effect no blush, keyed or not.
+    SceneSettings scene = playback.scene();
+    scene.blush = false;
+    playback.setScene(scene);
+    QCOMPARE(playback.seek(1.0).overlays.blush, 0.0);
+    // An animation set from memory has no colours: the 2009 ramp again.
+    playback.setAnimation(cryingAnimation(89, 30, 10, 50));
+    QCOMPARE(playback.seek(playback.duration() / 2).overlays.redness, 0.5);
+  }
+
   // Toggles switch the work and the pointers; the revision moves only when something changed.
   void togglesRespected() {
     Playback playback(*rig_);

@@ -19,6 +19,8 @@ AnimationFile readAnimationFile(const std::string& path) try {
     file.animation = document.bake();
     file.scene = document.scene;
     file.tearSources = document.tearSources;
+    file.colours = document.colours;
+    file.startTime = document.bakeRange().first;
     if (file.animation.frames.empty())
       throw FileError({path, 0, 0},
                       "the project has no keys, so nothing to play; expected at least one key");

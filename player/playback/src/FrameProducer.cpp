@@ -82,6 +82,7 @@ struct FrameProducer::State {
   Eigen::Matrix3Xf positions, normals;
   FapValues values{};  // of the face now shown
   double progress = 0;
+  KeyedColours keyed;
   FrameView view;
   ProducerTimes times;
   ProducerCounters counters;
@@ -175,7 +176,7 @@ struct FrameProducer::State {
   }
 
   void publish(bool changed) {
-    const OverlayWeights overlays = overlayWeights(scene, progress, simulation.get());
+    const OverlayWeights overlays = overlayWeights(scene, progress, simulation.get(), keyed);
     FrameView next;
     next.neutral = &rig.head;
     next.positions = &positions;
@@ -236,6 +237,8 @@ void FrameProducer::setTearSources(const TearSources& sources) {
   state_->clearTears(true);
   state_->publish(true);
 }
+
+void FrameProducer::setKeyedColours(const KeyedColours& colours) { state_->keyed = colours; }
 
 const FrameView& FrameProducer::produce(const FapValues& values, double dt, double progress) {
   State& s = *state_;

@@ -10,6 +10,8 @@
 //   wetEyes   per eye, min(1, particles at that eye / reference count): the eye looks watery
 //             while tears are present and dries as soon as they are gone;
 //   blush     the redness, when the scene asks for a blush; else 0.
+// Colours the animation keys (a project's colour curves, KeyedColours) replace the computed
+// redness, and the blush when the scene asks for one (docs/decisions/0019).
 // With texture blending off every weight is 0, so a renderer that ignores the flag still draws
 // the plain skin.
 #include <lacrima/common/ProjectDocument.h>
@@ -23,6 +25,7 @@ namespace lacrima::playback {
 
 // `simulation` may be null (no tears have been simulated yet).
 OverlayWeights overlayWeights(const SceneSettings& scene, double progress,
-                              const tears::TearSimulation* simulation);
+                              const tears::TearSimulation* simulation,
+                              const KeyedColours& keyed = {});
 
 }  // namespace lacrima::playback

@@ -22,6 +22,8 @@ struct Playback::State {
   Warnings warnings;
   SceneSettings scene;
   TearSources sources;
+  FaceColourCurves colours;
+  double colourStart = 0;
   // Producer state just BEFORE producing frame k, by k. Going to frame f restores the largest
   // k <= f and produces k..f, so a restore is always followed by a fresh frame.
   struct Stored {
@@ -94,6 +96,7 @@ struct Playback::State {
     const double dt = 1.0 / animation.fps;
     for (; nextFrame <= frame; ++nextFrame) {
       if (nextFrame % interval == 0 && !checkpoints.contains(nextFrame)) keep(nextFrame);
+      producer.setKeyedColours(colours.at(colourStart + nextFrame / animation.fps));
       producer.produce(animation.frames[static_cast<std::size_t>(nextFrame)], dt,
                        progressAt(nextFrame / animation.fps));
       ++simulated;
@@ -110,6 +113,7 @@ void Playback::open(const std::string& path) {
   AnimationFile file = readAnimationFile(path);  // throws; nothing has changed yet
   try {
     setAnimation(std::move(file.animation), file.scene, file.tearSources);
+    setColourCurves(std::move(file.colours), file.startTime);
   } catch (const std::invalid_argument& e) {
     throw FileError({path, 0, 0}, e.what());
   }
@@ -130,6 +134,8 @@ void Playback::setAnimation(FapAnimation animation, const SceneSettings& scene,
   s.animation = std::move(animation);
   s.scene = scene;
   s.sources = sources;
+  s.colours = {};
+  s.colourStart = 0;
   s.path.clear();
   s.warnings.clear();
   s.clearCheckpoints();
@@ -138,6 +144,13 @@ void Playback::setAnimation(FapAnimation animation, const SceneSettings& scene,
   s.nextFrame = 0;
   s.time = 0;
   seek(0);
+}
+
+void Playback::setColourCurves(FaceColourCurves curves, double startTime) {
+  State& s = *state_;
+  s.colours = std::move(curves);
+  s.colourStart = std::isfinite(startTime) ? startTime : 0.0;
+  if (!s.animation.frames.empty()) seek(s.time);  // the frame shown takes them at once
 }
 
 const FapAnimation& Playback::animation() const { return state_->animation; }
@@ -174,6 +187,7 @@ const FrameView& Playback::seek(double seconds) {
   const double t = std::isfinite(seconds) ? std::clamp(seconds, 0.0, s.animation.duration()) : 0.0;
   s.produceUpTo(s.frameAt(t));
   s.time = t;
+  s.producer.setKeyedColours(s.colours.at(s.colourStart + t));
   return s.producer.pose(s.animation.sample(t), s.progressAt(t));
 }
 

@@ -11,20 +11,13 @@
 // to whole particles >= 0; viseme and expression codes (FAP 1, 2) are never layered, since a
 // sum of codes names an unrelated code.
 #include <lacrima/common/FapChannels.h>
-#include <lacrima/common/Keyframes.h>
+#include <lacrima/common/IntensityCurve.h>
 
 #include <span>
 #include <string>
 #include <vector>
 
 namespace lacrima::inline common {
-
-struct IntensityKey {
-  double time = 0.0;  // seconds
-  double value = 0.0;
-  Interpolation interpolation = Interpolation::Smooth;
-  bool operator==(const IntensityKey&) const = default;
-};
 
 class PoseLayer {
  public:
@@ -36,23 +29,22 @@ class PoseLayer {
   float poseValue(int fap) const { return pose_[channelIndex(fap)]; }
   void setPoseValue(int fap, float value);
 
-  const std::vector<IntensityKey>& intensityKeys() const { return keys_; }
+  const std::vector<IntensityKey>& intensityKeys() const { return intensity_.keys(); }
   // Sorted by time; of keys closer than 1e-9 s the one given last wins. Times must be finite.
-  void setIntensityKeys(std::vector<IntensityKey> keys);
-  double intensityAt(double seconds) const;  // 0 without keys
-  bool hasIntensity() const { return !keys_.empty(); }
-  double startTime() const { return keys_.empty() ? 0.0 : keys_.front().time; }
-  double endTime() const { return keys_.empty() ? 0.0 : keys_.back().time; }
+  void setIntensityKeys(std::vector<IntensityKey> keys) {
+    intensity_ = IntensityCurve(std::move(keys));
+  }
+  double intensityAt(double seconds) const { return intensity_.at(seconds); }  // 0 without keys
+  bool hasIntensity() const { return !intensity_.empty(); }
+  double startTime() const { return intensity_.startTime(); }
+  double endTime() const { return intensity_.endTime(); }
 
   bool operator==(const PoseLayer& other) const;
 
  private:
   ChannelMask channels_;
   FapValues pose_{};
-  std::vector<IntensityKey> keys_;
-  // The intensity as channel kCurveFap of a private sequence, so it is interpolated by the
-  // very code that interpolates every channel.
-  KeyframeSequence curve_;
+  IntensityCurve intensity_;
 };
 
 // `keyed` (the keys' values at `seconds`) with the unmuted layers added.

@@ -24,6 +24,10 @@
 //                 "intensity": [ { "time": 3.5, "value": 0 },
 //                                { "time": 4, "value": 1, "interpolation": "smooth" } ] } ]
 //                                                      (version 2; optional; see PoseLayer.h)
+//   "colours": { "redness": [ { "time": 0, "value": 0.1, "interpolation": "linear" } ],
+//                "blush": [ ... ] }        (version 2; optional, each; values in [0, 1]; keyed
+//                                            colours replace the player's computed ones,
+//                                            FaceColours.h)
 // }
 // Head paths in the file are relative to the project file's folder (absolute ones are read as
 // they are). load() makes them absolute, so the document names the same files wherever it is
@@ -32,6 +36,7 @@
 // same frames. Unknown or invalid fields are errors naming the JSON path and, for syntax errors,
 // the line and column. A document written and read back compares equal.
 #include <lacrima/common/Diagnostics.h>
+#include <lacrima/common/FaceColours.h>
 #include <lacrima/common/JsonValue.h>
 #include <lacrima/common/Keyframes.h>
 #include <lacrima/common/PoseLayer.h>
@@ -80,6 +85,7 @@ struct HeadFiles {
 
 struct ProjectDocument {
   static constexpr int kSchemaVersion = 2;
+  static constexpr long long kMaxFileBytes = 64LL << 20;  // larger project files are refused
 
   std::string name = "untitled";
   double fps = 22.0;
@@ -89,6 +95,7 @@ struct ProjectDocument {
   TearSources tearSources;
   SceneSettings scene;
   std::optional<HeadFiles> head;  // nullopt: the default head
+  FaceColourCurves colours;       // keyed redness and blush; empty: computed by the player
 
   bool operator==(const ProjectDocument& other) const;
 

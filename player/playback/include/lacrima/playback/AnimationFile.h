@@ -14,9 +14,11 @@ namespace lacrima::playback {
 struct AnimationFile {
   FapAnimation animation;
   bool project = false;
-  SceneSettings scene;      // the project's; defaults for a FAP file
-  TearSources tearSources;  // the project's; rig defaults for a FAP file
-  Warnings warnings;        // the FAP reader's (gaps filled, odd header, ...)
+  SceneSettings scene;       // the project's; defaults for a FAP file
+  TearSources tearSources;   // the project's; rig defaults for a FAP file
+  FaceColourCurves colours;  // the project's keyed colours; none for a FAP file
+  double startTime = 0;      // the project time of frame 0 (where its colours are read from)
+  Warnings warnings;         // the FAP reader's (gaps filled, odd header, ...)
 };
 
 // Throws FileError naming the file, the line (and column or JSON path) and what was expected,

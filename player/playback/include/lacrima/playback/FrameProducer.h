@@ -57,6 +57,11 @@ class FrameProducer {
   // Tear sources in the head frame; nullopt entries keep the rig's default under each eye.
   void setTearSources(const TearSources& sources);
 
+  // Colours the animation keys for the frames that follow (a project's colour curves at their
+  // time; Playback sets them before each frame): each replaces the computed one (Overlays.h).
+  // Default: none.
+  void setKeyedColours(const KeyedColours& colours);
+
   // Advances by dt seconds with these channel values. `progress` in [0, 1] is how far through
   // the animation this frame is (the 2009 redness ramp); the editor passes 0 or its time ratio.
   const FrameView& produce(const FapValues& values, double dt, double progress);

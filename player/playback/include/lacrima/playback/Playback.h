@@ -36,6 +36,10 @@ class Playback : public AnimationSource {
   void open(const std::string& path);
   void setAnimation(FapAnimation animation, const SceneSettings& scene = {},
                     const TearSources& sources = {});
+  // Colours keyed over the animation (a project's, FaceColours.h), read at startTime + the
+  // playing time; they replace the computed redness and blush. open() sets a project's;
+  // setAnimation() clears them. They never restart the tears.
+  void setColourCurves(FaceColourCurves curves, double startTime = 0);
   const FapAnimation& animation() const;
   const std::string& path() const;   // empty when set from memory
   const Warnings& warnings() const;  // the FAP reader's for the open file
