@@ -412,8 +412,8 @@ int main(int argc, char** argv) {
   const bool render = hasOption(argc, argv, "--render") || hasOption(argc, argv, "--video");
   const bool noWindow = hasOption(argc, argv, "--no-window");
   // Exports that draw nothing need no display, nor does a stream recorded without a window.
-  const bool headless = noWindow || hasOption(argc, argv, "--export-gltf") ||
-                        hasOption(argc, argv, "--export-tears");
+  const bool headless =
+      noWindow || hasOption(argc, argv, "--export-gltf") || hasOption(argc, argv, "--export-tears");
   const bool help = hasOption(argc, argv, "--help") || hasOption(argc, argv, "-h") ||
                     hasOption(argc, argv, "--version");
   const bool haveX = !qEnvironmentVariableIsEmpty("DISPLAY");
