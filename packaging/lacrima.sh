@@ -99,7 +99,9 @@ run_demo() {
 # (demo-*.png), the demo from the front and close up on the face's left cheek at three moments,
 # the sob (7.2 s), the tear peak (8.2 s) and the drying (12.5 s) (the player renders every frame
 # at 22 fps; these are frames 158, 180 and 275), and the player's and the editor's windows at
-# the sob (player-sob.png, editor.png; editor-graph.png with the graph editor on open_jaw).
+# the sob (player-sob.png, editor.png; editor-graph.png with the graph editor on open_jaw), and
+# the contact sheets of twenty seconds of each mood at 0.8 from the crying generator
+# (mood-<mood>.png, docs/mood.md).
 render_screenshots() {
   local bin="$build/bin" demo="$root/media/demo/crying.fap" shots="$root/media/screenshots"
   if [ "$head_available" -eq 0 ]; then
@@ -116,6 +118,14 @@ render_screenshots() {
       cp "$work/$view/frame_$frame.png" "$shots/demo-${moment%%:*}-$view.png"
     done
   done
+  local mood
+  for mood in sadness anger joy shame; do
+    "$bin/lacrima-fap" generate --mood "$mood=0.8" --seconds 20 --seed 1 \
+      -o "$work/$mood.lacrima" 2>/dev/null
+    xvfb-run -a -s "-screen 0 1280x1024x24" "$bin/lacrima-player" --render "$work/$mood" \
+      --view front --size 640x360 "$work/$mood.lacrima" >/dev/null
+    cp "$work/$mood/contact_sheet.png" "$shots/mood-$mood.png"
+  done
   rm -rf "$work"
   xvfb-run -a -s "-screen 0 1600x1000x24" "$bin/lacrima-player" --size 1280x760 \
     --screenshot "$shots/player-sob.png" --at 7.2 "$demo" >/dev/null
@@ -123,7 +133,7 @@ render_screenshots() {
     --screenshot "$shots/editor.png" --time 7.2 --warm-up 80 >/dev/null
   xvfb-run -a -s "-screen 0 1600x1000x24" "$bin/lacrima-editor" "$root/media/demo/crying.json" \
     --screenshot "$shots/editor-graph.png" --time 7.2 --warm-up 80 --view graph --focus 3 >/dev/null
-  echo "lacrima: rendered $(ls "$shots"/demo-*.png | wc -l) reference pictures and the two windows into $shots"
+  echo "lacrima: rendered $(ls "$shots"/demo-*.png | wc -l) reference pictures, the two windows and four mood sheets into $shots"
 }
 
 run_tests() {

@@ -108,8 +108,8 @@ const Pose kTearsOfJoy{{"open_jaw", 160},
                        {"raise_r_i_eyebrow", 60}};
 // Judged (no preset): the head bowed and turned aside, heavier lids (GazeModel lowers the eyes),
 // inner brows a little up, lips pressed, chin raised.
-const Pose kShame{{"head_pitch", 4000},       {"head_yaw", 2500},        {"close_t_l_eyelid", 180},
-                  {"close_t_r_eyelid", 180},  {"raise_l_i_eyebrow", 70}, {"raise_r_i_eyebrow", 70},
+const Pose kShame{{"head_pitch", 12000},      {"head_yaw", 6000},        {"close_t_l_eyelid", 280},
+                  {"close_t_r_eyelid", 280},  {"raise_l_i_eyebrow", 70}, {"raise_r_i_eyebrow", 70},
                   {"raise_b_midlip", 60},     {"lower_t_midlip", 40},    {"raise_l_cornerlip", -50},
                   {"raise_r_cornerlip", -50}, {"depress_chin", 70}};
 

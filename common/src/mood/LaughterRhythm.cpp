@@ -46,8 +46,9 @@ void LaughterRhythm::apply(FapValues& face) const {
   };
   add(3, 170);                                    // open_jaw
   add(48, -1500);                                 // head_pitch: back with each note
-  for (int fap : {41, 42}) add(fap, 70);          // lift cheeks
-  for (int fap : {12, 13, 59, 60}) add(fap, 45);  // lip corners up
+  for (int fap : {41, 42}) add(fap, 120);         // lift cheeks
+  for (int fap : {12, 13, 59, 60}) add(fap, 90);  // lip corners up
+  for (int fap : {6, 7, 53, 54}) add(fap, 50);    // and back
   for (int fap : {21, 22}) add(fap, 60);          // lower lids crinkle
 }
 

@@ -13,7 +13,7 @@ namespace lacrima::inline common {
 class GazeModel {
  public:
   static constexpr double kSaccade = 0.06;  // s
-  static constexpr double kDown = 9000;     // AU (5 degrees) at full sadness or shame
+  static constexpr double kDown = 20000;    // AU (11.5 degrees) at full sadness or shame
   static constexpr double kAway = 12000;    // AU (7 degrees) at most aside
 
   explicit GazeModel(std::uint64_t seed);

@@ -5,7 +5,8 @@
 //
 // Above joy 0.4 the depth is d = smoothstep((joy - 0.4) / 0.5). A bout has 3 to 3 + 6d notes;
 // the pause after it is a draw in [1, 4] s divided by d (judged). Each note opens the jaw, tips
-// the head back a little, lifts the cheeks and the lip corners and crinkles the lower lids.
+// the head back a little, lifts the cheeks, pulls the lip corners up and back and crinkles the
+// lower lids.
 // Bouts and notes fall at the same times at any frame rate.
 #include <lacrima/common/FapChannels.h>
 #include <lacrima/common/mood/MoodRandom.h>
