@@ -211,6 +211,22 @@ int headlessMode(QCoreApplication& app, const LiveOptions& options) {
   return finishRecording(session) ? kExitOk : kExitBadInput;
 }
 
+// --frames FIRST-LAST (frame numbers, both included), or nullopt after saying what it takes.
+std::optional<std::pair<int, int>> frameRange(const QCommandLineParser& parser) {
+  if (!parser.isSet("frames")) return std::pair{0, -1};
+  const QStringList ends = parser.value("frames").split('-');
+  bool firstOk = false, lastOk = false;
+  const int first = ends.value(0).toInt(&firstOk), last = ends.value(1).toInt(&lastOk);
+  if (ends.size() != 2 || !firstOk || !lastOk || first < 0 || last < first) {
+    std::fprintf(stderr,
+                 "lacrima-player: --frames: expected FIRST-LAST with 0 <= FIRST <= LAST, "
+                 "not '%s'\n",
+                 parser.value("frames").toLocal8Bit().constData());
+    return std::nullopt;
+  }
+  return std::pair{first, last};
+}
+
 int renderMode(const QCommandLineParser& parser, const QSize& size, const ModeOptions& mode) {
   const QStringList files = parser.positionalArguments();
   if (files.size() != 1) {
@@ -227,32 +243,21 @@ int renderMode(const QCommandLineParser& parser, const QSize& size, const ModeOp
   options.size = size;
   options.view = *view;
   options.progress = [](int done, int total) { showProgress(done, total); };
+  const std::optional<std::pair<int, int>> range = frameRange(parser);
+  if (!range) return kExitUsage;
+  options.firstFrame = range->first;
+  options.lastFrame = range->second;
   options.alpha = parser.isSet("alpha");
   options.masks = parser.isSet("masks");
   options.quality = mode.quality;
   options.threads = mode.threads;
   const player::BatchRenderResult result = player::renderAnimation(*rig, options);
   std::fprintf(stderr, "lacrima-player: %d frames in %.1f s\n", result.frames, result.seconds);
-  std::printf("%s/frame_0000.png ... frame_%04d.png and %s\n",
-              QDir(options.outputDir).absolutePath().toLocal8Bit().constData(), result.frames - 1,
+  std::printf("%s/frame_%04d.png ... frame_%04d.png and %s\n",
+              QDir(options.outputDir).absolutePath().toLocal8Bit().constData(), result.firstFrame,
+              result.firstFrame + result.frames - 1,
               QFileInfo(result.contactSheet).absoluteFilePath().toLocal8Bit().constData());
   return kExitOk;
-}
-
-// --frames FIRST-LAST (frame numbers, both included), or nullopt after saying what it takes.
-std::optional<std::pair<int, int>> frameRange(const QCommandLineParser& parser) {
-  if (!parser.isSet("frames")) return std::pair{0, -1};
-  const QStringList ends = parser.value("frames").split('-');
-  bool firstOk = false, lastOk = false;
-  const int first = ends.value(0).toInt(&firstOk), last = ends.value(1).toInt(&lastOk);
-  if (ends.size() != 2 || !firstOk || !lastOk || first < 0 || last < first) {
-    std::fprintf(stderr,
-                 "lacrima-player: --frames: expected FIRST-LAST with 0 <= FIRST <= LAST, "
-                 "not '%s'\n",
-                 parser.value("frames").toLocal8Bit().constData());
-    return std::nullopt;
-  }
-  return std::pair{first, last};
 }
 
 // The options every export takes from the command line; nullopt after a usage error.
@@ -486,7 +491,7 @@ int main(int argc, char** argv) {
        "Export the tear geometry of every frame (water and wet trails) as OUT_DIR/tears_NNNN.ply, "
        "then exit. Needs no display.",
        "OUT_DIR"},
-      {"frames", "Frames to export, both included (default: all).", "FIRST-LAST"},
+      {"frames", "Frames to render or export, both included (default: all).", "FIRST-LAST"},
       {"size",
        "Image size for --render and --video, window size otherwise (default 1280x720 for "
        "--render and --video).",

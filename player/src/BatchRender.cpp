@@ -5,6 +5,7 @@
 #include <lacrima/player/PngWriter.h>
 
 #include <lacrima/common/Diagnostics.h>
+#include <lacrima/export/ExportOptions.h>
 #include <lacrima/playback/Playback.h>
 #include <lacrima/scene/FaceRenderer.h>
 #include <lacrima/scene/FaceScene.h>
@@ -21,13 +22,13 @@ BatchRenderResult renderAnimation(const playback::HeadRig& rig, const BatchRende
   QElapsedTimer wall;
   wall.start();
   playback::Playback playback(rig);
-  playback.setSimulationThreads(options.threads);
-  playback.open(options.input.toStdString());
-  if (options.quality) {
-    SceneSettings scene = playback.scene();
-    scene.quality.level = *options.quality;
-    playback.setScene(scene);
-  }
+  exporting::ExportOptions range;
+  range.input = options.input.toStdString();
+  range.quality = options.quality;
+  range.threads = options.threads;
+  range.firstFrame = options.firstFrame;
+  range.lastFrame = options.lastFrame;
+  const exporting::FrameSpan span = exporting::openForExport(playback, range);
   const QDir out(options.outputDir);
   if (!QDir().mkpath(options.outputDir))
     throw FileError({options.outputDir.toStdString(), 0, 0}, "cannot create the output folder");
@@ -35,11 +36,12 @@ BatchRenderResult renderAnimation(const playback::HeadRig& rig, const BatchRende
   scene::FaceRenderer renderer(rig.head, options.size);
   renderer.scene().setView(presetView(rig, options.view));
   renderer.scene().setTransparentBackground(options.alpha);
-  const int frames = playback.frameCount();
-  const std::vector<int> picked = evenlySpacedFrames(frames, options.sheetFrames);
+  const int frames = span.count();
+  std::vector<int> picked = evenlySpacedFrames(frames, options.sheetFrames);
+  for (int& f : picked) f += span.first;
   std::vector<SheetFrame> sheet;
   PngWriter writer(2);
-  for (int f = 0; f < frames; ++f) {
+  for (int f = span.first; f <= span.last; ++f) {
     const double t = f / playback.frameRate();
     renderer.show(playback.seek(t));
     const QImage image = renderer.render();
@@ -49,11 +51,12 @@ BatchRenderResult renderAnimation(const playback::HeadRig& rig, const BatchRende
     writer.write(image, out.filePath(QStringLiteral("frame_") + number + ".png"));
     if (options.masks)
       writer.write(renderer.renderMask(), out.filePath(QStringLiteral("mask_") + number + ".png"));
-    if (options.progress) options.progress(f + 1, frames);
+    if (options.progress) options.progress(f - span.first + 1, frames);
   }
   writer.finish();
   BatchRenderResult result;
   result.frames = frames;
+  result.firstFrame = span.first;
   result.contactSheet = out.filePath("contact_sheet.png");
   QString title = QStringLiteral("%1  ·  %2 frames at %3 fps  ·  %4 x %5")
                       .arg(QFileInfo(options.input).fileName())

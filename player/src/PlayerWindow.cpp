@@ -7,6 +7,7 @@
 #include <lacrima/player/ProjectHead.h>
 #include <lacrima/player/TearParametersPanel.h>
 
+#include <lacrima/appsupport/ExportDialog.h>
 #include <lacrima/common/MediaFiles.h>
 #include <lacrima/common/ProjectPath.h>
 #include <lacrima/live/ListenUrl.h>
@@ -107,6 +108,11 @@ void PlayerWindow::buildActions() {
   openDemo_ = new QAction(tr("Open the &demo"), this);
   openDemo_->setShortcut(Qt::CTRL | Qt::Key_D);
   connect(openDemo_, &QAction::triggered, this, &PlayerWindow::openDemo);
+  export_ = new QAction(tr("&Export..."), this);
+  export_->setObjectName(QStringLiteral("file.export"));
+  export_->setShortcut(Qt::CTRL | Qt::SHIFT | Qt::Key_E);  // as the editor's Export Animation
+  export_->setToolTip(tr("Export the animation with its tears: glTF, video, images, tear meshes"));
+  connect(export_, &QAction::triggered, this, &PlayerWindow::exportDialog);
   quit_ = new QAction(tr("&Quit"), this);
   quit_->setShortcut(QKeySequence::Quit);
   connect(quit_, &QAction::triggered, this, &QWidget::close);
@@ -150,6 +156,7 @@ void PlayerWindow::buildActions() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
   file->addAction(open_);
   file->addAction(openDemo_);
+  file->addAction(export_);
   file->addSeparator();
   file->addAction(quit_);
   QMenu* playMenu = menuBar()->addMenu(tr("&Playback"));
@@ -401,6 +408,21 @@ void PlayerWindow::reportError(const std::exception& error, const QString& path)
   box->setDetailedText(report.oneLine);
   box->setAttribute(Qt::WA_DeleteOnClose);
   box->open();
+}
+
+appsupport::ExportDialog* PlayerWindow::exportDialog() {
+  appsupport::ExportSource source;
+  source.file = QString::fromStdString(playback_->path());
+  if (source.file.isEmpty()) return nullptr;
+  // The head shown, named explicitly: a FAP file opened after a project plays on that head.
+  if (head_)
+    source.headArguments = {"--mesh", QString::fromStdString(head_->mesh), "--fdp",
+                            QString::fromStdString(head_->fdp)};
+  source.frameCount = playback_->frameCount();
+  auto* dialog = new appsupport::ExportDialog(source, this);
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  dialog->show();
+  return dialog;
 }
 
 void PlayerWindow::chooseFile() {

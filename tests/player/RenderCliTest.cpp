@@ -9,6 +9,7 @@
 #include <lacrima/common/FapWriter.h>
 #include <lacrima/rigging/DefaultHead.h>
 
+#include <QDir>
 #include <QImage>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -62,6 +63,16 @@ class RenderCliTest : public QObject {
     QVERIFY(r.out.contains("contact_sheet.png"));
     // Frames differ: the jaw moves and the tears grow.
     QVERIFY(QImage(out + "/frame_0000.png") != QImage(out + "/frame_0013.png"));
+  }
+
+  // --frames renders part of the file, numbered by the file's frames.
+  void frameRangeRendersPartOfTheFile() {
+    const QString out = dir_.filePath("part");
+    const Run r = run({"--render", out, "--frames", "3-5", "--size", "64x64", animation_});
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QCOMPARE(QDir(out).entryList({"frame_*.png"}),
+             QStringList({"frame_0003.png", "frame_0004.png", "frame_0005.png"}));
+    QCOMPARE(run({"--render", out, "--frames", "3-99", animation_}).exitCode, 1);
   }
 
   // --view close-left frames the left cheek: a different picture of the same frame, at the

@@ -28,12 +28,14 @@ struct BatchRenderOptions {
   bool masks = false;
   std::optional<TearQuality> quality;  // --quality: replaces the file's level
   int threads = 0;                     // --threads: SimulationOptions::threads (0: its default)
+  int firstFrame = 0, lastFrame = -1;  // --frames, both included; -1: to the last frame
   // Called after each frame with (frames done, frames in all).
   std::function<void(int, int)> progress;
 };
 
 struct BatchRenderResult {
   int frames = 0;
+  int firstFrame = 0;    // the frames are firstFrame ... firstFrame + frames - 1
   QString contactSheet;  // its path
   double seconds = 0;    // wall time
 };

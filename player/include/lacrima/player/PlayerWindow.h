@@ -45,6 +45,10 @@ class FaceViewport;
 class WarningsButton;
 }  // namespace lacrima::viewport
 
+namespace lacrima::appsupport {
+class ExportDialog;
+}
+
 namespace lacrima::player {
 
 class LiveMappingDialog;
@@ -103,6 +107,11 @@ class PlayerWindow : public QMainWindow {
   viewport::EffectsPanel& effects() { return *effects_; }
   TearParametersPanel& parameters() { return *parameters_; }
   QAction* loopAction() const { return loop_; }  // checkable: play again from the start
+  // File > Export...: the shared export dialog (appsupport/ExportDialog.h) on the file shown,
+  // with the head shown. exportDialog() opens it (non-modal) and returns it, for tests; with no
+  // file open (an animation set from memory) it opens nothing and returns nullptr.
+  QAction* exportAction() const { return export_; }
+  appsupport::ExportDialog* exportDialog();
   // View ▸ the named cameras (--view), one checked: the camera shown.
   QAction* cameraAction(scene::CameraPreset preset) const;
   // The rig's warnings, counted in the status bar and listed in full when clicked.
@@ -163,6 +172,7 @@ class PlayerWindow : public QMainWindow {
   std::vector<QAction*> cameraActions_;  // in CameraPreset order
   viewport::WarningsButton* rigWarnings_;
   QAction *listen_, *stopListening_;
+  QAction* export_ = nullptr;
   QAction *open_, *openDemo_, *play_, *reset_, *loop_, *resetView_, *quit_, *stepBack_,
       *stepForward_;
   TearParameterValues fileParameters_;
