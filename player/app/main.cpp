@@ -193,18 +193,45 @@ void quitWhenIdle(QCoreApplication& app, live::LiveSession& session,
   timer->start();
 }
 
-// --no-window: the inputs and the recording without a window (and without a head).
-int headlessMode(QCoreApplication& app, const LiveOptions& options) {
-  if (options.urls.empty() || options.record.isEmpty()) {
-    std::fprintf(stderr, "lacrima-player: --no-window needs --listen URL and --record OUT.fap\n");
+// --no-window: the inputs and the recording without a window. With --render DIR the take is
+// then rendered as --render renders a file (the tears simulated on the recorded frames);
+// without --record it is kept as DIR/take.fap.
+int headlessMode(QCoreApplication& app, const QCommandLineParser& parser, LiveOptions options,
+                 const QSize& size, const ModeOptions& mode) {
+  const bool render = parser.isSet("render");
+  if (options.urls.empty() || (options.record.isEmpty() && !render)) {
+    std::fprintf(stderr,
+                 "lacrima-player: --no-window needs --listen URL and --record OUT.fap and/or "
+                 "--render DIR\n");
     return kExitUsage;
+  }
+  if (options.record.isEmpty()) {
+    QDir().mkpath(parser.value("render"));
+    options.record = QDir(parser.value("render")).filePath(QStringLiteral("take.fap"));
   }
   live::LiveSession session;
   startLive(session, options, [&](const live::ListenUrl& url) { session.listen(url); });
   quitWhenIdle(app, session, options.exitWhenIdle);
   app.exec();
   std::fprintf(stderr, "lacrima-player: %s\n", session.statusText().toLocal8Bit().constData());
-  return finishRecording(session) ? kExitOk : kExitBadInput;
+  if (!finishRecording(session)) return kExitBadInput;
+  if (!render || !QFileInfo::exists(options.record)) return kExitOk;
+  const std::optional<scene::CameraPreset> view = cameraPreset(parser);
+  if (!view) return kExitUsage;
+  const auto rig = loadRig(parser, chooseHead(parser));
+  player::BatchRenderOptions batch;
+  batch.input = options.record;
+  batch.outputDir = parser.value("render");
+  batch.size = size;
+  batch.view = *view;
+  batch.progress = showProgress;
+  batch.quality = mode.quality;
+  batch.threads = mode.threads;
+  const player::BatchRenderResult result = player::renderAnimation(*rig, batch);
+  std::printf("%s/frame_0000.png ... frame_%04d.png and %s\n",
+              QDir(batch.outputDir).absolutePath().toLocal8Bit().constData(), result.frames - 1,
+              QFileInfo(result.contactSheet).absoluteFilePath().toLocal8Bit().constData());
+  return kExitOk;
 }
 
 int renderMode(const QCommandLineParser& parser, const QSize& size, const ModeOptions& mode) {
@@ -305,7 +332,7 @@ int main(int argc, char** argv) {
   const bool help = hasOption(argc, argv, "--help") || hasOption(argc, argv, "-h") ||
                     hasOption(argc, argv, "--version");
   const bool haveX = !qEnvironmentVariableIsEmpty("DISPLAY");
-  if (!haveX && !help && !noWindow) {
+  if (!haveX && !help && (!noWindow || render)) {
     if (render)
       std::fprintf(
           stderr,
@@ -388,7 +415,9 @@ int main(int argc, char** argv) {
        "The Live Link mapping table (ARKit blendshapes to FAPs, with gains) in place of the "
        "shipped one (media/livelink-mapping.json).",
        "FILE"},
-      {"no-window", "Run without a window (with --listen and --record): for scripts and tests."},
+      {"no-window",
+       "Run without a window (with --listen, and --record and/or --render: the take rendered "
+       "when the stream ends): for scripts and tests."},
       {"exit-when-idle", "End after this long without a live frame.", "SECONDS"},
   });
   parser.process(app);
@@ -426,7 +455,7 @@ int main(int argc, char** argv) {
   try {
     if (parser.isSet("mapping"))
       live->mapping = LiveLinkMapping::load(parser.value("mapping").toStdString());
-    if (noWindow) return headlessMode(app, *live);
+    if (noWindow) return headlessMode(app, parser, *live, size, mode);
     if (parser.isSet("render")) return renderMode(parser, size, mode);
     return windowMode(app, parser, parser.isSet("size") ? &size : nullptr, mode, *live);
   } catch (const std::exception& e) {

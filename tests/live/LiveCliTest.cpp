@@ -7,6 +7,7 @@
 #include <lacrima/common/FapTable.h>
 
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QProcess>
 #include <QTcpSocket>
 #include <QTemporaryDir>
@@ -115,6 +116,36 @@ class LiveCliTest : public QObject {
       QVERIFY2(at < sent.frameCount(), "a recorded frame the demo does not have, or out of order");
     }
     QVERIFY(got.frames.back() == sent.frames.back());
+  }
+
+  // --no-window --render: the take rendered when the stream ends, as --render renders a file.
+  void headlessRenderOfATake() {
+    QTemporaryDir dir;
+    const QString out = dir.filePath("render");
+    QProcess player;
+    const quint16 port = startPlayer(player, "fap+tcp://127.0.0.1:0", dir.filePath("take.fap"),
+                                     {"--render", out, "--size", "96x72"});
+    QVERIFY2(port != 0, player.readAllStandardError().constData());
+    QTcpSocket agent;
+    agent.connectToHost(QHostAddress::LocalHost, port);
+    QVERIFY(agent.waitForConnected(3000));
+    agent.write("2.1 greta 10 3\n");
+    for (int f = 0; f < 3; ++f) {
+      agent.write(gretaFrame(f, {{3, 200 * f}, {49, 8000 * f}}));
+      agent.flush();
+      waitFor([] { return false; }, 100);
+    }
+    agent.disconnectFromHost();
+    QVERIFY(player.waitForFinished(120000));
+    const QByteArray err = player.readAllStandardError();
+    QCOMPARE(player.exitCode(), 0);
+    const int frames =
+        FapReader::readFile(dir.filePath("take.fap").toStdString()).animation.frameCount();
+    QVERIFY2(QFileInfo::exists(out + "/contact_sheet.png"), err.constData());
+    for (int f = 0; f < frames; ++f)
+      QVERIFY(QFileInfo::exists(out + QStringLiteral("/frame_%1.png").arg(f, 4, 10, QChar('0'))));
+    QVERIFY(
+        !QFileInfo::exists(out + QStringLiteral("/frame_%1.png").arg(frames, 4, 10, QChar('0'))));
   }
 
   void usageErrors() {
