@@ -122,25 +122,23 @@ std::optional<LiveOptions> liveOptions(const QCommandLineParser& parser) {
     }
     options.urls.push_back(*url);
   }
-  std::string error;
-  if (parser.isSet("record-rate")) {
-    options.recordRate =
-        readNumberOption("--record-rate", "frames per second",
-                         parser.value("record-rate").toStdString(), 1, 1000, error);
-    if (!options.recordRate) {
+  // A number option when given; a bad one is said and makes the whole answer nullopt.
+  bool failed = false;
+  const auto number = [&](const char* name, const char* what, double low,
+                          double high) -> std::optional<double> {
+    if (!parser.isSet(name)) return std::nullopt;
+    std::string error;
+    const std::optional<double> value = readNumberOption(
+        std::string("--") + name, what, parser.value(name).toStdString(), low, high, error);
+    if (!value) {
       std::fprintf(stderr, "lacrima-player: %s\n", error.c_str());
-      return std::nullopt;
+      failed = true;
     }
-  }
-  if (parser.isSet("exit-when-idle")) {
-    options.exitWhenIdle =
-        readNumberOption("--exit-when-idle", "seconds",
-                         parser.value("exit-when-idle").toStdString(), 0.01, 86400, error);
-    if (!options.exitWhenIdle) {
-      std::fprintf(stderr, "lacrima-player: %s\n", error.c_str());
-      return std::nullopt;
-    }
-  }
+    return value;
+  };
+  options.recordRate = number("record-rate", "frames per second", 1, 1000);
+  options.exitWhenIdle = number("exit-when-idle", "seconds", 0.01, 86400);
+  if (failed) return std::nullopt;
   options.record = parser.value("record");
   if ((!options.record.isEmpty() || options.exitWhenIdle) && options.urls.empty()) {
     std::fprintf(stderr, "lacrima-player: --record and --exit-when-idle need --listen URL\n");
