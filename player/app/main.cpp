@@ -126,25 +126,23 @@ std::optional<LiveOptions> liveOptions(const QCommandLineParser& parser) {
     }
     options.urls.push_back(*url);
   }
-  std::string error;
-  if (parser.isSet("record-rate")) {
-    options.recordRate =
-        readNumberOption("--record-rate", "frames per second",
-                         parser.value("record-rate").toStdString(), 1, 1000, error);
-    if (!options.recordRate) {
+  // A number option when given; a bad one is said and makes the whole answer nullopt.
+  bool failed = false;
+  const auto number = [&](const char* name, const char* what, double low,
+                          double high) -> std::optional<double> {
+    if (!parser.isSet(name)) return std::nullopt;
+    std::string error;
+    const std::optional<double> value = readNumberOption(
+        std::string("--") + name, what, parser.value(name).toStdString(), low, high, error);
+    if (!value) {
       std::fprintf(stderr, "lacrima-player: %s\n", error.c_str());
-      return std::nullopt;
+      failed = true;
     }
-  }
-  if (parser.isSet("exit-when-idle")) {
-    options.exitWhenIdle =
-        readNumberOption("--exit-when-idle", "seconds",
-                         parser.value("exit-when-idle").toStdString(), 0.01, 86400, error);
-    if (!options.exitWhenIdle) {
-      std::fprintf(stderr, "lacrima-player: %s\n", error.c_str());
-      return std::nullopt;
-    }
-  }
+    return value;
+  };
+  options.recordRate = number("record-rate", "frames per second", 1, 1000);
+  options.exitWhenIdle = number("exit-when-idle", "seconds", 0.01, 86400);
+  if (failed) return std::nullopt;
   options.record = parser.value("record");
   if ((!options.record.isEmpty() || options.exitWhenIdle) && options.urls.empty()) {
     std::fprintf(stderr, "lacrima-player: --record and --exit-when-idle need --listen URL\n");
@@ -197,18 +195,45 @@ void quitWhenIdle(QCoreApplication& app, live::LiveSession& session,
   timer->start();
 }
 
-// --no-window: the inputs and the recording without a window (and without a head).
-int headlessMode(QCoreApplication& app, const LiveOptions& options) {
-  if (options.urls.empty() || options.record.isEmpty()) {
-    std::fprintf(stderr, "lacrima-player: --no-window needs --listen URL and --record OUT.fap\n");
+// --no-window: the inputs and the recording without a window. With --render DIR the take is
+// then rendered as --render renders a file (the tears simulated on the recorded frames);
+// without --record it is kept as DIR/take.fap.
+int headlessMode(QCoreApplication& app, const QCommandLineParser& parser, LiveOptions options,
+                 const QSize& size, const ModeOptions& mode) {
+  const bool render = parser.isSet("render");
+  if (options.urls.empty() || (options.record.isEmpty() && !render)) {
+    std::fprintf(stderr,
+                 "lacrima-player: --no-window needs --listen URL and --record OUT.fap and/or "
+                 "--render DIR\n");
     return kExitUsage;
+  }
+  if (options.record.isEmpty()) {
+    QDir().mkpath(parser.value("render"));
+    options.record = QDir(parser.value("render")).filePath(QStringLiteral("take.fap"));
   }
   live::LiveSession session;
   startLive(session, options, [&](const live::ListenUrl& url) { session.listen(url); });
   quitWhenIdle(app, session, options.exitWhenIdle);
   app.exec();
   std::fprintf(stderr, "lacrima-player: %s\n", session.statusText().toLocal8Bit().constData());
-  return finishRecording(session) ? kExitOk : kExitBadInput;
+  if (!finishRecording(session)) return kExitBadInput;
+  if (!render || !QFileInfo::exists(options.record)) return kExitOk;
+  const std::optional<scene::CameraPreset> view = cameraPreset(parser);
+  if (!view) return kExitUsage;
+  const auto rig = loadRig(parser, chooseHead(parser));
+  player::BatchRenderOptions batch;
+  batch.input = options.record;
+  batch.outputDir = parser.value("render");
+  batch.size = size;
+  batch.view = *view;
+  batch.progress = showProgress;
+  batch.quality = mode.quality;
+  batch.threads = mode.threads;
+  const player::BatchRenderResult result = player::renderAnimation(*rig, batch);
+  std::printf("%s/frame_0000.png ... frame_%04d.png and %s\n",
+              QDir(batch.outputDir).absolutePath().toLocal8Bit().constData(), result.frames - 1,
+              QFileInfo(result.contactSheet).absoluteFilePath().toLocal8Bit().constData());
+  return kExitOk;
 }
 
 // --frames FIRST-LAST (frame numbers, both included), or nullopt after saying what it takes.
@@ -416,9 +441,10 @@ int main(int argc, char** argv) {
   // abort on a missing one.
   const bool render = hasOption(argc, argv, "--render") || hasOption(argc, argv, "--video");
   const bool noWindow = hasOption(argc, argv, "--no-window");
-  // Exports that draw nothing need no display, nor does a stream recorded without a window.
-  const bool headless =
-      noWindow || hasOption(argc, argv, "--export-gltf") || hasOption(argc, argv, "--export-tears");
+  // Exports that draw nothing need no display, nor does a stream recorded without a window;
+  // rendering its take does.
+  const bool headless = !render && (noWindow || hasOption(argc, argv, "--export-gltf") ||
+                                    hasOption(argc, argv, "--export-tears"));
   const bool help = hasOption(argc, argv, "--help") || hasOption(argc, argv, "-h") ||
                     hasOption(argc, argv, "--version");
   const bool haveX = !qEnvironmentVariableIsEmpty("DISPLAY");
@@ -528,7 +554,9 @@ int main(int argc, char** argv) {
        "The Live Link mapping table (ARKit blendshapes to FAPs, with gains) in place of the "
        "shipped one (media/livelink-mapping.json).",
        "FILE"},
-      {"no-window", "Run without a window (with --listen and --record): for scripts and tests."},
+      {"no-window",
+       "Run without a window (with --listen, and --record and/or --render: the take rendered "
+       "when the stream ends): for scripts and tests."},
       {"exit-when-idle", "End after this long without a live frame.", "SECONDS"},
   });
   parser.process(app);
@@ -570,7 +598,7 @@ int main(int argc, char** argv) {
   try {
     if (parser.isSet("mapping"))
       live->mapping = LiveLinkMapping::load(parser.value("mapping").toStdString());
-    if (noWindow) return headlessMode(app, *live);
+    if (noWindow) return headlessMode(app, parser, *live, size, mode);
     if (parser.isSet("export-gltf")) return gltfMode(parser, mode);
     if (parser.isSet("export-tears")) return tearsMode(parser, mode);
     if (parser.isSet("video")) return videoMode(parser, size, mode);

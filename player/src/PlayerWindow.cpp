@@ -86,6 +86,10 @@ PlayerWindow::PlayerWindow(std::unique_ptr<playback::HeadRig> rig, QWidget* pare
     if (frame.frameRate) live_->setFrameRate(*frame.frameRate);
   });
   connect(session_, &live::LiveSession::countersChanged, this, &PlayerWindow::liveFrameArrived);
+  // A new frame is shown at once, not at the next tick: the next turn of the event loop ticks.
+  connect(session_, &live::LiveSession::frameArrived, this, [this] {
+    if (isLive() && playing() && ticker_->interval() != 0) ticker_->setInterval(0);
+  });
   connect(ticker_, &QTimer::timeout, this, &PlayerWindow::tick);
   buildActions();
   buildLayout();
@@ -491,6 +495,7 @@ void PlayerWindow::seek(double seconds) {
 
 void PlayerWindow::tick() {
   if (isLive()) {
+    if (ticker_->interval() != kLiveTickMilliseconds) ticker_->setInterval(kLiveTickMilliseconds);
     const long long framesBefore = live_->producer().counters().frames;
     display(live_->seek(live::liveClockSeconds()));
     recordTearCost(framesBefore);

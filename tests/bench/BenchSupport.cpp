@@ -1,8 +1,11 @@
 #include "BenchSupport.h"
 
 #include <lacrima/common/Milliseconds.h>
+#include <lacrima/rigging/DefaultHead.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -68,6 +71,24 @@ bool resetPeakMemory() {
   refs << "5";
   refs.flush();
   return static_cast<bool>(refs);
+}
+
+std::optional<int> missingDisplayOrHead(const char* subcommand) {
+  if (std::getenv("DISPLAY") == nullptr || !*std::getenv("DISPLAY")) {
+    std::fprintf(stderr,
+                 "lacrima-bench %s: needs an X display (OGRE renders through GLX); run it as\n"
+                 "  xvfb-run -a -s \"-screen 0 1280x1024x24\" lacrima-bench %s\n",
+                 subcommand, subcommand);
+    return 1;
+  }
+  if (!rigging::defaultHeadAvailable()) {
+    std::fprintf(stderr,
+                 "lacrima-bench %s: skipped: the default head is not fetched "
+                 "(packaging/fetch-default-head.sh)\n",
+                 subcommand);
+    return 0;
+  }
+  return std::nullopt;
 }
 
 }  // namespace lacrima::bench

@@ -28,4 +28,9 @@ long long residentBytes();
 long long peakResidentBytes();
 bool resetPeakMemory();
 
+// For subcommands that render the default head with OGRE: the exit status to return now when
+// there is no X display (1, with the xvfb-run advice) or no default head (0, skipped), else
+// nullopt.
+std::optional<int> missingDisplayOrHead(const char* subcommand);
+
 }  // namespace lacrima::bench

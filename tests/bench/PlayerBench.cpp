@@ -4,12 +4,12 @@
 // back). Target: >= 30 fps at 1280x720 with software rendering. Needs an X display (OGRE is
 // GLX only): run under xvfb-run.
 #include "BenchCommandLine.h"
+#include "BenchSupport.h"
 
 #include <lacrima/common/JsonWriter.h>
 #include <lacrima/common/MediaFiles.h>
 #include <lacrima/common/Milliseconds.h>
 #include <lacrima/playback/Playback.h>
-#include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/scene/FaceRenderer.h>
 
 #include <QGuiApplication>
@@ -58,18 +58,7 @@ struct Stage {
 int runPlayer(int argc, char** argv) {
   Options o;
   if (const std::optional<int> status = parseOptions(argc, argv, o)) return *status;
-  if (std::getenv("DISPLAY") == nullptr || !*std::getenv("DISPLAY")) {
-    std::fprintf(stderr,
-                 "lacrima-bench player: needs an X display (OGRE renders through GLX); run it as\n"
-                 "  xvfb-run -a -s \"-screen 0 1280x1024x24\" lacrima-bench player\n");
-    return 1;
-  }
-  if (!rigging::defaultHeadAvailable()) {
-    std::fprintf(stderr,
-                 "lacrima-bench player: skipped: the default head is not fetched "
-                 "(packaging/fetch-default-head.sh)\n");
-    return 0;
-  }
+  if (const std::optional<int> status = missingDisplayOrHead("player")) return *status;
   int qtArgc = 1;
   char name[] = "lacrima-bench";
   char* qtArgv[] = {name, nullptr};

