@@ -226,7 +226,7 @@ int headlessMode(QCoreApplication& app, const QCommandLineParser& parser, LiveOp
   batch.outputDir = parser.value("render");
   batch.size = size;
   batch.view = *view;
-  batch.progress = showProgress;
+  batch.progress = [](int done, int total) { showProgress(done, total); };
   batch.quality = mode.quality;
   batch.threads = mode.threads;
   const player::BatchRenderResult result = player::renderAnimation(*rig, batch);
