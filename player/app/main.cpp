@@ -8,12 +8,14 @@
 #include <lacrima/player/PlayerWindow.h>
 #include <lacrima/player/ProjectHead.h>
 
+#include <lacrima/common/AtomicSave.h>
 #include <lacrima/common/CommandLineNumbers.h>
 #include <lacrima/common/Diagnostics.h>
 #include <lacrima/common/ImageSize.h>
 #include <lacrima/common/Keyframes.h>
 #include <lacrima/common/TearQuality.h>
 #include <lacrima/export/GltfAnimationExport.h>
+#include <lacrima/export/RunStatistics.h>
 #include <lacrima/export/TearMeshExport.h>
 #include <lacrima/export/VideoExport.h>
 #include <lacrima/live/ListenUrl.h>
@@ -34,6 +36,7 @@
 #include <cstdio>
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -103,6 +106,27 @@ std::optional<scene::CameraPreset> cameraPreset(const QCommandLineParser& parser
 struct ModeOptions {
   std::optional<TearQuality> quality;  // --quality
   int threads = 0;                     // --threads
+  bool tears = true;                   // --no-tears: false
+  QString stats;                       // --stats FILE.json
+};
+
+// --stats: what the run simulated (RunStatistics), gathered frame by frame by the observer it
+// hands to an export, and written when the export has finished.
+class StatsRecorder {
+ public:
+  explicit StatsRecorder(QString path) : path_(std::move(path)) {}
+  std::function<void(const playback::Playback&)> observer() {
+    if (path_.isEmpty()) return {};
+    return [statistics = statistics_](const playback::Playback& p) { statistics->add(p); };
+  }
+  void write() const {
+    if (!path_.isEmpty()) saveAtomically(path_.toStdString(), statistics_->toJson());
+  }
+
+ private:
+  QString path_;
+  std::shared_ptr<exporting::RunStatistics> statistics_ =
+      std::make_shared<exporting::RunStatistics>();
 };
 
 // --listen, --record, --record-rate, --mapping, --exit-when-idle: the live options.
@@ -276,7 +300,11 @@ int renderMode(const QCommandLineParser& parser, const QSize& size, const ModeOp
   options.masks = parser.isSet("masks");
   options.quality = mode.quality;
   options.threads = mode.threads;
+  options.tears = mode.tears;
+  StatsRecorder stats(mode.stats);
+  options.frameShown = stats.observer();
   const player::BatchRenderResult result = player::renderAnimation(*rig, options);
+  stats.write();
   std::fprintf(stderr, "lacrima-player: %d frames in %.1f s\n", result.frames, result.seconds);
   std::printf("%s/frame_%04d.png ... frame_%04d.png and %s\n",
               QDir(options.outputDir).absolutePath().toLocal8Bit().constData(), result.firstFrame,
@@ -304,6 +332,7 @@ std::optional<exporting::ExportOptions> exportOptions(const QCommandLineParser& 
   options.threads = mode.threads;
   options.firstFrame = range->first;
   options.lastFrame = range->second;
+  options.tears = mode.tears;
   options.progress = [](int done, int total) {
     showProgress(done, total, "exported");
     return true;
@@ -324,11 +353,14 @@ void printPath(const std::string& path) {
 }
 
 int gltfMode(const QCommandLineParser& parser, const ModeOptions& mode) {
-  const std::optional<exporting::ExportOptions> options =
+  std::optional<exporting::ExportOptions> options =
       exportOptions(parser, QStringLiteral("export-gltf"), mode);
   if (!options) return kExitUsage;
+  StatsRecorder stats(mode.stats);
+  options->frameShown = stats.observer();
   const exporting::GltfExportResult result =
       exporting::exportGltfAnimation(*exportRig(parser), *options);
+  stats.write();
   std::fprintf(stderr,
                "lacrima-player: %d frames, %d morph targets, tears in %d frames, %.1f MB in "
                "%.1f s\n",
@@ -339,11 +371,14 @@ int gltfMode(const QCommandLineParser& parser, const ModeOptions& mode) {
 }
 
 int tearsMode(const QCommandLineParser& parser, const ModeOptions& mode) {
-  const std::optional<exporting::ExportOptions> options =
+  std::optional<exporting::ExportOptions> options =
       exportOptions(parser, QStringLiteral("export-tears"), mode);
   if (!options) return kExitUsage;
+  StatsRecorder stats(mode.stats);
+  options->frameShown = stats.observer();
   const exporting::TearMeshExportResult result =
       exporting::exportTearMeshes(*exportRig(parser), *options);
+  stats.write();
   std::fprintf(stderr, "lacrima-player: %d PLY files, tears in %d, %.1f MB in %.1f s\n",
                result.frames, result.framesWithTears, static_cast<double>(result.bytes) / 1e6,
                result.seconds);
@@ -352,7 +387,7 @@ int tearsMode(const QCommandLineParser& parser, const ModeOptions& mode) {
 }
 
 int videoMode(const QCommandLineParser& parser, const QSize& size, const ModeOptions& mode) {
-  const std::optional<exporting::ExportOptions> options =
+  std::optional<exporting::ExportOptions> options =
       exportOptions(parser, QStringLiteral("video"), mode);
   if (!options) return kExitUsage;
   const std::optional<scene::CameraPreset> view = cameraPreset(parser);
@@ -364,8 +399,11 @@ int videoMode(const QCommandLineParser& parser, const QSize& size, const ModeOpt
     return kExitUsage;
   }
   const auto rig = exportRig(parser);
+  StatsRecorder stats(mode.stats);
+  options->frameShown = stats.observer();
   const exporting::VideoExportResult result =
       exporting::exportVideo(*rig, *options, size, player::presetView(*rig, *view));
+  stats.write();
   std::fprintf(stderr, "lacrima-player: %d frames at %g fps (H.264, %s) in %.1f s\n", result.frames,
                result.fps, result.encoder.c_str(), result.seconds);
   printPath(options->output);
@@ -558,12 +596,29 @@ int main(int argc, char** argv) {
        "Run without a window (with --listen, and --record and/or --render: the take rendered "
        "when the stream ends): for scripts and tests."},
       {"exit-when-idle", "End after this long without a live frame.", "SECONDS"},
+      {"no-tears",
+       "With --render, --video or an export: the animation without its tear channels (69/70), "
+       "the same face with no tear: the other half of a paired stimulus."},
+      {"stats",
+       "With --render, --video or an export: write what was simulated to FILE.json (frames, "
+       "frames with tears, peak particles, a hash of the tears' state at every frame).",
+       "FILE.json"},
   });
   parser.process(app);
   const std::optional<int> threads = appsupport::threadsFrom(parser, "lacrima-player");
   if (!threads) return kExitUsage;
   ModeOptions mode;
   mode.threads = *threads;
+  mode.tears = !parser.isSet("no-tears");
+  mode.stats = parser.value("stats");
+  const bool fileOutput = parser.isSet("render") || parser.isSet("video") ||
+                          parser.isSet("export-gltf") || parser.isSet("export-tears");
+  if ((parser.isSet("no-tears") || parser.isSet("stats")) && (!fileOutput || noWindow)) {
+    std::fprintf(stderr,
+                 "lacrima-player: --no-tears and --stats go with --render, --video, "
+                 "--export-gltf or --export-tears on a FILE\n");
+    return kExitUsage;
+  }
   if (parser.isSet("mesh") != parser.isSet("fdp")) {
     std::fprintf(stderr,
                  "lacrima-player: --mesh and --fdp go together (a head and its feature points)\n");

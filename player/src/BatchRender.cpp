@@ -28,6 +28,7 @@ BatchRenderResult renderAnimation(const playback::HeadRig& rig, const BatchRende
   range.threads = options.threads;
   range.firstFrame = options.firstFrame;
   range.lastFrame = options.lastFrame;
+  range.tears = options.tears;
   const exporting::FrameSpan span = exporting::openForExport(playback, range);
   const QDir out(options.outputDir);
   if (!QDir().mkpath(options.outputDir))
@@ -44,6 +45,7 @@ BatchRenderResult renderAnimation(const playback::HeadRig& rig, const BatchRende
   for (int f = span.first; f <= span.last; ++f) {
     const double t = f / playback.frameRate();
     renderer.show(playback.seek(t));
+    if (options.frameShown) options.frameShown(playback);
     const QImage image = renderer.render();
     if (std::binary_search(picked.begin(), picked.end(), f))
       sheet.push_back({image.scaledToWidth(400, Qt::SmoothTransformation), f, t});

@@ -8,6 +8,7 @@ namespace lacrima::exporting {
 FrameSpan openForExport(playback::Playback& playback, const ExportOptions& options) {
   playback.setSimulationThreads(options.threads);
   playback.open(options.input);
+  if (!options.tears) playback.removeTears();
   if (options.quality) {
     SceneSettings scene = playback.scene();
     scene.quality.level = *options.quality;
@@ -27,7 +28,9 @@ double metresPerUnit(const playback::HeadRig& rig) {
   return std::isfinite(es0) && es0 > 0 ? kMeanEyeSeparationMetres / es0 : 1.0;
 }
 
-void reportProgress(const ExportOptions& options, int done, int total) {
+void reportProgress(const ExportOptions& options, const playback::Playback& playback, int done,
+                    int total) {
+  if (options.frameShown) options.frameShown(playback);
   if (options.progress && !options.progress(done, total)) throw ExportCancelled();
 }
 

@@ -173,7 +173,7 @@ GltfExportResult exportGltfAnimation(const playback::HeadRig& rig, const ExportO
         tearNodes.emplace_back(k, node);
       }
     }
-    reportProgress(options, k + 1, span.count());
+    reportProgress(options, playback, k + 1, span.count());
   }
 
   document.setAnimationName("lacrima");

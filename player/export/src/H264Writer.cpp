@@ -121,6 +121,9 @@ H264Writer::H264Writer(const std::string& path, QSize size, double fps)
   av_dict_set(&options, "crf", "18", 0);
   av_dict_set(&options, "preset", "fast", 0);
   av_dict_set(&options, "profile", "main", 0);
+  // x264's bitstream depends on its thread count, which "auto" takes from the machine's cores:
+  // a fixed count gives the same bytes on every machine (batches compare them, docs/batch.md).
+  c.thread_count = 4;
   status = avcodec_open2(&c, encoder, &options);
   av_dict_free(&options);
   if (status < 0) s.fail("cannot open the H.264 encoder", status);
@@ -145,8 +148,11 @@ H264Writer::H264Writer(const std::string& path, QSize size, double fps)
   status = av_frame_get_buffer(s.frame.get(), 0);
   if (status < 0) s.fail("out of memory for a video frame", status);
   // RGBA to BT.709 limited-range yuv420p, as the stream says.
-  s.scale.reset(sws_getContext(c.width, c.height, AV_PIX_FMT_RGBA, c.width, c.height,
-                               AV_PIX_FMT_YUV420P, SWS_BICUBIC, nullptr, nullptr, nullptr));
+  s.scale.reset(
+      sws_getContext(c.width, c.height, AV_PIX_FMT_RGBA, c.width, c.height, AV_PIX_FMT_YUV420P,
+                     // swscale's SIMD paths round differently from its C path and
+                     // from each other; bit-exact rounding is the same on every CPU.
+                     SWS_BICUBIC | SWS_BITEXACT | SWS_ACCURATE_RND, nullptr, nullptr, nullptr));
   if (!s.scale) s.fail("cannot convert RGBA to yuv420p", 0);
   sws_setColorspaceDetails(s.scale.get(), sws_getCoefficients(SWS_CS_ITU709), 1,
                            sws_getCoefficients(SWS_CS_ITU709), 0, 0, 1 << 16, 1 << 16);

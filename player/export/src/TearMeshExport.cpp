@@ -94,7 +94,7 @@ TearMeshExportResult exportTearMeshes(const playback::HeadRig& rig, const Export
     result.bytes += bytes.size();
     result.framesWithTears += pieces.empty() ? 0 : 1;
     ++result.frames;
-    reportProgress(options, f - span.first + 1, span.count());
+    reportProgress(options, playback, f - span.first + 1, span.count());
   }
   result.seconds = static_cast<double>(wall.elapsed()) / 1000.0;
   return result;

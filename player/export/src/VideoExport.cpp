@@ -22,7 +22,7 @@ VideoExportResult exportVideo(const playback::HeadRig& rig, const ExportOptions&
   for (int f = span.first; f <= span.last; ++f) {
     renderer.show(playback.seek(f / playback.frameRate()));
     writer.write(renderer.render());
-    reportProgress(options, f - span.first + 1, span.count());
+    reportProgress(options, playback, f - span.first + 1, span.count());
   }
   writer.finish();
   VideoExportResult result;

@@ -335,4 +335,8 @@ const ProducerTimes& FrameProducer::lastTimes() const { return state_->times; }
 const ProducerCounters& FrameProducer::counters() const { return state_->counters; }
 int FrameProducer::particleCount() const { return state_->particles(); }
 
+std::uint64_t FrameProducer::tearStateHash() const {
+  return state_->simulation ? tears::stateHash(state_->simulation->particles()) : 0;
+}
+
 }  // namespace lacrima::playback

@@ -1,5 +1,6 @@
 // Playback (Playback.h): frames fed to the producer in order, checkpoints as they pass, replays
 // from the nearest earlier checkpoint when going back.
+#include <lacrima/common/FapChannels.h>
 #include <lacrima/playback/AnimationFile.h>
 #include <lacrima/playback/Playback.h>
 
@@ -151,6 +152,19 @@ void Playback::setColourCurves(FaceColourCurves curves, double startTime) {
   s.colours = std::move(curves);
   s.colourStart = std::isfinite(startTime) ? startTime : 0.0;
   if (!s.animation.frames.empty()) seek(s.time);  // the frame shown takes them at once
+}
+
+void Playback::removeTears() {
+  State& s = *state_;
+  if (!s.animation.hasTears()) return;
+  for (FapValues& frame : s.animation.frames) {
+    frame[channelIndex(kTearLeftFap)] = 0;
+    frame[channelIndex(kTearRightFap)] = 0;
+  }
+  s.clearCheckpoints();
+  s.producer.reset();
+  s.nextFrame = 0;
+  seek(s.time);
 }
 
 const FapAnimation& Playback::animation() const { return state_->animation; }

@@ -5,6 +5,7 @@
 // background (--alpha) and a tear mask per frame (--masks). Needs an X display (xvfb-run).
 #include <lacrima/common/TearQuality.h>
 #include <lacrima/playback/HeadRig.h>
+#include <lacrima/playback/Playback.h>
 #include <lacrima/scene/CameraPreset.h>
 
 #include <QSize>
@@ -29,6 +30,9 @@ struct BatchRenderOptions {
   std::optional<TearQuality> quality;  // --quality: replaces the file's level
   int threads = 0;                     // --threads: SimulationOptions::threads (0: its default)
   int firstFrame = 0, lastFrame = -1;  // --frames, both included; -1: to the last frame
+  bool tears = true;                   // --no-tears: exporting::ExportOptions::tears
+  // After each frame is produced (exporting::ExportOptions::frameShown).
+  std::function<void(const playback::Playback&)> frameShown;
   // Called after each frame with (frames done, frames in all).
   std::function<void(int, int)> progress;
 };

@@ -20,6 +20,12 @@ struct ExportOptions {
   int threads = 0;                     // tears::SimulationOptions::threads (0: its default)
   int firstFrame = 0;                  // the frames exported, both ends included;
   int lastFrame = -1;                  // -1: to the last frame of the file
+  // false: the animation without its tear channels (Playback::removeTears), the "without tears"
+  // half of a paired stimulus; nothing is simulated then.
+  bool tears = true;
+  // After each frame is produced, before `progress`: the playback showing it (--stats reads the
+  // tears' state there).
+  std::function<void(const playback::Playback&)> frameShown;
   // After each frame: (frames done, frames in all). Returning false cancels the export, which
   // then throws ExportCancelled and leaves no output behind.
   std::function<bool(int, int)> progress;
@@ -46,7 +52,8 @@ FrameSpan openForExport(playback::Playback& playback, const ExportOptions& optio
 inline constexpr double kMeanEyeSeparationMetres = 0.063;
 double metresPerUnit(const playback::HeadRig& rig);
 
-// Calls options.progress; throws ExportCancelled when it asks to stop.
-void reportProgress(const ExportOptions& options, int done, int total);
+// Calls options.frameShown, then options.progress; throws ExportCancelled when it asks to stop.
+void reportProgress(const ExportOptions& options, const playback::Playback& playback, int done,
+                    int total);
 
 }  // namespace lacrima::exporting

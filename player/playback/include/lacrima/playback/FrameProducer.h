@@ -10,6 +10,7 @@
 #include <lacrima/tears/SimulationOptions.h>
 #include <lacrima/tears/TearSettings.h>
 
+#include <cstdint>
 #include <memory>
 
 namespace lacrima::playback {
@@ -91,6 +92,9 @@ class FrameProducer {
   const ProducerTimes& lastTimes() const;
   const ProducerCounters& counters() const;
   int particleCount() const;
+  // tears::stateHash of the particles now (0 before any tear): what batches record to prove
+  // that two runs simulated the same tears, bit for bit.
+  std::uint64_t tearStateHash() const;
 
  private:
   struct State;

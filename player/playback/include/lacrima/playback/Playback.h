@@ -40,6 +40,10 @@ class Playback : public AnimationSource {
   // playing time; they replace the computed redness and blush. open() sets a project's;
   // setAnimation() clears them. They never restart the tears.
   void setColourCurves(FaceColourCurves curves, double startTime = 0);
+  // Drops the tear channels (FAP 69/70) from the animation loaded: the same face, colours and
+  // timing without a tear, and no simulation (the "without tears" half of a paired stimulus).
+  // Shows the current time again.
+  void removeTears();
   const FapAnimation& animation() const;
   const std::string& path() const;   // empty when set from memory
   const Warnings& warnings() const;  // the FAP reader's for the open file
