@@ -32,7 +32,7 @@ done
 [[ "$recommends" =~ (^|, )xvfb(,|$) ]] || fail "Recommends lacks xvfb: $recommends"
 
 contents=$(dpkg-deb -c "$deb" | awk '{print $NF}' | sed 's|^\./|/|')
-for path in /usr/bin/lacrima-editor /usr/bin/lacrima-player /usr/bin/lacrima-fap /usr/bin/lacrima-send \
+for path in /usr/bin/lacrima-editor /usr/bin/lacrima-player /usr/bin/lacrima-fap /usr/bin/lacrima-send /usr/bin/lacrima-batch \
     /usr/bin/lacrima-rig /usr/bin/lacrima-fetch-head /usr/libexec/lacrima/lacrima-import \
     /usr/share/lacrima/demo/crying.fap \
     /usr/share/lacrima/default-head.fdp.json /usr/share/applications/lacrima-player.desktop \
@@ -41,7 +41,7 @@ for path in /usr/bin/lacrima-editor /usr/bin/lacrima-player /usr/bin/lacrima-fap
     /usr/share/icons/hicolor/scalable/apps/lacrima-editor.svg \
     /usr/share/icons/hicolor/256x256/apps/lacrima-player.png \
     /usr/share/man/man1/lacrima-fap.1.gz /usr/share/man/man1/lacrima-player.1.gz \
-    /usr/share/man/man1/lacrima-send.1.gz /usr/share/lacrima/livelink-mapping.json \
+    /usr/share/man/man1/lacrima-send.1.gz /usr/share/man/man1/lacrima-batch.1.gz /usr/share/lacrima/livelink-mapping.json \
     /usr/share/man/man1/lacrima-editor.1.gz /usr/share/man/man1/lacrima-rig.1.gz \
     /usr/share/man/man1/lacrima-fetch-head.1.gz /usr/share/doc/lacrima/copyright \
     /usr/share/doc/lacrima/changelog.gz; do

@@ -16,7 +16,7 @@ prefix=$work/home/opt/lacrima
 mkdir -p "$(dirname "$prefix")"
 mv "$work/staged" "$prefix"
 
-for path in bin/lacrima-editor bin/lacrima-player bin/lacrima-fap bin/lacrima-rig bin/lacrima-send \
+for path in bin/lacrima-editor bin/lacrima-player bin/lacrima-fap bin/lacrima-rig bin/lacrima-send bin/lacrima-batch \
     bin/lacrima-fetch-head libexec/lacrima/lacrima-import share/lacrima/default-head.fdp.json share/lacrima/demo/crying.fap \
     share/lacrima/demo/crying.lacrima share/applications/lacrima-player.desktop \
     share/applications/lacrima-editor.desktop share/mime/packages/lacrima.xml \
@@ -25,7 +25,7 @@ for path in bin/lacrima-editor bin/lacrima-player bin/lacrima-fap bin/lacrima-ri
     share/icons/hicolor/scalable/apps/lacrima-player.svg \
     share/icons/hicolor/48x48/apps/lacrima-editor.png share/man/man1/lacrima-fap.1.gz \
     share/man/man1/lacrima-player.1.gz share/man/man1/lacrima-editor.1.gz \
-    share/man/man1/lacrima-rig.1.gz share/man/man1/lacrima-fetch-head.1.gz share/man/man1/lacrima-send.1.gz \
+    share/man/man1/lacrima-rig.1.gz share/man/man1/lacrima-fetch-head.1.gz share/man/man1/lacrima-send.1.gz share/man/man1/lacrima-batch.1.gz \
     share/lacrima/livelink-mapping.json \
     share/doc/lacrima/copyright share/doc/lacrima/changelog.gz; do
   [ -e "$prefix/$path" ] || fail "cmake --install did not install $path"

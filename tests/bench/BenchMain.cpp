@@ -21,6 +21,7 @@ int runPreview(int argc, char** argv);
 int runWorstCases(int argc, char** argv);
 int runImport(int argc, char** argv);
 int runLive(int argc, char** argv);
+int runBatch(int argc, char** argv);
 }  // namespace lacrima::bench
 
 namespace {
@@ -66,6 +67,10 @@ const Subcommand kSubcommands[] = {
      "the live player: latency from a frame's arrival to the end of its render (median, p99) "
      "at 22, 60, 120 fps of input with 100 and 2,000 tear particles, frames dropped",
      lacrima::bench::runLive},
+    {"batch",
+     "datasets: jobs per hour of lacrima-batch (5 s takes at 640x360 with masks, 1 and 2 at a "
+     "time), the pinned environment's cost, Slurm's overhead per task (--slurm)",
+     lacrima::bench::runBatch},
     {"player",
      "the whole player (playback + OGRE render) on the demo at 1280x720: fps, stage shares",
      lacrima::bench::runPlayer},

@@ -5,7 +5,7 @@
 // energy bounded by the potential energy gravity released. Each case runs with every registered
 // pressure solver.
 //
-// test_tears_hard_cases_threads runs the same cases with LACRIMA_HARD_CASES_THREADS=3: each
+// With LACRIMA_HARD_CASES_THREADS=3 (the Release tree's run, tests/CMakeLists.txt) each
 // simulation then runs twice, on three threads and on one, cut into chunks of 16 particles
 // shared from the first (a hard case has about a hundred particles, far below the 2,500 where
 // the library starts sharing), and the two must end in the same bits.
