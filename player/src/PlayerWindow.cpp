@@ -762,6 +762,7 @@ void PlayerWindow::playMoods(const MoodLevels& levels) {
                                .arg(live_->moodSeed()),
                            4000);
   if (!playing()) play();
+  updateTransport();
 }
 
 void PlayerWindow::setMoodSeed(std::uint64_t seed) {
