@@ -112,6 +112,7 @@ class MoodGeneratorTest : public QObject {
     QVERIFY(value(take, 25, kTearLeftFap) > 20);  // crying by then
     const double smileBefore = mean({12, 13, 59, 60}, 2, 5);
     const double smileCrying = mean({12, 13, 59, 60}, 20, 30);
+    qInfo("lip corners %.1f before the tears, %.1f with them", smileBefore, smileCrying);
     QVERIFY2(smileCrying >= smileBefore,
              qPrintable(QString("corners %1 before the tears, %2 with them")
                             .arg(smileBefore)
