@@ -37,6 +37,16 @@ ChannelMask maskOf(std::initializer_list<const char*> names) {
   return mask;
 }
 
+// A window with no preview, no dialogs and its recovery files in `recovery`.
+editor::EditorOptions quietOptions(const QTemporaryDir& recovery) {
+  editor::EditorOptions options;
+  options.preview = false;
+  options.interactive = false;
+  options.offerRecovery = false;
+  options.recoveryDirectory = recovery.path();
+  return options;
+}
+
 }  // namespace
 
 class LiveRecordTest : public QObject {
@@ -86,12 +96,7 @@ class LiveRecordTest : public QObject {
 
   void windowRecordsAStreamAsOneUndoStep() {
     QTemporaryDir recovery;
-    editor::EditorOptions options;
-    options.preview = false;
-    options.interactive = false;
-    options.offerRecovery = false;
-    options.recoveryDirectory = recovery.path();
-    editor::MainWindow window(options);
+    editor::MainWindow window(quietOptions(recovery));
     editing::EditorModel& model = window.model();
     model.setCurrentTime(1.0);
     QVERIFY(window.action("play.recordLive"));
@@ -135,12 +140,7 @@ class LiveRecordTest : public QObject {
   // in the dialog and changes nothing, undo takes the take back.
   void generateCryingDialogWritesOneUndoStep() {
     QTemporaryDir recovery;
-    editor::EditorOptions options;
-    options.preview = false;
-    options.interactive = false;
-    options.offerRecovery = false;
-    options.recoveryDirectory = recovery.path();
-    editor::MainWindow window(options);
+    editor::MainWindow window(quietOptions(recovery));
     editing::EditorModel& model = window.model();
     for (double t : {2.0, 6.0, 9.0}) {
       model.setCurrentTime(t);
