@@ -39,6 +39,7 @@ FapReadResult readLines(LineSource& lines, const std::string& displayName, std::
   while (lines.next(line)) {
     switch (parser.feed(line, lines.lineNumber())) {
       case FapTextParser::Event::None:
+      case FapTextParser::Event::Mood:  // a file's parser refuses mood lines
         break;
       case FapTextParser::Event::Header: {
         const FapTextHeader& header = parser.header();

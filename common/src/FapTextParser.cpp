@@ -2,8 +2,10 @@
 
 #include "FapTokenizer.h"
 
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 namespace lacrima::inline common {
 
@@ -48,6 +50,10 @@ FapTextParser::Event FapTextParser::feed(std::string_view line, int lineNumber) 
     readValues();
     return Event::Frame;
   }
+  if (isMoodLine()) {
+    readMood();
+    return Event::Mood;
+  }
   const bool header = headerRule_ == Header::Required ? !sawHeader_ : !looksLikeMask();
   if (header) {
     readHeader();
@@ -75,6 +81,38 @@ bool FapTextParser::startLine(std::string_view line, int lineNumber) {
 bool FapTextParser::looksLikeMask() const {
   const std::string_view first = detail::TokenCursor(text_).next();
   return first == "0" || first == "1";
+}
+
+bool FapTextParser::isMoodLine() const { return detail::TokenCursor(text_).next() == "mood"; }
+
+// `mood name=value ...`, each mood at most once, each value in [0, 1]; the rest are 0.
+void FapTextParser::readMood() {
+  tokenizeOrFail();
+  if (headerRule_ == Header::Required)
+    fail(1, "a mood line is a live stream's message (docs/live.md): expected the header " +
+                std::string(kHeaderForm) + " or a frame in a file");
+  MoodLevels levels;
+  std::array<bool, kMoodCount> named{};
+  for (std::size_t t = 1; t < tokens_.size(); ++t) {
+    const std::string_view token = tokens_[t];
+    if (token.find(',') != std::string_view::npos)
+      fail(columnOf(token) + static_cast<int>(token.find(',')),
+           "expected blanks between moods ('mood sadness=0.8 anger=0.2'), found ','");
+    MoodLevels one;
+    try {
+      one = parseMoodLevels(token);
+    } catch (const std::invalid_argument& e) {
+      fail(columnOf(token),
+           std::string(e.what()) + " (a mood line reads 'mood sadness=0.8 anger=0')");
+    }
+    const std::string_view name = token.substr(0, token.find('='));
+    const Mood mood = *moodByName(name);  // parseMoodLevels knew it
+    const auto m = static_cast<std::size_t>(mood);
+    if (named[m]) fail(columnOf(token), "mood '" + std::string(name) + "' is named twice");
+    named[m] = true;
+    levels[mood] = one[mood];
+  }
+  mood_ = levels;
 }
 
 void FapTextParser::tokenizeOrFail() {

@@ -9,7 +9,8 @@ namespace lacrima::inline common {
 FapTextStream::FapTextStream(std::string displayName)
     : parser_(std::move(displayName), FapTextParser::Header::Optional) {}
 
-void FapTextStream::feed(std::string_view bytes, const FrameHandler& onFrame) {
+void FapTextStream::feed(std::string_view bytes, const FrameHandler& onFrame,
+                         const MoodHandler& onMood) {
   while (!bytes.empty()) {
     const void* found = std::memchr(bytes.data(), '\n', bytes.size());
     const std::size_t length =
@@ -37,23 +38,28 @@ void FapTextStream::feed(std::string_view bytes, const FrameHandler& onFrame) {
     }
     ++lineNumber_;
     if (partial_.empty()) {
-      line(piece, onFrame);
+      line(piece, onFrame, onMood);
     } else {
       partial_.append(piece);
-      line(partial_, onFrame);
+      line(partial_, onFrame, onMood);
       partial_.clear();
     }
   }
 }
 
-void FapTextStream::line(std::string_view text, const FrameHandler& onFrame) {
+void FapTextStream::line(std::string_view text, const FrameHandler& onFrame,
+                         const MoodHandler& onMood) {
   // A stream may run for days: keep its line numbers positive (line 1 alone may hold a BOM).
   if (lineNumber_ == std::numeric_limits<int>::max()) lineNumber_ = 2;
   parser_.warnings().clear();  // a stream's warnings would pile up; its header is its own
   try {
-    if (parser_.feed(text, lineNumber_) == FapTextParser::Event::Frame) {
+    const FapTextParser::Event event = parser_.feed(text, lineNumber_);
+    if (event == FapTextParser::Event::Frame) {
       ++counters_.frames;
       onFrame(parser_.frame());
+    } else if (event == FapTextParser::Event::Mood) {
+      ++counters_.moods;
+      if (onMood) onMood(parser_.mood());
     }
   } catch (const FileError& e) {
     ++counters_.malformed;
@@ -96,9 +102,14 @@ FapDatagram decodeFapDatagram(std::string_view bytes, const std::string& display
     if (event == FapTextParser::Event::None) continue;
     if (haveFrame) {
       throw FileError({displayName, lineNumber, 0},
-                      "a datagram holds one frame: expected nothing after its value line");
+                      datagram.mood ? "a datagram holds one mood line: expected nothing after it"
+                                    : "a datagram holds one frame: expected nothing after its "
+                                      "value line");
     }
-    if (event == FapTextParser::Event::Header) {
+    if (event == FapTextParser::Event::Mood) {
+      datagram.mood = parser.mood();
+      haveFrame = true;
+    } else if (event == FapTextParser::Event::Header) {
       datagram.frameRate = parser.header().fps;
     } else {
       datagram.frame = parser.frame();
@@ -110,7 +121,8 @@ FapDatagram decodeFapDatagram(std::string_view bytes, const std::string& display
                     parser.pendingMaskLine() != 0
                         ? "the datagram ends after a mask line: expected its value line "
                           "'<frame> <values>'"
-                        : "the datagram holds no frame: expected a mask line and a value line");
+                        : "the datagram holds no frame: expected a mask line and a value line "
+                          "(or a mood line)");
   }
   return datagram;
 }

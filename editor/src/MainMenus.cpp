@@ -45,6 +45,7 @@ QMenu* buildMainMenus(QMainWindow& window, const std::function<QAction*(const QS
              action);
   addActions(*bar->addMenu(QMainWindow::tr("&Key")),
              {"key.add", "key.linear", "key.smooth", "", "key.previous", "key.next"}, action);
+  addActions(*bar->addMenu(QMainWindow::tr("&Animation")), {"anim.generateCrying"}, action);
   addActions(*bar->addMenu(QMainWindow::tr("&Playback")),
              {"play.toggle", "play.start", "play.end", "play.previousFrame", "play.nextFrame",
               "play.goToTime", "", "play.recordLive"},

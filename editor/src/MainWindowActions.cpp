@@ -8,14 +8,20 @@
 #include <lacrima/editor/TransportBar.h>
 
 #include <lacrima/editor/LiveRecording.h>
+#include <lacrima/editor/MoodGenerationDialog.h>
 #include <lacrima/live/ListenUrl.h>
 
 #include <QAction>
 #include <QInputDialog>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QSignalBlocker>
 #include <QStatusBar>
 #include <QUndoGroup>
+
+#include <algorithm>
+#include <tuple>
+#include <utility>
 
 namespace lacrima::editor {
 
@@ -148,6 +154,11 @@ void MainWindow::createActions() {
                      QKeySequence(QStringLiteral("Ctrl+G"))),
           &QAction::triggered, d_->transport, &TransportBar::editTime);
 
+  // Generate crying: the crying generator's take as keys over a range (docs/mood.md).
+  connect(makeAction(QStringLiteral("anim.generateCrying"), tr("&Generate crying…"), QKeySequence(),
+                     tr("Keys from the crying generator over a range: moods, intensities, seed")),
+          &QAction::triggered, this, &MainWindow::openGenerateCrying);
+
   // Record live: asks where to listen, counts in, records; the same action stops and keys.
   d_->liveRecording = new LiveRecording(m, this);
   QAction* record = makeAction(QStringLiteral("play.recordLive"), tr("&Record live…"),
@@ -213,5 +224,42 @@ void MainWindow::createActions() {
 }
 
 LiveRecording& MainWindow::liveRecording() { return *d_->liveRecording; }
+
+MoodGenerationDialog* MainWindow::openGenerateCrying() {
+  const editing::EditorModel& m = *d_->model;
+  const std::vector<double>& selected = m.selectedTimes();
+  double start = 0, end = m.endTime() > 0 ? m.endTime() : 10;
+  if (selected.size() >= 2) {
+    const auto [low, high] = std::minmax_element(selected.begin(), selected.end());
+    if (*high > *low) std::tie(start, end) = std::pair{*low, *high};
+  }
+  auto* dialog = new MoodGenerationDialog(start, end, m.document().fps, this);
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  connect(dialog, &QDialog::accepted, this, [this, dialog] {
+    if (!generateCrying(dialog->request()) && d_->options.interactive)
+      QMessageBox::warning(this, tr("Generate crying"), d_->lastError);
+  });
+  dialog->open();
+  return dialog;
+}
+
+bool MainWindow::generateCrying(const editing::MoodGenerationRequest& request) {
+  try {
+    const editing::MoodGenerationPlan plan =
+        editing::planMoodGeneration(d_->model->document().keys, request);
+    d_->model->editKeys(plan.change, tr("Generate crying"));
+    statusBar()->showMessage(tr("Generated crying from %1 s to %2 s: %3 frames kept as %4 keys")
+                                 .arg(request.start)
+                                 .arg(request.end)
+                                 .arg(plan.frames)
+                                 .arg(plan.keys),
+                             8000);
+    return true;
+  } catch (const std::exception& e) {
+    d_->lastError = tr("Cannot generate crying: %1").arg(QString::fromUtf8(e.what()));
+    statusBar()->showMessage(d_->lastError, 8000);
+    return false;
+  }
+}
 
 }  // namespace lacrima::editor

@@ -14,6 +14,7 @@
 #include <lacrima/common/ImageSize.h>
 #include <lacrima/common/Keyframes.h>
 #include <lacrima/common/TearQuality.h>
+#include <lacrima/common/mood/Moods.h>
 #include <lacrima/export/GltfAnimationExport.h>
 #include <lacrima/export/RunStatistics.h>
 #include <lacrima/export/TearMeshExport.h>
@@ -33,11 +34,13 @@
 
 #include <unistd.h>
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <functional>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -108,6 +111,8 @@ struct ModeOptions {
   int threads = 0;                     // --threads
   bool tears = true;                   // --no-tears: false
   QString stats;                       // --stats FILE.json
+  std::optional<MoodLevels> moods;     // --mood
+  std::uint64_t seed = 1;              // --seed
 };
 
 // --stats: what the run simulated (RunStatistics), gathered frame by frame by the observer it
@@ -128,6 +133,48 @@ class StatsRecorder {
   std::shared_ptr<exporting::RunStatistics> statistics_ =
       std::make_shared<exporting::RunStatistics>();
 };
+
+// --mood and --seed into `mode`; false after saying what is wrong (a usage error).
+bool readMoodOptions(const QCommandLineParser& parser, ModeOptions& mode) {
+  if (parser.isSet("seed") && !parser.isSet("mood")) {
+    std::fprintf(stderr, "lacrima-player: --seed goes with --mood\n");
+    return false;
+  }
+  if (!parser.isSet("mood")) return true;
+  if (!parser.positionalArguments().isEmpty()) {
+    std::fprintf(stderr,
+                 "lacrima-player: --mood plays the crying generator with no FILE; give one or "
+                 "the other\n");
+    return false;
+  }
+  for (const char* other :
+       {"render", "video", "export-gltf", "export-tears", "no-window", "screenshot"}) {
+    if (!parser.isSet(other)) continue;
+    std::fprintf(stderr,
+                 "lacrima-player: --mood plays live in the window; for --%s write a take first: "
+                 "lacrima-fap generate --mood ... --seconds S -o take.lacrima\n",
+                 other);
+    return false;
+  }
+  try {
+    mode.moods = parseMoodLevels(parser.value("mood").toStdString());
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "lacrima-player: --mood: %s\n", e.what());
+    return false;
+  }
+  if (parser.isSet("seed")) {
+    bool ok = false;
+    mode.seed = parser.value("seed").toULongLong(&ok);
+    if (!ok) {
+      std::fprintf(stderr,
+                   "lacrima-player: --seed: expected a whole number from 0 to "
+                   "18446744073709551615, got '%s'\n",
+                   parser.value("seed").toLocal8Bit().constData());
+      return false;
+    }
+  }
+  return true;
+}
 
 // --listen, --record, --record-rate, --mapping, --exit-when-idle: the live options.
 struct LiveOptions {
@@ -444,6 +491,10 @@ int windowMode(QApplication& app, const QCommandLineParser& parser, const QSize*
     if (parser.isSet("play")) window.play();
     startLive(window.liveSession(), liveOptions,
               [&](const live::ListenUrl& url) { window.listen(url); });
+    if (mode.moods) {
+      window.setMoodSeed(mode.seed);
+      window.playMoods(*mode.moods);
+    }
     quitWhenIdle(app, window.liveSession(), liveOptions.exitWhenIdle);
     const int status = app.exec();
     return finishRecording(window.liveSession()) ? status : kExitBadInput;
@@ -526,6 +577,8 @@ int main(int argc, char** argv) {
       "  lacrima-player --listen livelink+udp://0.0.0.0:11111  # Live Link Face on a phone\n"
       "  lacrima-player --no-window --listen fap+tcp://:5555 --record take.fap --exit-when-idle "
       "2\n\n"
+      "Crying on the fly (docs/mood.md):\n"
+      "  lacrima-player --mood sadness=0.8,anger=0.2 --seed 4\n\n"
       "Keys: Space play/pause, Home reset, Left/Right one frame, L loop, V reset the view, Ctrl+O\n"
       "open.\n"
       "Mouse: left drag orbits, right drag pans, the wheel zooms, double-click frames the face.\n\n"
@@ -603,6 +656,11 @@ int main(int argc, char** argv) {
        "With --render, --video or an export: write what was simulated to FILE.json (frames, "
        "frames with tears, peak particles, a hash of the tears' state at every frame).",
        "FILE.json"},
+      {"mood",
+       "Play the crying generator live, with no file: moods sadness, anger, joy, shame, each "
+       "0..1 (the Mood panel changes them).",
+       "MOODS"},
+      {"seed", "The generator's seed with --mood (default 1): another seed, another take.", "N"},
   });
   parser.process(app);
   const std::optional<int> threads = appsupport::threadsFrom(parser, "lacrima-player");
@@ -619,6 +677,7 @@ int main(int argc, char** argv) {
                  "--export-gltf or --export-tears on a FILE\n");
     return kExitUsage;
   }
+  if (!readMoodOptions(parser, mode)) return kExitUsage;
   if (parser.isSet("mesh") != parser.isSet("fdp")) {
     std::fprintf(stderr,
                  "lacrima-player: --mesh and --fdp go together (a head and its feature points)\n");

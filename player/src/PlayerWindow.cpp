@@ -4,6 +4,7 @@
 #include <lacrima/player/HeadViews.h>
 #include <lacrima/player/LiveMappingDialog.h>
 #include <lacrima/player/LivePanel.h>
+#include <lacrima/player/MoodPanel.h>
 #include <lacrima/player/ProjectHead.h>
 #include <lacrima/player/TearParametersPanel.h>
 
@@ -84,6 +85,11 @@ PlayerWindow::PlayerWindow(std::unique_ptr<playback::HeadRig> rig, QWidget* pare
     if (!live_) return;
     live_->push(frame.values, frame.mask, frame.arrival);
     if (frame.frameRate) live_->setFrameRate(*frame.frameRate);
+  });
+  session_->setMoodHandler([this](const live::LiveMood& mood) {
+    if (!live_) return;
+    live_->setMoods(mood.levels);
+    moodPanel_->display(live_->moods(), live_->moodSeed());
   });
   connect(session_, &live::LiveSession::countersChanged, this, &PlayerWindow::liveFrameArrived);
   // A new frame is shown at once, not at the next tick: the next turn of the event loop ticks.
@@ -271,7 +277,16 @@ void PlayerWindow::buildLayout() {
   connect(livePanel_, &LivePanel::tearsEdited, this, [this](int left, int right) {
     if (live_) live_->setTears(static_cast<float>(left), static_cast<float>(right));
   });
+  moodPanel_ = new MoodPanel(side);
+  auto* moodBox = new QGroupBox(tr("Mood"), side);
+  moodBox->setObjectName("moodBox");
+  moodBox->setToolTip(
+      tr("The crying generator: moving a slider makes the face cry live, with no file"));
+  (new QVBoxLayout(moodBox))->addWidget(moodPanel_);
+  connect(moodPanel_, &MoodPanel::moodsEdited, this, &PlayerWindow::playMoods);
+  connect(moodPanel_, &MoodPanel::seedEdited, this, &PlayerWindow::setMoodSeed);
   sideLayout->addWidget(liveBox);
+  sideLayout->addWidget(moodBox);
   sideLayout->addWidget(effectsBox);
   sideLayout->addWidget(parametersBox);
   sideLayout->addStretch(1);
@@ -586,10 +601,16 @@ void PlayerWindow::updateTransport() {
     play_->setEnabled(true);
     // No position in a stream: the indicator says it is live, and since when.
     timeLabel_->setText(tr("\u25CF LIVE %1").arg(clockText(live_->currentTime())));
-    frameLabel_->setText(tr("%1 frames received, %2 shown, %3 dropped")
-                             .arg(live_->framesReceived())
-                             .arg(live_->currentFrame())
-                             .arg(live_->framesDropped()));
+    if (live_->moodDriven())
+      frameLabel_->setText(tr("moods %1, seed %2: %3 frames generated")
+                               .arg(QString::fromStdString(toString(live_->moods())))
+                               .arg(live_->moodSeed())
+                               .arg(live_->currentFrame()));
+    else
+      frameLabel_->setText(tr("%1 frames received, %2 shown, %3 dropped")
+                               .arg(live_->framesReceived())
+                               .arg(live_->currentFrame())
+                               .arg(live_->framesDropped()));
     const int particles = live_->producer().particleCount();
     const playback::ProducerTimes& t = live_->producer().lastTimes();
     tearsLabel_->setText(particles > 0 ? tr("%1 tear particles (%2 ms)")
@@ -670,25 +691,9 @@ void PlayerWindow::dropEvent(QDropEvent* event) {
 
 void PlayerWindow::listen(const live::ListenUrl& url) {
   session_->listen(url);  // throws before anything changes
-  if (!live_) {
-    pause();
-    live_ = std::make_unique<playback::LiveSource>(*rig_);
-    live_->setSimulationThreads(simulationThreads_);
-    SceneSettings scene = live_->scene();
-    scene.simulation = parameters_->values();
-    effects_->applyTo(scene);
-    scene.redness = SceneSettings::Redness::Tears;  // a stream has no progress to follow
-    if (tearQuality_) scene.quality.level = *tearQuality_;
-    live_->setScene(scene);
-    live_->setTears(static_cast<float>(livePanel_->tearsLeft()),
-                    static_cast<float>(livePanel_->tearsRight()));
-    source_ = live_.get();
-    effects_->display(live_->scene());
-    timeLabel_->setStyleSheet(QStringLiteral("color: #e04040; font-weight: bold"));
-    if (QWidget* box = findChild<QWidget*>(QStringLiteral("liveBox"))) box->setVisible(true);
-    stopListening_->setEnabled(true);
-    play();
-  }
+  startLiveSource();
+  if (QWidget* box = findChild<QWidget*>(QStringLiteral("liveBox"))) box->setVisible(true);
+  stopListening_->setEnabled(true);
   setWindowTitle(tr("Live - Lacrima Player"));
   QStringList urls;
   for (const auto& input : session_->inputs()) urls << input->url().toString();
@@ -697,18 +702,72 @@ void PlayerWindow::listen(const live::ListenUrl& url) {
   liveFrameArrived();
 }
 
-void PlayerWindow::stopListening() {
+// The source of streams and moods, when there is none yet: the scene as the panels show it,
+// the eye redness following the tears shed (neither has progress to follow), playing.
+void PlayerWindow::startLiveSource() {
+  if (live_) return;
+  pause();
+  live_ = std::make_unique<playback::LiveSource>(*rig_);
+  live_->setSimulationThreads(simulationThreads_);
+  SceneSettings scene = live_->scene();
+  scene.simulation = parameters_->values();
+  effects_->applyTo(scene);
+  scene.redness = SceneSettings::Redness::Tears;
+  if (tearQuality_) scene.quality.level = *tearQuality_;
+  live_->setScene(scene);
+  live_->setTears(static_cast<float>(livePanel_->tearsLeft()),
+                  static_cast<float>(livePanel_->tearsRight()));
+  live_->setMoodSeed(moodPanel_->seed());
+  source_ = live_.get();
+  effects_->display(live_->scene());
+  timeLabel_->setStyleSheet(QStringLiteral("color: #e04040; font-weight: bold"));
+  play();
+}
+
+void PlayerWindow::stopLiveSource() {
   if (!live_) return;
   pause();
-  session_->stopListening();
   source_ = playback_.get();
   live_.reset();
-  stopListening_->setEnabled(false);
-  if (QWidget* box = findChild<QWidget*>(QStringLiteral("liveBox"))) box->setVisible(false);
   effects_->display(playback_->scene());
   display(playback_->view());
   updateTransport();
-  statusBar()->showMessage(tr("Stopped listening"), 4000);
+}
+
+void PlayerWindow::stopListening() {
+  if (!live_) return;
+  const bool wasListening = session_->listening();
+  session_->stopListening();
+  stopLiveSource();
+  stopListening_->setEnabled(false);
+  if (QWidget* box = findChild<QWidget*>(QStringLiteral("liveBox"))) box->setVisible(false);
+  if (wasListening) statusBar()->showMessage(tr("Stopped listening"), 4000);
+}
+
+void PlayerWindow::playMoods(const MoodLevels& levels) {
+  const bool starting = !live_;
+  startLiveSource();
+  if (!live_->moodDriven()) {
+    // The generator's blush is a colour of its own: show it (the Effects box can hide it).
+    SceneSettings scene = live_->scene();
+    scene.blush = true;
+    live_->setScene(scene);
+    effects_->display(scene);
+  }
+  live_->setMoods(levels);
+  moodPanel_->display(live_->moods(), live_->moodSeed());
+  if (starting) setWindowTitle(tr("Moods - Lacrima Player"));
+  statusBar()->showMessage(tr("Crying generator: %1, seed %2")
+                               .arg(QString::fromStdString(toString(live_->moods())))
+                               .arg(live_->moodSeed()),
+                           4000);
+  if (!playing()) play();
+  updateTransport();
+}
+
+void PlayerWindow::setMoodSeed(std::uint64_t seed) {
+  if (live_) live_->setMoodSeed(seed);
+  moodPanel_->display(live_ ? live_->moods() : moodPanel_->levels(), seed);
 }
 
 void PlayerWindow::chooseStream() {

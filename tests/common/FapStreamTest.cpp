@@ -130,6 +130,72 @@ class FapStreamTest : public QObject {
     QCOMPARE(stream.counters().malformed, 0LL);
   }
 
+  // A mood line (docs/live.md) sets the generator's moods between frames; the frames go on.
+  void moodLinesGoToTheirOwnHandler() {
+    FapTextStream stream("fap+tcp://127.0.0.1:5555");
+    std::vector<MoodLevels> moods;
+    int frames = 0;
+    const auto feed = [&](std::string_view bytes) {
+      stream.feed(
+          bytes, [&](const FapTextFrame&) { ++frames; },
+          [&](const MoodLevels& levels) { moods.push_back(levels); });
+    };
+    feed("mood sadness=0.8 anger=0.25\n" + mask({3}) + "\n0 5\n  mood\nmood joy=1\n");
+    QCOMPARE(frames, 1);
+    QCOMPARE(int(moods.size()), 3);
+    QCOMPARE(moods[0][Mood::Sadness], 0.8);
+    QCOMPARE(moods[0][Mood::Anger], 0.25);
+    QCOMPARE(moods[0][Mood::Joy], 0.0);  // not named: 0
+    QVERIFY(moods[1] == MoodLevels{});   // `mood` alone: neutral
+    QCOMPARE(moods[2][Mood::Joy], 1.0);
+    QCOMPARE(moods[2][Mood::Sadness], 0.0);
+    QCOMPARE(stream.counters().moods, 3LL);
+    QCOMPARE(stream.counters().malformed, 0LL);
+
+    // Bad ones are counted with their place and what was expected; the stream goes on.
+    const std::pair<const char*, const char*> bad[] = {
+        {"mood sadness=1.5", ":6:6: sadness: expected an intensity from 0 to 1, got '1.5'"},
+        {"mood grief=0.5", ":7:6: unknown mood 'grief'; expected sadness, anger, joy or shame"},
+        {"mood joy=0.2 joy=0.3", ":8:14: mood 'joy' is named twice"},
+        {"mood sadness=0.8,anger=0.2", ":9:17: expected blanks between moods"},
+        {"mood sadness", ":10:6: expected mood=intensity"},
+        {"mood sadness=nan", ":11:6: sadness: expected an intensity from 0 to 1, got 'nan'"},
+    };
+    for (const auto& [line, expected] : bad) {
+      feed(std::string(line) + "\n");
+      QVERIFY2(stream.lastProblem().find(expected) != std::string::npos,
+               stream.lastProblem().c_str());
+    }
+    QCOMPARE(stream.counters().malformed, 6LL);
+    QCOMPARE(int(moods.size()), 3);
+    feed("mood shame=0.5\n");
+    QCOMPARE(moods.back()[Mood::Shame], 0.5);
+
+    // A file holds frames only.
+    try {
+      FapReader::parse("2.1 a 22 1\nmood sadness=1\n" + mask({3}) + "\n0 1\n", "take.fap");
+      QFAIL("expected an error");
+    } catch (const FileError& e) {
+      QVERIFY2(std::string(e.what()).starts_with("take.fap:2:1: a mood line is a live stream's"),
+               e.what());
+    }
+
+    // One mood line per datagram.
+    const FapDatagram d = decodeFapDatagram("mood anger=0.7\n", "udp");
+    QVERIFY(d.mood);
+    QCOMPARE((*d.mood)[Mood::Anger], 0.7);
+    QVERIFY(!decodeFapDatagram(mask({19}) + "\n0 1", "udp").mood);
+    for (const std::string& twice :
+         {std::string("mood joy=1\nmood joy=0\n"), "mood joy=1\n" + mask({19}) + "\n0 1\n"}) {
+      try {
+        decodeFapDatagram(twice, "udp");
+        QFAIL("expected an error");
+      } catch (const FileError& e) {
+        QVERIFY2(std::string(e.what()).find("one mood line") != std::string::npos, e.what());
+      }
+    }
+  }
+
   void datagramHoldsOneFrame() {
     const FapDatagram d =
         decodeFapDatagram("2.1 greta 25 0\n" + mask({19, 69}, 70) + "\n3 80 12\n", "udp");

@@ -96,6 +96,30 @@ class MoodGeneratorTest : public QObject {
     QCOMPARE(generator.sobs().cyclesStarted(), 0);  // joy does not sob
   }
 
+  // Tears of joy still smile: once the crying form has taken over, the lip corners are no lower
+  // than before the tears (the smile must not flatten into a neutral mouth), and the cheeks
+  // rise higher.
+  void tearsOfJoyStillSmile() {
+    const MoodTake take = constantTake(only(Mood::Joy, 0.9), 30, 3);
+    const auto mean = [&](std::initializer_list<int> faps, double from, double to) {
+      FapAnimation part;
+      part.fps = take.animation.fps;
+      for (int i = 0; i < take.animation.frameCount(); ++i)
+        if (i / kFps >= from && i / kFps < to)
+          part.frames.push_back(take.animation.frames[static_cast<std::size_t>(i)]);
+      return channelMean(part, faps, 0);
+    };
+    QVERIFY(value(take, 25, kTearLeftFap) > 20);  // crying by then
+    const double smileBefore = mean({12, 13, 59, 60}, 2, 5);
+    const double smileCrying = mean({12, 13, 59, 60}, 20, 30);
+    qInfo("lip corners %.1f before the tears, %.1f with them", smileBefore, smileCrying);
+    QVERIFY2(smileCrying >= smileBefore,
+             qPrintable(QString("corners %1 before the tears, %2 with them")
+                            .arg(smileBefore)
+                            .arg(smileCrying)));
+    QVERIFY(mean({41, 42}, 20, 30) > mean({41, 42}, 2, 5));
+  }
+
   void noSobsForAngerOrJoyAtLowIntensity() {
     for (Mood mood : {Mood::Anger, Mood::Joy}) {
       MoodGenerator generator(5);

@@ -1,7 +1,9 @@
 // Record live in the editor, offscreen: a Greta-style agent streams over TCP while the editor
 // counts in and records from the playhead; the preview poses the stream meanwhile; Stop writes
 // keys on the chosen channels, reduced, as one undo step that undo takes back. And
-// planLiveTakeKeys alone: reduction within the tolerance, other channels and keys kept.
+// planLiveTakeKeys alone: reduction within the tolerance, other channels and keys kept. And
+// Animation > Generate crying, the other take that becomes keys: its dialog over the selected
+// keys' span writes the crying generator's take as one undo step.
 #include "../live/LiveTestSupport.h"
 
 #include <lacrima/common/FapTable.h>
@@ -9,7 +11,14 @@
 #include <lacrima/editing/LiveTake.h>
 #include <lacrima/editor/LiveRecording.h>
 #include <lacrima/editor/MainWindow.h>
+#include <lacrima/editor/MoodGenerationDialog.h>
 
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
 #include <QTcpSocket>
 #include <QTemporaryDir>
 #include <QUndoStack>
@@ -26,6 +35,16 @@ ChannelMask maskOf(std::initializer_list<const char*> names) {
   ChannelMask mask;
   for (const char* name : names) mask.set(static_cast<std::size_t>(channelIndex(fap(name))));
   return mask;
+}
+
+// A window with no preview, no dialogs and its recovery files in `recovery`.
+editor::EditorOptions quietOptions(const QTemporaryDir& recovery) {
+  editor::EditorOptions options;
+  options.preview = false;
+  options.interactive = false;
+  options.offerRecovery = false;
+  options.recoveryDirectory = recovery.path();
+  return options;
 }
 
 }  // namespace
@@ -77,12 +96,7 @@ class LiveRecordTest : public QObject {
 
   void windowRecordsAStreamAsOneUndoStep() {
     QTemporaryDir recovery;
-    editor::EditorOptions options;
-    options.preview = false;
-    options.interactive = false;
-    options.offerRecovery = false;
-    options.recoveryDirectory = recovery.path();
-    editor::MainWindow window(options);
+    editor::MainWindow window(quietOptions(recovery));
     editing::EditorModel& model = window.model();
     model.setCurrentTime(1.0);
     QVERIFY(window.action("play.recordLive"));
@@ -119,6 +133,55 @@ class LiveRecordTest : public QObject {
     for (const Keyframe& k : keys.keys()) QVERIFY(!k.has(19));  // not chosen
     model.undoStack()->undo();
     QVERIFY(model.document().keys.empty());
+  }
+
+  // Animation > Generate crying over two selected keys: the range is theirs, the take lands
+  // as keys between them in one undo step (the brows of sadness raised), a bad range is said
+  // in the dialog and changes nothing, undo takes the take back.
+  void generateCryingDialogWritesOneUndoStep() {
+    QTemporaryDir recovery;
+    editor::MainWindow window(quietOptions(recovery));
+    editing::EditorModel& model = window.model();
+    for (double t : {2.0, 6.0, 9.0}) {
+      model.setCurrentTime(t);
+      model.setChannel(fap("open_jaw"), 100 * t);
+    }
+    model.setSelectedTimes({2.0, 6.0});
+    const int undoBefore = model.undoStack()->count();
+    QVERIFY(window.action("anim.generateCrying"));
+    editor::MoodGenerationDialog* dialog = window.openGenerateCrying();
+    QCOMPARE(dialog->start()->value(), 2.0);
+    QCOMPARE(dialog->end()->value(), 6.0);
+    QPushButton* generate = dialog->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok);
+
+    dialog->end()->setValue(1.0);  // before the start: said, nothing done
+    generate->click();
+    QVERIFY(dialog->isVisible());
+    QVERIFY(dialog->findChild<QLabel*>("problem")->text().contains("To: expected a time after"));
+    QCOMPARE(model.undoStack()->count(), undoBefore);
+
+    dialog->end()->setValue(6.0);
+    dialog->presets()->setCurrentIndex(2);  // Sad crying
+    emit dialog->presets()->activated(2);
+    QCOMPARE(dialog->level(Mood::Sadness)->value(), moodPresets()[1].levels[Mood::Sadness]);
+    dialog->seed()->setText("5");
+    generate->click();
+    QCOMPARE(model.undoStack()->count(), undoBefore + 1);  // one step
+    const KeyframeSequence& keys = model.document().keys;
+    double brows = 0;
+    int inside = 0;
+    for (const Keyframe& k : keys.keys()) {
+      if (k.time < 2.0 - 1e-9 || k.time > 6.0 + 1e-9) continue;
+      ++inside;
+      if (k.time > 3.5 && k.has(fap("raise_l_i_eyebrow")))
+        brows = std::max(brows, double(k.value(fap("raise_l_i_eyebrow"))));
+    }
+    QVERIFY2(inside > 4, qPrintable(QString::number(inside)));
+    QVERIFY2(brows > 100, qPrintable(QString::number(brows)));
+    QCOMPARE(keys.keys().back().time, 9.0);  // outside the range: kept
+    QCOMPARE(keys.keys().back().value(fap("open_jaw")), 900.0F);
+    model.undoStack()->undo();
+    QCOMPARE(int(model.document().keys.keys().size()), 3);
   }
 };
 

@@ -8,7 +8,9 @@
 
 #include <QElapsedTimer>
 #include <QFileInfo>
+#include <QNetworkDatagram>
 #include <QProcess>
+#include <QTcpServer>
 #include <QTcpSocket>
 #include <QTemporaryDir>
 #include <QUdpSocket>
@@ -148,6 +150,39 @@ class LiveCliTest : public QObject {
         !QFileInfo::exists(out + QStringLiteral("/frame_%1.png").arg(frames, 4, 10, QChar('0'))));
   }
 
+  // `lacrima-send --mood` sends the mood line of docs/live.md, every mood named, over TCP and
+  // as one datagram; a listening player reads it with the stream parser (test_live_inputs).
+  void lacrimaSendSendsAMoodLine() {
+    QTcpServer server;
+    QVERIFY(server.listen(QHostAddress::LocalHost));
+    QProcess send;
+    send.start(kBin + "/lacrima-send",
+               {"--mood", "sadness=0.8,shame=0.25", "--to",
+                QStringLiteral("fap+tcp://127.0.0.1:%1").arg(server.serverPort())});
+    QVERIFY(waitFor([&] { return server.hasPendingConnections(); }, 30000));
+    QTcpSocket* peer = server.nextPendingConnection();
+    QByteArray got;
+    QVERIFY(waitFor(
+        [&] {
+          got += peer->readAll();
+          return got.endsWith('\n');
+        },
+        30000));
+    QCOMPARE(got, QByteArray("mood sadness=0.8 anger=0 joy=0 shame=0.25\n"));
+    QVERIFY(send.waitForFinished(10000));
+    QCOMPARE(send.exitCode(), 0);
+
+    QUdpSocket udp;
+    QVERIFY(udp.bind(QHostAddress::LocalHost, 0));
+    send.start(
+        kBin + "/lacrima-send",
+        {"--mood", "joy=1", "--to", QStringLiteral("fap+udp://127.0.0.1:%1").arg(udp.localPort())});
+    QVERIFY(send.waitForFinished(10000));
+    QCOMPARE(send.exitCode(), 0);
+    QVERIFY(waitFor([&] { return udp.hasPendingDatagrams(); }, 10000));
+    QCOMPARE(udp.receiveDatagram().data(), QByteArray("mood sadness=0 anger=0 joy=1 shame=0\n"));
+  }
+
   void usageErrors() {
     QProcess player;
     player.start(kBin + "/lacrima-player", {"--no-window", "--listen", "tcp://x:1"});
@@ -158,6 +193,27 @@ class LiveCliTest : public QObject {
     send.start(kBin + "/lacrima-send", {"x.fap", "--to", "livelink+udp://:11111"});
     QVERIFY(send.waitForFinished(10000));
     QCOMPARE(send.exitCode(), 2);
+
+    // Moods: a bad intensity or mood, --seed alone, --mood with a FILE or a render.
+    const std::pair<QStringList, const char*> bad[] = {
+        {{"--mood", "sadness=1.2"}, "--mood: sadness: expected an intensity from 0 to 1"},
+        {{"--mood", "grief=1"}, "--mood: unknown mood 'grief'"},
+        {{"--seed", "4"}, "--seed goes with --mood"},
+        {{"--mood", "joy=1", "--seed", "x3"}, "--seed: expected a whole number"},
+        {{"--mood", "joy=1", "take.fap"}, "--mood plays the crying generator with no FILE"},
+        {{"--mood", "joy=1", "--render", "out"}, "for --render write a take first"},
+    };
+    for (const auto& [arguments, expected] : bad) {
+      player.start(kBin + "/lacrima-player", arguments);
+      QVERIFY(player.waitForFinished(10000));
+      QCOMPARE(player.exitCode(), 2);
+      const QByteArray error = player.readAllStandardError();
+      QVERIFY2(error.contains(expected), error.constData());
+    }
+    send.start(kBin + "/lacrima-send", {"--mood", "sadness=x", "--to", "fap+tcp://127.0.0.1:9"});
+    QVERIFY(send.waitForFinished(10000));
+    QCOMPARE(send.exitCode(), 2);
+    QVERIFY(send.readAllStandardError().contains("--mood: sadness: expected an intensity"));
   }
 };
 

@@ -122,6 +122,42 @@ class LiveInputsTest : public QObject {
     QVERIFY(recorded.animation.animated.test(channelIndex(49)));
   }
 
+  // An agent sends moods instead of frames (docs/live.md), over TCP between frames and over UDP
+  // one line per datagram: they reach the mood handler in order, are counted, and are not
+  // frames; a bad one is counted with its place.
+  void moodLinesReachTheMoodHandler() {
+    LiveSession session;
+    std::vector<LiveMood> moods;
+    int frames = 0;
+    session.setFrameHandler([&](const LiveFrame&) { ++frames; });
+    session.setMoodHandler([&](const LiveMood& m) { moods.push_back(m); });
+    const quint16 tcpPort = session.listen(anyPort(StreamKind::FapTcp)).url().port;
+    const quint16 udpPort = session.listen(anyPort(StreamKind::FapUdp)).url().port;
+
+    QTcpSocket agent;
+    agent.connectToHost(QHostAddress::LocalHost, tcpPort);
+    QVERIFY(agent.waitForConnected(3000));
+    agent.write("mood sadness=0.8 anger=0.2\n" + gretaFrame(0, {{3, 40}}) +
+                "mood sadness=2\nmood joy=0.5\n");
+    agent.flush();
+    QVERIFY(waitFor([&] { return moods.size() == 2 && frames == 1; }, 30000));
+    QCOMPARE(moods[0].levels[Mood::Sadness], 0.8);
+    QCOMPARE(moods[0].levels[Mood::Anger], 0.2);
+    QCOMPARE(moods[1].levels[Mood::Joy], 0.5);
+    QCOMPARE(moods[1].levels[Mood::Sadness], 0.0);
+    QVERIFY(waitFor([&] { return session.totals().malformed == 1; }, 30000));
+    QVERIFY2(session.statusText().contains(":4:6: sadness: expected an intensity from 0 to 1"),
+             qPrintable(session.statusText()));
+    QVERIFY2(session.statusText().contains("2 mood lines"), qPrintable(session.statusText()));
+
+    QUdpSocket udp;
+    udp.writeDatagram(QByteArray("mood shame=0.4\n"), QHostAddress::LocalHost, udpPort);
+    QVERIFY(waitFor([&] { return moods.size() == 3; }, 30000));
+    QCOMPARE(moods[2].levels[Mood::Shame], 0.4);
+    QCOMPARE(session.totals().moods, 3LL);
+    QCOMPARE(session.totals().frames, 1LL);
+  }
+
   // A phone sends Live Link Face packets; the shipped mapping turns them into FAPs.
   void liveLinkPacketsOverUdpBecomeFaps() {
     LiveSession session;

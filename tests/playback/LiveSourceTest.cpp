@@ -1,7 +1,10 @@
 // LiveSource: a stream on the default head. The newest frame wins (the others are counted as
 // dropped), the face follows it, the tears run at the display's pace between frames and after
-// the stream stops, and streams without tear channels weep what the player sets.
+// the stream stops, and streams without tear channels weep what the player sets. Moods drive
+// the face through the crying generator, easing in, with no tears simulated before its onset.
 #include "PlaybackTestSupport.h"
+
+#include <lacrima/common/mood/MoodGenerator.h>
 
 #include <lacrima/playback/LiveSource.h>
 
@@ -79,6 +82,76 @@ class LiveSourceTest : public QObject {
 
     live.reset();
     QCOMPARE(live.producer().particleCount(), 0);
+  }
+
+  // The crying generator on the display's clock: a change of moods eases in (no jump), no tear
+  // is simulated while it makes no tear channel, its tears come after the onset, its colours
+  // replace the computed ones, and a frame takes the face back until the next moods.
+  void moodsDriveTheFaceLive() {
+    LiveSource live(*rig_);
+    QVERIFY(!live.moodDriven());
+    live.setMoods(MoodLevels{});
+    QVERIFY(live.moodDriven());
+    const auto brow = static_cast<std::size_t>(channelIndex(31));  // raise_l_i_eyebrow
+    const auto tear = static_cast<std::size_t>(channelIndex(kTearLeftFap));
+    double t = 0;
+    const double step = 1.0 / 30;
+    for (; t < 1.0; t += step) live.seek(t);
+    const float neutral = live.shownValues()[brow];
+    live.setMoods(MoodLevels{{0.8, 0, 0, 0}});
+    QCOMPARE(live.moods()[Mood::Sadness], 0.8);
+    live.seek(t += step);
+    const float first = live.shownValues()[brow];
+    double later = 0;
+    int n = 0;
+    for (; t < 2.5; t += step, ++n) {
+      live.seek(t);
+      later += live.shownValues()[brow];
+      QCOMPARE(live.shownValues()[tear], 0.0F);  // before the onset: no tear channel
+    }
+    later /= n;
+    QVERIFY2(later > neutral + 40, qPrintable(QString("brow %1 -> %2").arg(neutral).arg(later)));
+    QVERIFY2(std::abs(first - neutral) < 0.2 * (later - neutral),
+             qPrintable(QString("jumped %1 of %2").arg(first - neutral).arg(later - neutral)));
+    QCOMPARE(live.producer().counters().simulationSteps, 0LL);  // nothing asked for tears
+    QVERIFY(!live.hasTears());
+    for (; t < 6 && live.shownValues()[tear] < 1; t += step) live.seek(t);
+    QVERIFY2(live.shownValues()[tear] >= 1, "the generator's tears never came");
+    for (int i = 0; i < 5; ++i) live.seek(t += step);
+    QVERIFY(live.producer().particleCount() > 0);
+    QVERIFY(live.hasTears());
+    QVERIFY(live.view().overlays.redness > 0);  // the generator's redness, after the tears
+
+    // A frame takes the face back; the next moods take it again.
+    FapValues jaw{};
+    channel(jaw, "open_jaw") = 300;
+    live.push(jaw, maskOf({"open_jaw"}), t);
+    live.seek(t += step);
+    QVERIFY(!live.moodDriven());
+    QCOMPARE(live.shownValues()[channelIndex(3)], 300.0F);
+    live.setMoods(MoodLevels{{0.8, 0, 0, 0}});
+    live.seek(t += step);
+    QVERIFY(live.moodDriven());
+    QVERIFY(live.shownValues()[channelIndex(3)] != 300.0F);
+  }
+
+  // The same seed gives the same take at the same display times; another seed another one.
+  void moodSeedChoosesTheTake() {
+    const auto take = [this](std::uint64_t seed) -> std::vector<FapValues> {
+      LiveSource live(*rig_);
+      live.setMoodSeed(seed);
+      live.setMoods(MoodLevels{{0, 0.5, 0, 0.6}});
+      std::vector<FapValues> frames;
+      for (double t = 0; t < 2; t += 1.0 / 30) {
+        live.seek(t);
+        frames.push_back(live.shownValues());
+      }
+      if (live.moodSeed() != seed) return {};
+      return frames;
+    };
+    QVERIFY(!take(7).empty());
+    QVERIFY(take(7) == take(7));
+    QVERIFY(take(7) != take(8));
   }
 };
 

@@ -1,7 +1,7 @@
 // The real main window of lacrima-player under xvfb-run, driven through QTest: the demo loaded
 // through the Open action's path, Play until frames advance, Reset to a neutral face with no
 // tears; a bad file gives an error dialog and keeps the animation; drops open files; toggles
-// and parameters reach the playback.
+// and parameters reach the playback; the Mood box drives the crying generator live.
 #include "../live/LiveTestSupport.h"
 #include "../support/MalformedFiles.h"
 #include "../support/MissingData.h"
@@ -10,6 +10,7 @@
 #include <lacrima/live/LiveSession.h>
 #include <lacrima/player/LiveMappingDialog.h>
 #include <lacrima/player/LivePanel.h>
+#include <lacrima/player/MoodPanel.h>
 #include <lacrima/player/PlayerWindow.h>
 #include <lacrima/player/TearParametersPanel.h>
 #include <lacrima/viewport/EffectsPanel.h>
@@ -24,6 +25,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QPushButton>
@@ -346,6 +348,54 @@ class PlayerWindowTest : public QObject {
     QVERIFY(!window_->isLive());
     QVERIFY(window_->timeline().isEnabled());
     QVERIFY(!window_->liveSession().listening());
+  }
+
+  // The Mood box: a slider makes the face cry live with no file (the file's transport gives
+  // way), the seed field picks the take, a preset sets the moods; a mood line from a stream
+  // moves the sliders; opening a file ends it.
+  void moodPanelDrivesTheGenerator() {
+    QVERIFY(window_->openFile(kDemo));
+    MoodPanel& panel = window_->moodPanel();
+    QVERIFY(!window_->moodDriven());
+    panel.slider(Mood::Sadness)->setValue(80);  // as a drag would
+    QVERIFY(window_->moodDriven());
+    QVERIFY(window_->playing());
+    QCOMPARE(window_->liveSource()->moods()[Mood::Sadness], 0.8);
+    QVERIFY(!window_->timeline().isEnabled());
+    QVERIFY(window_->source().producer().scene().blush);
+    const auto brow = static_cast<std::size_t>(channelIndex(31));
+    QTRY_VERIFY_WITH_TIMEOUT(window_->liveSource()->shownValues()[brow] > 100, 20000);
+    QCOMPARE(window_->liveSource()->producer().counters().simulationSteps, 0LL);  // no tears yet
+
+    panel.seedField()->setText("42");
+    emit panel.seedField()->editingFinished();
+    QCOMPARE(window_->liveSource()->moodSeed(), std::uint64_t(42));
+    QTest::mouseClick(panel.randomise(), Qt::LeftButton);
+    QCOMPARE(window_->liveSource()->moodSeed(), panel.seed());
+    QCOMPARE(panel.seedField()->text(), QString::number(panel.seed()));
+    panel.presets()->setCurrentIndex(3);  // Angry crying
+    emit panel.presets()->activated(3);
+    QCOMPARE(window_->liveSource()->moods()[Mood::Anger], moodPresets()[2].levels[Mood::Anger]);
+    QCOMPARE(panel.slider(Mood::Anger)->value(),
+             int(std::lround(moodPresets()[2].levels[Mood::Anger] * 100)));
+
+    // A mood line on a stream: the generator follows it, the sliders show it.
+    live::ListenUrl url;
+    window_->listen(url);
+    QTcpSocket agent;
+    agent.connectToHost(QHostAddress::LocalHost,
+                        window_->liveSession().inputs().front()->url().port);
+    QVERIFY(agent.waitForConnected(3000));
+    agent.write("mood joy=0.9\n");
+    QTRY_COMPARE_WITH_TIMEOUT(panel.slider(Mood::Joy)->value(), 90, 20000);
+    QCOMPARE(panel.slider(Mood::Anger)->value(), 0);
+    QCOMPARE(window_->liveSource()->moods()[Mood::Joy], 0.9);
+    QVERIFY(window_->moodDriven());
+
+    QVERIFY(window_->openFile(kDemo));
+    QVERIFY(!window_->isLive());
+    QVERIFY(!window_->moodDriven());
+    QVERIFY(window_->timeline().isEnabled());
   }
 };
 

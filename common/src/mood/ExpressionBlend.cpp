@@ -87,25 +87,29 @@ const Pose kJoy{{"open_jaw", 110},
                 {"close_b_r_eyelid", 120},
                 {"raise_l_m_eyebrow", 30},
                 {"raise_r_m_eyebrow", 30}};
+// The Tears of joy preset with the smile kept: the preset lowers the lip corners below Joy's, so
+// as the crying form took over the smile flattened and joy with tears read as neutral. Here the
+// corners stay at least as high as Joy's (judged on rendered frames, docs/mood.md) and the
+// preset's heavy upper lids are lighter (the raised cheeks already narrow the eyes).
 const Pose kTearsOfJoy{{"open_jaw", 160},
                        {"lower_t_midlip", -60},
                        {"raise_b_midlip", -70},
-                       {"stretch_l_cornerlip", 140},
-                       {"stretch_r_cornerlip", 140},
-                       {"raise_l_cornerlip", 150},
-                       {"raise_r_cornerlip", 150},
-                       {"stretch_l_cornerlip_o", 150},
-                       {"stretch_r_cornerlip_o", 150},
-                       {"raise_l_cornerlip_o", 170},
-                       {"raise_r_cornerlip_o", 170},
+                       {"stretch_l_cornerlip", 160},
+                       {"stretch_r_cornerlip", 160},
+                       {"raise_l_cornerlip", 220},
+                       {"raise_r_cornerlip", 220},
+                       {"stretch_l_cornerlip_o", 170},
+                       {"stretch_r_cornerlip_o", 170},
+                       {"raise_l_cornerlip_o", 240},
+                       {"raise_r_cornerlip_o", 240},
                        {"lift_l_cheek", 260},
                        {"lift_r_cheek", 260},
-                       {"close_t_l_eyelid", 200},
-                       {"close_t_r_eyelid", 200},
+                       {"close_t_l_eyelid", 120},
+                       {"close_t_r_eyelid", 120},
                        {"close_b_l_eyelid", 220},
                        {"close_b_r_eyelid", 220},
-                       {"raise_l_i_eyebrow", 60},
-                       {"raise_r_i_eyebrow", 60}};
+                       {"raise_l_i_eyebrow", 40},
+                       {"raise_r_i_eyebrow", 40}};
 // Judged (no preset): the head bowed and turned aside, heavier lids (GazeModel lowers the eyes),
 // inner brows a little up, lips pressed, chin raised.
 const Pose kShame{{"head_pitch", 12000},      {"head_yaw", 6000},        {"close_t_l_eyelid", 280},

@@ -54,6 +54,20 @@ MoodLevels parseMoodLevels(std::string_view text) {
   return levels;
 }
 
+const std::array<MoodPreset, kMoodPresetCount>& moodPresets() {
+  // Judged from the generator's own thresholds (docs/mood.md): welling needs a drive above 0.2
+  // and spills 5 s later; sobs deepen from sadness 0.3 to 0.9; anger sobs above 0.6; joy
+  // weeps above 0.6 and laughs above 0.4.
+  static const std::array<MoodPreset, kMoodPresetCount> presets{{
+      {"Tears welling", MoodLevels{{0.3, 0, 0, 0}}},
+      {"Sad crying", MoodLevels{{0.8, 0, 0, 0}}},
+      {"Angry crying", MoodLevels{{0.2, 0.9, 0, 0}}},
+      {"Tears of joy", MoodLevels{{0, 0, 0.95, 0}}},
+      {"Sobbing cycle", MoodLevels{{1, 0, 0, 0}}},
+  }};
+  return presets;
+}
+
 std::string toString(const MoodLevels& levels) {
   std::string out;
   for (Mood mood : kMoods) {

@@ -1,7 +1,9 @@
 // lacrima-send: streams a .fap file or a Lacrima project to a live input in real time, in the
 // FAP text formats the player listens to (docs/live.md): over TCP the file's own text (its
 // header, then a mask line and a value line per frame), over UDP one frame per datagram (with
-// the header line, so every datagram names the rate). Exit codes as the other tools: 0 success,
+// the header line, so every datagram names the rate). With --mood it sends one mood line instead
+// (`mood sadness=0.8 anger=0 joy=0 shame=0`): the player's crying generator then drives the
+// face. Exit codes as the other tools: 0 success,
 // 1 bad input or a failed connection, 2 wrong usage.
 #include <lacrima/common/CommandLineNumbers.h>
 #include <lacrima/common/Diagnostics.h>
@@ -9,6 +11,7 @@
 #include <lacrima/common/FapWriter.h>
 #include <lacrima/common/ProjectDocument.h>
 #include <lacrima/common/ProjectPath.h>
+#include <lacrima/common/mood/Moods.h>
 #include <lacrima/live/ListenUrl.h>
 
 #include <QCommandLineParser>
@@ -18,7 +21,9 @@
 #include <QThread>
 #include <QUdpSocket>
 
+#include <charconv>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -59,6 +64,46 @@ FramesText frameTexts(const FapAnimation& animation) {
   return out;
 }
 
+// The mood line of docs/live.md, every mood named (a line sets all four).
+std::string moodLine(const MoodLevels& levels) {
+  std::string line = "mood";
+  for (Mood mood : kMoods) {
+    char number[32];
+    const auto [end, ec] = std::to_chars(number, number + sizeof number, levels[mood]);
+    line += ' ' + std::string(moodName(mood)) + '=' + std::string(number, end);
+  }
+  return line + '\n';
+}
+
+// Sends `line` once; false after saying why it could not.
+bool sendLine(const live::ListenUrl& url, const std::string& line) {
+  if (url.kind == live::StreamKind::FapUdp) {
+    QUdpSocket udp;
+    if (udp.writeDatagram(line.data(), static_cast<qint64>(line.size()), url.host, url.port) < 0) {
+      std::fprintf(stderr, "lacrima-send: %s: %s\n", qPrintable(url.toString()),
+                   qPrintable(udp.errorString()));
+      return false;
+    }
+    return true;
+  }
+  QTcpSocket tcp;
+  tcp.connectToHost(url.host, url.port);
+  if (!tcp.waitForConnected(5000)) {
+    std::fprintf(stderr, "lacrima-send: %s: cannot connect: %s\n", qPrintable(url.toString()),
+                 qPrintable(tcp.errorString()));
+    return false;
+  }
+  tcp.write(line.data(), static_cast<qint64>(line.size()));
+  if (!tcp.waitForBytesWritten(5000) && tcp.bytesToWrite() > 0) {
+    std::fprintf(stderr, "lacrima-send: %s: %s\n", qPrintable(url.toString()),
+                 qPrintable(tcp.errorString()));
+    return false;
+  }
+  tcp.disconnectFromHost();
+  if (tcp.state() != QAbstractSocket::UnconnectedState) tcp.waitForDisconnected(2000);
+  return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -73,20 +118,41 @@ int main(int argc, char** argv) {
       "  lacrima-send media/demo/crying.fap --to fap+tcp://127.0.0.1:5555\n\n"
       "fap+tcp sends the FAP text (header, then a mask line and a value line per frame);\n"
       "fap+udp sends one frame per datagram, each with the header line.\n\n"
+      "Or set the player's crying generator with a mood line (docs/live.md):\n\n"
+      "  lacrima-send --mood sadness=0.8,anger=0.2 --to fap+tcp://127.0.0.1:5555\n\n"
       "Exit codes: 0 success, 1 bad input or failed connection, 2 wrong usage.");
   parser.addHelpOption();
   parser.addVersionOption();
-  parser.addPositionalArgument("FILE", "A .fap file or a project (.lacrima or .json).");
+  parser.addPositionalArgument("FILE", "A .fap file or a project (.lacrima or .json).", "[FILE]");
   parser.addOptions({
       {"to", "Where to send: fap+tcp://HOST:PORT or fap+udp://HOST:PORT.", "URL"},
       {"rate", "Frames per second (default: the file's).", "FPS"},
       {"loop", "Start again from the first frame at the end, until interrupted."},
+      {"mood",
+       "Send one mood line instead of a FILE: sadness, anger, joy, shame, each 0..1 (moods not "
+       "named are 0).",
+       "MOODS"},
   });
   parser.process(app);
   const QStringList files = parser.positionalArguments();
-  if (files.size() != 1 || !parser.isSet("to")) {
-    std::fprintf(stderr, "lacrima-send: give one FILE and --to URL (see --help)\n");
+  const bool mood = parser.isSet("mood");
+  if (files.size() != (mood ? 0 : 1) || !parser.isSet("to")) {
+    std::fprintf(stderr,
+                 "lacrima-send: give one FILE or --mood MOODS, and --to URL (see --help)\n");
     return kExitUsage;
+  }
+  if (mood && (parser.isSet("rate") || parser.isSet("loop"))) {
+    std::fprintf(stderr, "lacrima-send: --rate and --loop go with a FILE, not --mood\n");
+    return kExitUsage;
+  }
+  MoodLevels levels;
+  if (mood) {
+    try {
+      levels = parseMoodLevels(parser.value("mood").toStdString());
+    } catch (const std::invalid_argument& e) {
+      std::fprintf(stderr, "lacrima-send: --mood: %s\n", e.what());
+      return kExitUsage;
+    }
   }
   QString error;
   const std::optional<live::ListenUrl> url = live::parseListenUrl(parser.value("to"), error);
@@ -99,6 +165,13 @@ int main(int argc, char** argv) {
             .toLocal8Bit()
             .constData());
     return kExitUsage;
+  }
+  if (mood) {
+    const std::string line = moodLine(levels);
+    if (!sendLine(*url, line)) return kExitBadInput;
+    std::fprintf(stderr, "lacrima-send: sent '%.*s' to %s\n", static_cast<int>(line.size() - 1),
+                 line.data(), qPrintable(url->toString()));
+    return kExitOk;
   }
   FapAnimation animation;
   try {

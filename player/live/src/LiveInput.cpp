@@ -38,6 +38,7 @@ struct LiveInput::Private {
   LiveInput* self;
   ListenUrl url;
   FrameHandler onFrame;
+  MoodHandler onMood;
   InputCounters counters;
   QString lastProblem;
   LiveLinkMapping mapping;
@@ -73,6 +74,11 @@ struct LiveInput::Private {
     frame.arrival = liveClockSeconds();
     frame.frameRate = rate;
     if (onFrame) onFrame(frame);
+  }
+
+  void deliverMood(const MoodLevels& levels) {
+    ++counters.moods;
+    if (onMood) onMood(LiveMood{levels, liveClockSeconds()});
   }
 
   // --- TCP ---
@@ -116,10 +122,12 @@ struct LiveInput::Private {
       if (got <= 0) break;
       budget -= got;
       counters.bytes += got;
-      client.stream.feed(std::string_view(chunk, static_cast<std::size_t>(got)),
-                         [&](const FapTextFrame& frame) {
-                           deliver(frame.values, frame.mask, client.stream.frameRate());
-                         });
+      client.stream.feed(
+          std::string_view(chunk, static_cast<std::size_t>(got)),
+          [&](const FapTextFrame& frame) {
+            deliver(frame.values, frame.mask, client.stream.frameRate());
+          },
+          [&](const MoodLevels& levels) { deliverMood(levels); });
     }
     account(client);
     // More waiting: go on in the next turn, after the window has had its own.
@@ -181,7 +189,10 @@ struct LiveInput::Private {
                   rate > 0 ? std::optional<double>(rate) : std::nullopt);
         } else {
           const FapDatagram fap = decodeFapDatagram(bytes, name);
-          deliver(fap.frame.values, fap.frame.mask, fap.frameRate);
+          if (fap.mood)
+            deliverMood(*fap.mood);
+          else
+            deliver(fap.frame.values, fap.frame.mask, fap.frameRate);
         }
       } catch (const FileError& e) {
         ++counters.malformed;
@@ -237,6 +248,7 @@ const InputCounters& LiveInput::counters() const { return d_->counters; }
 const QString& LiveInput::lastProblem() const { return d_->lastProblem; }
 QStringList LiveInput::remotePeers() const { return d_->remote; }
 int LiveInput::connectedClients() const { return static_cast<int>(d_->clients.size()); }
+void LiveInput::setMoodHandler(MoodHandler onMood) { d_->onMood = std::move(onMood); }
 void LiveInput::setMapping(const LiveLinkMapping& mapping) { d_->mapping = mapping; }
 const LiveLinkMapping& LiveInput::mapping() const { return d_->mapping; }
 

@@ -16,6 +16,11 @@ LiveInput& LiveSession::listen(const ListenUrl& url) {
         emit frameArrived();
       },
       this);
+  input->setMoodHandler([this](const LiveMood& mood) {
+    lastActivity_ = mood.arrival;
+    if (moodHandler_) moodHandler_(mood);
+    emit frameArrived();
+  });
   if (mappingSet_ && url.kind == StreamKind::LiveLinkUdp) input->setMapping(mapping_);
   connect(input.get(), &LiveInput::countersChanged, this, &LiveSession::countersChanged);
   if (inputs_.empty()) lastActivity_ = liveClockSeconds();
@@ -47,6 +52,7 @@ InputCounters LiveSession::totals() const {
   for (const auto& input : inputs_) {
     const InputCounters& c = input->counters();
     sum.frames += c.frames;
+    sum.moods += c.moods;
     sum.malformed += c.malformed;
     sum.oversizedLines += c.oversizedLines;
     sum.truncated += c.truncated;
@@ -80,6 +86,7 @@ QString LiveSession::statusText() const {
     const auto add = [&](long long n, const QString& what) {
       if (n > 0) parts << QStringLiteral("%1 %2").arg(n).arg(what);
     };
+    add(c.moods, c.moods == 1 ? tr("mood line") : tr("mood lines"));
     add(c.malformed, tr("malformed"));
     add(c.oversizedLines, tr("over-long lines"));
     add(c.truncated, tr("cut off mid-frame"));

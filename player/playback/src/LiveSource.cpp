@@ -1,6 +1,8 @@
 // LiveSource (LiveSource.h): the newest frame wins; the tears step with the display's clock.
 #include <lacrima/playback/LiveSource.h>
 
+#include <lacrima/common/mood/MoodGenerator.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -33,8 +35,35 @@ struct LiveSource::State {
   double fps = 0;
   long long received = 0, dropped = 0, frames = 0;
   bool everTears = false;
+  // The crying generator, once moods were set; kept while frames drive the face.
+  std::unique_ptr<MoodGenerator> generator;
+  bool moodDriven = false, moodFresh = false;
+  MoodLevels moods;
+  std::uint64_t seed = 1;
+  double moodTime = 0;  // the generator's clock: the display's steps added up
 
   explicit State(const HeadRig& rig) : producer(rig, liveScene()) {}
+
+  // A new take that starts from a neutral face, so the first moods ease in rather than jump.
+  void startGenerator() {
+    generator = std::make_unique<MoodGenerator>(seed);
+    moodTime = 0;
+    generator->step(0, MoodLevels{});
+    moodFresh = true;
+  }
+
+  // One frame of the generator `dt` seconds on (0: the face again, nothing simulated).
+  const FrameView& generate(double dt) {
+    moodTime += dt;
+    const MoodFrame frame = generator->step(moodTime, moods);
+    shown = frame.channels;
+    if (shown[channelIndex(kTearLeftFap)] >= 1 || shown[channelIndex(kTearRightFap)] >= 1)
+      everTears = true;
+    producer.setKeyedColours({frame.colours.redness, frame.colours.blush});
+    moodFresh = false;
+    ++frames;
+    return dt > 0 ? producer.produce(shown, dt, 0) : producer.pose(shown);
+  }
 
   FapValues valuesToShow() const {
     FapValues values = newest;
@@ -58,6 +87,10 @@ void LiveSource::push(const FapValues& values, const ChannelMask& mask, double a
   s.newestArrival = arrival;
   s.fresh = true;
   ++s.received;
+  if (s.moodDriven) {
+    s.moodDriven = false;  // the newest message wins: frames again
+    s.producer.setKeyedColours({});
+  }
   if (mask.test(channelIndex(kTearLeftFap)) || mask.test(channelIndex(kTearRightFap)))
     s.everTears = true;
 }
@@ -70,6 +103,27 @@ void LiveSource::setTears(float left, float right) {
   state_->tears[1] = clean(right);
   if (state_->tears[0] > 0 || state_->tears[1] > 0) state_->everTears = true;
 }
+
+void LiveSource::setMoods(const MoodLevels& levels) {
+  State& s = *state_;
+  for (int m = 0; m < kMoodCount; ++m) {
+    const double level = levels.level[m];
+    s.moods.level[m] = std::isfinite(level) ? std::clamp(level, 0.0, 1.0) : 0.0;
+  }
+  if (!s.generator) s.startGenerator();
+  if (!s.moodDriven) s.moodFresh = true;
+  s.moodDriven = true;
+}
+
+void LiveSource::setMoodSeed(std::uint64_t seed) {
+  State& s = *state_;
+  s.seed = seed;
+  if (s.generator) s.startGenerator();
+}
+
+std::uint64_t LiveSource::moodSeed() const { return state_->seed; }
+const MoodLevels& LiveSource::moods() const { return state_->moods; }
+bool LiveSource::moodDriven() const { return state_->moodDriven; }
 
 float LiveSource::tearsLeft() const { return state_->tears[0]; }
 float LiveSource::tearsRight() const { return state_->tears[1]; }
@@ -86,6 +140,14 @@ const FrameView& LiveSource::seek(double seconds) {
     s.time = seconds;
   }
   const double dt = std::clamp(seconds - s.time, 0.0, kMaxStep);
+  if (s.moodDriven) {
+    s.shownArrival = -1;
+    if (dt >= kMinStep) {
+      s.time = seconds;
+      return s.generate(dt);
+    }
+    return s.moodFresh ? s.generate(0) : s.producer.view();
+  }
   const FapValues values = s.valuesToShow();
   s.shownArrival = s.fresh ? s.newestArrival : -1;
   const bool wasFresh = s.fresh;
@@ -131,7 +193,8 @@ void LiveSource::reset() {
   s.producer.reset();
   s.started = false;
   s.time = 0;
-  s.fresh = s.received > 0;  // show the newest frame again on the next seek
+  s.fresh = s.received > 0;             // show the newest frame again on the next seek
+  if (s.generator) s.startGenerator();  // and the generator's take from its start
 }
 
 const FrameProducer& LiveSource::producer() const { return state_->producer; }

@@ -7,8 +7,13 @@
 //
 // Frames come out in the order they are written, not placed by number: a file's reader places
 // and fills them (FapReader), a stream shows the newest.
+//
+// A stream may also carry mood lines (docs/live.md): `mood sadness=0.8 anger=0.2` sets the
+// crying generator's moods instead of sending every channel. Moods the line does not name are
+// 0; `mood` alone is neutral. A file holds frames only: there a mood line is an error.
 #include <lacrima/common/Diagnostics.h>
 #include <lacrima/common/FapAnimation.h>
+#include <lacrima/common/mood/Moods.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -50,15 +55,16 @@ class FapTextParser {
   // A file starts with its header; a stream may leave it out (and may send one again between
   // frames, to name its rate).
   enum class Header { Required, Optional };
-  enum class Event { None, Header, Frame };
+  enum class Event { None, Header, Frame, Mood };
 
   FapTextParser(std::string displayName, Header header);
 
   // One physical line without its '\n' (a CR stays: it is a blank), numbered `lineNumber`
   // (1-based; line 1 may start with a UTF-8 byte order mark). Returns Header when the line was
-  // a header (header()), Frame when it completed a frame (frame()), None for a blank, a comment
-  // or a mask line. Throws FileError for a malformed line; the parser then expects a mask line
-  // (or a header) again, so a stream goes on with the next frame.
+  // a header (header()), Frame when it completed a frame (frame()), Mood for a stream's mood
+  // line (mood()), None for a blank, a comment or a mask line. Throws FileError for a malformed
+  // line; the parser then expects a mask line (or a header) again, so a stream goes on with the
+  // next frame.
   Event feed(std::string_view line, int lineNumber);
 
   // Forgets a mask line still waiting for its value line (a datagram or connection that ended).
@@ -67,6 +73,7 @@ class FapTextParser {
   bool sawHeader() const { return sawHeader_; }
   const FapTextHeader& header() const { return header_; }
   const FapTextFrame& frame() const { return frame_; }
+  const MoodLevels& mood() const { return mood_; }
   // Line of a mask line still waiting for its value line; 0 when none is.
   int pendingMaskLine() const { return maskLine_; }
   // Warnings so far (an unknown version, a name with spaces), in line order.
@@ -86,6 +93,8 @@ class FapTextParser {
   bool startLine(std::string_view line, int lineNumber);
   void tokenizeOrFail();
   bool looksLikeMask() const;
+  bool isMoodLine() const;
+  void readMood();
   void readHeader();
   double headerNumber(std::size_t index, const char* expected);
   void readMask();
@@ -114,6 +123,7 @@ class FapTextParser {
   std::string maskText_;  // the last mask line parsed: files repeat it in every frame
   int maskLine_ = 0;      // a mask line waiting for its value line
   FapTextFrame frame_;
+  MoodLevels mood_;
   Warnings warnings_;
 };
 

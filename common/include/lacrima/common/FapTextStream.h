@@ -22,16 +22,19 @@ struct FapStreamCounters {
   long long malformed = 0;       // lines (or datagrams) refused by the parser
   long long oversizedLines = 0;  // lines longer than the limit, skipped
   long long truncated = 0;       // a stream that ended inside a line or after a mask line
+  long long moods = 0;           // mood lines read
 };
 
 class FapTextStream {
  public:
   using FrameHandler = std::function<void(const FapTextFrame&)>;
+  using MoodHandler = std::function<void(const MoodLevels&)>;
 
   explicit FapTextStream(std::string displayName);
 
-  // Appends bytes as they arrive; every frame they complete goes to `onFrame`, in order.
-  void feed(std::string_view bytes, const FrameHandler& onFrame);
+  // Appends bytes as they arrive; every frame they complete goes to `onFrame`, every mood line
+  // to `onMood` (when given), in order.
+  void feed(std::string_view bytes, const FrameHandler& onFrame, const MoodHandler& onMood = {});
   // The peer closed the stream: a partial line or a mask line without its value line is
   // counted as truncated. The stream can then start again (a new connection).
   void finish();
@@ -45,7 +48,7 @@ class FapTextStream {
   std::size_t bufferedBytes() const { return partial_.size(); }
 
  private:
-  void line(std::string_view text, const FrameHandler& onFrame);
+  void line(std::string_view text, const FrameHandler& onFrame, const MoodHandler& onMood);
 
   FapTextParser parser_;
   std::string partial_;    // the start of a line whose newline has not come yet
@@ -56,11 +59,12 @@ class FapTextStream {
 };
 
 // One datagram holding one frame: a mask line and its value line, optionally after a header
-// line (which names the rate). Throws FileError naming `displayName`, the line and what was
-// expected when it is not exactly that.
+// line (which names the rate); or one mood line. Throws FileError naming `displayName`, the line
+// and what was expected when it is not exactly that.
 struct FapDatagram {
-  FapTextFrame frame;
+  FapTextFrame frame;  // when there is no mood
   std::optional<double> frameRate;
+  std::optional<MoodLevels> mood;  // a mood line's moods, in place of a frame
 };
 FapDatagram decodeFapDatagram(std::string_view bytes, const std::string& displayName);
 

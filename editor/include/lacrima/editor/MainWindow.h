@@ -26,6 +26,7 @@ namespace lacrima::editing {
 class EditorModel;
 class FrameStepClock;
 class RecoveryStore;
+struct MoodGenerationRequest;
 }  // namespace lacrima::editing
 
 namespace lacrima::editor {
@@ -39,6 +40,7 @@ class KeyListPanel;
 class LayerPanel;
 class PresetPanel;
 class LiveRecording;
+class MoodGenerationDialog;
 class PreviewPanel;
 class RecoveryBanner;
 class SliderPanel;
@@ -91,6 +93,13 @@ class MainWindow : public QMainWindow {
   QAction* action(const QString& name) const;
   // Playback > Record live...: a stream turned into keys from the playhead (LiveRecording.h).
   LiveRecording& liveRecording();
+  // Animation > Generate crying...: opens a dialog (MoodGenerationDialog.h) whose Generate writes
+  // the take with generateCrying(). Its range starts as the span of the selected keys, else the
+  // whole take (10 s when there are no keys). Returns it (it closes itself), for tests.
+  MoodGenerationDialog* openGenerateCrying();
+  // A take of the crying generator as keys over the request's range, in one undo step; false
+  // (the reason in lastError() and the status bar) when the request is refused.
+  bool generateCrying(const editing::MoodGenerationRequest& request);
 
   // --- files (false on failure; the reason is in lastError()) ---------------------------
   void newDocument();

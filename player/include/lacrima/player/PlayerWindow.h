@@ -53,6 +53,7 @@ namespace lacrima::player {
 
 class LiveMappingDialog;
 class LivePanel;
+class MoodPanel;
 class TearParametersPanel;
 
 class PlayerWindow : public QMainWindow {
@@ -90,6 +91,17 @@ class PlayerWindow : public QMainWindow {
   void listen(const live::ListenUrl& url);
   void stopListening();
   bool isLive() const { return source_ == live_.get() && live_; }
+
+  // Moods (--mood, the Mood panel, a stream's mood line; docs/mood.md): the crying generator
+  // drives the face and the tears live, with no file. Starts it (on the live source, as a
+  // stream would, without listening) when it is not running; otherwise the new levels are
+  // targets the face eases toward. Opening a file stops it; a FAP frame from a stream takes
+  // the face back until the next mood line.
+  void playMoods(const MoodLevels& levels);
+  // Another take of the generator (the Mood panel's seed and Randomise, --seed).
+  void setMoodSeed(std::uint64_t seed);
+  bool moodDriven() const { return isLive() && live_->moodDriven(); }
+  MoodPanel& moodPanel() { return *moodPanel_; }
   live::LiveSession& liveSession() { return *session_; }
   playback::LiveSource* liveSource() { return live_.get(); }
   LivePanel& livePanel() { return *livePanel_; }
@@ -148,6 +160,8 @@ class PlayerWindow : public QMainWindow {
   void chooseStream();
   void editMapping();
   void liveFrameArrived();
+  void startLiveSource();
+  void stopLiveSource();
 
   std::unique_ptr<playback::HeadRig> rig_;
   scene::CameraPreset cameraPreset_ = scene::CameraPreset::Framing;
@@ -156,6 +170,7 @@ class PlayerWindow : public QMainWindow {
   playback::AnimationSource* source_;  // playback_ or live_
   live::LiveSession* session_;
   LivePanel* livePanel_;
+  MoodPanel* moodPanel_;
   LiveMappingDialog* mappingDialog_ = nullptr;
   std::optional<HeadFiles> head_;  // setHeadSource()
   bool headFixed_ = false;

@@ -34,4 +34,13 @@ MoodLevels parseMoodLevels(std::string_view text);
 // "sadness=0.8,anger=0.2" for the moods above 0 ("neutral" when none is).
 std::string toString(const MoodLevels& levels);
 
+// The crying presets of media/presets/presets.json as generator settings: the moods that cry
+// that way (docs/mood.md#presets). The fixed presets still load and apply as they always did.
+struct MoodPreset {
+  std::string_view name;  // the preset's name
+  MoodLevels levels;
+};
+inline constexpr int kMoodPresetCount = 5;
+const std::array<MoodPreset, kMoodPresetCount>& moodPresets();
+
 }  // namespace lacrima::inline common

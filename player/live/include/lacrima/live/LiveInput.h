@@ -11,6 +11,7 @@
 // datagrams beyond kMaxDatagramsPerSecond are read and dropped (counted as a flood).
 #include <lacrima/common/FapChannels.h>
 #include <lacrima/common/LiveLinkMapping.h>
+#include <lacrima/common/mood/Moods.h>
 #include <lacrima/live/ListenUrl.h>
 
 #include <QObject>
@@ -32,8 +33,15 @@ struct LiveFrame {
   std::optional<double> frameRate;  // the rate the stream names, when it names one
 };
 
+// A mood line of a FAP stream (docs/live.md): the crying generator's moods, in place of frames.
+struct LiveMood {
+  MoodLevels levels;
+  double arrival = 0;  // liveClockSeconds() when it was decoded
+};
+
 struct InputCounters {
   long long frames = 0;
+  long long moods = 0;           // mood lines read
   long long malformed = 0;       // lines or datagrams refused
   long long oversizedLines = 0;  // lines over the limit, skipped
   long long truncated = 0;       // connections that ended inside a frame
@@ -55,6 +63,7 @@ class LiveInput : public QObject {
   static constexpr double kMaxDatagramsPerSecond = 2000;
 
   using FrameHandler = std::function<void(const LiveFrame&)>;
+  using MoodHandler = std::function<void(const LiveMood&)>;
 
   // Binds now; throws std::runtime_error naming the URL and the system's reason when it cannot.
   LiveInput(const ListenUrl& url, FrameHandler onFrame, QObject* parent = nullptr);
@@ -68,6 +77,8 @@ class LiveInput : public QObject {
   // Peers from other machines that sent something (a loopback peer is not listed).
   QStringList remotePeers() const;
   int connectedClients() const;
+  // Where mood lines go (none by default: they are counted, then ignored).
+  void setMoodHandler(MoodHandler onMood);
   // Live Link inputs: the table from blendshapes to FAPs (the shipped one until set).
   void setMapping(const LiveLinkMapping& mapping);
   const LiveLinkMapping& mapping() const;

@@ -29,6 +29,8 @@ class LiveSession : public QObject {
 
   // Every frame, in arrival order.
   void setFrameHandler(LiveInput::FrameHandler handler) { handler_ = std::move(handler); }
+  // Every mood line (docs/live.md), in arrival order. Not recorded: a recording holds frames.
+  void setMoodHandler(LiveInput::MoodHandler handler) { moodHandler_ = std::move(handler); }
   // The Live Link mapping of every Live Link input, now and later.
   void setMapping(const LiveLinkMapping& mapping);
   const LiveLinkMapping& mapping() const { return mapping_; }
@@ -52,6 +54,7 @@ class LiveSession : public QObject {
  private:
   std::vector<std::unique_ptr<LiveInput>> inputs_;
   LiveInput::FrameHandler handler_;
+  LiveInput::MoodHandler moodHandler_;
   LiveLinkMapping mapping_;
   bool mappingSet_ = false;
   std::unique_ptr<LiveRecorder> recorder_;

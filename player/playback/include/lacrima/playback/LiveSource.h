@@ -7,9 +7,18 @@
 //
 // Tear channels a frame does not carry (a phone's blendshapes cannot) come from setTears(), the
 // player's own controls.
+//
+// Moods (docs/mood.md) drive the face instead of frames: after setMoods() the crying generator
+// (MoodGenerator) makes every channel and the face colours at the display's clock, until the
+// next frame is pushed; the next setMoods() takes over again (the newest message wins). New
+// levels are targets the generator's moods ease toward (MoodGenerator::kMoodLag), so a change
+// never jumps. The generator's tear channels are the tears: none is simulated while it makes
+// none.
 #include <lacrima/common/FapChannels.h>
+#include <lacrima/common/mood/Moods.h>
 #include <lacrima/playback/AnimationSource.h>
 
+#include <cstdint>
 #include <memory>
 
 namespace lacrima::playback {
@@ -32,6 +41,15 @@ class LiveSource : public AnimationSource {
   void setTears(float left, float right);
   float tearsLeft() const;
   float tearsRight() const;
+
+  // The generator's moods from now on (each clamped to [0, 1]); it starts, with moodSeed(), if it
+  // was not driving the face.
+  void setMoods(const MoodLevels& levels);
+  // Another take: the generator starts again from `seed` at the moods set (its tears well anew).
+  void setMoodSeed(std::uint64_t seed);
+  std::uint64_t moodSeed() const;
+  const MoodLevels& moods() const;
+  bool moodDriven() const;  // the generator drives the face (no frame pushed since setMoods)
 
   long long framesReceived() const;
   long long framesDropped() const;  // replaced before any seek() showed them
