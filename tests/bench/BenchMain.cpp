@@ -13,6 +13,7 @@ int runTearsSweep(int argc, char** argv);
 int runTearsSlide(int argc, char** argv);
 int runEditor(int argc, char** argv);
 int runPlayer(int argc, char** argv);
+int runExport(int argc, char** argv);
 int runHead(int argc, char** argv);
 int runProposal(int argc, char** argv);
 int runPick(int argc, char** argv);
@@ -66,6 +67,10 @@ const Subcommand kSubcommands[] = {
      "the live player: latency from a frame's arrival to the end of its render (median, p99) "
      "at 22, 60, 120 fps of input with 100 and 2,000 tear particles, frames dropped",
      lacrima::bench::runLive},
+    {"export",
+     "each export (video, glTF, PLY, masks) on the demo at 1280x720 in ms per frame, beside the "
+     "plain render",
+     lacrima::bench::runExport},
     {"player",
      "the whole player (playback + OGRE render) on the demo at 1280x720: fps, stage shares",
      lacrima::bench::runPlayer},
