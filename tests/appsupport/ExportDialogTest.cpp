@@ -38,7 +38,7 @@ class ExportDialogTest : public QObject {
   QTemporaryDir dir_;
   QString clip_;
 
-  appsupport::ExportSource source(int frames) const { return {clip_, {}, {}, frames}; }
+  appsupport::ExportSource source(int frames) const { return {clip_, {}, {}, frames, {}}; }
 
  private slots:
   void initTestCase() {
