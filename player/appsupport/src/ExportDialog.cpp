@@ -59,6 +59,8 @@ ExportDialog::ExportDialog(ExportSource source, QWidget* parent, QString player)
   for (const FormatInfo& f : kFormats) format_->addItem(tr(f.label));
   output_ = new QLineEdit(this);
   output_->setObjectName(QStringLiteral("output"));
+  // Room for a whole path in a home folder, not only its last characters.
+  output_->setMinimumWidth(output_->fontMetrics().averageCharWidth() * 48);
   browse_ = new QPushButton(tr("Browse..."), this);
   size_ = new QLineEdit(QStringLiteral("1280x720"), this);
   view_ = new QComboBox(this);
