@@ -35,8 +35,8 @@ QMenu* buildMainMenus(QMainWindow& window, const std::function<QAction*(const QS
   addActions(*file, {"file.new", "file.open"}, action);
   QMenu* recent = file->addMenu(QMainWindow::tr("Open &Recent"));
   addActions(*file,
-             {"", "file.save", "file.saveAs", "", "file.import", "file.export", "file.chooseHead",
-              "", "file.quit"},
+             {"", "file.save", "file.saveAs", "", "file.import", "file.export",
+              "file.exportAnimation", "file.chooseHead", "", "file.quit"},
              action);
 
   addActions(*bar->addMenu(QMainWindow::tr("&Edit")),

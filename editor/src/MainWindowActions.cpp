@@ -63,6 +63,11 @@ void MainWindow::createActions() {
           QStringLiteral("file.export"), tr("&Export FAP…"), QKeySequence(QStringLiteral("Ctrl+E")),
           tr("Bake the keys to a .fap file (22 fps; with tear channels, or strict 68 FAPs)")),
       &QAction::triggered, this, &MainWindow::exportDialog);
+  connect(makeAction(QStringLiteral("file.exportAnimation"), tr("Export &Animation…"),
+                     QKeySequence(QStringLiteral("Ctrl+Shift+E")),
+                     tr("The animation with its tears as glTF, H.264 video, PNG images or PLY tear "
+                        "meshes, as the player exports it")),
+          &QAction::triggered, this, &MainWindow::exportAnimationDialog);
   connect(makeAction(QStringLiteral("file.chooseHead"), tr("Choose &head…"), {},
                      tr("The mesh and feature-point file this project is animated on")),
           &QAction::triggered, this, &MainWindow::chooseHeadDialog);

@@ -1,6 +1,7 @@
 // MainWindow: files, recent files, autosave and recovery, closing.
 #include "MainWindowPrivate.h"
 
+#include <lacrima/appsupport/ExportDialog.h>
 #include <lacrima/common/ProjectPath.h>
 #include <lacrima/editor/NumberField.h>
 #include <lacrima/editor/PresetPanel.h>
@@ -12,6 +13,7 @@
 #include <QComboBox>
 #include <QDialog>
 #include <QDialogButtonBox>
+#include <QDir>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
@@ -23,10 +25,13 @@
 #include <QMimeData>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTemporaryFile>
 #include <QTimer>
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <stdexcept>
 
 namespace lacrima::editor {
 namespace {
@@ -301,6 +306,41 @@ void MainWindow::exportDialog() {
   if (path.isEmpty()) return;
   if (!path.endsWith(QLatin1String(".fap"), Qt::CaseInsensitive)) path += QStringLiteral(".fap");
   exportFap(path, editing::FapExportOptions{fps->value(), profile->currentIndex() == 1});
+}
+
+appsupport::ExportDialog* MainWindow::exportAnimationDialog() {
+  const ProjectDocument& document = d_->model->document();
+  appsupport::ExportSource source;
+  const QFileInfo project(d_->filePath);
+  source.name = d_->filePath.isEmpty() ? QString::fromStdString(document.name) : project.fileName();
+  source.outputStem = d_->filePath.isEmpty()
+                          ? QDir::home().filePath(QString::fromStdString(document.name))
+                          : project.dir().filePath(project.completeBaseName());
+  std::unique_ptr<QTemporaryFile> copy;
+  try {
+    source.frameCount = std::max(1, document.bake().frameCount());
+    if (!d_->filePath.isEmpty() && !isFapFile(d_->filePath) && !d_->model->isModified()) {
+      source.file = d_->filePath;
+    } else {
+      // The export reads a file; the user's stays as they saved it.
+      copy = std::make_unique<QTemporaryFile>(
+          QDir::temp().filePath(QStringLiteral("lacrima-export-XXXXXX") + kProjectSuffix));
+      if (!copy->open())
+        throw std::runtime_error(copy->fileName().toStdString() +
+                                 ": cannot create: " + copy->errorString().toStdString());
+      copy->close();
+      document.save(copy->fileName().toStdString());
+      source.file = copy->fileName();
+    }
+  } catch (const std::exception& e) {
+    reportError(tr("Cannot export"), QString::fromUtf8(e.what()));
+    return nullptr;
+  }
+  auto* dialog = new appsupport::ExportDialog(source, this);
+  if (copy) copy.release()->setParent(dialog);  // removed after the dialog's export ends
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  dialog->show();
+  return dialog;
 }
 
 void MainWindow::chooseHeadDialog() {

@@ -1,8 +1,10 @@
 // File > Export (ExportDialog, shared by the player and the editor) driven as a user would: a
-// glTF export runs in its own lacrima-player process while the dialog stays responsive, reports
-// progress and ends with the written file; a video export stopped half way leaves neither the
-// video nor its temporary; bad choices are refused with a reason before anything runs; the
-// player's File > Export opens it on the file shown.
+// glTF export runs in its own lacrima-player process while the dialog stays responsive (Export
+// disabled, no progress shown before it starts), reports progress and ends with the written
+// file; a video export stopped half way (Escape) leaves neither the video nor its temporary;
+// the output starts beside the animation and follows the format until the user types one; bad
+// choices are refused with a reason before anything runs; the player's File > Export opens it
+// on the file shown. The editor's File > Export Animation: test_editor_window.
 #include "../support/MissingData.h"
 #include "../support/WeepingClip.h"
 
@@ -13,7 +15,9 @@
 
 #include <QDir>
 #include <QElapsedTimer>
+#include <QLineEdit>
 #include <QProgressBar>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -34,7 +38,7 @@ class ExportDialogTest : public QObject {
   QTemporaryDir dir_;
   QString clip_;
 
-  appsupport::ExportSource source(int frames) const { return {clip_, {}, {}, frames}; }
+  appsupport::ExportSource source(int frames) const { return {clip_, {}, {}, frames, {}}; }
 
  private slots:
   void initTestCase() {
@@ -45,7 +49,21 @@ class ExportDialogTest : public QObject {
 
   void refusesBadChoicesWithAReason() {
     ExportDialog dialog(source(120), nullptr, kPlayer);
+    // Beside the animation, named after it, with the format's extension or folder suffix...
+    QCOMPARE(dialog.output(), dir_.filePath("weeping.glb"));
+    dialog.setFormat(ExportFormat::Video);
+    QCOMPARE(dialog.output(), dir_.filePath("weeping.mp4"));
+    dialog.setFormat(ExportFormat::TearMeshes);
+    QCOMPARE(dialog.output(), dir_.filePath("weeping_tears"));
+    // ... until the user types one, which then stays whatever the format.
+    auto* output = dialog.findChild<QLineEdit*>("output");
+    QVERIFY(output);
+    QTest::keyClick(output, Qt::Key_End);
+    QTest::keyClicks(output, "2");
+    dialog.setFormat(ExportFormat::Gltf);
+    QCOMPARE(dialog.output(), dir_.filePath("weeping_tears2"));
     QString why;
+    dialog.setOutput(QString());
     QVERIFY(dialog.arguments(&why).isEmpty());  // no output chosen
     QVERIFY(why.contains("where"));
     dialog.setOutput(dir_.filePath("x.mp4"));
@@ -78,13 +96,20 @@ class ExportDialogTest : public QObject {
     dialog.setOutput(out);
     dialog.setFrameRange(0, 59);
     QSignalSpy finished(&dialog, &ExportDialog::exportFinished);
+    auto* progress = dialog.findChild<QProgressBar*>();
+    auto* exportButton = dialog.findChild<QPushButton*>("export");
+    QVERIFY(progress && exportButton);
+    QVERIFY(progress->isHidden());  // no "0%" before anything ran
     QElapsedTimer returned;
     returned.start();
     dialog.start();
     // start() returns at once: the export runs in its own process, the event loop goes on.
     QVERIFY(dialog.running());
     QVERIFY(returned.elapsed() < 5000);
+    QVERIFY(!progress->isHidden());
+    QVERIFY(!exportButton->isEnabled());  // one export at a time
     QVERIFY(finished.wait(300000));
+    QVERIFY(exportButton->isEnabled());
     QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(finished.at(0).at(1).toString()));
     QVERIFY(finished.at(0).at(1).toString().contains("clip.glb"));
     QVERIFY(QFileInfo(out).size() > 1000);
@@ -105,7 +130,7 @@ class ExportDialogTest : public QObject {
     QProgressBar* progress = dialog.findChild<QProgressBar*>();
     QTRY_VERIFY_WITH_TIMEOUT(progress->value() > 0 || !dialog.running(), 300000);
     QVERIFY2(dialog.running(), "the export ended before it could be stopped");
-    dialog.cancel();
+    QTest::keyClick(&dialog, Qt::Key_Escape);  // stops it, rather than hiding it running
     QVERIFY(finished.wait(60000));
     QCOMPARE(finished.at(0).at(0).toBool(), false);
     QVERIFY(finished.at(0).at(1).toString().contains("stopped"));
@@ -121,6 +146,7 @@ class ExportDialogTest : public QObject {
     QVERIFY(window.openFile(clip_));
     ExportDialog* dialog = window.exportDialog();
     QVERIFY(dialog);
+    QCOMPARE(dialog->output(), dir_.filePath("weeping.glb"));
     dialog->setOutput(dir_.filePath("menu.glb"));
     QCOMPARE(dialog->arguments().back(), clip_);
     QCOMPARE(dialog->arguments().front(), QStringLiteral("--export-gltf"));

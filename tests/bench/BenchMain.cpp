@@ -13,6 +13,7 @@ int runTearsSweep(int argc, char** argv);
 int runTearsSlide(int argc, char** argv);
 int runEditor(int argc, char** argv);
 int runPlayer(int argc, char** argv);
+int runExport(int argc, char** argv);
 int runHead(int argc, char** argv);
 int runProposal(int argc, char** argv);
 int runPick(int argc, char** argv);
@@ -71,6 +72,10 @@ const Subcommand kSubcommands[] = {
      "datasets: jobs per hour of lacrima-batch (5 s takes at 640x360 with masks, 1 and 2 at a "
      "time), the pinned environment's cost, Slurm's overhead per task (--slurm)",
      lacrima::bench::runBatch},
+    {"export",
+     "each export (video, glTF, PLY, masks) on the demo at 1280x720 in ms per frame, beside the "
+     "plain render",
+     lacrima::bench::runExport},
     {"player",
      "the whole player (playback + OGRE render) on the demo at 1280x720: fps, stage shares",
      lacrima::bench::runPlayer},

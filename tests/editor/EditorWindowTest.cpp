@@ -1,5 +1,9 @@
 // The editor as people use it: real widgets on the offscreen platform, driven by mouse and
 // keyboard events and by the window's actions.
+#include "../support/MissingData.h"
+#include "../support/WeepingClip.h"
+
+#include <lacrima/appsupport/ExportDialog.h>
 #include <lacrima/common/FapReader.h>
 #include <lacrima/common/FapTable.h>
 #include <lacrima/common/FapWriter.h>
@@ -20,6 +24,7 @@
 #include <lacrima/editor/WindowFit.h>
 #include <lacrima/editor/ZeroSlider.h>
 #include <lacrima/editor/head/HeadWorkspace.h>
+#include <lacrima/rigging/DefaultHead.h>
 #include <lacrima/viewport/ElidedLabel.h>
 #include <lacrima/viewport/FaceViewport.h>
 
@@ -373,6 +378,64 @@ class EditorWindowTest : public QObject {
     QVERIFY(!window().isWindowModified());
     QVERIFY(!window().openFile(dir.filePath(QStringLiteral("missing.json"))));
     QVERIFY(window().lastError().contains(QStringLiteral("missing.json")));
+  }
+
+  // File > Export Animation: the player's dialog on the document as it is, unsaved edits
+  // included, run through lacrima-player, without touching the user's project file.
+  void exportAnimationExportsTheDocumentAsItIs() {
+    QTemporaryDir dir;
+    const QString fap = dir.filePath(QStringLiteral("weep.fap"));
+    FapWriter::save(testsupport::weepingClip(12, 20, 25), fap.toStdString());
+    QVERIFY(window().importFap(fap, std::nullopt));
+    const QString project = dir.filePath(QStringLiteral("weep.lacrima"));
+    QVERIFY(window().saveTo(project));
+    auto openDialog = [this] {
+      window().action(QStringLiteral("file.exportAnimation"))->trigger();
+      return window().findChild<appsupport::ExportDialog*>();
+    };
+    // Saved and unchanged: the project file itself, outputs beside it.
+    appsupport::ExportDialog* dialog = openDialog();
+    QVERIFY(dialog && dialog->isVisible());
+    QCOMPARE(dialog->arguments().back(), QFileInfo(project).absoluteFilePath());
+    QCOMPARE(dialog->output(), dir.filePath(QStringLiteral("weep.glb")));
+    QVERIFY(dialog->arguments().contains(QStringLiteral("0-11")));
+    dialog->setFormat(appsupport::ExportFormat::Images);
+    QCOMPARE(dialog->output(), dir.filePath(QStringLiteral("weep_frames")));
+    dialog->close();  // deletes itself
+    QTRY_VERIFY(!window().findChild<appsupport::ExportDialog*>());
+
+    // An unsaved edit: a copy of the document as it is now, never the user's file.
+    QFile file(project);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray saved = file.readAll();
+    file.close();
+    setSpin(window().sliders()->row(3)->valueField(), 100);
+    QVERIFY(window().isWindowModified());
+    dialog = openDialog();
+    QVERIFY(dialog);
+    const QString copy = dialog->arguments().back();
+    QVERIFY2(copy != project && QFileInfo::exists(copy), qPrintable(copy));
+    QVERIFY(ProjectDocument::load(copy.toStdString()).bake().frames ==
+            model().document().bake().frames);
+    QCOMPARE(dialog->output(), dir.filePath(QStringLiteral("weep.glb")));
+    if (rigging::defaultHeadAvailable()) {
+      dialog->setFrameRange(0, 3);
+      QSignalSpy finished(dialog, &appsupport::ExportDialog::exportFinished);
+      dialog->start();
+      QVERIFY(finished.wait(120000));
+      QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(finished.at(0).at(1).toString()));
+      QFile glb(dir.filePath(QStringLiteral("weep.glb")));
+      QVERIFY(glb.open(QIODevice::ReadOnly));
+      const QByteArray bytes = glb.readAll();
+      QVERIFY(bytes.startsWith("glTF"));  // a binary glTF, its morph targets named by FAP
+      QVERIFY(bytes.contains("\"targetNames\"") && bytes.contains("\"open_jaw\""));
+      QVERIFY(bytes.contains("\"lacrima\""));  // its animation
+    }
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QCOMPARE(file.readAll(), saved);
+    dialog->close();
+    QTRY_VERIFY(!QFileInfo::exists(copy));  // the copy goes with the dialog
+    if (!rigging::defaultHeadAvailable()) LACRIMA_SKIP_WITHOUT_DEFAULT_HEAD();
   }
 
   void importThenExportRoundTrip() {

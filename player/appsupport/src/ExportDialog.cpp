@@ -18,6 +18,7 @@
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSpinBox>
+#include <QTimer>
 #include <QVBoxLayout>
 
 namespace lacrima::appsupport {
@@ -29,13 +30,15 @@ struct FormatInfo {
   const char* option;  // lacrima-player's
   bool folder;         // the output is a folder
   bool rendered;       // size and camera apply
+  const char* suffix;  // of the default output: an extension, or a folder's name ending
 };
 
 constexpr FormatInfo kFormats[] = {
-    {ExportFormat::Gltf, "glTF 2.0 with tears (.glb)", "--export-gltf", false, false},
-    {ExportFormat::Video, "Video, H.264 (.mp4)", "--video", false, true},
-    {ExportFormat::Images, "Images, PNG (a folder)", "--render", true, true},
-    {ExportFormat::TearMeshes, "Tear meshes, PLY (a folder)", "--export-tears", true, false},
+    {ExportFormat::Gltf, "glTF 2.0 with tears (.glb)", "--export-gltf", false, false, ".glb"},
+    {ExportFormat::Video, "Video, H.264 (.mp4)", "--video", false, true, ".mp4"},
+    {ExportFormat::Images, "Images, PNG (a folder)", "--render", true, true, "_frames"},
+    {ExportFormat::TearMeshes, "Tear meshes, PLY (a folder)", "--export-tears", true, false,
+     "_tears"},
 };
 
 const FormatInfo& infoOf(int index) {
@@ -55,6 +58,9 @@ ExportDialog::ExportDialog(ExportSource source, QWidget* parent, QString player)
   format_ = new QComboBox(this);
   for (const FormatInfo& f : kFormats) format_->addItem(tr(f.label));
   output_ = new QLineEdit(this);
+  output_->setObjectName(QStringLiteral("output"));
+  // Room for a whole path in a home folder, not only its last characters.
+  output_->setMinimumWidth(output_->fontMetrics().averageCharWidth() * 48);
   browse_ = new QPushButton(tr("Browse..."), this);
   size_ = new QLineEdit(QStringLiteral("1280x720"), this);
   view_ = new QComboBox(this);
@@ -72,10 +78,11 @@ ExportDialog::ExportDialog(ExportSource source, QWidget* parent, QString player)
   masks_ = new QCheckBox(tr("Tear masks beside the frames"), this);
   progress_ = new QProgressBar(this);
   progress_->setRange(0, 100);
-  progress_->setValue(0);
+  progress_->hide();  // until an export starts: no "0%" before anything ran
   status_ = new QLabel(this);
   status_->setWordWrap(true);
   export_ = new QPushButton(tr("Export"), this);
+  export_->setObjectName(QStringLiteral("export"));
   export_->setDefault(true);
   cancel_ = new QPushButton(tr("Cancel"), this);
 
@@ -104,24 +111,26 @@ ExportDialog::ExportDialog(ExportSource source, QWidget* parent, QString player)
   layout->addWidget(buttons);
 
   connect(format_, &QComboBox::currentIndexChanged, this, &ExportDialog::formatChanged);
+  connect(output_, &QLineEdit::textEdited, this, [this] { outputChosen_ = true; });
   connect(browse_, &QPushButton::clicked, this, [this] {
     const FormatInfo& f = infoOf(format_->currentIndex());
-    const QString path = f.folder ? QFileDialog::getExistingDirectory(this, tr("Export to"))
-                                  : QFileDialog::getSaveFileName(this, tr("Export to"));
-    if (!path.isEmpty()) output_->setText(path);
+    const QString path =
+        f.folder ? QFileDialog::getExistingDirectory(this, tr("Export to"), output_->text())
+                 : QFileDialog::getSaveFileName(this, tr("Export to"), output_->text());
+    if (!path.isEmpty()) setOutput(path);
   });
   connect(export_, &QPushButton::clicked, this, &ExportDialog::start);
-  connect(cancel_, &QPushButton::clicked, this, [this] {
-    if (running())
-      cancel();
-    else
-      reject();
-  });
+  connect(cancel_, &QPushButton::clicked, this, &ExportDialog::reject);
   formatChanged();
 }
 
 ExportDialog::~ExportDialog() {
-  if (running()) cancel();
+  if (!running()) return;
+  // Closed while exporting: the export goes with the dialog, and so does what it left.
+  disconnect(process_, nullptr, this, nullptr);
+  process_->kill();
+  process_->waitForFinished(5000);
+  removeLeftovers();
 }
 
 void ExportDialog::setFormat(ExportFormat format) {
@@ -129,7 +138,21 @@ void ExportDialog::setFormat(ExportFormat format) {
     if (kFormats[i].format == format) format_->setCurrentIndex(i);
 }
 
-void ExportDialog::setOutput(const QString& path) { output_->setText(path); }
+void ExportDialog::setOutput(const QString& path) {
+  outputChosen_ = true;
+  output_->setText(path);
+}
+
+QString ExportDialog::output() const { return output_->text().trimmed(); }
+
+QString ExportDialog::defaultOutput() const {
+  QString stem = source_.outputStem;
+  if (stem.isEmpty()) {
+    const QFileInfo file(source_.file);
+    stem = file.dir().filePath(file.completeBaseName());
+  }
+  return stem + QLatin1String(infoOf(format_->currentIndex()).suffix);
+}
 
 void ExportDialog::setFrameRange(int first, int last) {
   first_->setValue(first);
@@ -150,6 +173,7 @@ void ExportDialog::formatChanged() {
   const bool images = f.format == ExportFormat::Images;
   alpha_->setEnabled(images);
   masks_->setEnabled(images);
+  if (!outputChosen_) output_->setText(defaultOutput());
 }
 
 QStringList ExportDialog::arguments(QString* error) const {
@@ -204,7 +228,8 @@ void ExportDialog::start() {
   cancelled_ = false;
   connect(process_, &QProcess::readyReadStandardError, this, &ExportDialog::readProgress);
   connect(process_, &QProcess::finished, this, &ExportDialog::processEnded);
-  progress_->setValue(0);
+  progress_->setRange(0, 0);  // busy until the first frame is reported
+  progress_->show();
   status_->setText(tr("Exporting..."));
   setRunning(true);
   process_->start(player_, args);
@@ -226,7 +251,9 @@ void ExportDialog::readProgress() {
   while (it.hasNext()) {
     const QRegularExpressionMatch m = it.next();
     const int total = m.captured(2).toInt();
-    if (total > 0) progress_->setValue(100 * m.captured(1).toInt() / total);
+    if (total <= 0) continue;
+    progress_->setRange(0, 100);
+    progress_->setValue(100 * m.captured(1).toInt() / total);
   }
 }
 
@@ -235,6 +262,17 @@ void ExportDialog::cancel() {
   cancelled_ = true;
   status_->setText(tr("Stopping..."));
   process_->terminate();
+  // A process that ignores the request (stuck in a write) is killed.
+  QTimer::singleShot(1000, process_, [process = process_] {
+    if (process->state() != QProcess::NotRunning) process->kill();
+  });
+}
+
+void ExportDialog::reject() {
+  if (running())
+    cancel();
+  else
+    QDialog::reject();
 }
 
 // A stopped video leaves its hidden temporary (".NAME.part-PID", H264Writer.h) behind.
@@ -248,6 +286,9 @@ void ExportDialog::processEnded(int exitCode, QProcess::ExitStatus status) {
   readProgress();
   setRunning(false);
   const bool ok = !cancelled_ && status == QProcess::NormalExit && exitCode == 0;
+  // A bar that never left "busy" had nothing done to show.
+  if (progress_->maximum() == 0) progress_->setVisible(ok);
+  progress_->setRange(0, 100);
   QString message;
   if (ok) {
     progress_->setValue(100);

@@ -29,6 +29,10 @@ class RecoveryStore;
 struct MoodGenerationRequest;
 }  // namespace lacrima::editing
 
+namespace lacrima::appsupport {
+class ExportDialog;
+}
+
 namespace lacrima::editor {
 
 namespace head {
@@ -108,6 +112,13 @@ class MainWindow : public QMainWindow {
   bool importFap(const QString& path, std::optional<double> reductionTolerance);
   bool exportFap(const QString& path, const editing::FapExportOptions& options);
   QString filePath() const;
+  // File > Export Animation…: the shared export dialog (appsupport/ExportDialog.h, the player's)
+  // on the document as it is now, unsaved edits included, non-modal; returned for tests. The
+  // export reads the project file when it is saved and unchanged; otherwise a temporary copy
+  // saved for it (owned by the dialog, removed with it), never the user's file. Outputs go
+  // beside the project by default. Nullptr, the reason in lastError(), when the document
+  // cannot be baked or copied.
+  appsupport::ExportDialog* exportAnimationDialog();
   // The project's head: a mesh and its feature-point file (File > Choose head…), as one undoable
   // edit; the preview rigs it in the background. False (reason in lastError()) when either file
   // does not exist.

@@ -27,6 +27,10 @@ struct ExportSource {
   QString name;  // in the title; empty: the file's name
   QStringList headArguments;
   int frameCount = 1;
+  // Where the output goes unless the user says otherwise: this path with the format's extension
+  // (crying.glb, crying.mp4) or suffix (crying_frames/, crying_tears/). Empty: beside `file`,
+  // named after it; the editor gives its project's path, since `file` is then a temporary.
+  QString outputStem;
 };
 
 enum class ExportFormat { Gltf, Video, Images, TearMeshes };
@@ -40,7 +44,9 @@ class ExportDialog : public QDialog {
   ~ExportDialog() override;
 
   void setFormat(ExportFormat format);
+  // As if the user typed it: a format chosen afterwards no longer changes it.
   void setOutput(const QString& path);
+  QString output() const;
   void setFrameRange(int first, int last);
   void setImageSize(const QString& size);  // "WxH"
   void setLayers(bool alpha, bool masks);  // images only
@@ -50,7 +56,11 @@ class ExportDialog : public QDialog {
 
  public slots:
   void start();
+  // Stops the running export: ends the lacrima-player process (terminated, killed if it has
+  // not ended within a second) and removes what a stopped export leaves behind.
   void cancel();
+  // Escape and the window's close button stop a running export rather than hide it.
+  void reject() override;
 
  signals:
   // The export ended: `ok` and what it says (the written path, or why not).
@@ -58,6 +68,7 @@ class ExportDialog : public QDialog {
 
  private:
   void formatChanged();
+  QString defaultOutput() const;
   void readProgress();
   void processEnded(int exitCode, QProcess::ExitStatus status);
   void removeLeftovers();
@@ -82,6 +93,7 @@ class ExportDialog : public QDialog {
   qint64 pid_ = 0;  // of the running export: its temporaries are named by it
   QByteArray errors_;
   bool cancelled_ = false;
+  bool outputChosen_ = false;  // typed, browsed or set: no longer follows the format
 };
 
 }  // namespace lacrima::appsupport
