@@ -323,7 +323,7 @@ class PlayerWindowTest : public QObject {
     QVERIFY(std::any_of(labels.begin(), labels.end(),
                         [](QLabel* l) { return l->text().contains("LIVE"); }));
     window_->livePanel().setTears(30, 30);
-    QTRY_VERIFY_WITH_TIMEOUT(window_->liveSource()->producer().particleCount() > 0, 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(window_->liveSource()->particleCount() > 0, 20000);
     QTRY_VERIFY_WITH_TIMEOUT(window_->livePanel().statusText().contains("1 frame"), 20000);
 
     // Live > Live Link mapping: a gain edited and applied drives the next packet.

@@ -1,4 +1,5 @@
-// LiveSource (LiveSource.h): the newest frame wins; the tears step with the display's clock.
+// LiveSource (LiveSource.h): the newest frame wins and is posed at once; the tears step on a
+// worker with the display's clock and are drawn over the face when they are ready.
 #include <lacrima/playback/LiveSource.h>
 
 #include <algorithm>
@@ -16,38 +17,69 @@ SceneSettings liveScene() {
   return scene;
 }
 
+// The worker shares its rig by shared_ptr; the source's rig is its owner's, which outlives the
+// source and so the worker (joined by its destructor): share it without owning it.
+std::shared_ptr<const HeadRig> unowned(const HeadRig& rig) {
+  return {std::shared_ptr<const HeadRig>{}, &rig};
+}
+
 }  // namespace
 
 struct LiveSource::State {
-  FrameProducer producer;
+  FrameProducer face;  // poses only, on the caller's thread
+  PreviewWorker tears;
   SceneSettings scene = liveScene();
   FapValues newest{};
   ChannelMask newestMask;
   double newestArrival = -1;
   bool fresh = false;  // newest not shown yet
-  float tears[2] = {0, 0};
+  float tearCounts[2] = {0, 0};
   FapValues shown{};
   double shownArrival = -1;
-  double time = 0;
+  double time = 0;   // of the last tear step asked for (or the last seek without tears)
+  double clock = 0;  // of the last seek
   bool started = false;
   double fps = 0;
-  long long received = 0, dropped = 0, frames = 0;
+  long long received = 0, dropped = 0, frames = 0, stepsRequested = 0;
   bool everTears = false;
+  // What the display is given: the face with the tear frame drawn over it.
+  FrameView composed;
+  long long faceRevision = -1, revision = 0;
+  std::shared_ptr<const PreviewFrame> tearFrame;
+  bool composedOnce = false;
 
-  explicit State(const HeadRig& rig) : producer(rig, liveScene()) {}
+  explicit State(const HeadRig& rig)
+      : face(rig, liveScene()), tears(unowned(rig), liveScene(), TearSources{}) {
+    tears.setStepsDryRequests(true);  // tears shed run down and dry as in a file
+  }
 
   FapValues valuesToShow() const {
     FapValues values = newest;
     const int faps[2] = {kTearLeftFap, kTearRightFap};
     for (int eye = 0; eye < 2; ++eye) {
       const auto c = static_cast<std::size_t>(channelIndex(faps[eye]));
-      if (!newestMask.test(c)) values[c] = tears[eye];
+      if (!newestMask.test(c)) values[c] = tearCounts[eye];
     }
     return values;
   }
+
+  // A new revision only when the face or the tear frame changed: the display skips the rest.
+  const FrameView& compose() {
+    const FrameView& posed = face.view();
+    auto frame = tears.currentFrame();
+    if (composedOnce && posed.revision == faceRevision && frame == tearFrame) return composed;
+    composedOnce = true;
+    faceRevision = posed.revision;
+    tearFrame = std::move(frame);
+    composed = tearFrame ? tearFrame->over(posed) : posed;
+    composed.revision = ++revision;
+    return composed;
+  }
 };
 
-LiveSource::LiveSource(const HeadRig& rig) : state_(std::make_unique<State>(rig)) {}
+LiveSource::LiveSource(const HeadRig& rig) : state_(std::make_unique<State>(rig)) {
+  state_->compose();
+}
 LiveSource::~LiveSource() = default;
 
 void LiveSource::push(const FapValues& values, const ChannelMask& mask, double arrival) {
@@ -66,45 +98,60 @@ void LiveSource::setTears(float left, float right) {
   const auto clean = [](float v) {
     return std::isfinite(v) ? std::clamp(std::floor(v), 0.0F, float(kMaxTearParticles)) : 0.0F;
   };
-  state_->tears[0] = clean(left);
-  state_->tears[1] = clean(right);
-  if (state_->tears[0] > 0 || state_->tears[1] > 0) state_->everTears = true;
+  state_->tearCounts[0] = clean(left);
+  state_->tearCounts[1] = clean(right);
+  if (state_->tearCounts[0] > 0 || state_->tearCounts[1] > 0) state_->everTears = true;
 }
 
-float LiveSource::tearsLeft() const { return state_->tears[0]; }
-float LiveSource::tearsRight() const { return state_->tears[1]; }
+float LiveSource::tearsLeft() const { return state_->tearCounts[0]; }
+float LiveSource::tearsRight() const { return state_->tearCounts[1]; }
 long long LiveSource::framesReceived() const { return state_->received; }
 long long LiveSource::framesDropped() const { return state_->dropped; }
 double LiveSource::shownArrival() const { return state_->shownArrival; }
 const FapValues& LiveSource::shownValues() const { return state_->shown; }
 
+std::shared_ptr<const PreviewFrame> LiveSource::tearFrame() const { return state_->tearFrame; }
+int LiveSource::particleCount() const {
+  return state_->tearFrame ? state_->tearFrame->particleCount : 0;
+}
+long long LiveSource::tearStepsRequested() const { return state_->stepsRequested; }
+long long LiveSource::tearStepsDone() const { return state_->tears.counters().steps; }
+void LiveSource::waitForTears() const { state_->tears.waitIdle(); }
+void LiveSource::setBeforeTearStep(std::function<void()> hook) {
+  state_->tears.setBeforeStep(std::move(hook));
+}
+
 const FrameView& LiveSource::seek(double seconds) {
   State& s = *state_;
-  if (!std::isfinite(seconds)) seconds = s.time;
+  if (!std::isfinite(seconds)) seconds = s.clock;
   if (!s.started) {
     s.started = true;
     s.time = seconds;
   }
-  const double dt = std::clamp(seconds - s.time, 0.0, kMaxStep);
+  s.clock = seconds;
   const FapValues values = s.valuesToShow();
   s.shownArrival = s.fresh ? s.newestArrival : -1;
-  const bool wasFresh = s.fresh;
+  if (s.fresh) {
+    ++s.frames;
+    s.face.pose(values);  // the newest frame goes straight to the display
+  }
   s.fresh = false;
   s.shown = values;
-  if (dt >= kMinStep) {
+  const double dt = std::clamp(seconds - s.time, 0.0, kMaxStep);
+  // Nothing to simulate before the first tears; while a step runs, the next waits for it (and
+  // covers the time since this one), so no step is ever dropped.
+  if (dt >= kMinStep && (!s.everTears || !s.tears.busy())) {
     s.time = seconds;
-    if (wasFresh) ++s.frames;
-    return s.producer.produce(values, dt, 0);
+    if (s.everTears) {
+      s.tears.request({values, dt, 0});
+      ++s.stepsRequested;
+    }
   }
-  if (wasFresh) {
-    ++s.frames;
-    return s.producer.pose(values);
-  }
-  return s.producer.view();
+  return s.compose();
 }
 
-const FrameView& LiveSource::view() const { return state_->producer.view(); }
-double LiveSource::currentTime() const { return state_->time; }
+const FrameView& LiveSource::view() const { return state_->composed; }
+double LiveSource::currentTime() const { return state_->clock; }
 int LiveSource::currentFrame() const {
   return static_cast<int>(std::min<long long>(state_->frames, std::numeric_limits<int>::max()));
 }
@@ -118,22 +165,26 @@ void LiveSource::setFrameRate(double fps) {
 bool LiveSource::hasTears() const { return state_->everTears; }
 
 void LiveSource::setScene(const SceneSettings& scene) {
-  state_->producer.setScene(scene);  // throws for invalid parameters before anything changes
-  state_->scene = scene;
+  State& s = *state_;
+  s.face.setScene(scene);  // throws for invalid parameters before anything changes
+  s.tears.setScene(scene);
+  s.scene = scene;
+  s.compose();
 }
 const SceneSettings& LiveSource::scene() const { return state_->scene; }
-void LiveSource::setSimulationThreads(int threads) {
-  state_->producer.setSimulationThreads(threads);
-}
+void LiveSource::setSimulationThreads(int threads) { state_->tears.setSimulationThreads(threads); }
 
 void LiveSource::reset() {
   State& s = *state_;
-  s.producer.reset();
+  s.face.reset();
+  s.tears.reset();
   s.started = false;
   s.time = 0;
+  s.clock = 0;
   s.fresh = s.received > 0;  // show the newest frame again on the next seek
+  s.compose();
 }
 
-const FrameProducer& LiveSource::producer() const { return state_->producer; }
+const FrameProducer& LiveSource::producer() const { return state_->face; }
 
 }  // namespace lacrima::playback
