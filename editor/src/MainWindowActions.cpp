@@ -9,10 +9,10 @@
 
 #include <lacrima/editor/LiveRecording.h>
 #include <lacrima/editor/MoodGenerationDialog.h>
+#include <lacrima/editor/RecordLiveDialog.h>
 #include <lacrima/live/ListenUrl.h>
 
 #include <QAction>
-#include <QInputDialog>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QSignalBlocker>
@@ -184,19 +184,18 @@ void MainWindow::createActions() {
       return;
     }
     record->setChecked(false);
-    const QString text =
-        d_->options.interactive
-            ? QInputDialog::getText(this, tr("Record live"),
-                                    tr("Listen at (fap+tcp://HOST:PORT, fap+udp://HOST:PORT or "
-                                       "livelink+udp://HOST:PORT):"),
-                                    QLineEdit::Normal, QStringLiteral("fap+tcp://127.0.0.1:5555"))
-            : QString();
-    if (text.isEmpty()) return;
+    if (!d_->options.interactive) return;
+    const ChannelMask selected = d_->model->selectedChannels();
+    RecordLiveDialog dialog(d_->recordSettings, selected, this);
+    if (dialog.exec() != QDialog::Accepted) return;
+    d_->recordSettings = dialog.settings();
     QString error;
-    const std::optional<live::ListenUrl> url = live::parseListenUrl(text, error);
+    const std::optional<live::ListenUrl> url = live::parseListenUrl(d_->recordSettings.url, error);
+    const std::optional<ChannelMask> channels = recordedChannels(d_->recordSettings, selected);
     try {
       if (!url) throw std::runtime_error(error.toStdString());
-      d_->liveRecording->start(*url, d_->model->selectedChannels(), 3.0);
+      if (!channels) throw std::runtime_error(tr("no channel to key").toStdString());
+      d_->liveRecording->start(*url, *channels, d_->recordSettings.countIn);
     } catch (const std::exception& e) {
       reportError(tr("Cannot record"), QString::fromStdString(e.what()));
     }

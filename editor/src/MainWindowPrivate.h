@@ -6,6 +6,7 @@
 #include <lacrima/editing/FrameStepClock.h>
 #include <lacrima/editing/RecoveryStore.h>
 #include <lacrima/editor/MainWindow.h>
+#include <lacrima/editor/RecordLiveDialog.h>
 
 #include <QByteArray>
 #include <QString>
@@ -49,6 +50,7 @@ struct MainWindow::Private {
   PresetPanel* presets = nullptr;
   PreviewPanel* preview = nullptr;
   LiveRecording* liveRecording = nullptr;
+  RecordLiveSettings recordSettings;  // as last confirmed in the Record live dialog
   KeyListPanel* keyList = nullptr;
   RecoveryBanner* banner = nullptr;
   head::HeadWorkspace* headWorkspace = nullptr;

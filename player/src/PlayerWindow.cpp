@@ -511,9 +511,13 @@ void PlayerWindow::seek(double seconds) {
 void PlayerWindow::tick() {
   if (isLive()) {
     if (ticker_->interval() != kLiveTickMilliseconds) ticker_->setInterval(kLiveTickMilliseconds);
-    const long long framesBefore = live_->producer().counters().frames;
     display(live_->seek(live::liveClockSeconds()));
-    recordTearCost(framesBefore);
+    // Each tear step once, when it is first shown (the steps run on the source's worker).
+    if (const auto tears = live_->tearFrame(); tears && tears->request != liveTearsCosted_) {
+      liveTearsCosted_ = tears->request;
+      const playback::ProducerTimes& t = tears->times;
+      effects_->addFrameCost(t.simulation + t.surface + t.trails, t.substeps);
+    }
     updateTransport();
     liveFrameArrived();
     return;
@@ -611,8 +615,9 @@ void PlayerWindow::updateTransport() {
                                .arg(live_->framesReceived())
                                .arg(live_->currentFrame())
                                .arg(live_->framesDropped()));
-    const int particles = live_->producer().particleCount();
-    const playback::ProducerTimes& t = live_->producer().lastTimes();
+    const auto tears = live_->tearFrame();
+    const int particles = tears ? tears->particleCount : 0;
+    const playback::ProducerTimes t = tears ? tears->times : playback::ProducerTimes{};
     tearsLabel_->setText(particles > 0 ? tr("%1 tear particles (%2 ms)")
                                              .arg(particles)
                                              .arg(t.simulation + t.surface + t.trails, 0, 'f', 1)
@@ -708,6 +713,7 @@ void PlayerWindow::startLiveSource() {
   if (live_) return;
   pause();
   live_ = std::make_unique<playback::LiveSource>(*rig_);
+  liveTearsCosted_ = 0;
   live_->setSimulationThreads(simulationThreads_);
   SceneSettings scene = live_->scene();
   scene.simulation = parameters_->values();

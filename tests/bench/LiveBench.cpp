@@ -2,9 +2,10 @@
 // fap+udp input on loopback) to the end of the render that shows it, at 22, 60 and 120 frames
 // per second of input with 100 and 2,000 tear particles. A sender thread streams FAP frames
 // (70-token masks carrying the tear counts) through a real socket; the main loop is the
-// player's: the event loop delivers the frames to a LiveSource, and a display tick every 16 ms
-// and at once when a frame arrives (or later, when a render takes longer) advances it and
-// renders with FaceRenderer. A frame's arrival is when its datagram was sent (on loopback, when
+// player's: the event loop delivers the frames to a LiveSource, which poses the newest frame at
+// once and steps the tears on its worker; a display tick every 16 ms and at once when a frame
+// arrives (or later, when a render takes longer) renders with FaceRenderer when the face or the
+// tears changed. A frame's arrival is when its datagram was sent (on loopback, when
 // it reached the player's socket), so the time it waits for the UI thread counts. Frames
 // dropped are those replaced before a render showed them, plus any the socket lost. Target:
 // median latency <= one render interval + 5 ms. Needs an X display: run under xvfb-run.
@@ -140,7 +141,7 @@ Case runCase(const playback::HeadRig& rig, scene::FaceRenderer& renderer, double
   bool measuring = false;
   double nextTick = begin;
   double firstRender = 0, lastRender = 0;
-  long long receivedBefore = 0;
+  long long receivedBefore = 0, shownRevision = -1;
   for (double now = begin; now < end; now = live::liveClockSeconds()) {
     QCoreApplication::processEvents(QEventLoop::AllEvents, 1);
     now = live::liveClockSeconds();
@@ -158,19 +159,23 @@ Case runCase(const playback::HeadRig& rig, scene::FaceRenderer& renderer, double
       receivedAtStart = live.framesReceived();
       droppedAtStart = live.framesDropped();
       shownAtStart = live.currentFrame();
-      firstRender = now;
+      firstRender = -1;
     }
     nextTick = std::max(nextTick + kTickSeconds, now);
     const auto t0 = SteadyClock::now();
     receivedBefore = live.framesReceived();
-    renderer.show(live.seek(now));
+    const playback::FrameView& view = live.seek(now);
+    if (view.revision == shownRevision) continue;  // nothing new: the viewport draws nothing
+    shownRevision = view.revision;
+    renderer.show(view);
     renderer.render();
     const double done = live::liveClockSeconds();
     if (!measuring) continue;
+    if (firstRender < 0) firstRender = now;  // the tick of the first render measured
     renderTotal += millisecondsSince(t0);
     ++renders;
     lastRender = done;
-    particleSum += live.producer().particleCount();
+    particleSum += live.particleCount();
     if (live.shownArrival() >= 0) {
       const auto number = static_cast<std::size_t>(
           std::lround(live.shownValues()[static_cast<std::size_t>(channelIndex(kNumberFap))]));

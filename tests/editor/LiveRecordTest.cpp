@@ -12,6 +12,12 @@
 #include <lacrima/editor/LiveRecording.h>
 #include <lacrima/editor/MainWindow.h>
 #include <lacrima/editor/MoodGenerationDialog.h>
+#include <lacrima/editor/RecordLiveDialog.h>
+
+#include <QCheckBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QPushButton>
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -182,6 +188,40 @@ class LiveRecordTest : public QObject {
     QCOMPARE(keys.keys().back().value(fap("open_jaw")), 900.0F);
     model.undoStack()->undo();
     QCOMPARE(int(model.document().keys.keys().size()), 3);
+  }
+
+  // The Record live dialog: by default the selected channels, else every channel the stream
+  // sets (as before it existed); a group left out is not keyed; nothing to key offers no Record.
+  void dialogChoosesCountInAndChannels() {
+    using editor::RecordLiveSettings;
+    const ChannelMask selected = maskOf({"open_jaw", "head_yaw"});
+    RecordLiveSettings settings;
+    QCOMPARE(editor::recordedChannels(settings, {}), std::optional<ChannelMask>(ChannelMask{}));
+    QCOMPARE(editor::recordedChannels(settings, selected), std::optional<ChannelMask>(selected));
+    settings.skippedGroups = {FapGroup::Head};
+    QCOMPARE(editor::recordedChannels(settings, selected),
+             std::optional<ChannelMask>(maskOf({"open_jaw"})));
+    const std::optional<ChannelMask> noHead = editor::recordedChannels(settings, {});
+    QVERIFY(noHead && noHead->test(channelIndex(fap("open_jaw"))) &&
+            noHead->test(channelIndex(kTearLeftFap)) &&
+            !noHead->test(channelIndex(fap("head_yaw"))));
+    settings.onlySelected = false;
+    QCOMPARE(editor::recordedChannels(settings, selected), noHead);
+
+    editor::RecordLiveDialog dialog(RecordLiveSettings{}, selected);
+    QCOMPARE(dialog.countInField()->value(), 3.0);
+    QVERIFY(dialog.onlySelectedBox()->isChecked() && dialog.onlySelectedBox()->isEnabled());
+    dialog.countInField()->setValue(1.5);
+    dialog.groupBox(FapGroup::Head)->setChecked(false);
+    const RecordLiveSettings chosen = dialog.settings();
+    QCOMPARE(chosen.countIn, 1.5);
+    QVERIFY(chosen.skippedGroups == std::set<FapGroup>{FapGroup::Head});
+    QCOMPARE(editor::recordedChannels(chosen, selected),
+             std::optional<ChannelMask>(maskOf({"open_jaw"})));
+    QPushButton* record = dialog.buttons()->button(QDialogButtonBox::Ok);
+    QVERIFY(record->isEnabled());
+    dialog.groupBox(FapGroup::JawChinInnerLips)->setChecked(false);  // neither selected channel
+    QVERIFY(!record->isEnabled());
   }
 };
 

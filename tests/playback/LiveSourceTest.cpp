@@ -1,12 +1,19 @@
 // LiveSource: a stream on the default head. The newest frame wins (the others are counted as
-// dropped), the face follows it, the tears run at the display's pace between frames and after
-// the stream stops, and streams without tear channels weep what the player sets. Moods drive
-// the face through the crying generator, easing in, with no tears simulated before its onset.
+// dropped), the face follows it at once, the tears step on a worker at the display's pace
+// between frames and after the stream stops, a new frame is shown while a tear step is still
+// running, the tears are the same as on the caller's thread for any thread count, and streams
+// without tear channels weep what the player sets. Moods drive the face through the crying
+// generator, easing in, with no tears simulated before its onset.
 #include "PlaybackTestSupport.h"
 
 #include <lacrima/common/mood/MoodGenerator.h>
 
 #include <lacrima/playback/LiveSource.h>
+
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
 
 using namespace lacrima;
 using namespace lacrima::playback;
@@ -23,6 +30,54 @@ ChannelMask maskOf(std::initializer_list<const char*> names) {
 double largestMove(const FrameView& view, const HeadMesh& neutral) {
   return double(((*view.positions) - neutral.positions).colwise().norm().maxCoeff());
 }
+
+// The stream of the determinism test: the jaw moves, 60 tears an eye (from the frames).
+FapValues streamFrame(int i) {
+  FapValues v{};
+  channel(v, "open_jaw") = static_cast<float>(20 * (i % 15));
+  channel(v, "tears_l_eye") = 60;
+  channel(v, "tears_r_eye") = 60;
+  return v;
+}
+
+SceneSettings withSpheres() {
+  SceneSettings scene;
+  scene.redness = SceneSettings::Redness::Tears;
+  scene.particles = true;  // the tear frames then carry the particles themselves
+  return scene;
+}
+
+constexpr int kSteps = 40;
+constexpr double kTick = 1.0 / 64;  // exact in binary: every dt is the same double
+
+// A gate a test holds a tear step at: the worker waits in it until the test opens it.
+struct Gate {
+  std::mutex mutex;
+  std::condition_variable changed;
+  bool held = false, open = false, onCaller = false;
+  std::thread::id caller = std::this_thread::get_id();
+
+  void enter() {
+    std::unique_lock lock(mutex);
+    if (std::this_thread::get_id() == caller) {
+      onCaller = true;  // a step on the display's thread: nothing to hold, the test fails
+      return;
+    }
+    held = true;
+    changed.notify_all();
+    // Bounded, so that a display that waits for the step fails the test instead of hanging.
+    changed.wait_for(lock, std::chrono::seconds(30), [this] { return open; });
+  }
+  bool waitHeld() {
+    std::unique_lock lock(mutex);
+    return changed.wait_for(lock, std::chrono::seconds(30), [this] { return held; });
+  }
+  void release() {
+    const std::lock_guard lock(mutex);
+    open = true;
+    changed.notify_all();
+  }
+};
 
 }  // namespace
 
@@ -53,10 +108,12 @@ class LiveSourceTest : public QObject {
     live.seek(0.001);  // nothing new, no tears: the same picture
     QCOMPARE(live.view().revision, revision);
     QCOMPARE(live.shownArrival(), -1.0);
+    live.seek(1.0);  // no tears ever: nothing is simulated
+    QCOMPARE(live.tearStepsRequested(), 0LL);
   }
 
   // A stream without tear channels weeps what the player sets; the tears go on between frames
-  // and after the stream stops, stepped by the display clock (capped per call).
+  // and after the stream stops, stepped by the display clock (capped per step).
   void tearsRunAtTheDisplaysPace() {
     LiveSource live(*rig_);
     live.setTears(40, 30);
@@ -65,23 +122,104 @@ class LiveSourceTest : public QObject {
     live.push(v, maskOf({"open_jaw"}), 0);
     double t = 0;
     live.seek(t);
-    for (int i = 0; i < 30; ++i) live.seek(t += 1.0 / 60);
+    for (int i = 0; i < 30; ++i) {
+      live.seek(t += 1.0 / 60);
+      live.waitForTears();
+    }
+    live.seek(t += 1.0 / 60);  // shows the last step
     QCOMPARE(live.shownValues()[channelIndex(kTearLeftFap)], 40.0F);
-    const int particles = live.producer().particleCount();
-    QVERIFY2(particles > 0, "no tears from the player's own counts");
+    QVERIFY2(live.particleCount() > 0, "no tears from the player's own counts");
     QVERIFY(live.hasTears());
-    const long long steps = live.producer().counters().simulationSteps;
+    live.waitForTears();
+    const long long steps = live.tearStepsRequested();
     live.seek(t += 5.0);  // a stalled display: one capped step, not five seconds at once
-    QCOMPARE(live.producer().counters().simulationSteps, steps + 1);
+    live.waitForTears();
+    QCOMPARE(live.tearStepsRequested(), steps + 1);
+    QCOMPARE(live.tearStepsDone(), steps + 1);
 
     // A frame that carries tear channels wins over the player's counts.
     FapValues dry{};
     live.push(dry, maskOf({"open_jaw", "tears_l_eye", "tears_r_eye"}), 1);
     live.seek(t += 1.0 / 60);
     QCOMPARE(live.shownValues()[channelIndex(kTearLeftFap)], 0.0F);
+    // As in a file, channels at 0 are stepped (the particles beyond the count leave, the wet
+    // trails dry on); the editor's preview clears everything at once instead.
+    live.waitForTears();
+    live.seek(t += 1.0 / 60);
+    QVERIFY2(live.tearFrame(), "the tears were cleared instead of stepped");
+    QCOMPARE(live.tearFrame()->request, steps + 2);  // the step of the frame at 0
 
     live.reset();
-    QCOMPARE(live.producer().particleCount(), 0);
+    QCOMPARE(live.particleCount(), 0);
+    QVERIFY(!live.tearFrame());
+  }
+
+  // The face of a new frame is shown while a tear step is in flight: the display never waits
+  // for the tears. A gate holds the step on the worker (no timing involved); a step run on the
+  // display's thread would pass the gate at once and fail the test.
+  void aNewFrameIsShownWhileATearStepRuns() {
+    Gate gate;
+    LiveSource live(*rig_);
+    // Opened whatever happens, before the source (which waits for its step) goes.
+    const std::unique_ptr<Gate, void (*)(Gate*)> opener(&gate, [](Gate* g) { g->release(); });
+    live.setBeforeTearStep([&gate] { gate.enter(); });
+    live.setTears(40, 40);
+    FapValues a{};
+    channel(a, "open_jaw") = 100;
+    live.push(a, maskOf({"open_jaw"}), 0);
+    live.seek(0);
+    live.seek(1.0 / 60);  // asks for a step: the gate holds it
+    QVERIFY2(!gate.onCaller, "the tear step ran on the display's thread");
+    QVERIFY2(gate.waitHeld(), "no tear step reached the worker");
+
+    FapValues b{};
+    channel(b, "head_yaw") = 20000;
+    live.push(b, maskOf({"head_yaw"}), 1.0);
+    const FrameView& view = live.seek(2.0 / 60);
+    QCOMPARE(live.shownArrival(), 1.0);
+    QCOMPARE(live.shownValues()[channelIndex(49)], 20000.0F);
+    QVERIFY(largestMove(view, rig_->head) > 1e-3);  // the head turned, the step still held
+    QCOMPARE(live.tearStepsDone(), 0LL);
+    QCOMPARE(live.tearStepsRequested(), 1LL);  // the next step waits for this one
+    QVERIFY(!live.tearFrame());
+
+    gate.release();
+    live.waitForTears();
+    live.seek(3.0 / 60);  // shows the first step, asks for the second
+    QVERIFY(live.tearFrame());
+    QCOMPARE(live.tearFrame()->request, 1LL);
+    QCOMPARE(live.tearStepsRequested(), 2LL);
+  }
+
+  // Every step asked for runs, in order, with the values and dt of its seek: the tears are bit
+  // for bit those of a FrameProducer called on this thread, for 1 and 2 simulation threads.
+  void tearsAreTheSameAsOnTheCallersThreadForAnyThreadCount() {
+    FrameProducer reference(*rig_, withSpheres());
+    reference.setSimulationThreads(1);
+    for (int i = 1; i < kSteps; ++i) reference.produce(streamFrame(i), kTick, 0);
+    const tears::ParticleSet* expected = reference.view().particles;
+    QVERIFY(expected && expected->size() > 0);
+
+    for (const int threads : {1, 2}) {
+      LiveSource live(*rig_);
+      live.setScene(withSpheres());
+      live.setSimulationThreads(threads);
+      for (int i = 0; i < kSteps; ++i) {
+        live.push(streamFrame(i), maskOf({"open_jaw", "tears_l_eye", "tears_r_eye"}), 0);
+        live.seek(i * kTick);
+        live.waitForTears();
+      }
+      live.seek((kSteps - 1) * kTick + 1.0 / 512);  // shows the last step, too soon for another
+      QCOMPARE(live.tearStepsDone(), static_cast<long long>(kSteps - 1));
+      const auto frame = live.tearFrame();
+      QVERIFY(frame && frame->particles);
+      const tears::ParticleSet& got = *frame->particles;
+      QCOMPARE(got.size(), expected->size());
+      for (int p = 0; p < got.size(); ++p)
+        QVERIFY2(got.position[static_cast<std::size_t>(p)] ==
+                     expected->position[static_cast<std::size_t>(p)],
+                 qPrintable(QStringLiteral("threads %1, particle %2").arg(threads).arg(p)));
+    }
   }
 
   // The crying generator on the display's clock: a change of moods eases in (no jump), no tear
@@ -113,12 +251,16 @@ class LiveSourceTest : public QObject {
     QVERIFY2(later > neutral + 40, qPrintable(QString("brow %1 -> %2").arg(neutral).arg(later)));
     QVERIFY2(std::abs(first - neutral) < 0.2 * (later - neutral),
              qPrintable(QString("jumped %1 of %2").arg(first - neutral).arg(later - neutral)));
-    QCOMPARE(live.producer().counters().simulationSteps, 0LL);  // nothing asked for tears
+    QCOMPARE(live.tearStepsRequested(), 0LL);  // nothing asked for tears
     QVERIFY(!live.hasTears());
     for (; t < 6 && live.shownValues()[tear] < 1; t += step) live.seek(t);
     QVERIFY2(live.shownValues()[tear] >= 1, "the generator's tears never came");
-    for (int i = 0; i < 5; ++i) live.seek(t += step);
-    QVERIFY(live.producer().particleCount() > 0);
+    for (int i = 0; i < 5; ++i) {
+      live.seek(t += step);
+      live.waitForTears();  // every seek steps (the worker would otherwise be a step behind)
+    }
+    live.seek(t += step);
+    QVERIFY(live.particleCount() > 0);
     QVERIFY(live.hasTears());
     QVERIFY(live.view().overlays.redness > 0);  // the generator's redness, after the tears
 

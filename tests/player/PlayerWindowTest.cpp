@@ -325,7 +325,7 @@ class PlayerWindowTest : public QObject {
     QVERIFY(std::any_of(labels.begin(), labels.end(),
                         [](QLabel* l) { return l->text().contains("LIVE"); }));
     window_->livePanel().setTears(30, 30);
-    QTRY_VERIFY_WITH_TIMEOUT(window_->liveSource()->producer().particleCount() > 0, 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(window_->liveSource()->particleCount() > 0, 20000);
     QTRY_VERIFY_WITH_TIMEOUT(window_->livePanel().statusText().contains("1 frame"), 20000);
 
     // Live > Live Link mapping: a gain edited and applied drives the next packet.
@@ -365,7 +365,7 @@ class PlayerWindowTest : public QObject {
     QVERIFY(window_->source().producer().scene().blush);
     const auto brow = static_cast<std::size_t>(channelIndex(31));
     QTRY_VERIFY_WITH_TIMEOUT(window_->liveSource()->shownValues()[brow] > 100, 20000);
-    QCOMPARE(window_->liveSource()->producer().counters().simulationSteps, 0LL);  // no tears yet
+    QCOMPARE(window_->liveSource()->tearStepsRequested(), 0LL);  // no tears yet
 
     panel.seedField()->setText("42");
     emit panel.seedField()->editingFinished();

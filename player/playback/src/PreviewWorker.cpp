@@ -73,13 +73,19 @@ void PreviewWorker::setBeforeStep(std::function<void()> hook) {
   beforeStep_ = std::move(hook);
 }
 
+void PreviewWorker::setStepsDryRequests(bool on) {
+  const std::lock_guard lock(mutex_);
+  stepsDry_ = on;
+}
+
 void PreviewWorker::request(const PreviewRequest& r) {
-  if (!tearsCommanded(*rig_, r.values)) {
-    clearTears();
-    return;
-  }
   {
-    const std::lock_guard lock(mutex_);
+    std::unique_lock lock(mutex_);
+    if (!stepsDry_ && !tearsCommanded(*rig_, r.values)) {
+      lock.unlock();
+      clearTears();
+      return;
+    }
     ++counters_.requests;
     if (pending_) ++counters_.dropped;
     pending_ = r;
@@ -99,6 +105,28 @@ void PreviewWorker::clearTears() {
     ++epoch_;
     current_.reset();
     clearPending_ = true;
+  }
+  wake_.notify_one();
+}
+
+void PreviewWorker::reset() {
+  {
+    const std::lock_guard lock(mutex_);
+    if (pending_) ++counters_.dropped;
+    pending_.reset();
+    tearsAsked_ = false;
+    ++epoch_;
+    current_.reset();
+    clearPending_ = true;
+    resetPending_ = true;
+  }
+  wake_.notify_one();
+}
+
+void PreviewWorker::setSimulationThreads(int threads) {
+  {
+    const std::lock_guard lock(mutex_);
+    threadsPending_ = threads;
   }
   wake_.notify_one();
 }
@@ -136,14 +164,15 @@ std::shared_ptr<const PreviewFrame> PreviewWorker::currentFrame() const {
 
 bool PreviewWorker::busy() const {
   const std::lock_guard lock(mutex_);
-  return running_ || pending_ || clearPending_ || scenePending_ || sourcesPending_;
+  return running_ || pending_ || clearPending_ || scenePending_ || sourcesPending_ ||
+         threadsPending_;
 }
 
 void PreviewWorker::waitIdle() const {
   std::unique_lock lock(mutex_);
   idle_.wait(lock, [this] {
-    return stopping_ ||
-           !(running_ || pending_ || clearPending_ || scenePending_ || sourcesPending_);
+    return stopping_ || !(running_ || pending_ || clearPending_ || scenePending_ ||
+                          sourcesPending_ || threadsPending_);
   });
 }
 
@@ -180,19 +209,23 @@ void PreviewWorker::run() {
     std::optional<PreviewRequest> request;
     std::optional<SceneSettings> scene;
     std::optional<TearSources> sources;
-    bool clear = false;
+    std::optional<int> threads;
+    bool clear = false, reset = false;
     long long number = 0, epoch = 0;
     std::function<void()> beforeStep;
     {
       std::unique_lock lock(mutex_);
       wake_.wait(lock, [this] {
-        return stopping_ || pending_ || clearPending_ || scenePending_ || sourcesPending_;
+        return stopping_ || pending_ || clearPending_ || scenePending_ || sourcesPending_ ||
+               threadsPending_;
       });
       if (stopping_) break;
       request = std::exchange(pending_, std::nullopt);
       scene = std::exchange(scenePending_, std::nullopt);
       sources = std::exchange(sourcesPending_, std::nullopt);
       clear = std::exchange(clearPending_, false);
+      reset = std::exchange(resetPending_, false);
+      threads = std::exchange(threadsPending_, std::nullopt);
       number = pendingNumber_;
       epoch = epoch_;
       beforeStep = beforeStep_;
@@ -201,7 +234,12 @@ void PreviewWorker::run() {
 
     if (scene) producer_.setScene(*scene);
     if (sources) producer_.setTearSources(*sources);
-    if (clear) producer_.clearTears();
+    if (threads) producer_.setSimulationThreads(*threads);
+    if (reset) {
+      producer_.reset();
+    } else if (clear) {
+      producer_.clearTears();
+    }
     std::shared_ptr<PreviewFrame> frame;
     if (request) {
       if (beforeStep) beforeStep();

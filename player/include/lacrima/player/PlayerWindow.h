@@ -195,6 +195,7 @@ class PlayerWindow : public QMainWindow {
   QElapsedTimer sinceStart_;
   double fps_ = 0;
   qint64 liveStatusShown_ = -1000;  // sinceStart_ ms of the last live status shown
+  long long liveTearsCosted_ = 0;   // the live tear step last counted in the cost figure
   bool playAfterScrub_ = false, errorDialogs_ = true;
 };
 

@@ -18,9 +18,11 @@
 //
 // Only what a scene calls for is simulated: a request whose tear channels are all 0 (or whose
 // eyes the rig disables) clears the tears instead of stepping them, and clearTears() does the
-// same. Both take effect for the UI at once: currentFrame() becomes null before returning, and
-// the step still running (which cannot be interrupted) is discarded when it ends. Changing
-// the simulation parameters or the tear sources does too (the producer restarts the tears).
+// same. A live stream (LiveSource) turns that off with setStepsDryRequests(true): channels at 0
+// are then stepped as in a file (the particles beyond the count leave, the trails dry). Both take
+// effect for the UI at once: currentFrame() becomes null before returning, and the step still
+// running (which cannot be interrupted) is discarded when it ends. Changing the simulation
+// parameters or the tear sources does too (the producer restarts the tears).
 //
 // Each step is the FrameProducer's produce(), unchanged: answering every request in turn
 // (waitIdle() between them) gives bit-identical frames to a FrameProducer called directly.
@@ -92,12 +94,21 @@ class PreviewWorker {
   // Tests only: runs on the worker thread just before each step, outside the lock (a test
   // holds a step "running" with it).
   void setBeforeStep(std::function<void()> hook);
+  // On: a request without a tear channel is stepped like any other (FrameProducer::produce
+  // decides what is left to simulate) instead of clearing the tears. Off by default.
+  void setStepsDryRequests(bool on);
 
   // Queues `r`, replacing a request not yet started. Without a tear channel > 0 this is
   // clearTears() (and nothing is simulated).
   void request(const PreviewRequest& r);
   // No tears from now on: currentFrame() is null at once; the worker clears its simulation.
   void clearTears();
+  // As clearTears(), and the redness and the producer's counters start again too
+  // (FrameProducer::reset; the worker's own face goes neutral).
+  void reset();
+  // FrameProducer::setSimulationThreads for the following steps (the tears are the same for
+  // any count, so nothing restarts).
+  void setSimulationThreads(int threads);
   // Effects and simulation overrides / tear sources for the following steps. A change of the
   // simulation parameters or of the sources clears the tears as clearTears() does.
   void setScene(const SceneSettings& scene);
@@ -127,7 +138,9 @@ class PreviewWorker {
   // Guarded by mutex_.
   std::optional<PreviewRequest> pending_;
   long long pendingNumber_ = 0, requests_ = 0;
-  bool clearPending_ = false;
+  bool clearPending_ = false, resetPending_ = false;
+  bool stepsDry_ = false;
+  std::optional<int> threadsPending_;
   bool tearsAsked_ = false;  // a request since the last clear (else a clear has nothing to do)
   std::optional<SceneSettings> scenePending_;
   std::optional<TearSources> sourcesPending_;
