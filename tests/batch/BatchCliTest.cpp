@@ -43,8 +43,8 @@ class BatchCliTest : public QObject {
 
   void oneGoAndShardsGiveTheSameBytes() {
     oneGo_ = dir_.filePath("one-go");
-    const Run all = runBatch({manifest_, "--out", oneGo_, "--jobs", "2"});
-    QVERIFY2(all.exitCode == 0, all.err.constData());
+    const auto all = runBatch({manifest_, "--out", oneGo_, "--jobs", "2"});
+    QVERIFY2(all.exitCode == 0, all.err.toLocal8Bit().constData());
     const QStringList rows = summaryRows(oneGo_);
     QCOMPARE(rows.size(), 4);
     for (const QString& row : rows) {
@@ -61,17 +61,17 @@ class BatchCliTest : public QObject {
     }
 
     const QString sharded = dir_.filePath("sharded");
-    const Run first = runBatch({manifest_, "--out", sharded, "--shard", "1/2", "--threads", "1"});
-    QVERIFY2(first.exitCode == 0, first.err.constData());
+    const auto first = runBatch({manifest_, "--out", sharded, "--shard", "1/2", "--threads", "1"});
+    QVERIFY2(first.exitCode == 0, first.err.toLocal8Bit().constData());
     QCOMPARE(summaryRows(sharded).filter(",pending,").size(), 2);
-    const Run second = runBatch({manifest_, "--out", sharded, "--shard", "2/2", "--threads", "2"});
-    QVERIFY2(second.exitCode == 0, second.err.constData());
+    const auto second = runBatch({manifest_, "--out", sharded, "--shard", "2/2", "--threads", "2"});
+    QVERIFY2(second.exitCode == 0, second.err.toLocal8Bit().constData());
     QCOMPARE(firstDifference(oneGo_, sharded), QString());
     QCOMPARE(summaryRows(sharded), rows);
 
     // Everything is done: a rerun runs nothing.
-    const Run again = runBatch({manifest_, "--out", sharded});
-    QVERIFY2(again.err.contains("4 already done, 0 done now"), again.err.constData());
+    const auto again = runBatch({manifest_, "--out", sharded});
+    QVERIFY2(again.err.contains("4 already done, 0 done now"), again.err.toLocal8Bit().constData());
   }
 
   void aKilledBatchResumesToTheSameResult() {
@@ -87,11 +87,11 @@ class BatchCliTest : public QObject {
                              120000);
     batch.kill();  // SIGKILL: no chance to tidy up
     batch.waitForFinished();
-    const Run rerun = runBatch({manifest_, "--out", out});
-    QVERIFY2(rerun.exitCode == 0, rerun.err.constData());
+    const auto rerun = runBatch({manifest_, "--out", out});
+    QVERIFY2(rerun.exitCode == 0, rerun.err.toLocal8Bit().constData());
     QVERIFY2(rerun.err.contains("1 already done, 3 done now") ||
                  rerun.err.contains("2 already done, 2 done now"),
-             rerun.err.constData());
+             rerun.err.toLocal8Bit().constData());
     QVERIFY(QDir(out + "/.partial").isEmpty());
     QCOMPARE(firstDifference(oneGo_, out), QString());
     QCOMPARE(summaryRows(out), summaryRows(oneGo_));
@@ -104,9 +104,10 @@ class BatchCliTest : public QObject {
       "defaults": { "size": "160x90", "frames": "0-1", "outputs": ["gltf"] },
       "jobs": [ { "animation": "broken.fap" }, { "mood": "joy=1", "seconds": 1 } ] })"));
     const QString out = dir_.filePath("mixed");
-    const Run run = runBatch({dir_.filePath("mixed.json"), "--out", out});
+    const auto run = runBatch({dir_.filePath("mixed.json"), "--out", out});
     QCOMPARE(run.exitCode, 1);
-    QVERIFY2(run.err.contains("failed: ") && run.err.contains("broken.fap"), run.err.constData());
+    QVERIFY2(run.err.contains("failed: ") && run.err.contains("broken.fap"),
+             run.err.toLocal8Bit().constData());
     const QStringList rows = summaryRows(out);
     QCOMPARE(rows.size(), 2);
     QCOMPARE(rows.filter(",done,").size(), 1);
@@ -121,11 +122,11 @@ class BatchCliTest : public QObject {
     QVERIFY(writeFile(dir_.filePath("sideways.json"), R"({
       "grid": { "mood": ["joy=1", "anger=1", "sadness=1"] },
       "defaults": { "seconds": 1, "size": "160x90", "view": "sideways" } })"));
-    const Run run = runBatch({dir_.filePath("sideways.json"), "--out", dir_.filePath("sideways")});
+    const auto run = runBatch({dir_.filePath("sideways.json"), "--out", dir_.filePath("sideways")});
     QCOMPARE(run.exitCode, 2);
     QVERIFY2(run.err.contains("--view") && run.err.contains("fix the manifest"),
-             run.err.constData());
-    QVERIFY2(run.err.contains("1 done now") == false, run.err.constData());
+             run.err.toLocal8Bit().constData());
+    QVERIFY2(run.err.contains("1 done now") == false, run.err.toLocal8Bit().constData());
   }
 };
 

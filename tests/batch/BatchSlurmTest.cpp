@@ -61,17 +61,17 @@ class BatchSlurmTest : public QObject {
                     "outputs": ["frames", "masks"] },
       "jobs": [ { "mood": "sadness=1", "seed": 4 } ], "paired": true })"));
     const QString local = dir_.filePath("local");
-    const Run here = runBatch({manifest, "--out", local});
-    QVERIFY2(here.exitCode == 0, here.err.constData());
+    const auto here = runBatch({manifest, "--out", local});
+    QVERIFY2(here.exitCode == 0, here.err.toLocal8Bit().constData());
 
     QProcessEnvironment cluster = withoutDisplay();
     cluster.insert("SLURM_CONF", slurmConf_);
     const QString out = dir_.filePath("on-slurm");
-    const Run run =
+    const auto run =
         runBatch({"--slurm", manifest, "--out", out, "--array-size", "2", "--cpus-per-task", "1",
                   "--mem-mib", "1024", "--minutes-per-job", "5", "--submit", "--wait"},
                  300000, cluster);
-    QVERIFY2(run.exitCode == 0, run.err.constData());
+    QVERIFY2(run.exitCode == 0, run.err.toLocal8Bit().constData());
     // Two array tasks and the summary job ran, each with its log.
     const QStringList logs = QDir(out + "/slurm").entryList({"*.out"}, QDir::Files);
     QCOMPARE(logs.size(), 3);

@@ -1,5 +1,7 @@
 #pragma once
 // What the lacrima-batch suites share: a small dataset, running the program, comparing results.
+#include "../support/RunProcess.h"
+
 #include <QCryptographicHash>
 #include <QDir>
 #include <QDirIterator>
@@ -34,26 +36,9 @@ inline QProcessEnvironment withoutDisplay() {
   return e;
 }
 
-struct Run {
-  int exitCode = -1;
-  QByteArray err;
-};
-
-inline Run runBatch(const QStringList& arguments, int timeoutMs = 240000,
-                    const QProcessEnvironment& environment = withoutDisplay()) {
-  QProcess p;
-  p.setProcessEnvironment(environment);
-  p.start(kBatch, arguments);
-  Run r;
-  if (!p.waitForFinished(timeoutMs)) {
-    p.kill();
-    p.waitForFinished();
-    r.err = "timed out: " + p.readAllStandardError();
-    return r;
-  }
-  r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-  r.err = p.readAllStandardError();
-  return r;
+inline testsupport::ProcessRun runBatch(const QStringList& arguments, int timeoutMs = 240000,
+                                        const QProcessEnvironment& environment = withoutDisplay()) {
+  return testsupport::runProcess(kBatch, arguments, timeoutMs, environment);
 }
 
 // Relative path -> SHA-256 of every file under `folder` but the job records (whose wall times

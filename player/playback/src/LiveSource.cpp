@@ -75,9 +75,6 @@ struct LiveSource::State {
   FapValues generate(double dt) {
     moodTime += dt;
     const MoodFrame frame = generator->step(moodTime, moods);
-    if (frame.channels[channelIndex(kTearLeftFap)] >= 1 ||
-        frame.channels[channelIndex(kTearRightFap)] >= 1)
-      everTears = true;
     face.setKeyedColours({frame.colours.redness, frame.colours.blush});
     moodFresh = false;
     ++frames;
@@ -139,7 +136,6 @@ void LiveSource::setTears(float left, float right) {
   };
   state_->tearCounts[0] = clean(left);
   state_->tearCounts[1] = clean(right);
-  if (state_->tearCounts[0] > 0 || state_->tearCounts[1] > 0) state_->everTears = true;
 }
 
 void LiveSource::setMoods(const MoodLevels& levels) {
@@ -214,6 +210,10 @@ const FrameView& LiveSource::seek(double seconds) {
     s.fresh = false;
   }
   s.shown = values;
+  // The tears start with the first values shown that ask for some: the player's counts for a
+  // stream without tear channels, the generator's own once moods drive the face.
+  if (values[channelIndex(kTearLeftFap)] >= 1 || values[channelIndex(kTearRightFap)] >= 1)
+    s.everTears = true;
   const double dt = std::clamp(seconds - s.time, 0.0, kMaxStep);
   // Nothing to simulate before the first tears; while a step runs, the next waits for it (and
   // covers the time since this one), so no step is ever dropped.
