@@ -13,7 +13,6 @@
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QDir>
-#include <QFile>
 #include <QFileInfo>
 #include <QProcess>
 #include <QThread>
@@ -54,16 +53,11 @@ bool readShard(const QString& text, int& index, int& count) {
          count <= static_cast<int>(BatchManifest::kMaxJobs) && index >= 1 && index <= count;
 }
 
-int failedOrPending(const std::string& summaryPath) {
-  QFile file(QString::fromStdString(summaryPath));
-  if (!file.open(QIODevice::ReadOnly)) return -1;
-  int bad = 0;
-  file.readLine();  // the header
-  while (!file.atEnd()) {
-    const QByteArray line = file.readLine();
-    if (line.contains(",failed,") || line.contains(",pending,")) ++bad;
-  }
-  return bad;
+// Jobs of `jobs` that are not done in `out` (JobRecord.h's test, as a rerun would make it).
+int notDone(const std::vector<PlannedJob>& jobs, const QString& out) {
+  return static_cast<int>(std::count_if(jobs.begin(), jobs.end(), [&](const PlannedJob& p) {
+    return !isComplete(str(QDir(out).filePath(QString::fromStdString(p.id))), p.id, false);
+  }));
 }
 
 // sbatch ARGS; the job id it prints with --parsable, or "" after saying what went wrong.
@@ -134,13 +128,14 @@ int slurmMode(const QCommandLineParser& parser, const std::vector<PlannedJob>& j
   if (summary_id.empty()) return kExitFailed;
   std::printf("%s\n%s\n", array_id.c_str(), summary_id.c_str());
   if (!parser.isSet("wait")) return kExitOk;
-  const int bad = failedOrPending(str(QDir(out).filePath(QStringLiteral("summary.csv"))));
-  if (bad != 0) {
-    std::fprintf(stderr, "lacrima-batch: %s\n",
-                 bad < 0 ? "the summary was not written; see the Slurm logs"
-                         : (std::to_string(bad) + " jobs failed or did not run; see " +
-                            str(QDir(out).filePath(QStringLiteral("summary.csv"))))
-                               .c_str());
+  const QString summaryCsv = QDir(out).filePath(QStringLiteral("summary.csv"));
+  if (!QFileInfo::exists(summaryCsv)) {
+    std::fprintf(stderr, "lacrima-batch: the summary was not written; see the Slurm logs\n");
+    return kExitFailed;
+  }
+  if (const int bad = notDone(jobs, out); bad > 0) {
+    std::fprintf(stderr, "lacrima-batch: %d jobs failed or did not run; see %s\n", bad,
+                 str(summaryCsv).c_str());
     return kExitFailed;
   }
   return kExitOk;

@@ -33,9 +33,7 @@ std::string clock(double seconds) {
 class Progress {
  public:
   Progress(std::FILE* log, bool live, int total, int parallel)
-      : log_(log), live_(live), total_(total), parallel_(std::max(1, parallel)) {
-    wall_.start();
-  }
+      : log_(log), live_(live), total_(total), parallel_(std::max(1, parallel)) {}
 
   void finished(const PlannedJob& job, bool done, double seconds) {
     std::lock_guard lock(mutex_);
@@ -63,7 +61,6 @@ class Progress {
   int total_, parallel_;
   int done_ = 0, failed_ = 0;
   double spent_ = 0;
-  QElapsedTimer wall_;
   std::mutex mutex_;
 };
 
@@ -199,7 +196,6 @@ BatchResult runBatch(const std::vector<PlannedJob>& all, const BatchOptions& opt
           ++result.failed;
           result.failures.push_back(p.id + " (" + record.label + "): " + record.error);
         }
-        result.stoppedOnUsageError = result.stoppedOnUsageError || (stop && !record.done);
       }
       progress.finished(p, record.done, static_cast<double>(wall.elapsed()) / 1000.0);
     }
@@ -210,6 +206,7 @@ BatchResult runBatch(const std::vector<PlannedJob>& all, const BatchOptions& opt
   work();
   for (std::thread& t : workers) t.join();
   progress.end();
+  result.stoppedOnUsageError = stop;
   std::sort(result.failures.begin(), result.failures.end());
   return result;
 }
