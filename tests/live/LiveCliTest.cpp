@@ -27,6 +27,12 @@ float channel(const FapValues& values, const char* name) {
   return values[static_cast<std::size_t>(channelIndex(*fapByName(name)))];
 }
 
+// QProcess::waitForFinished is false for a process that has already finished, and the event
+// loop that waitFor spins may have seen it finish: a fast program would then fail the test.
+bool exited(QProcess& process, int timeoutMs) {
+  return process.state() == QProcess::NotRunning || process.waitForFinished(timeoutMs);
+}
+
 // Starts a headless player on `url` (port 0) recording to `out`; returns the port it got.
 quint16 startPlayer(QProcess& player, const QString& url, const QString& out,
                     const QStringList& more = {}) {
@@ -68,7 +74,7 @@ class LiveCliTest : public QObject {
     }
     const double sendingSeconds = sending.elapsed() / 1000.0;
     agent.disconnectFromHost();
-    QVERIFY(player.waitForFinished(60000));
+    QVERIFY(exited(player, 60000));
     const QByteArray err = player.readAllStandardError();
     QCOMPARE(player.exitCode(), 0);
     QVERIFY2(err.contains("recorded"), err.constData());
@@ -100,9 +106,9 @@ class LiveCliTest : public QObject {
     // 88 fps: four times the demo's rate, so the test takes 3.5 s; recorded at 88 fps too.
     send.start(kBin + "/lacrima-send",
                {demo, "--to", QStringLiteral("fap+udp://127.0.0.1:%1").arg(port), "--rate", "88"});
-    QVERIFY(send.waitForFinished(60000));
+    QVERIFY(exited(send, 60000));
     QCOMPARE(send.exitCode(), 0);
-    QVERIFY(player.waitForFinished(60000));
+    QVERIFY(exited(player, 60000));
     QCOMPARE(player.exitCode(), 0);
     const FapAnimation sent = FapReader::readFile(demo.toStdString()).animation;
     const FapAnimation got = FapReader::readFile(out.toStdString()).animation;
@@ -138,7 +144,7 @@ class LiveCliTest : public QObject {
       waitFor([] { return false; }, 100);
     }
     agent.disconnectFromHost();
-    QVERIFY(player.waitForFinished(120000));
+    QVERIFY(exited(player, 120000));
     const QByteArray err = player.readAllStandardError();
     QCOMPARE(player.exitCode(), 0);
     const int frames =
@@ -169,7 +175,7 @@ class LiveCliTest : public QObject {
         },
         30000));
     QCOMPARE(got, QByteArray("mood sadness=0.8 anger=0 joy=0 shame=0.25\n"));
-    QVERIFY(send.waitForFinished(10000));
+    QVERIFY(exited(send, 10000));
     QCOMPARE(send.exitCode(), 0);
 
     QUdpSocket udp;
@@ -177,7 +183,7 @@ class LiveCliTest : public QObject {
     send.start(
         kBin + "/lacrima-send",
         {"--mood", "joy=1", "--to", QStringLiteral("fap+udp://127.0.0.1:%1").arg(udp.localPort())});
-    QVERIFY(send.waitForFinished(10000));
+    QVERIFY(exited(send, 10000));
     QCOMPARE(send.exitCode(), 0);
     QVERIFY(waitFor([&] { return udp.hasPendingDatagrams(); }, 10000));
     QCOMPARE(udp.receiveDatagram().data(), QByteArray("mood sadness=0 anger=0 joy=1 shame=0\n"));
@@ -186,12 +192,12 @@ class LiveCliTest : public QObject {
   void usageErrors() {
     QProcess player;
     player.start(kBin + "/lacrima-player", {"--no-window", "--listen", "tcp://x:1"});
-    QVERIFY(player.waitForFinished(10000));
+    QVERIFY(exited(player, 10000));
     QCOMPARE(player.exitCode(), 2);
     QVERIFY(player.readAllStandardError().contains("--listen: expected fap+tcp://"));
     QProcess send;
     send.start(kBin + "/lacrima-send", {"x.fap", "--to", "livelink+udp://:11111"});
-    QVERIFY(send.waitForFinished(10000));
+    QVERIFY(exited(send, 10000));
     QCOMPARE(send.exitCode(), 2);
 
     // Moods: a bad intensity or mood, --seed alone, --mood with a FILE or a render.
@@ -205,13 +211,13 @@ class LiveCliTest : public QObject {
     };
     for (const auto& [arguments, expected] : bad) {
       player.start(kBin + "/lacrima-player", arguments);
-      QVERIFY(player.waitForFinished(10000));
+      QVERIFY(exited(player, 10000));
       QCOMPARE(player.exitCode(), 2);
       const QByteArray error = player.readAllStandardError();
       QVERIFY2(error.contains(expected), error.constData());
     }
     send.start(kBin + "/lacrima-send", {"--mood", "sadness=x", "--to", "fap+tcp://127.0.0.1:9"});
-    QVERIFY(send.waitForFinished(10000));
+    QVERIFY(exited(send, 10000));
     QCOMPARE(send.exitCode(), 2);
     QVERIFY(send.readAllStandardError().contains("--mood: sadness: expected an intensity"));
   }
