@@ -84,6 +84,7 @@ PlayerWindow::PlayerWindow(std::unique_ptr<playback::HeadRig> rig, QWidget* pare
   session_->setFrameHandler([this](const live::LiveFrame& frame) {
     if (!live_) return;
     live_->push(frame.values, frame.mask, frame.arrival);
+    pacer_.frameArrived(frame.arrival);
     if (frame.frameRate) live_->setFrameRate(*frame.frameRate);
   });
   session_->setMoodHandler([this](const live::LiveMood& mood) {
@@ -222,6 +223,11 @@ void PlayerWindow::buildLayout() {
   viewport_->setMinimumSize(320, 240);
   viewport_->setAcceptDrops(false);  // drops go to the window
   connect(viewport_, &viewport::FaceViewport::rendered, this, &PlayerWindow::countRender);
+  connect(viewport_, &viewport::FaceViewport::rendered, this, [this] {
+    if (liveTickAt_ < 0) return;
+    pacer_.rendered(live::liveClockSeconds() - liveTickAt_);
+    liveTickAt_ = -1;
+  });
 
   auto* transport = new QWidget(this);
   auto* bar = new QHBoxLayout(transport);
@@ -510,8 +516,20 @@ void PlayerWindow::seek(double seconds) {
 
 void PlayerWindow::tick() {
   if (isLive()) {
+    const double now = live::liveClockSeconds();
+    // While a stream arrives regularly, a render starts only when it will not keep the next
+    // frame waiting (LivePacer.h); a frame that arrives meanwhile ticks at once.
+    if (const playback::LivePacer::Decision d = pacer_.decide(now, live_->frameWaiting());
+        !d.render) {
+      const auto wait = static_cast<int>(std::ceil((d.wakeAt - now) * 1000));
+      ticker_->setInterval(std::clamp(wait, 1, kLiveTickMilliseconds));
+      return;
+    }
     if (ticker_->interval() != kLiveTickMilliseconds) ticker_->setInterval(kLiveTickMilliseconds);
-    display(live_->seek(live::liveClockSeconds()));
+    liveTickAt_ = now;
+    display(live_->seek(now));
+    // Nothing new to draw (the viewport renders nothing): no render to time.
+    if (!viewport_->renderPending()) liveTickAt_ = -1;
     // Each tear step once, when it is first shown (the steps run on the source's worker).
     if (const auto tears = live_->tearFrame(); tears && tears->request != liveTearsCosted_) {
       liveTearsCosted_ = tears->request;
@@ -714,6 +732,8 @@ void PlayerWindow::startLiveSource() {
   pause();
   live_ = std::make_unique<playback::LiveSource>(*rig_);
   liveTearsCosted_ = 0;
+  pacer_.reset();
+  liveTickAt_ = -1;
   live_->setSimulationThreads(simulationThreads_);
   SceneSettings scene = live_->scene();
   scene.simulation = parameters_->values();

@@ -8,9 +8,11 @@
 
 #include <lacrima/common/mood/MoodGenerator.h>
 
+#include <lacrima/playback/LivePacer.h>
 #include <lacrima/playback/LiveSource.h>
 
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <mutex>
 #include <thread>
@@ -278,6 +280,73 @@ class LiveSourceTest : public QObject {
   }
 
   // The same seed gives the same take at the same display times; another seed another one.
+  // The pacer (LivePacer.h) at 22 fps with 28 ms renders: a tears-only render starts only if it
+  // ends before the next frame is due; a frame is shown at once; a late stream is not waited for.
+  void pacingKeepsTheDisplayFreeForTheNextFrame() {
+    LivePacer pacer;
+    QVERIFY(pacer.decide(0, false).render);  // no stream yet
+    const double gap = 1.0 / 22;
+    for (int k = 0; k < 4; ++k) pacer.frameArrived(10 + k * gap);
+    QVERIFY(pacer.decide(10.2, true).render);  // no render measured yet: nothing to pace by
+    pacer.rendered(0.028);
+    QCOMPARE(*pacer.streamInterval(), gap);
+    const double last = 10 + 3 * gap, due = last + gap;
+    QVERIFY(pacer.decide(last, true).render);           // a new frame: at once
+    QVERIFY(pacer.decide(last + 0.010, false).render);  // ends at +39 ms, before +45
+    const LivePacer::Decision wait = pacer.decide(last + 0.020, false);  // would end at +49
+    QVERIFY(!wait.render);
+    QCOMPARE(wait.wakeAt, due + LivePacer::tolerance(gap));
+    QVERIFY(pacer.decide(wait.wakeAt + 0.001, false).render);  // late: the stream may be over
+
+    // A pause starts the stream's line again.
+    pacer.frameArrived(last + 10);
+    QVERIFY(!pacer.streamInterval());
+    QVERIFY(pacer.decide(last + 10.01, false).render);
+  }
+
+  // Frames that come during a render are read together after it: the pacer still finds the
+  // stream's rate and when its newest frame came, from the least delayed reads.
+  void pacingSeesThroughLateReads() {
+    LivePacer pacer;
+    const double gap = 1.0 / 60, render = 0.029;
+    double sent = 0;
+    for (int k = 0; k < 40; ++k) {
+      sent = 5 + k * gap;
+      const double read = 5 + std::ceil((sent - 5) / render) * render;  // at a render's end
+      pacer.frameArrived(read);
+    }
+    QVERIFY(pacer.streamInterval());
+    QVERIFY(std::abs(*pacer.streamInterval() - gap) < 0.05 * gap);
+    QVERIFY(std::abs(pacer.newestArrival() - sent) < 0.002);
+  }
+
+  // At 60 fps with 29 ms renders a frame comes during every render: the one waiting is shown at
+  // once when it is fresh, and replaced by the next when that is due sooner than it came.
+  void pacingShowsTheFreshestFrame() {
+    LivePacer pacer;
+    const double gap = 1.0 / 60;
+    for (int k = 0; k < 5; ++k) pacer.frameArrived(k * gap);
+    pacer.rendered(0.029);
+    const double last = 4 * gap, due = last + gap;
+    QVERIFY(pacer.decide(last + 0.005, true).render);  // 5 ms old, the next in 11.7 ms
+    const LivePacer::Decision wait = pacer.decide(last + 0.010, true);  // 10 ms old, next in 6.7
+    QVERIFY(!wait.render);
+    QVERIFY(wait.wakeAt > due);
+    pacer.frameArrived(due);
+    QVERIFY(pacer.decide(due + 0.0005, true).render);
+    pacer.reset();
+    QVERIFY(!pacer.streamInterval());
+    QCOMPARE(pacer.renderSeconds(), 0.0);
+
+    // The source says when a pushed frame has not been shown.
+    LiveSource live(*rig_);
+    QVERIFY(!live.frameWaiting());
+    live.push(FapValues{}, ChannelMask{}, 1);
+    QVERIFY(live.frameWaiting());
+    live.seek(1);
+    QVERIFY(!live.frameWaiting());
+  }
+
   void moodSeedChoosesTheTake() {
     const auto take = [this](std::uint64_t seed) -> std::vector<FapValues> {
       LiveSource live(*rig_);

@@ -167,6 +167,7 @@ float LiveSource::tearsLeft() const { return state_->tearCounts[0]; }
 float LiveSource::tearsRight() const { return state_->tearCounts[1]; }
 long long LiveSource::framesReceived() const { return state_->received; }
 long long LiveSource::framesDropped() const { return state_->dropped; }
+bool LiveSource::frameWaiting() const { return state_->fresh; }
 double LiveSource::shownArrival() const { return state_->shownArrival; }
 const FapValues& LiveSource::shownValues() const { return state_->shown; }
 

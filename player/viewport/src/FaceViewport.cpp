@@ -334,6 +334,7 @@ QImage FaceViewport::grabFrame() {
 double FaceViewport::lastRenderMilliseconds() const { return state_->lastMilliseconds; }
 
 long long FaceViewport::renderCount() const { return state_->renders; }
+bool FaceViewport::renderPending() const { return state_->dirty && state_->requestPosted; }
 
 void FaceViewport::showEvent(QShowEvent* event) {
   QWidget::showEvent(event);

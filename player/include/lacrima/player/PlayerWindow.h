@@ -17,6 +17,7 @@
 #include <lacrima/player/RealTimeClock.h>
 
 #include <lacrima/playback/HeadRig.h>
+#include <lacrima/playback/LivePacer.h>
 #include <lacrima/playback/LiveSource.h>
 #include <lacrima/playback/Playback.h>
 #include <lacrima/scene/CameraPreset.h>
@@ -196,6 +197,8 @@ class PlayerWindow : public QMainWindow {
   double fps_ = 0;
   qint64 liveStatusShown_ = -1000;  // sinceStart_ ms of the last live status shown
   long long liveTearsCosted_ = 0;   // the live tear step last counted in the cost figure
+  playback::LivePacer pacer_;       // when a live tick renders (LivePacer.h)
+  double liveTickAt_ = -1;          // the live tick whose render is pending, for the pacer
   bool playAfterScrub_ = false, errorDialogs_ = true;
 };
 

@@ -56,6 +56,7 @@ class LiveSource : public AnimationSource {
 
   long long framesReceived() const;
   long long framesDropped() const;  // replaced before any seek() showed them
+  bool frameWaiting() const;        // a frame pushed that no seek() has shown yet
   // Arrival time of the frame the last seek() showed first; negative when it showed no new one.
   double shownArrival() const;
   // The values the last seek() showed, tears included.

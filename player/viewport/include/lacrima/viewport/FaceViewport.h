@@ -82,6 +82,7 @@ class FaceViewport : public QWidget {
   QImage grabFrame();
   double lastRenderMilliseconds() const;
   long long renderCount() const;  // renders so far: a static scene does not add any
+  bool renderPending() const;     // a render is asked for and has not run yet
 
   // Whether the widget draws with OGRE (false: it shows message() instead).
   bool usesOgre() const;
