@@ -511,7 +511,10 @@ void PlayerWindow::seek(double seconds) {
 void PlayerWindow::tick() {
   if (isLive()) {
     if (ticker_->interval() != kLiveTickMilliseconds) ticker_->setInterval(kLiveTickMilliseconds);
-    display(live_->seek(live::liveClockSeconds()));
+    const double now = live::liveClockSeconds();
+    display(live_->seek(now));
+    // --record keeps what the face shows: the generator's face too while moods drive it.
+    if (live_->moodDriven()) session_->recordGenerated(live_->shownValues(), now);
     // Each tear step once, when it is first shown (the steps run on the source's worker).
     if (const auto tears = live_->tearFrame(); tears && tears->request != liveTearsCosted_) {
       liveTearsCosted_ = tears->request;
