@@ -318,7 +318,11 @@ void GraphEditor::setNormalized(bool on) {
 void GraphEditor::setMoodsShown(bool on) {
   if (on && !moodGraph_->isVisible()) {
     moodGraph_->setGeometry(rect());
-    moodGraph_->setTimeView(start_, scale_);  // the time under the pointer stays put
+    // A view the user zoomed or panned is kept; else the moods are framed, as the channels are.
+    if (viewTouched_)
+      moodGraph_->setTimeView(start_, scale_);
+    else
+      moodGraph_->frameAll();
   }
   moodGraph_->setVisible(on);
   normalizeButton_->setVisible(!on);
