@@ -316,15 +316,14 @@ void GraphEditor::setNormalized(bool on) {
 }
 
 void GraphEditor::setMoodsShown(bool on) {
-  if (on && !moodGraph_->isVisible()) {
-    moodGraph_->setGeometry(rect());
-    // A view the user zoomed or panned is kept; else the moods are framed, as the channels are.
-    if (viewTouched_)
-      moodGraph_->setTimeView(start_, scale_);
-    else
-      moodGraph_->frameAll();
-  }
+  const bool showing = on && !moodGraph_->isVisible();
+  moodGraph_->setGeometry(rect());
   moodGraph_->setVisible(on);
+  // A view the user zoomed or panned is kept; else the moods are framed, as the channels are.
+  if (showing && viewTouched_)
+    moodGraph_->setTimeView(start_, scale_);
+  else if (showing)
+    moodGraph_->frameAll();
   normalizeButton_->setVisible(!on);
   moodsButton_->raise();
   const QSignalBlocker block(moodsButton_);

@@ -69,10 +69,18 @@ const MoodCurves& MoodGraph::documentMoods() const { return model_.document().mo
 
 void MoodGraph::setTimeView(double startSeconds, double pixelsPerSecond) {
   axis_.set(startSeconds, pixelsPerSecond);
+  framePending_ = false;
+  viewTouched_ = true;
   update();
 }
 
 void MoodGraph::frameAll() {
+  if (!isVisible() || width() < 100) {
+    framePending_ = true;  // framed at its real size (showEvent, resizeEvent)
+    return;
+  }
+  framePending_ = false;
+  viewTouched_ = false;
   const MoodCurves& moods = documentMoods();
   double end = std::max(moods.endTime(), model_.endTime());
   if (end <= 0) end = 2;
@@ -215,7 +223,16 @@ void MoodGraph::mouseDoubleClickEvent(QMouseEvent* event) {
   update();
 }
 
+void MoodGraph::resizeEvent(QResizeEvent*) {
+  if (framePending_ || !viewTouched_) frameAll();
+}
+
+void MoodGraph::showEvent(QShowEvent*) {
+  if (framePending_) frameAll();
+}
+
 void MoodGraph::wheelEvent(QWheelEvent* event) {
+  viewTouched_ = true;
   axis_.wheel(event->angleDelta(), event->modifiers().testFlag(Qt::ShiftModifier),
               event->position().x() - kAxisWidth);
   update();

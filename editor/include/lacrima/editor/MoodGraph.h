@@ -28,7 +28,8 @@ class MoodGraph : public QWidget {
 
   // The time view: `startSeconds` at the plot's left edge, `pixelsPerSecond`.
   void setTimeView(double startSeconds, double pixelsPerSecond);
-  // Shows every mood key (or the document's keys, or two seconds).
+  // Shows every mood key (or the document's keys, or two seconds); once the widget is shown at
+  // its size when it is not yet, and again as it resizes until the user zooms or pans.
   void frameAll();
 
   // The mood new keys go to (double-click); chosen in the legend.
@@ -60,6 +61,8 @@ class MoodGraph : public QWidget {
   void wheelEvent(QWheelEvent* event) override;
   void keyPressEvent(QKeyEvent* event) override;
   bool event(QEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
+  void showEvent(QShowEvent* event) override;
   void contextMenuEvent(QContextMenuEvent* event) override;
 
  private:
@@ -83,6 +86,8 @@ class MoodGraph : public QWidget {
   std::optional<KeyRef> selected_;
   std::optional<MoodCurves> preview_;  // the drag as it would be
   Drag drag_ = Drag::None;
+  bool framePending_ = true;
+  bool viewTouched_ = false;  // zoomed, panned or given a view since the last framing
 };
 
 // The colour each mood is drawn in, in the Moods view and its legend.
