@@ -258,6 +258,21 @@ FaceColourCurves readColours(const JsonValue& value, int version) {
   return colours;
 }
 
+MoodCurves readMoods(const JsonValue& value, int version) {
+  if (version < 2) value.fail("moods need a project of version 2 or later");
+  if (!value.isObject())
+    value.fail("expected an object {\"sadness\": [keys], \"anger\": [keys], ...}, got " +
+               value.describe());
+  value.rejectUnknownMembers({"sadness", "anger", "joy", "shame"});
+  MoodCurves moods;
+  for (Mood mood : kMoods) {
+    const std::string name(moodName(mood));
+    if (value.has(name))
+      moods[mood] = IntensityCurve(detail::readIntensityKeys(value[name], version, 0, 1));
+  }
+  return moods;
+}
+
 std::string readHeadPath(const JsonValue& value) {
   const std::string path = value.isString() ? value.string() : std::string();
   if (path.empty() || path.find('\0') != std::string::npos)
@@ -281,7 +296,7 @@ bool ProjectDocument::operator==(const ProjectDocument& other) const {
   return name == other.name && fps == other.fps &&
          defaultInterpolation == other.defaultInterpolation && keys.keys() == other.keys.keys() &&
          layers == other.layers && tearSources == other.tearSources && scene == other.scene &&
-         head == other.head && colours == other.colours;
+         head == other.head && colours == other.colours && moods == other.moods;
 }
 
 namespace {
@@ -363,6 +378,16 @@ std::string ProjectDocument::toJson() const {
     }
     out.endObject();
   }
+  if (!moods.empty()) {
+    out.key("moods");
+    out.beginObject();
+    for (Mood mood : kMoods) {
+      if (moods[mood].empty()) continue;
+      out.key(std::string(moodName(mood)));
+      detail::writeIntensityKeys(out, moods[mood].keys());
+    }
+    out.endObject();
+  }
   out.endObject();
   return std::move(out).finish();
 }
@@ -395,7 +420,7 @@ ProjectDocument ProjectDocument::read(const JsonValue& root, Use use,
                                       const TearMethodKeys* methods) {
   const int version = checkFormatAndVersion(root);
   root.rejectUnknownMembers({"format", "version", "name", "fps", "interpolation", "keys",
-                             "tearSources", "scene", "head", "layers", "colours"});
+                             "tearSources", "scene", "head", "layers", "colours", "moods"});
   ProjectDocument document;
   if (root.has("name")) document.name = root["name"].string();
   if (root.has("fps")) document.fps = readFps(root["fps"]);
@@ -412,6 +437,7 @@ ProjectDocument ProjectDocument::read(const JsonValue& root, Use use,
     document.layers = detail::readLayers(root["layers"], version);
   }
   if (root.has("colours")) document.colours = readColours(root["colours"], version);
+  if (root.has("moods")) document.moods = readMoods(root["moods"], version);
   if (use == Use::Bake) requireBakeable(root, document);
   return document;
 }

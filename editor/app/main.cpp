@@ -141,7 +141,7 @@ int main(int argc, char** argv) {
       QStringLiteral("With --head: propose every feature point not placed by hand."));
   const QCommandLineOption view(
       QStringLiteral("view"),
-      QStringLiteral("Show this animation view under the transport: keys, dope or graph."),
+      QStringLiteral("Show this animation view under the transport: keys, dope, graph or moods."),
       QStringLiteral("name"), QStringLiteral("keys"));
   const QCommandLineOption threads =
       appsupport::threadsOption(QStringLiteral("the preview's tear simulation"));
@@ -203,7 +203,7 @@ int main(int argc, char** argv) {
   if (parser.isSet(filter)) window.sliders()->setFilterText(parser.value(filter));
   if (focusFap) window.model().setFocusChannel(*focusFap);
   if (!window.showAnimationView(parser.value(view))) {
-    std::fprintf(stderr, "lacrima-editor: --view: expected keys, dope or graph, got %s\n",
+    std::fprintf(stderr, "lacrima-editor: --view: expected keys, dope, graph or moods, got %s\n",
                  qPrintable(parser.value(view)));
     return 2;
   }

@@ -6,6 +6,7 @@
 #include <lacrima/common/CurveHandles.h>
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/EditorModel.h>
+#include <lacrima/editor/MoodGraph.h>
 
 #include <QSignalBlocker>
 #include <QToolButton>
@@ -33,6 +34,18 @@ GraphEditor::GraphEditor(editing::EditorModel& model, QWidget* parent)
   normalizeButton_->setToolTip(
       tr("Map each curve to -1..1 by its own range, to compare channels of different ranges"));
   connect(normalizeButton_, &QToolButton::toggled, this, &GraphEditor::setNormalized);
+
+  moodGraph_ = new MoodGraph(model_, this);
+  moodGraph_->hide();
+  moodsButton_ = new QToolButton(this);
+  moodsButton_->setObjectName(QStringLiteral("graphMoods"));
+  moodsButton_->setText(tr("Moods"));
+  moodsButton_->setCheckable(true);
+  moodsButton_->setAutoRaise(true);
+  moodsButton_->setToolTip(
+      tr("Show and key the project's mood curves (sadness, anger, joy, "
+         "shame), which Generate crying... can follow"));
+  connect(moodsButton_, &QToolButton::toggled, this, &GraphEditor::setMoodsShown);
 
   const auto keysEdited = [this] {
     // An edit arriving mid-drag (undo from the menu) makes the drag's plan stale.
@@ -302,10 +315,30 @@ void GraphEditor::setNormalized(bool on) {
   normalizeButton_->setChecked(on);
 }
 
+void GraphEditor::setMoodsShown(bool on) {
+  const bool showing = on && !moodGraph_->isVisible();
+  moodGraph_->setGeometry(rect());
+  moodGraph_->setVisible(on);
+  // A view the user zoomed or panned is kept; else the moods are framed, as the channels are.
+  if (showing && viewTouched_)
+    moodGraph_->setTimeView(start_, scale_);
+  else if (showing)
+    moodGraph_->frameAll();
+  normalizeButton_->setVisible(!on);
+  moodsButton_->raise();
+  const QSignalBlocker block(moodsButton_);
+  moodsButton_->setChecked(on);
+}
+
+bool GraphEditor::moodsShown() const { return moodGraph_->isVisible(); }
+
 void GraphEditor::resizeEvent(QResizeEvent*) {
   normalizeButton_->adjustSize();
   normalizeButton_->move(width() - normalizeButton_->width() - 4,
                          static_cast<int>(kRulerHeight) + 2);
+  moodsButton_->adjustSize();
+  moodsButton_->move(normalizeButton_->x() - moodsButton_->width() - 4, normalizeButton_->y());
+  moodGraph_->setGeometry(rect());
   // A view the user has not zoomed or panned keeps showing everything as the panel resizes.
   if (framePending_ || !viewTouched_) frameAll();
 }

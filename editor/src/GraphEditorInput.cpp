@@ -317,6 +317,10 @@ bool GraphEditor::event(QEvent* event) {
 }
 
 void GraphEditor::keyPressEvent(QKeyEvent* event) {
+  if (moodsShown()) {  // the Moods view's keys came up unused: the window's, not the channels'
+    event->ignore();
+    return;
+  }
   if (isDeleteKey(*event)) {
     ChannelKeyMenus::deleteSelected(model_);
     return;

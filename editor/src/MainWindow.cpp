@@ -177,12 +177,14 @@ QString MainWindow::filePath() const { return d_->filePath; }
 QString MainWindow::lastError() const { return d_->lastError; }
 
 bool MainWindow::showAnimationView(const QString& name) {
-  QWidget* view = name == QLatin1String("keys")    ? static_cast<QWidget*>(d_->timeline)
-                  : name == QLatin1String("dope")  ? static_cast<QWidget*>(d_->dopeSheet)
-                  : name == QLatin1String("graph") ? static_cast<QWidget*>(d_->graphEditor)
-                                                   : nullptr;
+  const bool moods = name == QLatin1String("moods");
+  QWidget* view = name == QLatin1String("keys")             ? static_cast<QWidget*>(d_->timeline)
+                  : name == QLatin1String("dope")           ? static_cast<QWidget*>(d_->dopeSheet)
+                  : name == QLatin1String("graph") || moods ? static_cast<QWidget*>(d_->graphEditor)
+                                                            : nullptr;
   if (!view) return false;
   d_->animationViews->setCurrentWidget(view);
+  d_->graphEditor->setMoodsShown(moods);
   return true;
 }
 

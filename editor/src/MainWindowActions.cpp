@@ -232,12 +232,14 @@ LiveRecording& MainWindow::liveRecording() { return *d_->liveRecording; }
 MoodGenerationDialog* MainWindow::openGenerateCrying() {
   const editing::EditorModel& m = *d_->model;
   const std::vector<double>& selected = m.selectedTimes();
-  double start = 0, end = m.endTime() > 0 ? m.endTime() : 10;
+  // The whole take, as far as its keys or its mood curves reach.
+  const double last = std::max(m.endTime(), m.document().moods.endTime());
+  double start = 0, end = last > 0 ? last : 10;
   if (selected.size() >= 2) {
     const auto [low, high] = std::minmax_element(selected.begin(), selected.end());
     if (*high > *low) std::tie(start, end) = std::pair{*low, *high};
   }
-  auto* dialog = new MoodGenerationDialog(start, end, m.document().fps, this);
+  auto* dialog = new MoodGenerationDialog(start, end, m.document().fps, &m.document().moods, this);
   dialog->setAttribute(Qt::WA_DeleteOnClose);
   connect(dialog, &QDialog::accepted, this, [this, dialog] {
     if (!generateCrying(dialog->request()) && d_->options.interactive)

@@ -8,6 +8,7 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QRegularExpressionValidator>
+#include <QStandardItemModel>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -35,8 +36,9 @@ QDoubleSpinBox* secondsBox(double value, QWidget* parent) {
 
 }  // namespace
 
-MoodGenerationDialog::MoodGenerationDialog(double start, double end, double fps, QWidget* parent)
-    : QDialog(parent), fps_(fps) {
+MoodGenerationDialog::MoodGenerationDialog(double start, double end, double fps,
+                                           const MoodCurves* curves, QWidget* parent)
+    : QDialog(parent), curves_(curves), fps_(fps) {
   setWindowTitle(tr("Generate crying"));
   auto* column = new QVBoxLayout(this);
   auto* intro = new QLabel(
@@ -46,6 +48,18 @@ MoodGenerationDialog::MoodGenerationDialog(double start, double end, double fps,
   intro->setWordWrap(true);
   column->addWidget(intro);
   auto* form = new QFormLayout;
+  source_ = new QComboBox(this);
+  source_->setObjectName(QStringLiteral("moodSource"));
+  source_->addItem(tr("Constant moods"));
+  source_->addItem(tr("The project's mood curves"));
+  const bool keyed = curves_ && !curves_->empty();
+  if (!keyed) {
+    // Offered only when there is something to follow; the tooltip says how to get there.
+    qobject_cast<QStandardItemModel*>(source_->model())->item(1)->setEnabled(false);
+  }
+  source_->setToolTip(keyed ? tr("Follow the mood curves keyed in the graph editor (Moods)")
+                            : tr("Key moods in the graph editor (Moods) to generate from them"));
+  form->addRow(tr("Moods"), source_);
   presets_ = new QComboBox(this);
   presets_->addItem(tr("Moods of your own"));
   for (const MoodPreset& preset : moodPresets()) presets_->addItem(displayName(preset.name));
@@ -79,6 +93,14 @@ MoodGenerationDialog::MoodGenerationDialog(double start, double end, double fps,
   ease_->setToolTip(tr("The moods rise from neutral over this long at the start of the range"));
   form->addRow(tr("Ease in"), ease_);
   column->addLayout(form);
+  const auto showSource = [this] {
+    // The constant moods' fields mean nothing while the curves drive the take.
+    const bool constant = source_->currentIndex() == 0;
+    presets_->setEnabled(constant);
+    ease_->setEnabled(constant);
+    for (QDoubleSpinBox* box : levels_) box->setEnabled(constant);
+  };
+  connect(source_, &QComboBox::currentIndexChanged, this, showSource);
   problem_ = new QLabel(this);
   problem_->setObjectName("problem");
   problem_->setWordWrap(true);
@@ -115,6 +137,11 @@ editing::MoodGenerationRequest MoodGenerationDialog::request() const {
   request.script =
       ease > 0 ? MoodScript({MoodKey{0, {}}, MoodKey{ease, levels}}) : MoodScript::constant(levels);
   request.fps = fps_;
+  if (source_->currentIndex() == 1) {
+    if (!curves_ || curves_->empty())
+      throw std::invalid_argument("Moods: the project keys no moods (graph editor, Moods)");
+    request.curves = curves_;
+  }
   return request;
 }
 

@@ -20,6 +20,7 @@
 #include <lacrima/export/TearMeshExport.h>
 #include <lacrima/export/VideoExport.h>
 #include <lacrima/live/ListenUrl.h>
+#include <lacrima/live/LiveMoodFeed.h>
 #include <lacrima/live/LiveSession.h>
 #include <lacrima/playback/HeadRig.h>
 #include <lacrima/player/HeadViews.h>
@@ -266,7 +267,8 @@ void quitWhenIdle(QCoreApplication& app, live::LiveSession& session,
   timer->start();
 }
 
-// --no-window: the inputs and the recording without a window. With --render DIR the take is
+// --no-window: the inputs and the recording without a window; mood lines drive the crying
+// generator, whose frames are recorded as the stream's would be. With --render DIR the take is
 // then rendered as --render renders a file (the tears simulated on the recorded frames);
 // without --record it is kept as DIR/take.fap.
 int headlessMode(QCoreApplication& app, const QCommandLineParser& parser, LiveOptions options,
@@ -283,6 +285,8 @@ int headlessMode(QCoreApplication& app, const QCommandLineParser& parser, LiveOp
     options.record = QDir(parser.value("render")).filePath(QStringLiteral("take.fap"));
   }
   live::LiveSession session;
+  const live::LiveMoodFeed moods(session,
+                                 options.recordRate.value_or(live::LiveRecorder::kDefaultRate));
   startLive(session, options, [&](const live::ListenUrl& url) { session.listen(url); });
   quitWhenIdle(app, session, options.exitWhenIdle);
   app.exec();

@@ -530,6 +530,8 @@ void PlayerWindow::tick() {
     display(live_->seek(now));
     // Nothing new to draw (the viewport renders nothing): no render to time.
     if (!viewport_->renderPending()) liveTickAt_ = -1;
+    // --record keeps what the face shows: the generator's face too while moods drive it.
+    if (live_->moodDriven()) session_->recordGenerated(live_->shownValues(), now);
     // Each tear step once, when it is first shown (the steps run on the source's worker).
     if (const auto tears = live_->tearFrame(); tears && tears->request != liveTearsCosted_) {
       liveTearsCosted_ = tears->request;

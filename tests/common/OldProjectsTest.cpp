@@ -50,6 +50,7 @@ class OldProjectsTest : public QObject {
     const QByteArray expected = readBytes(expectedFap);
     QVERIFY2(!expected.isEmpty(), qPrintable(expectedFap));
     const ProjectDocument document = ProjectDocument::load(project.toStdString());
+    QVERIFY(document.moods.empty());  // they predate mood curves, which stay optional
     QVERIFY(exported(document) == expected);
   }
 
@@ -63,6 +64,7 @@ class OldProjectsTest : public QObject {
     const std::string json = document.toJson();
     QVERIFY(json.find("\"version\": 2") != std::string::npos);
     QVERIFY(json.find("\"shapes\"") == std::string::npos);
+    QVERIFY(json.find("\"moods\"") == std::string::npos);
     const ProjectDocument again = ProjectDocument::fromJson(json, "resaved.json");
     QVERIFY(again == document);
     QVERIFY(exported(again) == readBytes(expectedFap));

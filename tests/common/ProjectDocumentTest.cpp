@@ -121,6 +121,14 @@ ProjectDocument randomDocument(unsigned seed) {
     if (coin(random))
       document.colours.blush = IntensityCurve({{0.0, unit(random), Interpolation::Smooth}});
   }
+  if (coin(random)) {  // keyed moods (MoodCurves.h)
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (Mood mood : kMoods)
+      if (coin(random))
+        document.moods[mood] =
+            IntensityCurve({{unit(random) * 10, unit(random), Interpolation::Smooth},
+                            {10 + unit(random) * 10, unit(random), Interpolation::Linear}});
+  }
   return document;
 }
 
@@ -522,6 +530,17 @@ class ProjectDocumentTest : public QObject {
         << R"({"format": "lacrima-project", "version": 2, "keys": [], "colours": {"tint": []}})"
         << "doc.json:1:69"
         << "colours.tint: unknown field; expected one of redness, blush";
+    QTest::newRow("moods in a version 1 file")
+        << QString::fromStdString(withTopLevel(R"("moods": {"sadness": []})")) << "doc.json:1:57"
+        << "moods: moods need a project of version 2 or later";
+    QTest::newRow("mood beyond 1")
+        << R"({"format": "lacrima-project", "version": 2, "keys": [], "moods": {"anger": [{"time": 0, "value": 1.5}]}})"
+        << "doc.json:1:89"
+        << "moods.anger[0].value: expected a number in [0, 1], got 1.5";
+    QTest::newRow("unknown mood")
+        << R"({"format": "lacrima-project", "version": 2, "keys": [], "moods": {"grief": []}})"
+        << "doc.json:1:67"
+        << "moods.grief: unknown field; expected one of sadness, anger, joy, shame";
     QTest::newRow("duplicate key time") << R"({"format": "lacrima-project", "version": 1, "keys": [
                {"time": 0.5, "values": {}}, {"time": 1, "values": {}},
                {"time": 0.5, "values": {"open_jaw": 1}}]})"
@@ -762,6 +781,49 @@ class ProjectDocumentTest : public QObject {
     } catch (const FileError& error) {
       QCOMPARE(error.where().file, path.toStdString());
       QCOMPARE(error.where().line, 4);
+    }
+  }
+
+  // Mood curves: saved and read back exactly, a bad key in a file named by file and line, and
+  // never part of the animation that plays or exports (a strict .fap stays standard).
+  void moodCurvesAreProjectCurvesOnly() {
+    ProjectDocument document;
+    document.keys = KeyframeSequence({[] {
+      Keyframe key;
+      key.set(3, 100);
+      return key;
+    }()});
+    const FapAnimation without = document.bake();
+    document.moods[Mood::Sadness] =
+        IntensityCurve({{0, 0, Interpolation::Smooth}, {4, 0.8, Interpolation::Linear}});
+    document.moods[Mood::Shame] = IntensityCurve({{2, 0.25, Interpolation::Smooth}});
+    QCOMPARE(document.bake().frames, without.frames);
+    QCOMPARE(document.bake().animated, without.animated);
+    QVERIFY(document.moods.at(2)[Mood::Sadness] > 0.1 && document.moods.at(2)[Mood::Sadness] < 0.7);
+    QCOMPARE(float(document.moods.at(6)[Mood::Sadness]), 0.8f);  // held after the last key
+    QCOMPARE(document.moods.at(9)[Mood::Shame], 0.25);
+    QCOMPARE(document.moods.endTime(), 4.0);
+
+    QTemporaryDir folder;
+    QVERIFY(folder.isValid());
+    const QString path = folder.filePath("moods.lacrima");
+    document.save(path.toStdString());
+    QVERIFY(ProjectDocument::load(path.toStdString()) == document);
+    QVERIFY(readFile(path).contains(QStringLiteral("\"moods\"")));
+
+    writeFile(path,
+              "{\"format\": \"lacrima-project\", \"version\": 2, \"keys\": [],\n"
+              " \"moods\": {\n"
+              "  \"sadness\": [{\"time\": 0, \"value\": 0},\n"
+              "              {\"time\": 2, \"value\": -0.5}]}}\n");
+    try {
+      ProjectDocument::load(path.toStdString());
+      QFAIL("a mood below 0 loaded");
+    } catch (const FileError& error) {
+      const QString what = QString::fromUtf8(error.what());
+      QVERIFY2(what.startsWith(path + ":4:"), qPrintable(what));
+      QVERIFY2(what.contains("moods.sadness[1].value: expected a number in [0, 1], got -0.5"),
+               qPrintable(what));
     }
   }
 

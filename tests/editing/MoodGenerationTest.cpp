@@ -91,6 +91,44 @@ class MoodGenerationTest : public QObject {
     QCOMPARE(model.document().keys.keys(), after.keys());
   }
 
+  // Generate... from the project's mood curves: a keyed sadness ramp over the range gives an
+  // inner-brow raise (FAP 31/32) that grows with the curve; the curves are read at document
+  // time, frame by frame, so a constant curve gives the very keys a constant script does.
+  void moodCurvesDriveTheTakeFrameByFrame() {
+    MoodCurves curves;
+    curves[Mood::Sadness] =
+        IntensityCurve({{10, 0, Interpolation::Linear}, {30, 1, Interpolation::Linear}});
+    MoodGenerationRequest request;
+    request.start = 10;
+    request.end = 30;
+    request.fps = 10;
+    request.seed = 3;
+    request.tolerance = 0;  // every frame a key: the keys are the take
+    request.curves = &curves;
+    const MoodGenerationPlan plan = planMoodGeneration({}, request);
+    KeyframeSequence keys;
+    applyKeys(keys, plan.change.times, plan.change.after);
+    const auto innerBrows = [&](double from, double to) {
+      double sum = 0;
+      int n = 0;
+      for (double t = from; t < to; t += 0.1, ++n)
+        sum += keys.evaluate(t)[channelIndex(31)] + keys.evaluate(t)[channelIndex(32)];
+      return sum / n;
+    };
+    const double early = innerBrows(10, 14), middle = innerBrows(18, 22), late = innerBrows(26, 30);
+    QVERIFY2(early < middle && middle < late && late > 0,
+             qPrintable(QString("%1 %2 %3").arg(early).arg(middle).arg(late)));
+
+    curves[Mood::Sadness] = IntensityCurve({{0, 0.5, Interpolation::Linear}});
+    MoodLevels half;
+    half[Mood::Sadness] = 0.5;
+    MoodGenerationRequest constant = request;
+    constant.curves = nullptr;
+    constant.script = MoodScript::constant(half);
+    QCOMPARE(planMoodGeneration({}, request).change.after,
+             planMoodGeneration({}, constant).change.after);
+  }
+
   void badRangesAreRefusedBeforeGenerating() {
     MoodGenerationRequest request = sadnessFrom2To14();
     request.end = request.start;

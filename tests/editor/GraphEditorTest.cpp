@@ -10,6 +10,7 @@
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editor/GraphEditor.h>
 #include <lacrima/editor/MainWindow.h>
+#include <lacrima/editor/MoodGraph.h>
 
 #include <QApplication>
 #include <QMenu>
@@ -352,6 +353,56 @@ class GraphEditorTest : public QObject {
     // Two channels, at most one point per pixel column each (plus the holds' ends).
     QVERIFY2(longOne <= 2 * (editor_->width() + 4),
              qPrintable(QString("%1 points drawn").arg(longOne)));
+  }
+
+  // The Moods view: the project's mood curves, a key dragged (whole frames, 0..1), a key added
+  // by double-click to the chosen mood, one deleted; each one undo step that undo restores
+  // exactly.
+  void moodCurvesAreEditedInTheMoodsView() {
+    ProjectDocument document = documentWith(
+        {key(0, Interpolation::Linear, {{kJaw, 0}}), key(4, Interpolation::Linear, {{kJaw, 100}})});
+    document.moods[Mood::Sadness] =
+        IntensityCurve({{0, 0, Interpolation::Smooth}, {2, 0.4, Interpolation::Smooth}});
+    open(document, channels({kJaw}));
+    const MoodCurves original = model_->document().moods;
+    editor_->setMoodsShown(true);
+    MoodGraph* graph = editor_->moodGraph();
+    QVERIFY(editor_->moodsShown() && graph->isVisible());
+    graph->frameAll();
+
+    drag(graph, graph->keyPosition(Mood::Sadness, 1),
+         QPointF(graph->xOfTime(2.6), graph->yOfValue(0.8)));
+    QCOMPARE(model_->undoStack()->count(), 1);
+    const std::vector<IntensityKey> moved = model_->document().moods[Mood::Sadness].keys();
+    QCOMPARE(moved.size(), std::size_t(2));
+    QVERIFY2(std::abs(moved[1].time - 2.6) < 1e-9, qPrintable(QString::number(moved[1].time)));
+    QVERIFY2(std::abs(moved[1].value - 0.8) < 0.01, qPrintable(QString::number(moved[1].value)));
+    const MoodCurves afterDrag = model_->document().moods;
+    drag(graph, graph->keyPosition(Mood::Sadness, 1),
+         QPointF(graph->xOfTime(3), graph->yOfValue(1.5)));  // above the axis: clamped
+    QCOMPARE(model_->document().moods[Mood::Sadness].keys()[1].value, 1.0);
+    model_->undoStack()->undo();
+    QVERIFY(model_->document().moods == afterDrag);
+
+    graph->setActiveMood(Mood::Anger);
+    QTest::mouseDClick(graph, Qt::LeftButton, {},
+                       QPointF(graph->xOfTime(1), graph->yOfValue(0.5)).toPoint());
+    QCOMPARE(model_->undoStack()->count(), 2);
+    const std::vector<IntensityKey> anger = model_->document().moods[Mood::Anger].keys();
+    QCOMPARE(anger.size(), std::size_t(1));
+    QVERIFY(std::abs(anger[0].time - 1) < 1e-9 && std::abs(anger[0].value - 0.5) < 0.01);
+
+    QTest::mouseClick(graph, Qt::LeftButton, {}, graph->keyPosition(Mood::Anger, 0).toPoint());
+    QCOMPARE(graph->selectedKey()->mood, Mood::Anger);
+    QTest::keyClick(graph, Qt::Key_Delete);
+    QVERIFY(model_->document().moods[Mood::Anger].empty());
+    QCOMPARE(model_->undoStack()->count(), 3);
+    while (model_->undoStack()->canUndo()) model_->undoStack()->undo();
+    QVERIFY(model_->document().moods == original);
+
+    editor_->setMoodsShown(false);
+    QVERIFY(!graph->isVisible());
+    QCOMPARE(editor_->shownChannels(), std::vector<int>{kJaw});
   }
 
   void theMainWindowHasAGraphTab() {

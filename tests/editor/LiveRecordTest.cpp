@@ -25,6 +25,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QStandardItemModel>
 #include <QTcpSocket>
 #include <QTemporaryDir>
 #include <QUndoStack>
@@ -188,6 +189,40 @@ class LiveRecordTest : public QObject {
     QCOMPARE(keys.keys().back().value(fap("open_jaw")), 900.0F);
     model.undoStack()->undo();
     QCOMPARE(int(model.document().keys.keys().size()), 3);
+  }
+
+  // Generate crying from the project's mood curves: offered once moods are keyed, the range
+  // reaches the curves' end, the take follows the keyed rise (the inner brows rise later, not
+  // at once), one undo step.
+  void generateCryingFollowsTheMoodCurves() {
+    QTemporaryDir recovery;
+    editor::MainWindow window(quietOptions(recovery));
+    editing::EditorModel& model = window.model();
+    auto* source = window.openGenerateCrying()->source();
+    QVERIFY(!qobject_cast<QStandardItemModel*>(source->model())->item(1)->isEnabled());
+    source->window()->close();
+    model.setCurrentTime(0);
+    model.keyMood(Mood::Sadness, 0);
+    model.setCurrentTime(8);
+    model.keyMood(Mood::Sadness, 1);
+    QCOMPARE(model.document().moods[Mood::Sadness].keys().size(), std::size_t(2));
+    const int undoBefore = model.undoStack()->count();
+    editor::MoodGenerationDialog* dialog = window.openGenerateCrying();
+    QVERIFY(qobject_cast<QStandardItemModel*>(dialog->source()->model())->item(1)->isEnabled());
+    QCOMPARE(dialog->end()->value(), 8.0);
+    dialog->source()->setCurrentIndex(1);
+    QVERIFY(!dialog->level(Mood::Sadness)->isEnabled());
+    dialog->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok)->click();
+    QCOMPARE(model.undoStack()->count(), undoBefore + 1);
+    const KeyframeSequence& keys = model.document().keys;
+    const int brow = fap("raise_l_i_eyebrow");
+    QVERIFY2(keys.evaluate(1.5)[channelIndex(brow)] < keys.evaluate(7.5)[channelIndex(brow)],
+             qPrintable(QString("%1 %2")
+                            .arg(keys.evaluate(1.5)[channelIndex(brow)])
+                            .arg(keys.evaluate(7.5)[channelIndex(brow)])));
+    model.undoStack()->undo();
+    QVERIFY(model.document().keys.empty());
+    QCOMPARE(model.document().moods[Mood::Sadness].keys().size(), std::size_t(2));
   }
 
   // The Record live dialog: by default the selected channels, else every channel the stream

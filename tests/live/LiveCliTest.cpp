@@ -33,13 +33,14 @@ bool exited(QProcess& process, int timeoutMs) {
   return process.state() == QProcess::NotRunning || process.waitForFinished(timeoutMs);
 }
 
-// Starts a headless player on `url` (port 0) recording to `out`; returns the port it got.
+// Starts a headless player (with `window`, a windowed one) on `url` (port 0) recording to
+// `out`; returns the port it got.
 quint16 startPlayer(QProcess& player, const QString& url, const QString& out,
-                    const QStringList& more = {}) {
+                    const QStringList& more = {}, bool window = false) {
   player.setProgram(kBin + "/lacrima-player");
+  const QStringList headless = window ? QStringList() : QStringList{"--no-window"};
   player.setArguments(
-      QStringList{"--no-window", "--listen", url, "--record", out, "--exit-when-idle", "1.5"} +
-      more);
+      headless + QStringList{"--listen", url, "--record", out, "--exit-when-idle", "1.5"} + more);
   player.start();
   if (!player.waitForStarted(5000)) return 0;
   // "listening on fap+tcp://127.0.0.1:40123"
@@ -124,6 +125,54 @@ class LiveCliTest : public QObject {
       QVERIFY2(at < sent.frameCount(), "a recorded frame the demo does not have, or out of order");
     }
     QVERIFY(got.frames.back() == sent.frames.back());
+  }
+
+  // A mood line drives the crying generator with or without a window, and --record keeps its
+  // frames in both (sadness raises the inner brows, the face never stands still); a frame from
+  // the stream then takes the face back.
+  void playerRecordsTheMoodGenerator_data() {
+    QTest::addColumn<bool>("window");
+    QTest::newRow("no window") << false;
+    QTest::newRow("window") << true;
+  }
+  void playerRecordsTheMoodGenerator() {
+    QFETCH(bool, window);
+    QTemporaryDir dir;
+    const QString out = dir.filePath("moods.fap");
+    QProcess player;
+    const quint16 port = startPlayer(player, "fap+tcp://127.0.0.1:0", out, {"--record-rate", "20"},
+                                     window);  // idle after 1.5 s
+    QVERIFY2(port != 0, player.readAllStandardError().constData());
+    QTcpSocket agent;
+    agent.connectToHost(QHostAddress::LocalHost, port);
+    QVERIFY(agent.waitForConnected(3000));
+    agent.write("mood sadness=0.9\n");
+    agent.flush();
+    waitFor([] { return false; }, 800);  // within the idle time: a mood line is activity
+    agent.write("2.1 greta 20 1\n" + gretaFrame(0, {{3, 77}}));
+    agent.flush();
+    waitFor([] { return false; }, 200);
+    agent.disconnectFromHost();
+    QVERIFY(exited(player, 60000));
+    const QByteArray err = player.readAllStandardError();
+    QCOMPARE(player.exitCode(), 0);
+    QVERIFY2(err.contains("recorded"), err.constData());
+    const FapAnimation take = FapReader::readFile(out.toStdString()).animation;
+    // The window generates at its display's pace (slow under a loaded Xvfb), so count the
+    // generated frames rather than expect one per recorded frame.
+    std::vector<FapValues> generated;
+    for (const FapValues& v : take.frames) {
+      if (channel(v, "raise_l_i_eyebrow") > 0 && channel(v, "raise_r_i_eyebrow") > 0 &&
+          (generated.empty() || v != generated.back()))
+        generated.push_back(v);
+    }
+    QVERIFY2(
+        generated.size() >= (window ? 2u : 10u),  // without one, 20 a second of its own
+        qPrintable(
+            QString("%1 generated of %2 recorded").arg(generated.size()).arg(take.frameCount())));
+    const FapValues& last = take.frames.back();  // the stream's frame: the rest neutral
+    QCOMPARE(channel(last, "open_jaw"), 77.0F);
+    QCOMPARE(channel(last, "raise_l_i_eyebrow"), 0.0F);
   }
 
   // --no-window --render: the take rendered when the stream ends, as --render renders a file.

@@ -73,6 +73,11 @@ MoodFrame MoodGenerator::step(double seconds, const MoodLevels& levels) {
 
 MoodTake generateMoodTake(const MoodScript& script, std::uint64_t seed, double seconds,
                           double fps) {
+  return generateMoodTake([&script](double t) { return script.at(t); }, seed, seconds, fps);
+}
+
+MoodTake generateMoodTake(const std::function<MoodLevels(double)>& moodsAt, std::uint64_t seed,
+                          double seconds, double fps) {
   if (!(fps > 0 && fps <= 1000))
     throw std::invalid_argument("expected a frame rate in (0, 1000] per second");
   if (!(seconds >= 0 && seconds <= kMaxMoodSeconds))
@@ -92,7 +97,7 @@ MoodTake generateMoodTake(const MoodScript& script, std::uint64_t seed, double s
   MoodGenerator generator(seed);
   for (std::size_t i = 0; i < n; ++i) {
     const double t = static_cast<double>(i) / fps;
-    const MoodFrame frame = generator.step(t, script.at(t));
+    const MoodFrame frame = generator.step(t, moodsAt(t));
     take.animation.frames.push_back(frame.channels);
     take.colours.push_back(frame.colours);
   }

@@ -59,6 +59,13 @@ LayersCommand::LayersCommand(EditorModel& model, std::vector<PoseLayer> before,
 void LayersCommand::redo() { model_.applyLayers(after_); }
 void LayersCommand::undo() { model_.applyLayers(before_); }
 
+MoodsCommand::MoodsCommand(EditorModel& model, MoodCurves before, MoodCurves after,
+                           const QString& text)
+    : QUndoCommand(text), model_(model), before_(std::move(before)), after_(std::move(after)) {}
+
+void MoodsCommand::redo() { model_.applyMoods(after_); }
+void MoodsCommand::undo() { model_.applyMoods(before_); }
+
 SettingsCommand::SettingsCommand(EditorModel& model, ProjectDocument before, ProjectDocument after,
                                  const QString& text)
     : QUndoCommand(text), model_(model), before_(std::move(before)), after_(std::move(after)) {

@@ -71,6 +71,7 @@ void EditorModel::resetDocument(ProjectDocument document, bool clean) {
   }
   emit documentReset();
   emit layersChanged();
+  emit moodsChanged();
   emit keysChanged();
   emit settingsChanged();
   emit selectionChanged();

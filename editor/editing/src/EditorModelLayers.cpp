@@ -3,6 +3,7 @@
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/EditCommands.h>
 #include <lacrima/editing/EditorModel.h>
+#include <lacrima/editing/IntensityKeyEdits.h>
 #include <lacrima/editing/KeyChange.h>
 #include <lacrima/editing/PresetLibrary.h>
 
@@ -99,16 +100,7 @@ void EditorModel::keyLayerIntensity(int index, double value) {
   }
   std::vector<PoseLayer> after = document_.layers;
   PoseLayer& layer = after[static_cast<std::size_t>(index)];
-  std::vector<IntensityKey> keys = layer.intensityKeys();
-  const auto at = std::find_if(keys.begin(), keys.end(), [&](const IntensityKey& key) {
-    return std::abs(key.time - time_) < kSameKeyTime;
-  });
-  if (at != keys.end()) {
-    at->value = value;
-  } else {
-    keys.push_back({time_, value, Interpolation::Smooth});
-  }
-  layer.setIntensityKeys(std::move(keys));
+  layer.setIntensityKeys(withKeyAt(layer.intensityKeys(), time_, value));
   pushLayers(std::move(after), tr("Key layer intensity"));
 }
 
@@ -116,10 +108,7 @@ void EditorModel::unkeyLayerIntensity(int index) {
   if (index < 0 || index >= static_cast<int>(document_.layers.size())) return;
   std::vector<PoseLayer> after = document_.layers;
   PoseLayer& layer = after[static_cast<std::size_t>(index)];
-  std::vector<IntensityKey> keys = layer.intensityKeys();
-  std::erase_if(keys,
-                [&](const IntensityKey& key) { return std::abs(key.time - time_) < kSameKeyTime; });
-  layer.setIntensityKeys(std::move(keys));
+  layer.setIntensityKeys(withoutKeyAt(layer.intensityKeys(), time_));
   pushLayers(std::move(after), tr("Remove layer intensity key"));
 }
 

@@ -13,8 +13,11 @@ MoodGenerationPlan planMoodGeneration(const KeyframeSequence& keys,
     throw std::invalid_argument("expected a time range from 0 to 86400 s, its end after its start");
   if (!(request.tolerance >= 0) || !std::isfinite(request.tolerance))
     throw std::invalid_argument("expected a reduction tolerance >= 0");
+  const auto moodsAt = [&request](double t) {
+    return request.curves ? request.curves->at(request.start + t) : request.script.at(t);
+  };
   const MoodTake take =
-      generateMoodTake(request.script, request.seed, request.end - request.start, request.fps);
+      generateMoodTake(moodsAt, request.seed, request.end - request.start, request.fps);
   MoodGenerationPlan plan;
   plan.frames = take.animation.frameCount();
   plan.channels = take.animation.usedChannels();

@@ -47,6 +47,16 @@ bool LiveSession::stopRecording() {
   return recorder->stop();
 }
 
+void LiveSession::recordGenerated(const FapValues& values, double arrival) {
+  if (!recorder_) return;
+  LiveFrame frame;
+  frame.values = values;
+  frame.arrival = arrival;
+  for (int i = 0; i < kChannelCount; ++i)
+    if (values[static_cast<std::size_t>(i)] != 0) frame.mask.set(i);
+  recorder_->add(frame);
+}
+
 InputCounters LiveSession::totals() const {
   InputCounters sum;
   for (const auto& input : inputs_) {

@@ -28,6 +28,11 @@
 //                "blush": [ ... ] }        (version 2; optional, each; values in [0, 1]; keyed
 //                                            colours replace the player's computed ones,
 //                                            FaceColours.h)
+//   "moods": { "sadness": [ { "time": 2, "value": 0.8, "interpolation": "smooth" } ],
+//              "anger": [...], "joy": [...], "shame": [...] }
+//                                          (version 2; optional, each; values in [0, 1]; what
+//                                            the editor's Generate crying... may follow,
+//                                            MoodCurves.h; never baked nor exported to .fap)
 // }
 // Head paths in the file are relative to the project file's folder (absolute ones are read as
 // they are). load() makes them absolute, so the document names the same files wherever it is
@@ -42,6 +47,7 @@
 #include <lacrima/common/PoseLayer.h>
 #include <lacrima/common/TearParameters.h>
 #include <lacrima/common/TearQuality.h>
+#include <lacrima/common/mood/MoodCurves.h>
 
 #include <Eigen/Core>
 #include <optional>
@@ -96,6 +102,7 @@ struct ProjectDocument {
   SceneSettings scene;
   std::optional<HeadFiles> head;  // nullopt: the default head
   FaceColourCurves colours;       // keyed redness and blush; empty: computed by the player
+  MoodCurves moods;               // keyed moods for the crying generator; empty: none
 
   bool operator==(const ProjectDocument& other) const;
 

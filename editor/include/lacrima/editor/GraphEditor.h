@@ -15,6 +15,9 @@
 // frame selected. Right-click: the same commands. Each drag is one undo step, pushed on
 // release; while dragging, the curves show the edit as it would be.
 //
+// The Moods button swaps the channels for the project's mood curves (MoodGraph.h), edited the
+// same way, on the same time view.
+//
 // Drawing cost does not grow with the animation: curves are sampled once per edit (only the
 // dragged channels during a drag), drawn with one point per pixel column, and only keys in
 // view are visited.
@@ -37,6 +40,7 @@ class EditorModel;
 namespace lacrima::editor {
 
 struct GraphCurve;
+class MoodGraph;
 
 class GraphEditor : public QWidget {
   Q_OBJECT
@@ -48,6 +52,10 @@ class GraphEditor : public QWidget {
   std::vector<int> shownChannels() const;
 
   void setNormalized(bool on);
+  // The Moods view (MoodGraph) in place of the channels.
+  void setMoodsShown(bool on);
+  bool moodsShown() const;
+  MoodGraph* moodGraph() const { return moodGraph_; }
 
   // The view: time at the left edge of the plot, pixels per second; value at the top edge of
   // the plot, pixels per unit (per normalised unit in the normalised view).
@@ -123,6 +131,8 @@ class GraphEditor : public QWidget {
 
   editing::EditorModel& model_;
   QToolButton* normalizeButton_ = nullptr;
+  QToolButton* moodsButton_ = nullptr;
+  MoodGraph* moodGraph_ = nullptr;
   bool normalized_ = false;
   double start_ = -0.25;      // seconds at the plot's left edge
   double scale_ = 200.0;      // pixels per second

@@ -76,7 +76,8 @@ class MainWindow : public QMainWindow {
   GraphEditor* graphEditor() const;
   // The tabs under the transport: Keys (the timeline) and the per-channel views.
   QTabWidget* animationViews() const;
-  // Brings the view named "keys", "dope" or "graph" to the front; false for any other name.
+  // Brings the view named "keys", "dope", "graph" or "moods" (the graph editor's Moods view) to
+  // the front; false for any other name.
   bool showAnimationView(const QString& name);
   DopeSheet* dopeSheet() const;  // the Dope sheet tab
   TransportBar* transport() const;

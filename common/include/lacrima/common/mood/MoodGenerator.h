@@ -24,6 +24,7 @@
 #include <lacrima/common/mood/TearProduction.h>
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace lacrima::inline common {
@@ -81,5 +82,9 @@ inline constexpr double kMaxMoodSeconds = 86400;  // a day, as project keys
 // Throws std::invalid_argument for fps outside (0, 1000], seconds outside [0, kMaxMoodSeconds]
 // or more than kMaxBakedFrames frames, before allocating anything.
 MoodTake generateMoodTake(const MoodScript& script, std::uint64_t seed, double seconds, double fps);
+// The same with the moods of frame i read from moodsAt(i / fps) (a project's mood curves, the
+// editor's Generate...); the script form is this with script.at.
+MoodTake generateMoodTake(const std::function<MoodLevels(double)>& moodsAt, std::uint64_t seed,
+                          double seconds, double fps);
 
 }  // namespace lacrima::inline common

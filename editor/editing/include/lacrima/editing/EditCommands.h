@@ -68,6 +68,19 @@ class LayersCommand : public QUndoCommand {
   std::vector<PoseLayer> before_, after_;
 };
 
+// Mood curve edits (the graph editor's Moods view) store the four curves before and after: a
+// few keys each.
+class MoodsCommand : public QUndoCommand {
+ public:
+  MoodsCommand(EditorModel& model, MoodCurves before, MoodCurves after, const QString& text);
+  void redo() override;
+  void undo() override;
+
+ private:
+  EditorModel& model_;
+  MoodCurves before_, after_;
+};
+
 class SettingsCommand : public QUndoCommand {
  public:
   SettingsCommand(EditorModel& model, ProjectDocument before, ProjectDocument after,

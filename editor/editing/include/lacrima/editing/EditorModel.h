@@ -37,6 +37,7 @@ using ChannelValue = std::pair<int, float>;
 
 class KeyEditCommand;
 class LayersCommand;
+class MoodsCommand;
 class SettingsCommand;
 
 class EditorModel : public QObject {
@@ -137,6 +138,13 @@ class EditorModel : public QObject {
   // Keys layer `index`'s intensity at the current time (replacing a key there); unkey removes it.
   void keyLayerIntensity(int index, double value);
   void unkeyLayerIntensity(int index);
+  // The project's mood curves (MoodCurves.h), as the graph editor's Moods view edits them: the
+  // whole set after the edit, one undo step (nothing when it equals the current one). Values
+  // are clamped to [0, 1] and times to [0, 86400].
+  void editMoods(MoodCurves after, const QString& text);
+  // Keys `mood` at the current time to `value` (replacing a key there); unkey removes it.
+  void keyMood(Mood mood, double value);
+  void unkeyMood(Mood mood);
   // Mirrors left <-> right: the selected keys, else the key at the current time, else the
   // current pose as a new key.
   void mirror();
@@ -156,6 +164,7 @@ class EditorModel : public QObject {
   void keysChanged();
   void settingsChanged();
   void layersChanged();
+  void moodsChanged();
   void timeChanged(double seconds);
   void valuesChanged();  // currentValues() changed (time or keys)
   void selectionChanged();
@@ -170,10 +179,12 @@ class EditorModel : public QObject {
   // What the commands do and undo: the one way the document changes after resetDocument().
   friend class KeyEditCommand;
   friend class LayersCommand;
+  friend class MoodsCommand;
   friend class SettingsCommand;
   void applyKeyChange(const KeyChange& change, bool redo);
   void applySettings(const ProjectDocument& settings);
   void applyLayers(const std::vector<PoseLayer>& layers);
+  void applyMoods(const MoodCurves& moods);
 
   void refreshValues();
   void pushKeyEdit(const KeyChange& change, const QString& text,

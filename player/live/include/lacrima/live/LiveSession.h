@@ -39,6 +39,10 @@ class LiveSession : public QObject {
   // Writes the recording (atomically); false when nothing was recorded. Throws FileError.
   bool stopRecording();
   const LiveRecorder* recorder() const { return recorder_.get(); }
+  // The crying generator's face at `arrival` (liveClockSeconds()), made here, not received (the
+  // window's LiveSource, LiveMoodFeed): recorded like a received frame that sets the channels
+  // it moves, but neither counted nor activity (--exit-when-idle waits for the stream).
+  void recordGenerated(const FapValues& values, double arrival);
 
   long long framesReceived() const { return frames_; }
   InputCounters totals() const;
