@@ -33,14 +33,13 @@ bool exited(QProcess& process, int timeoutMs) {
   return process.state() == QProcess::NotRunning || process.waitForFinished(timeoutMs);
 }
 
-// Starts a headless player (with `window`, a windowed one) on `url` (port 0) recording to
-// `out`; returns the port it got.
+// Starts a headless player on `url` (port 0) recording to `out`; returns the port it got.
 quint16 startPlayer(QProcess& player, const QString& url, const QString& out,
-                    const QStringList& more = {}, bool window = false) {
+                    const QStringList& more = {}) {
   player.setProgram(kBin + "/lacrima-player");
-  const QStringList headless = window ? QStringList() : QStringList{"--no-window"};
   player.setArguments(
-      headless + QStringList{"--listen", url, "--record", out, "--exit-when-idle", "1.5"} + more);
+      QStringList{"--no-window", "--listen", url, "--record", out, "--exit-when-idle", "1.5"} +
+      more);
   player.start();
   if (!player.waitForStarted(5000)) return 0;
   // "listening on fap+tcp://127.0.0.1:40123"
@@ -127,21 +126,15 @@ class LiveCliTest : public QObject {
     QVERIFY(got.frames.back() == sent.frames.back());
   }
 
-  // A mood line drives the crying generator with or without a window, and --record keeps its
-  // frames in both (sadness raises the inner brows, the face never stands still); a frame from
-  // the stream then takes the face back.
-  void playerRecordsTheMoodGenerator_data() {
-    QTest::addColumn<bool>("window");
-    QTest::newRow("no window") << false;
-    QTest::newRow("window") << true;
-  }
-  void playerRecordsTheMoodGenerator() {
-    QFETCH(bool, window);
+  // A mood line drives the crying generator without a window too, and --record keeps its frames
+  // (sadness raises the inner brows, the face never stands still); a frame from the stream then
+  // takes the face back. (The window's recording of the generator: test_player_window.)
+  void headlessPlayerRecordsTheMoodGenerator() {
     QTemporaryDir dir;
     const QString out = dir.filePath("moods.fap");
     QProcess player;
-    const quint16 port = startPlayer(player, "fap+tcp://127.0.0.1:0", out, {"--record-rate", "20"},
-                                     window);  // idle after 1.5 s
+    // Idle after 1.5 s.
+    const quint16 port = startPlayer(player, "fap+tcp://127.0.0.1:0", out, {"--record-rate", "20"});
     QVERIFY2(port != 0, player.readAllStandardError().constData());
     QTcpSocket agent;
     agent.connectToHost(QHostAddress::LocalHost, port);
@@ -158,8 +151,8 @@ class LiveCliTest : public QObject {
     QCOMPARE(player.exitCode(), 0);
     QVERIFY2(err.contains("recorded"), err.constData());
     const FapAnimation take = FapReader::readFile(out.toStdString()).animation;
-    // The window generates at its display's pace (slow under a loaded Xvfb), so count the
-    // generated frames rather than expect one per recorded frame.
+    // Count the generated frames rather than expect one per recorded frame: a loaded machine
+    // may run the generator's timer late.
     std::vector<FapValues> generated;
     for (const FapValues& v : take.frames) {
       if (channel(v, "raise_l_i_eyebrow") > 0 && channel(v, "raise_r_i_eyebrow") > 0 &&
@@ -167,7 +160,7 @@ class LiveCliTest : public QObject {
         generated.push_back(v);
     }
     QVERIFY2(
-        generated.size() >= (window ? 2u : 10u),  // without one, 20 a second of its own
+        generated.size() >= 10u,  // 20 a second for 0.8 s
         qPrintable(
             QString("%1 generated of %2 recorded").arg(generated.size()).arg(take.frameCount())));
     const FapValues& last = take.frames.back();  // the stream's frame: the rest neutral

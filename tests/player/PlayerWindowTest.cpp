@@ -20,6 +20,8 @@
 
 #include <lacrima/playback/TearQualityOptions.h>
 
+#include <algorithm>
+
 #include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
@@ -379,8 +381,11 @@ class PlayerWindowTest : public QObject {
     QCOMPARE(panel.slider(Mood::Anger)->value(),
              int(std::lround(moodPresets()[2].levels[Mood::Anger] * 100)));
 
-    // A mood line on a stream: the generator follows it, the sliders show it.
+    // A mood line on a stream: the generator follows it, the sliders show it, and a recording
+    // keeps the generator's face (LiveSession::recordGenerated), not only frames received.
     live::ListenUrl url;
+    QTemporaryDir dir;
+    window_->liveSession().startRecording(dir.filePath("moods.fap").toStdString(), 20.0);
     window_->listen(url);
     QTcpSocket agent;
     agent.connectToHost(QHostAddress::LocalHost,
@@ -391,6 +396,15 @@ class PlayerWindowTest : public QObject {
     QCOMPARE(panel.slider(Mood::Anger)->value(), 0);
     QCOMPARE(window_->liveSource()->moods()[Mood::Joy], 0.9);
     QVERIFY(window_->moodDriven());
+    const live::LiveRecorder* recorder = window_->liveSession().recorder();
+    QVERIFY(recorder);
+    QTRY_VERIFY_WITH_TIMEOUT(recorder->frameCount() >= 3, 20000);
+    const FapAnimation& take = recorder->animation();
+    // The generator's face, moving: recorded, where nothing was received but a mood line.
+    QVERIFY(std::any_of(take.frames.back().begin(), take.frames.back().end(),
+                        [](float v) { return v != 0; }));
+    QVERIFY(take.frames.back() != take.frames.front());
+    QVERIFY(window_->liveSession().stopRecording());
 
     QVERIFY(window_->openFile(kDemo));
     QVERIFY(!window_->isLive());
