@@ -20,8 +20,6 @@
 
 #include <lacrima/playback/TearQualityOptions.h>
 
-#include <algorithm>
-
 #include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
@@ -40,6 +38,7 @@
 #include <QUdpSocket>
 #include <QtTest>
 
+#include <algorithm>
 #include <fstream>
 
 using namespace lacrima;
