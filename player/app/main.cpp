@@ -651,8 +651,9 @@ int main(int argc, char** argv) {
        "FILE"},
       {"no-window",
        "Run without a window (with --listen, and --record and/or --render: the take rendered "
-       "when the stream ends): for scripts and tests."},
-      {"exit-when-idle", "End after this long without a live frame.", "SECONDS"},
+       "when the stream ends): for scripts and tests. A stream's mood lines drive the crying "
+       "generator, and --record keeps its frames."},
+      {"exit-when-idle", "End after this long without a live frame or mood line.", "SECONDS"},
       {"no-tears",
        "With --render, --video or an export: the animation without its tear channels (69/70), "
        "the same face with no tear: the other half of a paired stimulus."},
