@@ -9,6 +9,7 @@
 // bitrate) and, for the video, its error: the PSNR of the decoded video against the PNG frames of
 // the same render (Debian's ffmpeg, when installed). Needs an X display: run under xvfb-run.
 #include "BenchCommandLine.h"
+#include "BenchGuiApp.h"
 #include "BenchSupport.h"
 
 #include <lacrima/common/FapChannels.h>
@@ -28,7 +29,6 @@
 
 #include <QDir>
 #include <QFileInfo>
-#include <QGuiApplication>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QStandardPaths>
@@ -130,10 +130,7 @@ int runExport(int argc, char** argv) {
   Options o;
   if (const std::optional<int> status = parseOptions(argc, argv, o)) return *status;
   if (const std::optional<int> status = missingDisplayOrHead("export")) return *status;
-  int qtArgc = 1;
-  char name[] = "lacrima-bench";
-  char* qtArgv[] = {name, nullptr};
-  QGuiApplication app(qtArgc, qtArgv);
+  const BenchGuiApp app;
 
   try {
     const auto rig = playback::loadDefaultHeadRig();

@@ -12,6 +12,7 @@
 // median latency <= one render (from the tick to its end, the mean of the case) + 5 ms. Needs
 // an X display: run under xvfb-run.
 #include "BenchCommandLine.h"
+#include "BenchGuiApp.h"
 #include "BenchSupport.h"
 
 #include <lacrima/common/JsonWriter.h>
@@ -21,7 +22,7 @@
 #include <lacrima/playback/LiveSource.h>
 #include <lacrima/scene/FaceRenderer.h>
 
-#include <QGuiApplication>
+#include <QCoreApplication>
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -228,10 +229,7 @@ int runLive(int argc, char** argv) {
   Options o;
   if (const std::optional<int> status = parseOptions(argc, argv, o)) return *status;
   if (const std::optional<int> status = missingDisplayOrHead("live")) return *status;
-  int qtArgc = 1;
-  char name[] = "lacrima-bench";
-  char* qtArgv[] = {name, nullptr};
-  QGuiApplication app(qtArgc, qtArgv);
+  const BenchGuiApp app;
   try {
     const auto rig = playback::loadDefaultHeadRig();
     scene::FaceRenderer renderer(rig->head, QSize(o.width, o.height));

@@ -4,6 +4,7 @@
 // back). Target: >= 30 fps at 1280x720 with software rendering. Needs an X display (OGRE is
 // GLX only): run under xvfb-run.
 #include "BenchCommandLine.h"
+#include "BenchGuiApp.h"
 #include "BenchSupport.h"
 
 #include <lacrima/common/JsonWriter.h>
@@ -11,8 +12,6 @@
 #include <lacrima/common/Milliseconds.h>
 #include <lacrima/playback/Playback.h>
 #include <lacrima/scene/FaceRenderer.h>
-
-#include <QGuiApplication>
 
 #include <algorithm>
 #include <array>
@@ -59,10 +58,7 @@ int runPlayer(int argc, char** argv) {
   Options o;
   if (const std::optional<int> status = parseOptions(argc, argv, o)) return *status;
   if (const std::optional<int> status = missingDisplayOrHead("player")) return *status;
-  int qtArgc = 1;
-  char name[] = "lacrima-bench";
-  char* qtArgv[] = {name, nullptr};
-  QGuiApplication app(qtArgc, qtArgv);
+  const BenchGuiApp app;
 
   try {
     const auto rigStart = SteadyClock::now();
