@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <memory>
 
 namespace lacrima::editing {
@@ -121,7 +122,13 @@ void EditorModel::setCurrentTimeExact(double seconds) {
 
 void EditorModel::refreshValues() {
   keyedValues_ = document_.keys.evaluate(time_);
-  values_ = mixLayers(keyedValues_, document_.layers, time_);
+  try {
+    values_ = document_.evaluate(time_, moodCache_);
+  } catch (const std::invalid_argument&) {
+    // A mood layer too long for a frame rate chosen since (settings): it adds nothing until
+    // the rate or the layer changes; the file would refuse it, so the layer panel says so.
+    values_ = mixLayers(keyedValues_, document_.layers, time_);
+  }
   for (int i = 0; i < kChannelCount; ++i)
     if (posed_.test(static_cast<std::size_t>(i)))
       values_[static_cast<std::size_t>(i)] = poseValues_[static_cast<std::size_t>(i)];
@@ -512,7 +519,11 @@ void EditorModel::applySettings(const ProjectDocument& settings) {
   document_.scene = settings.scene;
   document_.head = settings.head;
   emit settingsChanged();
-  if (oldFps != document_.fps) setCurrentTime(time_);
+  if (oldFps != document_.fps) {
+    setCurrentTime(time_);
+    refreshValues();  // a mood layer is generated at the project's rate
+    emit valuesChanged();
+  }
 }
 
 }  // namespace lacrima::editing

@@ -105,6 +105,9 @@ class MainWindow : public QMainWindow {
   // A take of the crying generator as keys over the request's range, in one undo step; false
   // (the reason in lastError() and the status bar) when the request is refused.
   bool generateCrying(const editing::MoodGenerationRequest& request);
+  // The same take as a procedural layer (EditorModel::addMoodLayer); false with the reason in
+  // the status bar.
+  bool addCryingLayer(const editing::MoodGenerationRequest& request);
 
   // --- files (false on failure; the reason is in lastError()) ---------------------------
   void newDocument();

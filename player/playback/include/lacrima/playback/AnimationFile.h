@@ -7,6 +7,7 @@
 #include <lacrima/common/FapAnimation.h>
 #include <lacrima/common/ProjectDocument.h>
 
+#include <memory>
 #include <string>
 
 namespace lacrima::playback {
@@ -17,6 +18,7 @@ struct AnimationFile {
   SceneSettings scene;       // the project's; defaults for a FAP file
   TearSources tearSources;   // the project's; rig defaults for a FAP file
   FaceColourCurves colours;  // the project's keyed colours; none for a FAP file
+  std::shared_ptr<const MoodLayerTake> moodTake;  // the project's mood layer (its colours)
   double startTime = 0;      // the project time of frame 0 (where its colours are read from)
   Warnings warnings;         // the FAP reader's (gaps filled, odd header, ...)
 };
