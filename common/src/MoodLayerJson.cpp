@@ -33,8 +33,9 @@ void writeMoodLayer(JsonWriter& out, const MoodLayer& layer) {
 MoodLayer readMoodLayer(const JsonValue& value, int version, double fps) {
   if (version < 2) value.fail("a mood layer needs a project of version 2 or later");
   if (!value.isObject())
-    value.fail("expected an object {\"seed\": n, \"start\": s, \"end\": s, \"muted\": false}, got " +
-               value.describe());
+    value.fail(
+        "expected an object {\"seed\": n, \"start\": s, \"end\": s, \"muted\": false}, got " +
+        value.describe());
   value.rejectUnknownMembers({"seed", "start", "end", "muted"});
   MoodLayer layer;
   const JsonValue seed = value.required("seed");

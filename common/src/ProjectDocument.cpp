@@ -348,8 +348,7 @@ FapAnimation ProjectDocument::bake(double rate, MoodLayerCache& cache) const {
 }
 
 FapValues ProjectDocument::evaluate(double seconds, MoodLayerCache& cache) const {
-  return mixMoodLayer(mixLayers(keys.evaluate(seconds), layers, seconds), moodTake(cache),
-                      seconds);
+  return mixMoodLayer(mixLayers(keys.evaluate(seconds), layers, seconds), moodTake(cache), seconds);
 }
 
 KeyedColours ProjectDocument::coloursAt(double seconds, MoodLayerCache& cache) const {

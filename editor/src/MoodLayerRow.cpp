@@ -37,8 +37,7 @@ MoodLayerRow::MoodLayerRow(editing::EditorModel& model, QWidget* parent)
   grid->addWidget(bake_, 2, 1);
   grid->addWidget(remove_, 2, 2);
 
-  connect(enabled_, &QCheckBox::toggled, this,
-          [this](bool on) { model_.setMoodLayerMuted(!on); });
+  connect(enabled_, &QCheckBox::toggled, this, [this](bool on) { model_.setMoodLayerMuted(!on); });
   connect(seed_, &QLineEdit::returnPressed, this, &MoodLayerRow::applyTypedSeed);
   connect(newSeed_, &QPushButton::clicked, this, [this] {
     const auto& layer = model_.document().moodLayer;

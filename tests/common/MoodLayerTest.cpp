@@ -77,7 +77,8 @@ class MoodLayerTest : public QObject {
                                  "9007199254740991, got 1.5";
     QTest::newRow("huge seed") << R"({"seed": 1e17, "start": 0, "end": 2})"
                                << "moodLayer.seed: expected a whole number";
-    QTest::newRow("no seed") << R"({"start": 0, "end": 2})" << "missing field \"seed\"";
+    QTest::newRow("no seed") << R"({"start": 0, "end": 2})"
+                             << "missing field \"seed\"";
     QTest::newRow("backwards") << R"({"seed": 1, "start": 4, "end": 2})"
                                << "moodLayer.end: expected a time in seconds from 4 to 86400, "
                                   "got 2";

@@ -9,9 +9,9 @@
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editing/LiveTake.h>
+#include <lacrima/editor/LayerPanel.h>
 #include <lacrima/editor/LiveRecording.h>
 #include <lacrima/editor/MainWindow.h>
-#include <lacrima/editor/LayerPanel.h>
 #include <lacrima/editor/MoodGenerationDialog.h>
 #include <lacrima/editor/MoodLayerRow.h>
 #include <lacrima/editor/RecordLiveDialog.h>

@@ -74,8 +74,7 @@ FapValues mixMoodLayer(const FapValues& below, const MoodLayerTake* take, double
   return addMoodFrame(below, take->channelsAt(seconds), take->channels());
 }
 
-KeyedColours mixMoodColours(const KeyedColours& keyed, const MoodLayerTake* take,
-                            double seconds) {
+KeyedColours mixMoodColours(const KeyedColours& keyed, const MoodLayerTake* take, double seconds) {
   if (!take || !take->covers(seconds)) return keyed;
   const FaceColours generated = take->coloursAt(seconds);
   return {generated.redness, generated.blush};

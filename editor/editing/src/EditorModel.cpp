@@ -9,8 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <memory>
+#include <stdexcept>
 
 namespace lacrima::editing {
 namespace {
@@ -102,6 +102,11 @@ double EditorModel::snapTime(double seconds) const {
   if (nearestKey >= 0.0) return nearestKey;
   const double snapped = std::round(seconds * document_.fps) / document_.fps;
   return snapped <= kMaxKeyTime ? snapped : std::floor(kMaxKeyTime * document_.fps) / document_.fps;
+}
+
+double EditorModel::endTime() const {
+  const auto [start, end] = document_.bakeRange();
+  return start <= end ? end : 0.0;
 }
 
 int EditorModel::frameAt(double seconds) const {

@@ -13,8 +13,7 @@ namespace {
 
 // `curves` with the script's keys written from `start` on, each mood's old keys within
 // [start, end] gone: the constant moods of Generate crying... made editable.
-MoodCurves keyedFromScript(MoodCurves curves, const MoodScript& script, double start,
-                           double end) {
+MoodCurves keyedFromScript(MoodCurves curves, const MoodScript& script, double start, double end) {
   std::vector<MoodKey> keys = script.keys();
   if (keys.empty()) keys.push_back({});
   for (Mood mood : kMoods) {

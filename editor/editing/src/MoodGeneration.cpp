@@ -16,8 +16,7 @@ MoodGenerationPlan planMoodGeneration(const KeyframeSequence& keys,
   const auto moodsAt = [&request](double t) {
     return request.curves ? request.curves->at(request.start + t) : request.script.at(t);
   };
-  MoodTake take =
-      generateMoodTake(moodsAt, request.seed, request.end - request.start, request.fps);
+  MoodTake take = generateMoodTake(moodsAt, request.seed, request.end - request.start, request.fps);
   if (request.addToKeys) {
     const ChannelMask moved = take.animation.animated;
     for (std::size_t f = 0; f < take.animation.frames.size(); ++f) {

@@ -31,8 +31,8 @@
 //   "moods": { "sadness": [ { "time": 2, "value": 0.8, "interpolation": "smooth" } ],
 //              "anger": [...], "joy": [...], "shame": [...] }
 //                                          (version 2; optional, each; values in [0, 1]; what
-//                                            the editor's Generate crying... may follow,
-//                                            MoodCurves.h; never baked nor exported to .fap)
+//                                            Generate crying... and the mood layer follow,
+//                                            MoodCurves.h; by themselves never baked)
 //   "moodLayer": { "seed": 4, "start": 2, "end": 30, "muted": false }
 //                                          (version 2; optional; the crying generator over
 //                                            [start, end] following "moods", evaluated, not
@@ -105,9 +105,9 @@ struct ProjectDocument {
   std::vector<PoseLayer> layers;  // mixed onto the keys in this order (PoseLayer.h)
   TearSources tearSources;
   SceneSettings scene;
-  std::optional<HeadFiles> head;  // nullopt: the default head
-  FaceColourCurves colours;       // keyed redness and blush; empty: computed by the player
-  MoodCurves moods;               // keyed moods for the crying generator; empty: none
+  std::optional<HeadFiles> head;       // nullopt: the default head
+  FaceColourCurves colours;            // keyed redness and blush; empty: computed by the player
+  MoodCurves moods;                    // keyed moods for the crying generator; empty: none
   std::optional<MoodLayer> moodLayer;  // the generator following `moods`, mixed on the keys
 
   bool operator==(const ProjectDocument& other) const;

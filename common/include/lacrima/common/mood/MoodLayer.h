@@ -77,8 +77,7 @@ FapValues mixMoodLayer(const FapValues& below, const MoodLayerTake* take, double
 FapValues addMoodFrame(const FapValues& below, const FapValues& generated,
                        const ChannelMask& channels);
 // The keyed colours with the take's redness and blush in place of them within its range.
-KeyedColours mixMoodColours(const KeyedColours& keyed, const MoodLayerTake* take,
-                            double seconds);
+KeyedColours mixMoodColours(const KeyedColours& keyed, const MoodLayerTake* take, double seconds);
 
 // Colours change slowly: a key per frame would make a ten-minute project's colours 26,000 keys
 // of JSON for nothing. A key every kColourKeyStep seconds (and on the last frame), linear

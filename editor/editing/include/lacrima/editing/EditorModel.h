@@ -72,7 +72,9 @@ class EditorModel : public QObject {
   double snapTime(double seconds) const;
   double frameDuration() const { return 1.0 / document_.fps; }
   int frameAt(double seconds) const;  // nearest frame number
-  double endTime() const { return document_.keys.endTime(); }
+  // The end of what plays (ProjectDocument::bakeRange): the last key, or a layer's later end
+  // (the crying layer's, a pose layer's last intensity key); 0 when nothing plays.
+  double endTime() const;
 
   // --- values at the current time -----------------------------------------------------
   // What the face shows: the keys with the layers mixed on (sliders show these; a slider edit
@@ -240,8 +242,8 @@ class EditorModel : public QObject {
   int focus_ = 3;
   int dragSessions_ = 0;
   bool posingOnly_ = false;
-  ChannelMask posed_;       // channels the pose sets, over the animation
-  FapValues poseValues_{};  // their values
+  ChannelMask posed_;         // channels the pose sets, over the animation
+  FapValues poseValues_{};    // their values
   MoodLayerCache moodCache_;  // the mood layer's take, generated again when its inputs change
 };
 

@@ -18,9 +18,10 @@ struct AnimationFile {
   SceneSettings scene;       // the project's; defaults for a FAP file
   TearSources tearSources;   // the project's; rig defaults for a FAP file
   FaceColourCurves colours;  // the project's keyed colours; none for a FAP file
-  std::shared_ptr<const MoodLayerTake> moodTake;  // the project's mood layer (its colours)
   double startTime = 0;      // the project time of frame 0 (where its colours are read from)
   Warnings warnings;         // the FAP reader's (gaps filled, odd header, ...)
+  // The project's mood layer, whose colours replace the keyed ones within its range.
+  std::shared_ptr<const MoodLayerTake> moodTake;
 };
 
 // Throws FileError naming the file, the line (and column or JSON path) and what was expected,
