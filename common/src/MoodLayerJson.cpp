@@ -30,7 +30,7 @@ void writeMoodLayer(JsonWriter& out, const MoodLayer& layer) {
   out.endObject();
 }
 
-MoodLayer readMoodLayer(const JsonValue& value, int version, double fps) {
+MoodLayer readMoodLayer(const JsonValue& value, int version) {
   if (version < 2) value.fail("a mood layer needs a project of version 2 or later");
   if (!value.isObject())
     value.fail(
@@ -51,10 +51,6 @@ MoodLayer readMoodLayer(const JsonValue& value, int version, double fps) {
   if (layer.end == layer.start)
     end.fail("expected a time after the start's " + formatJsonNumber(layer.start) + " s, got " +
              end.describe());
-  // The generator makes every frame of the range at the project's rate (MoodLayerTake): bounded
-  // as any baked animation is, before anything is generated.
-  const std::string tooLong = bakeLengthProblem(fps, layer.start, layer.end);
-  if (!tooLong.empty()) end.fail("the mood layer is too long: " + tooLong);
   if (value.has("muted")) layer.muted = value["muted"].boolean();
   return layer;
 }

@@ -467,8 +467,7 @@ ProjectDocument ProjectDocument::read(const JsonValue& root, Use use,
   }
   if (root.has("colours")) document.colours = readColours(root["colours"], version);
   if (root.has("moods")) document.moods = readMoods(root["moods"], version);
-  if (root.has("moodLayer"))
-    document.moodLayer = detail::readMoodLayer(root["moodLayer"], version, document.fps);
+  if (root.has("moodLayer")) document.moodLayer = detail::readMoodLayer(root["moodLayer"], version);
   if (use == Use::Bake) requireBakeable(root, document);
   return document;
 }

@@ -49,9 +49,10 @@ void writeLayers(JsonWriter& out, const std::vector<PoseLayer>& layers);
 std::vector<PoseLayer> readLayers(const JsonValue& value, int version);
 
 // The mood layer (MoodLayer.h, MoodLayerJson.cpp): { "seed", "start", "end", "muted" }, the
-// seed a whole number up to MoodLayer::kMaxSeed, 0 <= start < end <= 86400 s, and no more than
-// kMaxBakedFrames frames at the project's `fps`.
+// seed a whole number up to MoodLayer::kMaxSeed, 0 <= start < end <= 86400 s. Its length in
+// frames is bounded where the project is read to be baked (it is part of bakeRange()), and by
+// generateMoodTake before anything is allocated.
 void writeMoodLayer(JsonWriter& out, const MoodLayer& layer);
-MoodLayer readMoodLayer(const JsonValue& value, int version, double fps);
+MoodLayer readMoodLayer(const JsonValue& value, int version);
 
 }  // namespace lacrima::inline common::detail

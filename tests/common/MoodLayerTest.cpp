@@ -36,9 +36,9 @@ bool sameBits(const FapValues& a, const FapValues& b) {
   return std::memcmp(a.data(), b.data(), sizeof a) == 0;
 }
 
-QString refusal(const std::string& json) {
+QString refusal(const std::string& json, ProjectDocument::Use use = ProjectDocument::Use::Edit) {
   try {
-    ProjectDocument::fromJson(json, "take.lacrima");
+    ProjectDocument::fromJson(json, "take.lacrima", use);
   } catch (const FileError& error) {
     return QString::fromUtf8(error.what());
   }
@@ -108,13 +108,19 @@ class MoodLayerTest : public QObject {
         "{\"format\": \"lacrima-project\", \"version\": 1, \"keys\": [],\n"
         " \"moodLayer\": {\"seed\": 1, \"start\": 0, \"end\": 2}}");
     QVERIFY2(what.contains("take.lacrima:2:") && what.contains("version 2"), qPrintable(what));
-    // A day at 1,000 fps is 86 million frames: refused before anything is generated.
-    what = refusal(
+    // A day at 1,000 fps is 86 million frames: refused to play before anything is generated;
+    // the editor opens it (so that it can be shortened), and the layer adds nothing there.
+    const std::string day =
         "{\"format\": \"lacrima-project\", \"version\": 2, \"fps\": 1000, \"keys\": [],\n"
-        " \"moodLayer\": {\"seed\": 1, \"start\": 0,\n \"end\": 86400}}");
+        " \"moodLayer\": {\"seed\": 1, \"start\": 0,\n \"end\": 86400}}";
+    what = refusal(day, ProjectDocument::Use::Bake);
     QVERIFY2(what.startsWith("take.lacrima:3:") && what.contains("moodLayer.end") &&
                  what.contains("at most 1048576 frames"),
              qPrintable(what));
+    const ProjectDocument opened = ProjectDocument::fromJson(day, "take.lacrima");
+    MoodLayerCache cache;
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, opened.moodTake(cache));
+    QCOMPARE(cache.generations(), 0);
   }
 
   void theTakeIsAddedOntoTheKeysWithinItsRange() {

@@ -130,8 +130,9 @@ void EditorModel::refreshValues() {
   try {
     values_ = document_.evaluate(time_, moodCache_);
   } catch (const std::invalid_argument&) {
-    // A mood layer too long for a frame rate chosen since (settings): it adds nothing until
-    // the rate or the layer changes; the file would refuse it, so the layer panel says so.
+    // A mood layer too long at the project's rate (more than kMaxBakedFrames frames, a rate
+    // chosen since or a file opened to be fixed): it adds nothing until the rate or the layer
+    // changes, as the player and exports refuse such a project with the figures.
     values_ = mixLayers(keyedValues_, document_.layers, time_);
   }
   for (int i = 0; i < kChannelCount; ++i)
