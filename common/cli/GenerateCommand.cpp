@@ -2,31 +2,13 @@
 
 #include "CliFiles.h"
 
-#include <lacrima/common/mood/MoodGenerator.h>
+#include <lacrima/common/mood/MoodLayer.h>
 
 #include <charconv>
 #include <stdexcept>
 
 namespace lacrima {
 namespace {
-
-// Colours change slowly: a key per frame would make a ten-minute project's colours 26,000 keys
-// of JSON for nothing. A key every kColourStep seconds, linear between, keeps them within a
-// hundredth of the generated values.
-constexpr double kColourStep = 0.25;
-
-std::vector<IntensityKey> colourKeys(const MoodTake& take, double FaceColours::*colour) {
-  std::vector<IntensityKey> keys;
-  const double fps = take.animation.fps;
-  const int every = std::max(1, static_cast<int>(kColourStep * fps));
-  const int last = static_cast<int>(take.colours.size()) - 1;
-  for (int i = 0; i <= last; i += every) {
-    keys.push_back(
-        {i / fps, take.colours[static_cast<std::size_t>(i)].*colour, Interpolation::Linear});
-    if (i < last && i + every > last) i = last - every;  // always key the last frame
-  }
-  return keys;
-}
 
 std::string formatNumber(double value) {
   char buf[32];
@@ -49,8 +31,8 @@ std::string generate(const GenerateRequest& request) {
   take.animation.name = "mood";
   if (isProjectPath(request.output)) {
     ProjectDocument project = ProjectDocument::fromAnimation(take.animation);
-    project.colours.redness = IntensityCurve(colourKeys(take, &FaceColours::redness));
-    project.colours.blush = IntensityCurve(colourKeys(take, &FaceColours::blush));
+    project.colours.redness = IntensityCurve(moodColourKeys(take, &FaceColours::redness));
+    project.colours.blush = IntensityCurve(moodColourKeys(take, &FaceColours::blush));
     project.scene.blush = true;  // the generated blush is shown (FaceColours.h)
     const std::string json = project.toJson();
     if (static_cast<long long>(json.size()) > ProjectDocument::kMaxFileBytes)

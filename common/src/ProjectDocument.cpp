@@ -296,7 +296,8 @@ bool ProjectDocument::operator==(const ProjectDocument& other) const {
   return name == other.name && fps == other.fps &&
          defaultInterpolation == other.defaultInterpolation && keys.keys() == other.keys.keys() &&
          layers == other.layers && tearSources == other.tearSources && scene == other.scene &&
-         head == other.head && colours == other.colours && moods == other.moods;
+         head == other.head && colours == other.colours && moods == other.moods &&
+         moodLayer == other.moodLayer;
 }
 
 namespace {
@@ -313,11 +314,21 @@ std::pair<double, double> ProjectDocument::bakeRange() const {
     start = std::min(start, layer.startTime());
     end = std::max(end, layer.endTime());
   }
+  if (moodLayer && !moodLayer->muted) {
+    start = std::min(start, moodLayer->start);
+    end = std::max(end, moodLayer->end);
+  }
   return {start, end};
 }
 
 FapAnimation ProjectDocument::bake(double rate) const {
-  if (std::none_of(layers.begin(), layers.end(), mixed)) {
+  MoodLayerCache cache;
+  return bake(rate, cache);
+}
+
+FapAnimation ProjectDocument::bake(double rate, MoodLayerCache& cache) const {
+  const MoodLayerTake* mood = moodTake(cache);
+  if (!mood && std::none_of(layers.begin(), layers.end(), mixed)) {
     FapAnimation animation = keys.bake(rate);
     animation.name = name;
     return animation;
@@ -327,12 +338,21 @@ FapAnimation ProjectDocument::bake(double rate) const {
   for (const PoseLayer& layer : layers) {
     if (mixed(layer)) animation.animated |= layer.channels();
   }
+  if (mood) animation.animated |= mood->channels();
   for (std::size_t f = 0; f < animation.frames.size(); ++f) {
     const double t = start + static_cast<double>(f) / rate;
-    animation.frames[f] = mixLayers(animation.frames[f], layers, t);
+    animation.frames[f] = mixMoodLayer(mixLayers(animation.frames[f], layers, t), mood, t);
   }
   animation.name = name;
   return animation;
+}
+
+FapValues ProjectDocument::evaluate(double seconds, MoodLayerCache& cache) const {
+  return mixMoodLayer(mixLayers(keys.evaluate(seconds), layers, seconds), moodTake(cache), seconds);
+}
+
+KeyedColours ProjectDocument::coloursAt(double seconds, MoodLayerCache& cache) const {
+  return mixMoodColours(colours.at(seconds), moodTake(cache), seconds);
 }
 
 std::string ProjectDocument::toJson() const {
@@ -388,6 +408,10 @@ std::string ProjectDocument::toJson() const {
     }
     out.endObject();
   }
+  if (moodLayer) {
+    out.key("moodLayer");
+    detail::writeMoodLayer(out, *moodLayer);
+  }
   out.endObject();
   return std::move(out).finish();
 }
@@ -411,6 +435,10 @@ void requireBakeable(const JsonValue& root, const ProjectDocument& document) {
   if (root.has("layers"))
     for (const JsonValue& layer : root["layers"].array(kRead))
       for (const JsonValue& key : layer["intensity"].array(kRead)) consider(key);
+  if (root.has("moodLayer")) {
+    const JsonValue end = root["moodLayer"]["end"];
+    if (end.isNumber() && end.number() == range.second) latest = end;
+  }
   latest.fail(problem);
 }
 
@@ -420,7 +448,8 @@ ProjectDocument ProjectDocument::read(const JsonValue& root, Use use,
                                       const TearMethodKeys* methods) {
   const int version = checkFormatAndVersion(root);
   root.rejectUnknownMembers({"format", "version", "name", "fps", "interpolation", "keys",
-                             "tearSources", "scene", "head", "layers", "colours", "moods"});
+                             "tearSources", "scene", "head", "layers", "colours", "moods",
+                             "moodLayer"});
   ProjectDocument document;
   if (root.has("name")) document.name = root["name"].string();
   if (root.has("fps")) document.fps = readFps(root["fps"]);
@@ -438,6 +467,7 @@ ProjectDocument ProjectDocument::read(const JsonValue& root, Use use,
   }
   if (root.has("colours")) document.colours = readColours(root["colours"], version);
   if (root.has("moods")) document.moods = readMoods(root["moods"], version);
+  if (root.has("moodLayer")) document.moodLayer = detail::readMoodLayer(root["moodLayer"], version);
   if (use == Use::Bake) requireBakeable(root, document);
   return document;
 }

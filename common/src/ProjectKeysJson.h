@@ -13,6 +13,7 @@
 #include <lacrima/common/JsonWriter.h>
 #include <lacrima/common/Keyframes.h>
 #include <lacrima/common/PoseLayer.h>
+#include <lacrima/common/mood/MoodLayer.h>
 
 #include <string>
 #include <string_view>
@@ -46,5 +47,12 @@ std::vector<IntensityKey> readIntensityKeys(const JsonValue& value, int version,
 // [{ "time", "value", "interpolation" }] }]. A pose may not hold FAP 1 or 2.
 void writeLayers(JsonWriter& out, const std::vector<PoseLayer>& layers);
 std::vector<PoseLayer> readLayers(const JsonValue& value, int version);
+
+// The mood layer (MoodLayer.h, MoodLayerJson.cpp): { "seed", "start", "end", "muted" }, the
+// seed a whole number up to MoodLayer::kMaxSeed, 0 <= start < end <= 86400 s. Its length in
+// frames is bounded where the project is read to be baked (it is part of bakeRange()), and by
+// generateMoodTake before anything is allocated.
+void writeMoodLayer(JsonWriter& out, const MoodLayer& layer);
+MoodLayer readMoodLayer(const JsonValue& value, int version);
 
 }  // namespace lacrima::inline common::detail

@@ -2,6 +2,7 @@
 
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editing/KeyChange.h>
+#include <lacrima/editor/MoodLayerRow.h>
 #include <lacrima/editor/NumberField.h>
 
 #include <QHBoxLayout>
@@ -25,6 +26,8 @@ constexpr double kMaxIntensity = 100.0;  // as EditorModel::keyLayerIntensity ac
 LayerPanel::LayerPanel(editing::EditorModel& model, QWidget* parent)
     : QWidget(parent), model_(model) {
   auto* layout = new QVBoxLayout(this);
+  moodLayer_ = new MoodLayerRow(model_, this);
+  layout->addWidget(moodLayer_);
   list_ = new QTreeWidget(this);
   list_->setObjectName(QStringLiteral("layerList"));
   list_->setRootIsDecorated(false);

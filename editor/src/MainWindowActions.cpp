@@ -242,15 +242,25 @@ MoodGenerationDialog* MainWindow::openGenerateCrying() {
   auto* dialog = new MoodGenerationDialog(start, end, m.document().fps, &m.document().moods, this);
   dialog->setAttribute(Qt::WA_DeleteOnClose);
   connect(dialog, &QDialog::accepted, this, [this, dialog] {
-    if (!generateCrying(dialog->request()) && d_->options.interactive)
+    if (!generateCrying(dialog->request(), dialog->asLayer()) && d_->options.interactive)
       QMessageBox::warning(this, tr("Generate crying"), d_->lastError);
   });
   dialog->open();
   return dialog;
 }
 
-bool MainWindow::generateCrying(const editing::MoodGenerationRequest& request) {
+bool MainWindow::generateCrying(const editing::MoodGenerationRequest& request, bool asLayer) {
   try {
+    if (asLayer) {
+      d_->model->addMoodLayer(request);
+      statusBar()->showMessage(tr("Added a crying layer from %1 s to %2 s, seed %3: it follows "
+                                  "the mood curves (graph editor, Moods)")
+                                   .arg(request.start)
+                                   .arg(request.end)
+                                   .arg(request.seed),
+                               8000);
+      return true;
+    }
     const editing::MoodGenerationPlan plan =
         editing::planMoodGeneration(d_->model->document().keys, request);
     d_->model->editKeys(plan.change, tr("Generate crying"));
@@ -262,7 +272,9 @@ bool MainWindow::generateCrying(const editing::MoodGenerationRequest& request) {
                              8000);
     return true;
   } catch (const std::exception& e) {
-    d_->lastError = tr("Cannot generate crying: %1").arg(QString::fromUtf8(e.what()));
+    d_->lastError =
+        (asLayer ? tr("Cannot add the crying layer: %1") : tr("Cannot generate crying: %1"))
+            .arg(QString::fromUtf8(e.what()));
     statusBar()->showMessage(d_->lastError, 8000);
     return false;
   }

@@ -42,8 +42,9 @@ MoodGenerationDialog::MoodGenerationDialog(double start, double end, double fps,
   setWindowTitle(tr("Generate crying"));
   auto* column = new QVBoxLayout(this);
   auto* intro = new QLabel(
-      tr("The crying generator writes a take over the range as keys on the channels it moves: "
-         "face, tears and all. One undo step."),
+      tr("The crying generator writes a take over the range as keys on the channels it moves "
+         "(face, tears and all), or adds it as a layer that follows the mood curves and stays "
+         "editable. One undo step."),
       this);
   intro->setWordWrap(true);
   column->addWidget(intro);
@@ -60,6 +61,15 @@ MoodGenerationDialog::MoodGenerationDialog(double start, double end, double fps,
   source_->setToolTip(keyed ? tr("Follow the mood curves keyed in the graph editor (Moods)")
                             : tr("Key moods in the graph editor (Moods) to generate from them"));
   form->addRow(tr("Moods"), source_);
+  output_ = new QComboBox(this);
+  output_->setObjectName(QStringLiteral("moodOutput"));
+  output_->addItem(tr("Keys"));
+  output_->addItem(tr("A procedural layer"));
+  output_->setToolTip(
+      tr("A layer is generated as it plays, from the mood curves: edit them in the graph "
+         "editor (Moods) and the face follows; mute, re-seed or bake it in the Layers panel. "
+         "Constant moods are keyed as mood curves over the range."));
+  form->addRow(tr("Output"), output_);
   presets_ = new QComboBox(this);
   presets_->addItem(tr("Moods of your own"));
   for (const MoodPreset& preset : moodPresets()) presets_->addItem(displayName(preset.name));
@@ -108,6 +118,9 @@ MoodGenerationDialog::MoodGenerationDialog(double start, double end, double fps,
   column->addWidget(problem_);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
   buttons->button(QDialogButtonBox::Ok)->setText(tr("Generate"));
+  connect(output_, &QComboBox::currentIndexChanged, this, [this, buttons](int index) {
+    buttons->button(QDialogButtonBox::Ok)->setText(index == 1 ? tr("Add layer") : tr("Generate"));
+  });
   connect(buttons, &QDialogButtonBox::accepted, this, [this] {
     try {
       request();
@@ -119,6 +132,8 @@ MoodGenerationDialog::MoodGenerationDialog(double start, double end, double fps,
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
   column->addWidget(buttons);
 }
+
+bool MoodGenerationDialog::asLayer() const { return output_->currentIndex() == 1; }
 
 editing::MoodGenerationRequest MoodGenerationDialog::request() const {
   editing::MoodGenerationRequest request;

@@ -63,6 +63,7 @@ MoodGraph::MoodGraph(editing::EditorModel& model, QWidget* parent)
     edited();
   });
   connect(&model_, &editing::EditorModel::timeChanged, this, qOverload<>(&QWidget::update));
+  connect(&model_, &editing::EditorModel::moodLayerChanged, this, qOverload<>(&QWidget::update));
 }
 
 const MoodCurves& MoodGraph::documentMoods() const { return model_.document().moods; }
@@ -293,6 +294,7 @@ void MoodGraph::paintEvent(QPaintEvent*) {
                  model_.frameDuration(), pal, font());
   p.save();
   p.setClipRect(plotArea());
+  paintMoodLayer(p);
   paintCurves(p);
   p.restore();
   paintLegend(p);
@@ -312,6 +314,22 @@ void MoodGraph::paintValueAxis(QPainter& p) const {
     p.drawText(QRectF(0, y - 8, kAxisWidth - 6, 16), Qt::AlignRight | Qt::AlignVCenter,
                QString::number(v, 'g', 2));
   }
+}
+
+// The crying layer's range, behind the curves it follows: what a key edited here changes.
+void MoodGraph::paintMoodLayer(QPainter& p) const {
+  const std::optional<MoodLayer>& layer = model_.document().moodLayer;
+  if (!layer) return;
+  const QRectF area = plotArea();
+  const QRectF band(QPointF(xOfTime(layer->start), area.top()),
+                    QPointF(xOfTime(layer->end), area.bottom()));
+  QColor tint = palette().color(QPalette::Highlight);
+  tint.setAlphaF(layer->muted ? 0.05 : 0.12);
+  p.fillRect(band, tint);
+  p.setPen(palette().color(QPalette::PlaceholderText));
+  const QString text = layer->muted ? tr("crying layer, seed %1 (muted)").arg(layer->seed)
+                                    : tr("crying layer, seed %1").arg(layer->seed);
+  p.drawText(band.adjusted(6, 2, -6, -2), Qt::AlignRight | Qt::AlignBottom, text);
 }
 
 void MoodGraph::paintCurves(QPainter& p) const {

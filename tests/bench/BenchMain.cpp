@@ -18,6 +18,7 @@ int runHead(int argc, char** argv);
 int runProposal(int argc, char** argv);
 int runPick(int argc, char** argv);
 int runBezier(int argc, char** argv);
+int runMoodLayer(int argc, char** argv);
 int runPreview(int argc, char** argv);
 int runWorstCases(int argc, char** argv);
 int runImport(int argc, char** argv);
@@ -88,6 +89,9 @@ const Subcommand kSubcommands[] = {
     {"bezier",
      "graph editor curves: error of the Bézier u-for-t solve beside ns per solve, per tolerance",
      lacrima::bench::runBezier},
+    {"mood-layer",
+     "a project's crying layer: generating 10 minutes, memory held, cache hit, evaluate, bake",
+     lacrima::bench::runMoodLayer},
     {"worst-cases",
      "baking 10 minutes of keys, refusing an 8 MiB FAP line, the editor's event loop while a "
      "real head rigs in the background",

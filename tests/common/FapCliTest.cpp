@@ -192,6 +192,30 @@ class FapCliTest : public QObject {
     QVERIFY(read.animation.hasTears());
   }
 
+  // A project's crying layer (docs/mood.md#the-mood-layer) is baked into the .fap as the
+  // editor evaluates it; a strict export stays the 68 standard FAPs.
+  void convertBakesAMoodLayer() {
+    ProjectDocument document;
+    Keyframe key;
+    key.set(3, 40);
+    document.keys = KeyframeSequence({key});
+    document.moods[Mood::Sadness] = IntensityCurve({{0, 0.9, Interpolation::Smooth}});
+    document.moodLayer = MoodLayer{5, 0, 8, false};
+    const QString project = path("layer.lacrima"), out = path("layer.fap");
+    document.save(project.toStdString());
+    const Run run = runFap({"convert", project, "-o", out});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    const FapReadResult read = FapReader::readFile(out.toStdString());
+    QCOMPARE(read.animation.frameCount(), 8 * 22 + 1);
+    QVERIFY(read.animation.hasTears());
+    MoodLayerCache cache;
+    for (int f = 0; f < read.animation.frameCount(); f += 11)
+      QVERIFY(read.animation.frames[static_cast<std::size_t>(f)] ==
+              document.evaluate(f / 22.0, cache));
+    QCOMPARE(runFap({"convert", project, "-o", path("strict.fap"), "--strict"}).exitCode, 0);
+    QCOMPARE(FapReader::readFile(path("strict.fap").toStdString()).animation.hasTears(), false);
+  }
+
   void failedWriteNamesThePath() {
     const QString out = path("no/such/dir/out.fap");
     const Run run = runFap({"convert", writeTwoFrameFile(), "-o", out});

@@ -1,9 +1,13 @@
-// The editor's Generate...: a mood take written as reduced keys over a time range, one undo step.
+// The editor's Generate...: a mood take written as reduced keys over a time range, one undo step;
+// or kept as a procedural layer (MoodLayer.h) that follows the mood curves, undoably muted,
+// re-seeded, removed and baked.
 #include <lacrima/common/mood/MoodGenerator.h>
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editing/MoodGeneration.h>
 
 #include <QtTest>
+
+#include <cstring>
 
 using namespace lacrima;
 using namespace lacrima::editing;
@@ -38,6 +42,24 @@ MoodGenerationRequest sadnessFrom2To14() {
   request.script = MoodScript({{0, {}}, {1, sad}});
   request.seed = 12;
   return request;
+}
+
+// documentWithKeys() with a sadness keyed from 0 at 2 s to 0.9 at 6 s.
+ProjectDocument documentWithMoods() {
+  ProjectDocument document = documentWithKeys();
+  document.moods[Mood::Sadness] =
+      IntensityCurve({{2, 0, Interpolation::Smooth}, {6, 0.9, Interpolation::Linear}});
+  return document;
+}
+
+MoodGenerationRequest layerFrom2To14(const ProjectDocument& document) {
+  MoodGenerationRequest request = sadnessFrom2To14();
+  request.curves = &document.moods;
+  return request;
+}
+
+bool sameBits(const FapValues& a, const FapValues& b) {
+  return std::memcmp(a.data(), b.data(), sizeof a) == 0;
 }
 
 }  // namespace
@@ -138,6 +160,105 @@ class MoodGenerationTest : public QObject {
     request = sadnessFrom2To14();
     request.fps = 0;
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, planMoodGeneration({}, request));
+  }
+
+  // Bake to keys keeps the face: the keys plus the layer, reduced at tolerance 1, evaluated at
+  // every frame of the range give the values the layer gave there (tears within half a particle
+  // more: keys round them), and the colours become keys. One undo step restores it all exactly.
+  void bakingKeepsWhatTheLayerShows() {
+    EditorModel model;
+    model.resetDocument(documentWithMoods(), true);
+    model.addMoodLayer(layerFrom2To14(model.document()));
+    QCOMPARE(model.undoStack()->count(), 1);
+    const ProjectDocument layered = model.document();
+    QVERIFY(layered.moodLayer && layered.moodLayer->seed == 12);
+    MoodLayerCache cache;
+    std::vector<FapValues> shown;
+    for (int f = 0; f <= 12 * 22; ++f) shown.push_back(layered.evaluate(2 + f / 22.0, cache));
+
+    model.bakeMoodLayer();
+    QCOMPARE(model.undoStack()->count(), 2);
+    const ProjectDocument baked = model.document();
+    QVERIFY(!baked.moodLayer);
+    QVERIFY(baked.colours.redness.keys().size() > 40);
+    float worst = 0, worstTears = 0;
+    for (int f = 0; f <= 12 * 22; ++f) {
+      const FapValues now = baked.evaluate(2 + f / 22.0, cache);
+      for (int i = 0; i < kChannelCount; ++i) {
+        const bool tears = i == channelIndex(kTearLeftFap) || i == channelIndex(kTearRightFap);
+        float& largest = tears ? worstTears : worst;
+        largest = std::max(largest, std::abs(now[i] - shown[static_cast<std::size_t>(f)][i]));
+      }
+    }
+    QVERIFY2(worst <= 1.0f && worstTears <= 1.5f,
+             qPrintable(QString("%1 %2").arg(worst).arg(worstTears)));
+    // The tongue, which the generator never moves, keeps its keys.
+    QCOMPARE(baked.keys.evaluate(5)[channelIndex(kTongue)], 300.0f);
+    const KeyedColours colours = baked.colours.at(10);
+    QVERIFY(std::abs(*colours.blush - *layered.coloursAt(10, cache).blush) < 0.01);
+
+    model.undoStack()->undo();
+    QVERIFY(model.document() == layered);
+    model.undoStack()->undo();
+    QVERIFY(model.document() == documentWithMoods());
+  }
+
+  // The layer follows the mood curves: a key edited in the Moods view changes the face at once,
+  // and undo brings back the very bits. Only a change of an input generates the take again.
+  void aMoodKeyEditChangesTheLayerAndUndoRestoresIt() {
+    EditorModel model;
+    model.resetDocument(documentWithMoods(), true);
+    model.addMoodLayer(layerFrom2To14(model.document()));
+    model.setCurrentTime(10);
+    const FapValues before = model.currentValues();
+    const int generations = model.moodGenerations();
+    model.setCurrentTime(6);
+    model.keyMood(Mood::Sadness, 0.1);
+    model.setCurrentTime(10);
+    QVERIFY(!sameBits(model.currentValues(), before));
+    QCOMPARE(model.moodGenerations(), generations + 1);
+    model.undoStack()->undo();
+    QVERIFY(sameBits(model.currentValues(), before));
+    model.undoStack()->redo();
+    QVERIFY(!sameBits(model.currentValues(), before));
+    model.undoStack()->undo();
+
+    model.setMoodLayerMuted(true);
+    QVERIFY(sameBits(model.currentValues(), model.keyedValues()));
+    model.undoStack()->undo();
+    QVERIFY(sameBits(model.currentValues(), before));
+    model.setMoodLayerSeed(13);
+    QVERIFY(!sameBits(model.currentValues(), before));
+    model.undoStack()->undo();
+    QVERIFY(sameBits(model.currentValues(), before));
+    model.setMoodLayerSeed(MoodLayer::kMaxSeed + 1);  // refused, with a message
+    QCOMPARE(model.document().moodLayer->seed, std::uint64_t(12));
+    model.removeMoodLayer();
+    QVERIFY(!model.document().moodLayer);
+    QVERIFY(sameBits(model.currentValues(), model.keyedValues()));
+    model.undoStack()->undo();
+    QVERIFY(sameBits(model.currentValues(), before));
+  }
+
+  // From constant moods, the layer keys them as curves over the range (its ease-in included),
+  // in the same undo step, so they can be edited; a seed a project cannot store is refused.
+  void constantMoodsBecomeCurvesForTheLayer() {
+    EditorModel model;
+    model.resetDocument(documentWithKeys(), true);
+    model.addMoodLayer(sadnessFrom2To14());
+    QCOMPARE(model.undoStack()->count(), 1);
+    const IntensityCurve& sadness = model.document().moods[Mood::Sadness];
+    QCOMPARE(sadness.keys().size(), std::size_t(2));
+    QCOMPARE(sadness.at(2), 0.0);
+    QCOMPARE(float(sadness.at(3)), 0.9f);
+    QVERIFY(model.document().moods[Mood::Anger].at(5) == 0.0);
+    model.undoStack()->undo();
+    QVERIFY(model.document().moods.empty() && !model.document().moodLayer);
+
+    MoodGenerationRequest request = sadnessFrom2To14();
+    request.seed = MoodLayer::kMaxSeed + 1;
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, model.addMoodLayer(request));
+    QCOMPARE(model.undoStack()->count(), 1);  // the undone step, nothing new
   }
 };
 

@@ -9,9 +9,11 @@
 #include <lacrima/common/FapTable.h>
 #include <lacrima/editing/EditorModel.h>
 #include <lacrima/editing/LiveTake.h>
+#include <lacrima/editor/LayerPanel.h>
 #include <lacrima/editor/LiveRecording.h>
 #include <lacrima/editor/MainWindow.h>
 #include <lacrima/editor/MoodGenerationDialog.h>
+#include <lacrima/editor/MoodLayerRow.h>
 #include <lacrima/editor/RecordLiveDialog.h>
 
 #include <QCheckBox>
@@ -30,6 +32,8 @@
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
+
+#include <cstring>
 
 using namespace lacrima;
 using namespace lacrima::live::test;
@@ -223,6 +227,64 @@ class LiveRecordTest : public QObject {
     model.undoStack()->undo();
     QVERIFY(model.document().keys.empty());
     QCOMPARE(model.document().moods[Mood::Sadness].keys().size(), std::size_t(2));
+  }
+
+  // Generate crying as a procedural layer: the dialog adds it (one undo step), the Layers panel
+  // shows it, a mood key edited afterwards changes the face at once and undo restores the very
+  // values; muting and a new seed go through the panel; Bake to keys writes it as keys.
+  void generateCryingAsALayerStaysEditable() {
+    QTemporaryDir recovery;
+    editor::MainWindow window(quietOptions(recovery));
+    editing::EditorModel& model = window.model();
+    model.setCurrentTime(0);
+    model.keyMood(Mood::Sadness, 0.2);
+    model.setCurrentTime(6);
+    model.keyMood(Mood::Sadness, 0.9);
+    const int undoBefore = model.undoStack()->count();
+    editor::MoodGenerationDialog* dialog = window.openGenerateCrying();
+    dialog->source()->setCurrentIndex(1);
+    dialog->output()->setCurrentIndex(1);
+    dialog->end()->setValue(12);
+    dialog->seed()->setText(QStringLiteral("5"));
+    auto* ok = dialog->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok);
+    QCOMPARE(ok->text(), QStringLiteral("Add layer"));
+    ok->click();
+    QCOMPARE(model.undoStack()->count(), undoBefore + 1);
+    QVERIFY(model.document().keys.empty());
+    QCOMPARE(model.document().moodLayer, std::optional<MoodLayer>(MoodLayer{5, 0, 12, false}));
+    editor::MoodLayerRow* row = window.layers()->moodLayer();
+    QVERIFY(!row->isHidden());
+    QCOMPARE(row->seed()->text(), QStringLiteral("5"));
+
+    model.setCurrentTime(10);
+    const int brow = channelIndex(fap("raise_l_i_eyebrow"));
+    const FapValues before = model.currentValues();
+    QVERIFY(before[brow] > 0);  // the sad face, with no key at all
+    model.setCurrentTime(6);
+    model.keyMood(Mood::Sadness, 0);  // as the Moods view keys it
+    model.setCurrentTime(10);
+    QVERIFY2(model.currentValues()[brow] < before[brow],
+             qPrintable(QString("%1 %2").arg(model.currentValues()[brow]).arg(before[brow])));
+    model.undoStack()->undo();
+    QVERIFY(std::memcmp(model.currentValues().data(), before.data(), sizeof before) == 0);
+
+    row->enabled()->click();  // mute
+    QVERIFY(model.document().moodLayer->muted);
+    QCOMPARE(model.currentValues()[brow], 0.0f);
+    QVERIFY(!row->bake()->isEnabled());
+    model.undoStack()->undo();
+    row->newSeed()->click();
+    QCOMPARE(model.document().moodLayer->seed, std::uint64_t(6));
+    model.undoStack()->undo();
+    QVERIFY(std::memcmp(model.currentValues().data(), before.data(), sizeof before) == 0);
+
+    row->bake()->click();
+    QVERIFY(!model.document().moodLayer);
+    QVERIFY(row->isHidden());
+    QVERIFY(!model.document().keys.empty());
+    QVERIFY(std::abs(model.currentValues()[brow] - before[brow]) <= 1.0f);
+    model.undoStack()->undo();
+    QVERIFY(model.document().moodLayer && model.document().keys.empty());
   }
 
   // The Record live dialog: by default the selected channels, else every channel the stream

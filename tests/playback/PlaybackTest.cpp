@@ -391,6 +391,34 @@ class PlaybackTest : public QObject {
     QCOMPARE(playback.seek(playback.duration() / 2).overlays.redness, 0.5);
   }
 
+  // A project's crying layer plays as the editor evaluates it: its channels in the frames, its
+  // colours in place of the keyed ones within its range (docs/mood.md#the-mood-layer).
+  void aMoodLayerPlaysAsTheEditorEvaluatesIt() {
+    const QString path = dir_.filePath("layer.lacrima");
+    writeText(path, R"({
+  "format": "lacrima-project", "version": 2, "name": "t", "fps": 22,
+  "keys": [ { "time": 0, "values": { "open_jaw": 10 } } ],
+  "scene": { "redness": "animation", "blush": true },
+  "colours": { "redness": [ { "time": 0, "value": 0.3, "interpolation": "linear" } ] },
+  "moods": { "sadness": [ { "time": 0, "value": 0.9 } ], "shame": [ { "time": 0, "value": 0.8 } ] },
+  "moodLayer": { "seed": 3, "start": 1, "end": 12 }
+})");
+    const ProjectDocument document = ProjectDocument::load(path.toStdString());
+    MoodLayerCache cache;
+    Playback playback(*rig_);
+    playback.open(path.toStdString());
+    QCOMPARE(playback.frameCount(), 12 * 22 + 1);
+    for (int f : {0, 30, 200, 264})
+      QVERIFY(playback.animation().frames[static_cast<std::size_t>(f)] ==
+              document.evaluate(f / 22.0, cache));
+    const KeyedColours expected = document.coloursAt(10, cache);
+    const OverlayWeights shown = playback.seek(10).overlays;
+    QVERIFY2(std::abs(shown.blush - *expected.blush) < 1e-6 && *expected.blush > 0.5,
+             qPrintable(QString("%1 %2").arg(shown.blush).arg(*expected.blush)));
+    QVERIFY(std::abs(shown.redness - *expected.redness) < 1e-6);
+    QVERIFY(std::abs(playback.seek(0.5).overlays.redness - 0.3) < 1e-6);  // before the layer
+  }
+
   // Toggles switch the work and the pointers; the revision moves only when something changed.
   void togglesRespected() {
     Playback playback(*rig_);

@@ -66,6 +66,13 @@ MoodsCommand::MoodsCommand(EditorModel& model, MoodCurves before, MoodCurves aft
 void MoodsCommand::redo() { model_.applyMoods(after_); }
 void MoodsCommand::undo() { model_.applyMoods(before_); }
 
+MoodLayerCommand::MoodLayerCommand(EditorModel& model, MoodLayerState before, MoodLayerState after,
+                                   const QString& text)
+    : QUndoCommand(text), model_(model), before_(std::move(before)), after_(std::move(after)) {}
+
+void MoodLayerCommand::redo() { model_.applyMoodLayer(after_); }
+void MoodLayerCommand::undo() { model_.applyMoodLayer(before_); }
+
 SettingsCommand::SettingsCommand(EditorModel& model, ProjectDocument before, ProjectDocument after,
                                  const QString& text)
     : QUndoCommand(text), model_(model), before_(std::move(before)), after_(std::move(after)) {

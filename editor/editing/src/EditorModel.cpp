@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 
 namespace lacrima::editing {
 namespace {
@@ -103,6 +104,11 @@ double EditorModel::snapTime(double seconds) const {
   return snapped <= kMaxKeyTime ? snapped : std::floor(kMaxKeyTime * document_.fps) / document_.fps;
 }
 
+double EditorModel::endTime() const {
+  const auto [start, end] = document_.bakeRange();
+  return start <= end ? end : 0.0;
+}
+
 int EditorModel::frameAt(double seconds) const {
   return static_cast<int>(std::lround(seconds * document_.fps));
 }
@@ -121,7 +127,14 @@ void EditorModel::setCurrentTimeExact(double seconds) {
 
 void EditorModel::refreshValues() {
   keyedValues_ = document_.keys.evaluate(time_);
-  values_ = mixLayers(keyedValues_, document_.layers, time_);
+  try {
+    values_ = document_.evaluate(time_, moodCache_);
+  } catch (const std::invalid_argument&) {
+    // A mood layer too long at the project's rate (more than kMaxBakedFrames frames, a rate
+    // chosen since or a file opened to be fixed): it adds nothing until the rate or the layer
+    // changes, as the player and exports refuse such a project with the figures.
+    values_ = mixLayers(keyedValues_, document_.layers, time_);
+  }
   for (int i = 0; i < kChannelCount; ++i)
     if (posed_.test(static_cast<std::size_t>(i)))
       values_[static_cast<std::size_t>(i)] = poseValues_[static_cast<std::size_t>(i)];
@@ -512,7 +525,11 @@ void EditorModel::applySettings(const ProjectDocument& settings) {
   document_.scene = settings.scene;
   document_.head = settings.head;
   emit settingsChanged();
-  if (oldFps != document_.fps) setCurrentTime(time_);
+  if (oldFps != document_.fps) {
+    setCurrentTime(time_);
+    refreshValues();  // a mood layer is generated at the project's rate
+    emit valuesChanged();
+  }
 }
 
 }  // namespace lacrima::editing

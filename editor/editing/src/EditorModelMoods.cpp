@@ -27,6 +27,9 @@ IntensityCurve bounded(const IntensityCurve& curve) {
 void EditorModel::applyMoods(const MoodCurves& moods) {
   document_.moods = moods;
   emit moodsChanged();
+  if (!document_.moodLayer) return;
+  refreshValues();  // the mood layer follows the curves
+  emit valuesChanged();
 }
 
 void EditorModel::editMoods(MoodCurves after, const QString& text) {

@@ -16,13 +16,14 @@ FrameStepClock::FrameStepClock(EditorModel& model, QObject* parent)
 
 void FrameStepClock::play() {
   if (isPlaying()) return;
-  const auto& keys = model_.document().keys;
-  if (keys.keys().size() < 2) {
+  // What the player plays: the keys, and the layers beyond them (a crying layer alone plays).
+  const auto [start, end] = model_.document().bakeRange();
+  if (!(end > start)) {
     emit model_.message(tr("Nothing to play yet: key at least two times"));
     return;
   }
   // Playing from the end starts over.
-  if (model_.currentTime() >= keys.endTime() - 1e-9) model_.setCurrentTimeExact(keys.startTime());
+  if (model_.currentTime() >= end - 1e-9) model_.setCurrentTimeExact(start);
   timer_.start(static_cast<int>(std::lround(1000.0 / rate_)));
   emit playingChanged(true);
 }
@@ -48,16 +49,16 @@ void FrameStepClock::setRate(double framesPerSecond) {
 void FrameStepClock::setLoop(bool on) { loop_ = on; }
 
 void FrameStepClock::advance() {
-  const auto& keys = model_.document().keys;
+  const auto [start, end] = model_.document().bakeRange();
   const double dt = 1.0 / rate_;
   double next = model_.currentTime() + dt;
-  if (next > keys.endTime() + 1e-9) {
+  if (next > end + 1e-9) {
     if (!loop_) {
-      model_.setCurrentTimeExact(keys.endTime());
+      model_.setCurrentTimeExact(end);
       pause();
       return;
     }
-    next = keys.startTime();
+    next = start;
   }
   model_.setCurrentTimeExact(next);
   emit ticked(dt);

@@ -1,4 +1,4 @@
-#include <lacrima/common/mood/MoodGenerator.h>
+#include <lacrima/common/mood/MoodLayer.h>
 #include <lacrima/editing/KeyReduction.h>
 #include <lacrima/editing/MoodGeneration.h>
 
@@ -16,8 +16,15 @@ MoodGenerationPlan planMoodGeneration(const KeyframeSequence& keys,
   const auto moodsAt = [&request](double t) {
     return request.curves ? request.curves->at(request.start + t) : request.script.at(t);
   };
-  const MoodTake take =
-      generateMoodTake(moodsAt, request.seed, request.end - request.start, request.fps);
+  MoodTake take = generateMoodTake(moodsAt, request.seed, request.end - request.start, request.fps);
+  if (request.addToKeys) {
+    const ChannelMask moved = take.animation.animated;
+    for (std::size_t f = 0; f < take.animation.frames.size(); ++f) {
+      FapValues& frame = take.animation.frames[f];
+      frame = addMoodFrame(keys.evaluate(request.start + static_cast<double>(f) / request.fps),
+                           frame, moved);
+    }
+  }
   MoodGenerationPlan plan;
   plan.frames = take.animation.frameCount();
   plan.channels = take.animation.usedChannels();

@@ -16,7 +16,9 @@ AnimationFile readAnimationFile(const std::string& path) try {
     const ProjectDocument document =
         ProjectDocument::load(path, ProjectDocument::Use::Bake, &methods);
     file.project = true;
-    file.animation = document.bake();
+    MoodLayerCache mood;
+    file.animation = document.bake(document.fps, mood);
+    file.moodTake = mood.shared();
     file.scene = document.scene;
     file.tearSources = document.tearSources;
     file.colours = document.colours;

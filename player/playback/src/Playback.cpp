@@ -24,7 +24,12 @@ struct Playback::State {
   SceneSettings scene;
   TearSources sources;
   FaceColourCurves colours;
+  std::shared_ptr<const MoodLayerTake> mood;  // a project's mood layer, for its colours
   double colourStart = 0;
+
+  KeyedColours coloursAt(double seconds) const {
+    return mixMoodColours(colours.at(seconds), mood.get(), seconds);
+  }
   // Producer state just BEFORE producing frame k, by k. Going to frame f restores the largest
   // k <= f and produces k..f, so a restore is always followed by a fresh frame.
   struct Stored {
@@ -97,7 +102,7 @@ struct Playback::State {
     const double dt = 1.0 / animation.fps;
     for (; nextFrame <= frame; ++nextFrame) {
       if (nextFrame % interval == 0 && !checkpoints.contains(nextFrame)) keep(nextFrame);
-      producer.setKeyedColours(colours.at(colourStart + nextFrame / animation.fps));
+      producer.setKeyedColours(coloursAt(colourStart + nextFrame / animation.fps));
       producer.produce(animation.frames[static_cast<std::size_t>(nextFrame)], dt,
                        progressAt(nextFrame / animation.fps));
       ++simulated;
@@ -114,7 +119,7 @@ void Playback::open(const std::string& path) {
   AnimationFile file = readAnimationFile(path);  // throws; nothing has changed yet
   try {
     setAnimation(std::move(file.animation), file.scene, file.tearSources);
-    setColourCurves(std::move(file.colours), file.startTime);
+    setColourCurves(std::move(file.colours), file.startTime, std::move(file.moodTake));
   } catch (const std::invalid_argument& e) {
     throw FileError({path, 0, 0}, e.what());
   }
@@ -136,6 +141,7 @@ void Playback::setAnimation(FapAnimation animation, const SceneSettings& scene,
   s.scene = scene;
   s.sources = sources;
   s.colours = {};
+  s.mood.reset();
   s.colourStart = 0;
   s.path.clear();
   s.warnings.clear();
@@ -147,9 +153,11 @@ void Playback::setAnimation(FapAnimation animation, const SceneSettings& scene,
   seek(0);
 }
 
-void Playback::setColourCurves(FaceColourCurves curves, double startTime) {
+void Playback::setColourCurves(FaceColourCurves curves, double startTime,
+                               std::shared_ptr<const MoodLayerTake> mood) {
   State& s = *state_;
   s.colours = std::move(curves);
+  s.mood = std::move(mood);
   s.colourStart = std::isfinite(startTime) ? startTime : 0.0;
   if (!s.animation.frames.empty()) seek(s.time);  // the frame shown takes them at once
 }
@@ -201,7 +209,7 @@ const FrameView& Playback::seek(double seconds) {
   const double t = std::isfinite(seconds) ? std::clamp(seconds, 0.0, s.animation.duration()) : 0.0;
   s.produceUpTo(s.frameAt(t));
   s.time = t;
-  s.producer.setKeyedColours(s.colours.at(s.colourStart + t));
+  s.producer.setKeyedColours(s.coloursAt(s.colourStart + t));
   return s.producer.pose(s.animation.sample(t), s.progressAt(t));
 }
 

@@ -31,8 +31,12 @@
 //   "moods": { "sadness": [ { "time": 2, "value": 0.8, "interpolation": "smooth" } ],
 //              "anger": [...], "joy": [...], "shame": [...] }
 //                                          (version 2; optional, each; values in [0, 1]; what
-//                                            the editor's Generate crying... may follow,
-//                                            MoodCurves.h; never baked nor exported to .fap)
+//                                            Generate crying... and the mood layer follow,
+//                                            MoodCurves.h; by themselves never baked)
+//   "moodLayer": { "seed": 4, "start": 2, "end": 30, "muted": false }
+//                                          (version 2; optional; the crying generator over
+//                                            [start, end] following "moods", evaluated, not
+//                                            keyed: MoodLayer.h)
 // }
 // Head paths in the file are relative to the project file's folder (absolute ones are read as
 // they are). load() makes them absolute, so the document names the same files wherever it is
@@ -48,6 +52,7 @@
 #include <lacrima/common/TearParameters.h>
 #include <lacrima/common/TearQuality.h>
 #include <lacrima/common/mood/MoodCurves.h>
+#include <lacrima/common/mood/MoodLayer.h>
 
 #include <Eigen/Core>
 #include <optional>
@@ -100,9 +105,10 @@ struct ProjectDocument {
   std::vector<PoseLayer> layers;  // mixed onto the keys in this order (PoseLayer.h)
   TearSources tearSources;
   SceneSettings scene;
-  std::optional<HeadFiles> head;  // nullopt: the default head
-  FaceColourCurves colours;       // keyed redness and blush; empty: computed by the player
-  MoodCurves moods;               // keyed moods for the crying generator; empty: none
+  std::optional<HeadFiles> head;       // nullopt: the default head
+  FaceColourCurves colours;            // keyed redness and blush; empty: computed by the player
+  MoodCurves moods;                    // keyed moods for the crying generator; empty: none
+  std::optional<MoodLayer> moodLayer;  // the generator following `moods`, mixed on the keys
 
   bool operator==(const ProjectDocument& other) const;
 
@@ -140,16 +146,22 @@ struct ProjectDocument {
   std::optional<Diagnostic> missingHeadFile(const std::string& projectPath) const;
 
   // The animation the project plays and exports, at its own rate or at `rate`, named after it:
-  // the keys with the layers mixed on, from the earliest to the latest key of either. More
-  // than kMaxBakedFrames throw std::length_error before anything is allocated.
+  // the keys with the layers mixed on (pose layers, then the mood layer), from the earliest to
+  // the latest key of either. More than kMaxBakedFrames throw std::length_error before anything
+  // is allocated. The mood layer's take comes from `cache` (generated there when it is not yet).
   FapAnimation bake() const { return bake(fps); }
   FapAnimation bake(double rate) const;
-  // The first and last time bake() covers: the keys' and the unmuted layers' intensity keys'
-  // (start > end when there is nothing to bake).
+  FapAnimation bake(double rate, MoodLayerCache& cache) const;
+  // The first and last time bake() covers: the keys', the unmuted layers' intensity keys' and
+  // the unmuted mood layer's range (start > end when there is nothing to bake).
   std::pair<double, double> bakeRange() const;
   // Every channel at `seconds`: the keys with the layers mixed on.
-  FapValues evaluate(double seconds) const {
-    return mixLayers(keys.evaluate(seconds), layers, seconds);
+  FapValues evaluate(double seconds, MoodLayerCache& cache) const;
+  // The face colours at `seconds`: the keyed curves, the mood layer's within its range.
+  KeyedColours coloursAt(double seconds, MoodLayerCache& cache) const;
+  // The mood layer's take at the project's rate (nullptr without one, or muted).
+  const MoodLayerTake* moodTake(MoodLayerCache& cache) const {
+    return cache.take(moods, moodLayer, fps);
   }
   static ProjectDocument fromAnimation(const FapAnimation& animation);  // a key per frame
 };

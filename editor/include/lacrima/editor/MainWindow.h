@@ -102,9 +102,10 @@ class MainWindow : public QMainWindow {
   // the take with generateCrying(). Its range starts as the span of the selected keys, else the
   // whole take (10 s when there are no keys). Returns it (it closes itself), for tests.
   MoodGenerationDialog* openGenerateCrying();
-  // A take of the crying generator as keys over the request's range, in one undo step; false
-  // (the reason in lastError() and the status bar) when the request is refused.
-  bool generateCrying(const editing::MoodGenerationRequest& request);
+  // A take of the crying generator as keys over the request's range, or `asLayer` as a
+  // procedural layer (EditorModel::addMoodLayer), in one undo step; false (the reason in
+  // lastError() and the status bar) when the request is refused.
+  bool generateCrying(const editing::MoodGenerationRequest& request, bool asLayer = false);
 
   // --- files (false on failure; the reason is in lastError()) ---------------------------
   void newDocument();

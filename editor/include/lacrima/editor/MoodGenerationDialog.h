@@ -4,7 +4,9 @@
 // (planMoodGeneration) in one undo step. The range starts as the selected keys' span, else the
 // whole take. The moods ease in from neutral over the first `ease` seconds of the range, so the
 // take does not start on a full face. Or, when the project keys moods, the moods can come from
-// its mood curves (MoodCurves.h) over the range instead, read at each generated frame.
+// its mood curves (MoodCurves.h) over the range instead, read at each generated frame. Or, under
+// Output, the take can stay a procedural layer (MoodLayer.h, EditorModel::addMoodLayer) that
+// follows the mood curves (constant moods are then keyed as curves over the range).
 #include <lacrima/editing/MoodGeneration.h>
 
 #include <QDialog>
@@ -38,6 +40,9 @@ class MoodGenerationDialog : public QDialog {
   QComboBox* presets() const { return presets_; }
   // "Constant moods" (0) or "The project's mood curves" (1).
   QComboBox* source() const { return source_; }
+  // "Keys" (0) or "A procedural layer" (1).
+  QComboBox* output() const { return output_; }
+  bool asLayer() const;
 
  private:
   std::array<QDoubleSpinBox*, kMoodCount> levels_{};
@@ -45,6 +50,7 @@ class MoodGenerationDialog : public QDialog {
   QLineEdit* seed_;
   QComboBox* presets_;
   QComboBox* source_;
+  QComboBox* output_;
   const MoodCurves* curves_;
   QLabel* problem_;
   double fps_;

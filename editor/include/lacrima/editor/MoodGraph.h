@@ -7,7 +7,8 @@
 // value clamped to 0..1); double-click empty space to key the chosen mood there (click a name in
 // the legend to choose it). Delete or Backspace removes the selected key (not the window's
 // keys), Home frames all. Wheel zooms time about the pointer, Shift+wheel pans. The moods are what
-// Animation > Generate crying... can follow; they are not baked into the animation.
+// Animation > Generate crying... can follow and what a crying layer follows (its range shaded
+// behind the curves); they are not baked into the animation.
 #include <lacrima/common/mood/MoodCurves.h>
 #include <lacrima/editor/TimeAxis.h>
 
@@ -77,6 +78,7 @@ class MoodGraph : public QWidget {
   // on).
   MoodCurves moved(QPointF position) const;
   void paintCurves(QPainter& p) const;
+  void paintMoodLayer(QPainter& p) const;
   void paintValueAxis(QPainter& p) const;
   void paintLegend(QPainter& p) const;
 

@@ -1,8 +1,8 @@
 #pragma once
 // A project's mood curves (docs/mood.md#mood-curves-in-projects): sadness, anger, joy and shame
 // keyed over project time like a layer's intensity, each in [0, 1]. They are what the editor's
-// Generate crying... can follow instead of constant moods; nothing else reads them, so a
-// project without them plays as before and a .fap export never carries them.
+// Generate crying... can follow instead of constant moods, and what a project's mood layer
+// follows (MoodLayer.h); by themselves they never play, and a .fap export never carries them.
 #include <lacrima/common/IntensityCurve.h>
 #include <lacrima/common/mood/Moods.h>
 

@@ -81,6 +81,20 @@ class MoodsCommand : public QUndoCommand {
   MoodCurves before_, after_;
 };
 
+// Mood layer edits (add, mute, seed, remove, bake) store the layer and the colour curves before
+// and after (a bake keys the layer's colours; its keys are a KeyEditCommand in the same macro).
+class MoodLayerCommand : public QUndoCommand {
+ public:
+  MoodLayerCommand(EditorModel& model, MoodLayerState before, MoodLayerState after,
+                   const QString& text);
+  void redo() override;
+  void undo() override;
+
+ private:
+  EditorModel& model_;
+  MoodLayerState before_, after_;
+};
+
 class SettingsCommand : public QUndoCommand {
  public:
   SettingsCommand(EditorModel& model, ProjectDocument before, ProjectDocument after,

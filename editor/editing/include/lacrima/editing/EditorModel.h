@@ -23,6 +23,7 @@
 #include <QString>
 #include <QUndoStack>
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <utility>
@@ -31,6 +32,14 @@
 namespace lacrima::editing {
 
 struct Preset;
+struct MoodGenerationRequest;
+
+// What a mood layer edit changes: the layer, and the colour curves a bake keys.
+struct MoodLayerState {
+  std::optional<MoodLayer> layer;
+  FaceColourCurves colours;
+  bool operator==(const MoodLayerState&) const = default;
+};
 
 // A channel and the value to write.
 using ChannelValue = std::pair<int, float>;
@@ -38,6 +47,7 @@ using ChannelValue = std::pair<int, float>;
 class KeyEditCommand;
 class LayersCommand;
 class MoodsCommand;
+class MoodLayerCommand;
 class SettingsCommand;
 
 class EditorModel : public QObject {
@@ -62,7 +72,9 @@ class EditorModel : public QObject {
   double snapTime(double seconds) const;
   double frameDuration() const { return 1.0 / document_.fps; }
   int frameAt(double seconds) const;  // nearest frame number
-  double endTime() const { return document_.keys.endTime(); }
+  // The end of what plays (ProjectDocument::bakeRange): the last key, or a layer's later end
+  // (the crying layer's, a pose layer's last intensity key); 0 when nothing plays.
+  double endTime() const;
 
   // --- values at the current time -----------------------------------------------------
   // What the face shows: the keys with the layers mixed on (sliders show these; a slider edit
@@ -145,6 +157,24 @@ class EditorModel : public QObject {
   // Keys `mood` at the current time to `value` (replacing a key there); unkey removes it.
   void keyMood(Mood mood, double value);
   void unkeyMood(Mood mood);
+  // The procedural crying layer (MoodLayer.h), each one undo step. addMoodLayer: the layer over
+  // the request's range with its seed, following the mood curves; with constant moods
+  // (request.curves unset) the request's moods are first keyed as curves over the range (its
+  // script's keys, from `start`; the moods' old keys within the range go), in the same step.
+  // It replaces a layer the project has. Throws std::invalid_argument (a seed above
+  // MoodLayer::kMaxSeed, a range that does not run forward or is too long) changing nothing.
+  void addMoodLayer(const MoodGenerationRequest& request);
+  void setMoodLayerMuted(bool muted);
+  void setMoodLayerSeed(std::uint64_t seed);  // seeds above MoodLayer::kMaxSeed: message
+  void removeMoodLayer();
+  // Writes what the layer adds into keys (planMoodGeneration with addToKeys: keys plus layer,
+  // reduced at tolerance 1) and its colours into the colour curves (a key every 0.25 s within
+  // its range), and removes it: one undo step, the face unchanged within the reduction's
+  // tolerance. A muted layer is not baked (message).
+  void bakeMoodLayer();
+  // The layer's take as the preview evaluates it (nullptr without one, or muted).
+  const MoodLayerTake* moodTake() { return document_.moodTake(moodCache_); }
+  int moodGenerations() const { return moodCache_.generations(); }
   // Mirrors left <-> right: the selected keys, else the key at the current time, else the
   // current pose as a new key.
   void mirror();
@@ -165,6 +195,7 @@ class EditorModel : public QObject {
   void settingsChanged();
   void layersChanged();
   void moodsChanged();
+  void moodLayerChanged();
   void timeChanged(double seconds);
   void valuesChanged();  // currentValues() changed (time or keys)
   void selectionChanged();
@@ -180,11 +211,14 @@ class EditorModel : public QObject {
   friend class KeyEditCommand;
   friend class LayersCommand;
   friend class MoodsCommand;
+  friend class MoodLayerCommand;
   friend class SettingsCommand;
   void applyKeyChange(const KeyChange& change, bool redo);
   void applySettings(const ProjectDocument& settings);
   void applyLayers(const std::vector<PoseLayer>& layers);
   void applyMoods(const MoodCurves& moods);
+  void applyMoodLayer(const MoodLayerState& state);
+  void pushMoodLayer(MoodLayerState after, const QString& text);
 
   void refreshValues();
   void pushKeyEdit(const KeyChange& change, const QString& text,
@@ -208,8 +242,9 @@ class EditorModel : public QObject {
   int focus_ = 3;
   int dragSessions_ = 0;
   bool posingOnly_ = false;
-  ChannelMask posed_;       // channels the pose sets, over the animation
-  FapValues poseValues_{};  // their values
+  ChannelMask posed_;         // channels the pose sets, over the animation
+  FapValues poseValues_{};    // their values
+  MoodLayerCache moodCache_;  // the mood layer's take, generated again when its inputs change
 };
 
 }  // namespace lacrima::editing

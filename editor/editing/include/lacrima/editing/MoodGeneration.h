@@ -27,6 +27,10 @@ struct MoodGenerationRequest {
   std::uint64_t seed = 1;
   double fps = 22;
   double tolerance = 1;  // key reduction, channel units (the import's default)
+  // Add the take onto the keys' values at each frame (addMoodFrame, MoodLayer.h) instead of
+  // replacing them: how a mood layer is baked (EditorModel::bakeMoodLayer) without changing
+  // what the face shows.
+  bool addToKeys = false;
 };
 
 struct MoodGenerationPlan {

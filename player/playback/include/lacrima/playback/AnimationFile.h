@@ -7,6 +7,7 @@
 #include <lacrima/common/FapAnimation.h>
 #include <lacrima/common/ProjectDocument.h>
 
+#include <memory>
 #include <string>
 
 namespace lacrima::playback {
@@ -19,6 +20,8 @@ struct AnimationFile {
   FaceColourCurves colours;  // the project's keyed colours; none for a FAP file
   double startTime = 0;      // the project time of frame 0 (where its colours are read from)
   Warnings warnings;         // the FAP reader's (gaps filled, odd header, ...)
+  // The project's mood layer, whose colours replace the keyed ones within its range.
+  std::shared_ptr<const MoodLayerTake> moodTake;
 };
 
 // Throws FileError naming the file, the line (and column or JSON path) and what was expected,

@@ -38,8 +38,10 @@ class Playback : public AnimationSource {
                     const TearSources& sources = {});
   // Colours keyed over the animation (a project's, FaceColours.h), read at startTime + the
   // playing time; they replace the computed redness and blush. open() sets a project's;
-  // setAnimation() clears them. They never restart the tears.
-  void setColourCurves(FaceColourCurves curves, double startTime = 0);
+  // setAnimation() clears them. They never restart the tears. `mood`: a project's mood layer,
+  // whose colours replace them within its range (mixMoodColours, MoodLayer.h).
+  void setColourCurves(FaceColourCurves curves, double startTime = 0,
+                       std::shared_ptr<const MoodLayerTake> mood = {});
   // Drops the tear channels (FAP 69/70) from the animation loaded: the same face, colours and
   // timing without a tear, and no simulation (the "without tears" half of a paired stimulus).
   // Shows the current time again.
